@@ -1,0 +1,28 @@
+"""Run every benchmark in ``bench/`` in turn (``make bench``); each prints its own figures."""
+import importlib
+import pkgutil
+import sys
+import time
+
+import bench
+
+
+def main() -> int:
+    """Run ``bench.<name>.main()`` for each module, or those named on the command line."""
+    names = sys.argv[1:] or sorted(m.name for m in pkgutil.iter_modules(bench.__path__)
+                                   if not m.name.startswith('_'))
+    failed = 0
+    for name in names:
+        print(f'=== bench.{name}', flush=True)
+        t0 = time.perf_counter()
+        try:
+            rc = importlib.import_module(f'bench.{name}').main([])
+        except SystemExit as e:  # a benchmark may exit with a status
+            rc = e.code if isinstance(e.code, int) else 1
+        failed += bool(rc)
+        print(f'=== bench.{name}: {"ok" if not rc else "FAILED"} in {time.perf_counter() - t0:.1f} s\n')
+    return 1 if failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""Sub-commands of ``ltl-instruct`` (see ``ltl_instruct/cli.py``)."""

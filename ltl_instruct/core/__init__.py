@@ -1,0 +1,1 @@
+"""Core library of ltl_instruct: pure Python, never imports rclpy."""

@@ -1,0 +1,1 @@
+"""Automata: progression, DFA compilation with symbolic guards, traces, English."""

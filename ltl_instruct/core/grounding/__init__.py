@@ -1,0 +1,1 @@
+"""Spatial grounding: comparators, descriptor resolution, semantic maps, detectors."""

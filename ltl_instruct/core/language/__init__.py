@@ -1,0 +1,1 @@
+"""language package of the ltl_instruct core."""

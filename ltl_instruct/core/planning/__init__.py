@@ -1,0 +1,1 @@
+"""planning package of the ltl_instruct core."""

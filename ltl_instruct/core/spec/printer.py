@@ -1,0 +1,47 @@
+"""Printer for task formulas: the inverse of the parser.
+
+Prints the fewest parentheses the precedence of ``spec/formula.md`` allows
+(unary > ``U R W`` > ``&`` > ``|`` > ``-> <->``), so ``parse(print(f)) == f``.
+Binary temporal operators and implications are right-associative; a left operand
+of the same precedence is parenthesised.
+"""
+from __future__ import annotations
+
+from ltl_instruct.core.spec.ast import (
+    Atom, Const, Descriptor, Formula, Not, WeakNext, _Binary, _NAry, _Unary,
+)
+
+
+def format_descriptor(d: Descriptor) -> str:
+    """``chair::isbetween(sofa, bag)``."""
+    return str(d)
+
+
+def format_formula(f: Formula) -> str:
+    """Return the canonical text of ``f`` (parseable by :func:`parse_formula`)."""
+    return _fmt(f)
+
+
+def _wrap(f: Formula, min_prec: int) -> str:
+    text = _fmt(f)
+    return f'({text})' if f.precedence < min_prec else text
+
+
+def _fmt(f: Formula) -> str:
+    if isinstance(f, Const):
+        return 'true' if f.value else 'false'
+    if isinstance(f, Atom):
+        return f.key
+    if isinstance(f, Not):
+        return '!' + _wrap(f.operand, 90)
+    if isinstance(f, WeakNext):  # not in the surface syntax: weak next = !X !f
+        return '!X !' + _wrap(f.operand, 90)
+    if isinstance(f, _Unary):
+        return f'{f.symbol} ' + _wrap(f.operand, 90)
+    if isinstance(f, _Binary):
+        # right-associative: the left operand must bind tighter, the right may be equal
+        return f'{_wrap(f.left, f.precedence + 1)} {f.symbol} {_wrap(f.right, f.precedence)}'
+    if isinstance(f, _NAry):
+        # a nested node of the same class would be flattened by the parser: keep it visible
+        return f' {f.symbol} '.join(_wrap(o, f.precedence + 1) for o in f.operands)
+    raise TypeError(f'not a formula node: {f!r}')

@@ -1,0 +1,1 @@
+"""Worlds: scene files, synthetic RGB-D camera, kinematic robot."""

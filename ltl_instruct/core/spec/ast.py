@@ -108,8 +108,12 @@ class Formula:
         return ()
 
     def __str__(self) -> str:
-        from ltl_instruct.core.spec.printer import format_formula
-        return format_formula(self)
+        text = self.__dict__.get('_text')
+        if text is None:  # printed once, then cached: str() is the canonical sort key
+            from ltl_instruct.core.spec.printer import format_formula
+            text = format_formula(self)
+            object.__setattr__(self, '_text', text)
+        return text
 
     def __repr__(self) -> str:
         return f'<{type(self).__name__} {self}>'

@@ -23,7 +23,7 @@ def format_formula(f: Formula) -> str:
 
 
 def _wrap(f: Formula, min_prec: int) -> str:
-    text = _fmt(f)
+    text = str(f)  # cached per node
     return f'({text})' if f.precedence < min_prec else text
 
 

@@ -47,21 +47,28 @@ class Edge:
 
 
 def _current_atoms(f: Formula) -> list[Atom]:
-    """Atoms of a step formula outside ``Later`` obligations, most frequent first."""
+    """Atoms of a step formula outside ``Later`` obligations, outermost first.
+
+    Branching on the outermost atoms first keeps the expansion of nested
+    sequences linear: in ``a & (b & (c | @..) | @..) | @..`` a false ``a`` settles
+    the whole step at once.
+    """
     from ltl_instruct.core.automaton.progression import Later
-    counts: dict[Atom, int] = {}
-    stack = [f]
-    while stack:
-        node = stack.pop()
-        if isinstance(node, Later):
-            continue
-        if isinstance(node, Atom):
-            counts[node] = counts.get(node, 0) + 1
-        elif isinstance(node, Not):
-            counts[node.operand] = counts.get(node.operand, 0) + 1  # type: ignore[index]
-        else:
-            stack.extend(node.children())
-    return sorted(counts, key=lambda a: (-counts[a], a.key))
+    order: dict[Atom, None] = {}
+    frontier = [f]
+    while frontier:  # breadth-first
+        nxt: list[Formula] = []
+        for node in frontier:
+            if isinstance(node, Later):
+                continue
+            if isinstance(node, Atom):
+                order.setdefault(node, None)
+            elif isinstance(node, Not):
+                order.setdefault(node.operand, None)  # type: ignore[arg-type]
+            else:
+                nxt.extend(node.children())
+        frontier = nxt
+    return list(order)
 
 
 def _expand(state: Formula, step_cache: dict) -> dict[Formula, list[Cube]]:

@@ -45,30 +45,32 @@ class Cube:
 
 
 def _simplify(cubes: Iterable[Cube]) -> tuple[Cube, ...]:
-    """Merge cubes that differ in one literal, drop subsumed ones; sorted output."""
+    """Merge cubes that differ in one literal, drop subsumed ones; deterministic order."""
     items = set(cubes)
     changed = True
-    while changed:
+    while changed:  # x & c | !x & c  ->  c, until nothing merges
         changed = False
-        lst = sorted(items, key=str)
-        for i, a in enumerate(lst):
-            for b in lst[i + 1:]:
-                if a.pos | a.neg != b.pos | b.neg:
-                    continue
-                diff = (a.pos ^ b.pos)
-                if len(diff) == 1 and (a.neg ^ b.neg) == diff:
-                    x = next(iter(diff))
-                    merged = Cube(a.pos - {x}, a.neg - {x})
-                    items -= {a, b}
-                    items.add(merged)
+        for c in list(items):
+            if c not in items:
+                continue
+            for x in c.pos | c.neg:
+                if x in c.pos:
+                    twin = Cube(c.pos - {x}, c.neg | {x})
+                else:
+                    twin = Cube(c.pos | {x}, c.neg - {x})
+                if twin in items:
+                    items -= {c, twin}
+                    items.add(Cube(c.pos - {x}, c.neg - {x}))
                     changed = True
                     break
-            if changed:
-                break
     # drop a cube implied by a more general one (its literals are a superset)
     kept = [c for c in items
-            if not any(o != c and o.pos <= c.pos and o.neg <= c.neg for o in items)]
-    return tuple(sorted(kept, key=lambda c: (len(c.pos) + len(c.neg), str(c))))
+            if not any(o is not c and o.pos <= c.pos and o.neg <= c.neg for o in items)]
+    return tuple(sorted(kept, key=_cube_order))
+
+
+def _cube_order(c: Cube) -> tuple:
+    return (len(c.pos) + len(c.neg), sorted(a.key for a in c.pos), sorted(a.key for a in c.neg))
 
 
 @dataclass(frozen=True)

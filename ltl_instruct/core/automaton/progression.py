@@ -18,6 +18,7 @@ negation sits only on atoms, so that states compare structurally.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import lru_cache
 from typing import AbstractSet, Callable
 
 from ltl_instruct.core.spec.ast import (
@@ -245,9 +246,51 @@ def _consistent(cube: frozenset[Formula]) -> bool:
 
 
 def _absorb(cubes: list[frozenset[Formula]]) -> list[frozenset[Formula]]:
-    uniq = sorted(set(cubes), key=len)
+    uniq = sorted(set(cubes), key=lambda c: (len(c), sorted(map(str, c))))
     kept: list[frozenset[Formula]] = []
     for c in uniq:
         if not any(k <= c for k in kept):
             kept.append(c)
+    if len(kept) > 1:  # semantic absorption: drop a cube that implies another one
+        kept = [c for i, c in enumerate(kept)
+                if not any(j != i and _cube_implies(c, d) and not (j > i and _cube_implies(d, c))
+                           for j, d in enumerate(kept))]
     return kept
+
+
+def _cube_implies(c: frozenset[Formula], d: frozenset[Formula]) -> bool:
+    return all(any(implies(x, y) for x in c) for y in d)
+
+
+@lru_cache(maxsize=65536)
+def implies(f: Formula, g: Formula) -> bool:
+    """Sound, incomplete syntactic implication between NNF formulas (Spot-style rules).
+
+    Used to keep states small: ``F (a & F b) | F b`` is just ``F b``.
+    """
+    if f == g or g == TRUE or f == FALSE:
+        return True
+    if isinstance(g, And):
+        return all(implies(f, x) for x in g.operands)
+    if isinstance(f, Or):
+        return all(implies(x, g) for x in f.operands)
+    if isinstance(f, And) and any(implies(x, g) for x in f.operands):
+        return True
+    if isinstance(g, Or) and any(implies(f, x) for x in g.operands):
+        return True
+    # the rest of a trace may be empty: each rule below holds there too
+    if isinstance(g, Eventually):
+        if not accepts_empty(f) and implies(f, g.operand):
+            return True
+        if isinstance(f, Eventually) and implies(f.operand, g):
+            return True
+        if isinstance(f, Until) and implies(f.right, g):
+            return True
+    if isinstance(f, Always):
+        if accepts_empty(g) and implies(f.operand, g):
+            return True
+        if isinstance(g, Always) and implies(f.operand, g.operand):
+            return True
+    if isinstance(f, Until) and isinstance(g, Until):
+        return implies(f.left, g.left) and implies(f.right, g.right)
+    return False

@@ -171,7 +171,7 @@ class Atom(Formula):
     @property
     def key(self) -> str:
         """The atom's text, e.g. ``near[sofa::isbehind(pillar)]`` (a stable id)."""
-        return f"{self.skill}[{', '.join(str(a) for a in self.args)}]"
+        return str(self)
 
 
 def near(name: Union[str, Descriptor]) -> Atom:

@@ -31,7 +31,7 @@ def _fmt(f: Formula) -> str:
     if isinstance(f, Const):
         return 'true' if f.value else 'false'
     if isinstance(f, Atom):
-        return f.key
+        return f"{f.skill}[{', '.join(str(a) for a in f.args)}]"
     if isinstance(f, Not):
         return '!' + _wrap(f.operand, 90)
     if isinstance(f, WeakNext):  # not in the surface syntax: weak next = !X !f

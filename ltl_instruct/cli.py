@@ -35,40 +35,31 @@ COMMANDS: dict[str, tuple[str, str]] = {
 }
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """Top-level argument parser with every sub-command's arguments."""
+def _overview() -> argparse.ArgumentParser:
+    """Top-level parser listing the sub-commands (their own arguments load on use)."""
     parser = argparse.ArgumentParser(
         prog='ltl-instruct',
         description='Plain-English robot instructions with ordering and avoidance '
-                    'constraints, turned into verified paths.')
+                    'constraints, turned into verified paths.',
+        epilog='Run "ltl-instruct COMMAND --help" for the arguments of a command.')
     sub = parser.add_subparsers(dest='command', metavar='COMMAND')
-    for name, (module_name, help_text) in COMMANDS.items():
-        p = sub.add_parser(name, help=help_text, description=help_text)
-        p.set_defaults(_module=module_name)
-        if name in _requested(sys.argv[1:]):
-            _load(module_name).add_arguments(p)
+    for name, (_, help_text) in COMMANDS.items():
+        sub.add_parser(name, help=help_text)
     return parser
-
-
-def _requested(argv: Sequence[str]) -> set[str]:
-    return {a for a in argv if a in COMMANDS}
-
-
-def _load(module_name: str):  # noqa: ANN202 - a module object
-    return importlib.import_module(module_name)
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Entry point of the ``ltl-instruct`` console script."""
     argv = list(sys.argv[1:] if argv is None else argv)
-    parser = argparse.ArgumentParser(prog='ltl-instruct', add_help=False)
-    full = build_parser()
-    if not argv or argv[0] in ('-h', '--help') or argv[0] not in COMMANDS:
-        full.print_help()
-        return 0 if (not argv or argv[0] in ('-h', '--help')) else 2
-    module = _load(COMMANDS[argv[0]][0])
-    parser = argparse.ArgumentParser(prog=f'ltl-instruct {argv[0]}',
-                                     description=COMMANDS[argv[0]][1])
+    if not argv or argv[0] not in COMMANDS:
+        _overview().print_help()
+        if argv and argv[0] not in ('-h', '--help'):
+            print(f'\nerror: unknown command {argv[0]!r}', file=sys.stderr)
+            return 2
+        return 0
+    module_name, help_text = COMMANDS[argv[0]]
+    module = importlib.import_module(module_name)
+    parser = argparse.ArgumentParser(prog=f'ltl-instruct {argv[0]}', description=help_text)
     module.add_arguments(parser)
     args = parser.parse_args(argv[1:])
     try:

@@ -43,5 +43,8 @@ def _fmt(f: Formula) -> str:
         return f'{_wrap(f.left, f.precedence + 1)} {f.symbol} {_wrap(f.right, f.precedence)}'
     if isinstance(f, _NAry):
         # a nested node of the same class would be flattened by the parser: keep it visible
-        return f' {f.symbol} '.join(_wrap(o, f.precedence + 1) for o in f.operands)
+        # U/R/W inside & or | get parentheses too: not needed by the grammar, but people
+        # misread "F b & !b U a" (the parser gives the same AST either way)
+        return f' {f.symbol} '.join(_wrap(o, 90 if isinstance(o, _Binary) else f.precedence + 1)
+                                    for o in f.operands)
     raise TypeError(f'not a formula node: {f!r}')

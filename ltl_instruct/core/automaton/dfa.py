@@ -43,7 +43,8 @@ class Edge:
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""
-        return {'src': self.src, 'dst': self.dst, 'guard': self.guard.to_dict()}
+        return {'src': self.src, 'dst': self.dst, 'guard': self.guard.to_dict(),
+                'atoms': sorted(a.key for a in self.atoms)}
 
 
 def _current_atoms(f: Formula) -> list[Atom]:

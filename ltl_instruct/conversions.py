@@ -1,0 +1,435 @@
+"""Every ROS message <-> core type conversion, in one place.
+
+Nodes call these and nothing else to read or build messages, so the core never sees a
+message type and the message layouts are tested once. Covered:
+
+- JSON payloads on ``std_msgs/String`` (schema name + version + instruction ``id``),
+  with size limits and typed errors;
+- ``nav_msgs/Path`` <-> points (N, 3) [m];
+- ``nav_msgs/Odometry`` -> :class:`~ltl_instruct.core.world.robot.Pose` (NaN rejected);
+- ``nav_msgs/OccupancyGrid`` <-> :class:`~ltl_instruct.core.world.robot.OccupancyRaster`;
+- ``sensor_msgs/PointCloud2`` <-> float32 fields (packed with numpy: no sensor_msgs_py);
+- ``sensor_msgs/Image`` <-> numpy (rgb8, 32FC1 depth [m], 32SC1 labels), ``CameraInfo``;
+- ``visualization_msgs/MarkerArray`` of a referent map.
+
+Message packages are plain Python; this module does not import rclpy.
+"""
+from __future__ import annotations
+
+import json
+import math
+from typing import Any, Mapping, Optional, Sequence
+
+import numpy as np
+from builtin_interfaces.msg import Time
+from geometry_msgs.msg import Point, PoseStamped, Quaternion
+from nav_msgs.msg import OccupancyGrid, Odometry, Path
+from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
+from std_msgs.msg import Header, String
+from visualization_msgs.msg import Marker, MarkerArray
+
+from ltl_instruct.core.errors import InvalidInputError, LimitExceededError
+from ltl_instruct.core.grounding.rsm import ReferentMap
+from ltl_instruct.core.world.robot import OccupancyRaster, Pose
+
+SCHEMA_VERSION = 1
+MAX_PAYLOAD_BYTES = 1_000_000
+FRAME_ID = 'map'
+
+# schema names of the JSON payloads (design.md "Nodes and topics")
+INSTRUCTION = 'ltl_instruct/instruction'
+TASK_SPEC = 'ltl_instruct/task_spec'
+VERIFICATION_REQUEST = 'ltl_instruct/verification_request'
+VERIFICATION_REPLY = 'ltl_instruct/verification_reply'
+REFERENT_MAP = 'ltl_instruct/referent_map'
+PLAN_REQUEST = 'ltl_instruct/plan_request'
+SEGMENT_STATUS = 'ltl_instruct/segment_status'
+TASK_PLAN = 'ltl_instruct/task_plan'
+TASK_STATUS = 'ltl_instruct/task_status'
+SKILL_REQUEST = 'ltl_instruct/skill_request'
+SKILL_RESULT = 'ltl_instruct/skill_result'
+
+
+# ---------------------------------------------------------------------------- JSON payloads
+def _finite_json(obj: Any) -> Any:
+    """Replace non-finite floats (not valid JSON) by None, recursively."""
+    if isinstance(obj, float):
+        return obj if math.isfinite(obj) else None
+    if isinstance(obj, dict):
+        return {str(k): _finite_json(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_finite_json(v) for v in obj]
+    if isinstance(obj, np.generic):
+        return _finite_json(obj.item())
+    if isinstance(obj, np.ndarray):
+        return _finite_json(obj.tolist())
+    return obj
+
+
+def payload(schema: str, instruction_id: str, **fields: Any) -> dict[str, Any]:
+    """A JSON payload dict: ``{'schema', 'version', 'id', **fields}``."""
+    d: dict[str, Any] = {'schema': schema, 'version': SCHEMA_VERSION, 'id': instruction_id}
+    d.update(fields)
+    return d
+
+
+def json_msg(data: Mapping[str, Any]) -> String:
+    """A ``std_msgs/String`` holding ``data`` as compact JSON (non-finite floats -> null)."""
+    return String(data=json.dumps(_finite_json(dict(data)), separators=(',', ':'), allow_nan=False))
+
+
+def parse_json_payload(text: str, schema: Optional[str] = None,
+                       max_bytes: int = MAX_PAYLOAD_BYTES) -> dict[str, Any]:
+    """Parse a JSON payload and check its schema name, version and ``id``.
+
+    Raises
+    ------
+    LimitExceededError
+        If the text is longer than ``max_bytes``.
+    InvalidInputError
+        On invalid JSON, a non-object, a wrong schema or version, or a missing ``id``.
+    """
+    if len(text) > max_bytes:
+        raise LimitExceededError(f'payload of {len(text)} bytes exceeds the limit of {max_bytes}')
+    try:
+        data = json.loads(text)
+    except (ValueError, RecursionError) as e:
+        raise InvalidInputError(f'not valid JSON: {str(e)[:200]}') from None
+    if not isinstance(data, dict):
+        raise InvalidInputError(f'expected a JSON object, got {type(data).__name__}')
+    if schema is not None and data.get('schema') != schema:
+        raise InvalidInputError(f'expected schema {schema!r}, got {str(data.get("schema"))[:80]!r}',
+                                details={'id': _safe_id(data.get('id'))})
+    if schema is not None and data.get('version') != SCHEMA_VERSION:
+        raise InvalidInputError(f'unsupported {schema} version {data.get("version")!r} '
+                                f'(expected {SCHEMA_VERSION})', details={'id': _safe_id(data.get('id'))})
+    if not isinstance(data.get('id'), str) or not data['id'] or len(data['id']) > 200:
+        raise InvalidInputError('payload has no valid "id" (non-empty text up to 200 characters)')
+    return data
+
+
+def _safe_id(value: Any) -> str:
+    return value[:200] if isinstance(value, str) else ''
+
+
+def salvage_id(text: str) -> str:
+    """The ``id`` of a payload that failed validation, when one can be read, else ''."""
+    try:
+        data = json.loads(text[:MAX_PAYLOAD_BYTES])
+    except (ValueError, RecursionError):
+        return ''
+    return _safe_id(data.get('id')) if isinstance(data, dict) else ''
+
+
+# ---------------------------------------------------------------------------- time
+def stamp_key(stamp: Time) -> int:
+    """A stamp as integer nanoseconds (a key that survives the round trip through a message)."""
+    return int(stamp.sec) * 1_000_000_000 + int(stamp.nanosec)
+
+
+def stamp_from_key(key: int) -> Time:
+    """Inverse of :func:`stamp_key`."""
+    return Time(sec=int(key // 1_000_000_000), nanosec=int(key % 1_000_000_000))
+
+
+# ---------------------------------------------------------------------------- poses, paths
+def yaw_to_quaternion(yaw: float) -> Quaternion:
+    """Unit quaternion of a rotation ``yaw`` [rad] about +z."""
+    return Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2.0), w=math.cos(yaw / 2.0))
+
+
+def quaternion_to_yaw(q: Quaternion) -> float:
+    """Yaw [rad] of a quaternion (rotation about +z; roll and pitch ignored)."""
+    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+
+
+def path_headings(points: np.ndarray) -> np.ndarray:
+    """Yaw [rad] per point facing the next one (the last keeps the previous), shape (N,)."""
+    p = np.asarray(points, dtype=float)
+    n = len(p)
+    yaw = np.zeros(n)
+    if n >= 2:
+        d = np.diff(p[:, :2], axis=0)
+        seg = np.arctan2(d[:, 1], d[:, 0])
+        still = np.hypot(d[:, 0], d[:, 1]) < 1e-9
+        for i in range(n - 1):  # a vertical or zero step keeps the previous heading
+            seg[i] = seg[i - 1] if still[i] and i > 0 else seg[i]
+        yaw[:-1] = seg
+        yaw[-1] = seg[-1]
+    return yaw
+
+
+def path_msg(points: np.ndarray, stamp: Optional[Time] = None, frame_id: str = FRAME_ID) -> Path:
+    """A ``nav_msgs/Path`` through ``points`` (N, 3) [m], each pose facing the next point."""
+    p = np.asarray(points, dtype=float).reshape(-1, 3)
+    header = Header(stamp=stamp or Time(), frame_id=frame_id)
+    msg = Path(header=header)
+    for (x, y, z), yaw in zip(p, path_headings(p)):
+        ps = PoseStamped(header=header)
+        ps.pose.position = Point(x=float(x), y=float(y), z=float(z))
+        ps.pose.orientation = yaw_to_quaternion(float(yaw))
+        msg.poses.append(ps)
+    return msg
+
+
+def path_points(msg: Path, check_finite: bool = True) -> np.ndarray:
+    """Positions of a ``nav_msgs/Path`` [m], shape (N, 3).
+
+    Raises
+    ------
+    InvalidInputError
+        If ``check_finite`` and a coordinate is NaN or infinite.
+    """
+    pts = np.array([[ps.pose.position.x, ps.pose.position.y, ps.pose.position.z]
+                    for ps in msg.poses], dtype=float).reshape(-1, 3)
+    if check_finite and not np.all(np.isfinite(pts)):
+        raise InvalidInputError('path contains NaN or infinite coordinates')
+    return pts
+
+
+def odometry_msg(pose: Pose, stamp: Optional[Time] = None, velocity: Sequence[float] = (0.0, 0.0, 0.0),
+                 frame_id: str = FRAME_ID, child_frame_id: str = 'base_link') -> Odometry:
+    """A ``nav_msgs/Odometry`` of ``pose`` with linear ``velocity`` [m/s] in the map frame."""
+    msg = Odometry()
+    msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
+    msg.child_frame_id = child_frame_id
+    x, y, z = pose.position
+    msg.pose.pose.position = Point(x=float(x), y=float(y), z=float(z))
+    msg.pose.pose.orientation = yaw_to_quaternion(pose.yaw)
+    vx, vy, vz = (float(v) for v in velocity)
+    msg.twist.twist.linear.x, msg.twist.twist.linear.y, msg.twist.twist.linear.z = vx, vy, vz
+    return msg
+
+
+def odometry_pose(msg: Odometry) -> Pose:
+    """The pose in an odometry message.
+
+    Raises
+    ------
+    InvalidInputError
+        On a NaN or infinite position or orientation.
+    """
+    p = msg.pose.pose.position
+    q = msg.pose.pose.orientation
+    values = (p.x, p.y, p.z, q.x, q.y, q.z, q.w)
+    if not all(math.isfinite(v) for v in values):
+        raise InvalidInputError('odometry contains NaN or infinite values')
+    return Pose((float(p.x), float(p.y), float(p.z)), quaternion_to_yaw(q))
+
+
+# ---------------------------------------------------------------------------- occupancy grid
+def occupancy_grid_msg(raster: OccupancyRaster, stamp: Optional[Time] = None,
+                       frame_id: str = FRAME_ID) -> OccupancyGrid:
+    """A ``nav_msgs/OccupancyGrid`` of ``raster`` (row-major, origin at cell (0, 0)'s corner)."""
+    msg = OccupancyGrid()
+    msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
+    msg.info.resolution = float(raster.resolution)
+    msg.info.width = raster.width
+    msg.info.height = raster.height
+    msg.info.origin.position = Point(x=raster.origin[0], y=raster.origin[1], z=0.0)
+    msg.info.origin.orientation = Quaternion(w=1.0)
+    msg.data = raster.cells.astype(np.int8).ravel().tolist()
+    return msg
+
+
+def occupancy_raster(msg: OccupancyGrid) -> OccupancyRaster:
+    """The grid of an ``OccupancyGrid`` message (origin rotation must be identity).
+
+    Raises
+    ------
+    InvalidInputError
+        On an empty grid, a data length that does not match, a non-positive or
+        non-finite resolution, or a rotated origin.
+    """
+    info = msg.info
+    w, h = int(info.width), int(info.height)
+    if w == 0 or h == 0:
+        raise InvalidInputError('the map is empty (0 cells)')
+    if not (info.resolution > 0.0 and math.isfinite(info.resolution)):
+        raise InvalidInputError(f'map resolution must be positive, got {info.resolution}')
+    if len(msg.data) != w * h:
+        raise InvalidInputError(f'map data has {len(msg.data)} cells, expected {w}x{h}')
+    q = info.origin.orientation
+    if abs(quaternion_to_yaw(q)) > 1e-6:
+        raise InvalidInputError('rotated map origins are not supported')
+    o = info.origin.position
+    if not (math.isfinite(o.x) and math.isfinite(o.y)):
+        raise InvalidInputError('map origin is not finite')
+    cells = np.asarray(msg.data, dtype=np.int8).reshape(h, w)
+    return OccupancyRaster(cells, float(info.resolution), (float(o.x), float(o.y)))
+
+
+# ---------------------------------------------------------------------------- point clouds
+def point_cloud_msg(points: np.ndarray, values: Optional[Mapping[str, np.ndarray]] = None,
+                    stamp: Optional[Time] = None, frame_id: str = FRAME_ID) -> PointCloud2:
+    """An unorganised ``PointCloud2`` with float32 fields x, y, z and any extra ``values``.
+
+    Parameters
+    ----------
+    points: positions [m], shape (N, 3).
+    values: extra per-point float fields, each shape (N,) (e.g. ``{'value': ...}``).
+    """
+    p = np.asarray(points, dtype=np.float32).reshape(-1, 3)
+    names = ['x', 'y', 'z'] + list(values or {})
+    cols = [p[:, 0], p[:, 1], p[:, 2]] + [np.asarray(v, dtype=np.float32).reshape(-1)
+                                          for v in (values or {}).values()]
+    for c in cols:
+        if c.shape[0] != p.shape[0]:
+            raise InvalidInputError('every point-cloud field needs one value per point')
+    rec = np.zeros(p.shape[0], dtype=[(n, '<f4') for n in names])
+    for n, c in zip(names, cols):
+        rec[n] = c
+    msg = PointCloud2()
+    msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
+    msg.height = 1
+    msg.width = int(p.shape[0])
+    msg.fields = [PointField(name=n, offset=4 * i, datatype=PointField.FLOAT32, count=1)
+                  for i, n in enumerate(names)]
+    msg.is_bigendian = False
+    msg.point_step = 4 * len(names)
+    msg.row_step = msg.point_step * msg.width
+    msg.is_dense = True
+    msg.data = rec.tobytes()
+    return msg
+
+
+def point_cloud_fields(msg: PointCloud2) -> dict[str, np.ndarray]:
+    """Every FLOAT32 field of a little-endian ``PointCloud2`` as a float32 array, shape (N,).
+
+    Raises
+    ------
+    InvalidInputError
+        On big-endian data, a non-float32 field, or a data size that does not match.
+    """
+    if msg.is_bigendian:
+        raise InvalidInputError('big-endian point clouds are not supported')
+    n = int(msg.width) * int(msg.height)
+    if len(msg.data) != n * int(msg.point_step):
+        raise InvalidInputError(f'point cloud data has {len(msg.data)} bytes, expected '
+                                f'{n} x {msg.point_step}')
+    dtype = {'names': [], 'formats': [], 'offsets': [], 'itemsize': int(msg.point_step)}
+    for f in msg.fields:
+        if f.datatype != PointField.FLOAT32 or f.count != 1:
+            raise InvalidInputError(f'point-cloud field {f.name!r} is not a single float32')
+        dtype['names'].append(f.name)
+        dtype['formats'].append('<f4')
+        dtype['offsets'].append(int(f.offset))
+    rec = np.frombuffer(bytes(msg.data), dtype=np.dtype(dtype), count=n)
+    return {name: np.array(rec[name]) for name in dtype['names']}
+
+
+def point_cloud_xyz(msg: PointCloud2) -> np.ndarray:
+    """Positions of a ``PointCloud2`` [m], shape (N, 3) float32, non-finite rows dropped."""
+    f = point_cloud_fields(msg)
+    if not {'x', 'y', 'z'} <= set(f):
+        raise InvalidInputError('point cloud lacks x, y or z')
+    p = np.stack([f['x'], f['y'], f['z']], axis=1)
+    return p[np.all(np.isfinite(p), axis=1)]
+
+
+# ---------------------------------------------------------------------------- images
+_ENCODINGS = {'rgb8': (np.uint8, 3), '32FC1': (np.float32, 1), '32SC1': (np.int32, 1),
+              'mono8': (np.uint8, 1), '16UC1': (np.uint16, 1)}
+
+
+def image_msg(array: np.ndarray, encoding: str, stamp: Optional[Time] = None,
+              frame_id: str = 'camera_optical') -> Image:
+    """A ``sensor_msgs/Image`` of ``array``: rgb8 (H, W, 3) uint8, 32FC1 (H, W) depth [m], 32SC1 labels."""
+    if encoding not in _ENCODINGS:
+        raise InvalidInputError(f'unsupported image encoding {encoding!r}')
+    dtype, channels = _ENCODINGS[encoding]
+    a = np.ascontiguousarray(np.asarray(array), dtype=np.dtype(dtype).newbyteorder('<'))
+    if (channels == 1 and a.ndim != 2) or (channels > 1 and (a.ndim != 3 or a.shape[2] != channels)):
+        raise InvalidInputError(f'{encoding} image needs shape (H, W{", %d" % channels if channels > 1 else ""})'
+                                f', got {a.shape}')
+    msg = Image()
+    msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
+    msg.height, msg.width = int(a.shape[0]), int(a.shape[1])
+    msg.encoding = encoding
+    msg.is_bigendian = 0
+    msg.step = int(a.shape[1] * a.itemsize * channels)
+    msg.data = a.tobytes()
+    return msg
+
+
+def image_array(msg: Image) -> np.ndarray:
+    """The pixels of a ``sensor_msgs/Image`` (encodings as in :func:`image_msg`).
+
+    Raises
+    ------
+    InvalidInputError
+        On an unsupported encoding or a size that does not match.
+    """
+    if msg.encoding not in _ENCODINGS:
+        raise InvalidInputError(f'unsupported image encoding {msg.encoding!r}')
+    dtype, channels = _ENCODINGS[msg.encoding]
+    dt = np.dtype(dtype).newbyteorder('>' if msg.is_bigendian else '<')
+    row = msg.width * channels * dt.itemsize
+    if msg.step < row or len(msg.data) != msg.step * msg.height:
+        raise InvalidInputError(f'image data of {len(msg.data)} bytes does not match '
+                                f'{msg.height} rows of {msg.step} bytes')
+    raw = np.frombuffer(bytes(msg.data), dtype=np.uint8).reshape(msg.height, msg.step)[:, :row]
+    a = np.ascontiguousarray(raw).view(dt).reshape(msg.height, msg.width, channels)
+    return (a[:, :, 0] if channels == 1 else a).astype(dt.newbyteorder('='))
+
+
+def camera_info_msg(width: int, height: int, fx: float, fy: float, cx: float, cy: float,
+                    stamp: Optional[Time] = None, frame_id: str = 'camera_optical') -> CameraInfo:
+    """A ``CameraInfo`` of a pinhole camera without distortion (intrinsics in pixels)."""
+    msg = CameraInfo()
+    msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
+    msg.width, msg.height = int(width), int(height)
+    msg.distortion_model = 'plumb_bob'
+    msg.d = [0.0] * 5
+    msg.k = [float(fx), 0.0, float(cx), 0.0, float(fy), float(cy), 0.0, 0.0, 1.0]
+    msg.r = [1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0]
+    msg.p = [float(fx), 0.0, float(cx), 0.0, 0.0, float(fy), float(cy), 0.0, 0.0, 0.0, 1.0, 0.0]
+    return msg
+
+
+def camera_intrinsics(msg: CameraInfo) -> tuple[int, int, float, float, float, float]:
+    """``(width, height, fx, fy, cx, cy)`` of a ``CameraInfo``.
+
+    Raises
+    ------
+    InvalidInputError
+        On a zero size or non-finite/non-positive focal lengths.
+    """
+    k = list(msg.k)
+    fx, fy, cx, cy = k[0], k[4], k[2], k[5]
+    if msg.width == 0 or msg.height == 0 or not all(math.isfinite(v) for v in (fx, fy, cx, cy)) \
+            or fx <= 0 or fy <= 0:
+        raise InvalidInputError('camera_info has no valid intrinsics')
+    return int(msg.width), int(msg.height), float(fx), float(fy), float(cx), float(cy)
+
+
+# ---------------------------------------------------------------------------- markers
+def referent_markers(rmap: ReferentMap, stamp: Optional[Time] = None,
+                     namespace: str = 'referents') -> MarkerArray:
+    """One cube and one text marker per resolved instance (green: resolved, orange: ambiguous)."""
+    out = MarkerArray()
+    clear = Marker(action=Marker.DELETEALL)
+    clear.header = Header(stamp=stamp or Time(), frame_id=rmap.frame_id)
+    out.markers.append(clear)
+    mid = 0
+    for descriptor, g in sorted(rmap.groundings.items()):
+        for inst in g.instances:
+            for kind in (Marker.CUBE, Marker.TEXT_VIEW_FACING):
+                m = Marker()
+                m.header = Header(stamp=stamp or Time(), frame_id=rmap.frame_id)
+                m.ns, m.id, m.type, m.action = namespace, mid, kind, Marker.ADD
+                mid += 1
+                x, y, z = inst.center
+                m.pose.position = Point(x=float(x), y=float(y), z=float(z))
+                m.pose.orientation = Quaternion(w=1.0)
+                sx, sy, sz = (max(float(s), 0.1) for s in inst.size)
+                ok = g.outcome.value == 'RESOLVED'
+                m.color.r, m.color.g, m.color.b, m.color.a = (0.1, 0.8, 0.2, 0.6) if ok else (1.0, 0.6, 0.0, 0.6)
+                if kind == Marker.CUBE:
+                    m.scale.x, m.scale.y, m.scale.z = sx, sy, sz
+                else:
+                    m.pose.position.z = float(z) + sz / 2.0 + 0.3
+                    m.scale.z = 0.3
+                    m.text = f'{descriptor} ({inst.id})'
+                out.markers.append(m)
+    return out

@@ -1,0 +1,194 @@
+"""Execution monitoring: progress the task automaton with the robot's pose and skill events.
+
+While the robot moves, every new pose (and every pick or release that succeeded) is
+turned into a letter (the set of atoms true there) and read by the automaton. The
+verdict is
+
+- ``satisfied`` when the automaton is in an accepting state (the robot may stop),
+- ``violated`` when acceptance is no longer reachable (with the atoms that did it),
+- ``progressing`` otherwise.
+
+``near[x]`` is true within ``near_threshold`` [m] of the box of an instance that the
+descriptor ``x`` resolved to in the referent map (in the plane for a ground robot,
+``dims=2``; in 3D for a drone). This module never imports rclpy.
+"""
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass, field
+from typing import AbstractSet, Iterable, Optional, Sequence
+
+import numpy as np
+
+from ltl_instruct.core.automaton import Automaton
+from ltl_instruct.core.errors import InvalidInputError
+from ltl_instruct.core.grounding.rsm import Instance, ReferentMap
+from ltl_instruct.core.spec import Atom
+
+
+class Verdict(str, enum.Enum):
+    """Where the task stands during execution."""
+
+    PROGRESSING = 'progressing'
+    SATISFIED = 'satisfied'
+    VIOLATED = 'violated'
+
+
+@dataclass(frozen=True)
+class MonitorReport:
+    """The result of reading one letter.
+
+    Attributes
+    ----------
+    step: number of letters read so far (1 after the first).
+    state: automaton state after the letter.
+    previous_state: automaton state before it.
+    verdict: progressing, satisfied or violated.
+    letter: keys of the atoms true in the letter, sorted.
+    blamed_atoms: on a violation, the atoms whose truth caused it (keys, sorted);
+        empty otherwise, or when the violation came from an atom being false.
+    """
+
+    step: int
+    state: int
+    previous_state: int
+    verdict: Verdict
+    letter: tuple[str, ...]
+    blamed_atoms: tuple[str, ...] = ()
+
+    @property
+    def changed(self) -> bool:
+        """True when the automaton moved to another state."""
+        return self.state != self.previous_state
+
+    def to_dict(self) -> dict:
+        """JSON-ready dict."""
+        return {'step': self.step, 'state': self.state, 'previous_state': self.previous_state,
+                'verdict': self.verdict.value, 'letter': list(self.letter),
+                'blamed_atoms': list(self.blamed_atoms)}
+
+
+def near_atom_holds(instances: Sequence[Instance], position: np.ndarray, threshold: float,
+                    dims: int) -> bool:
+    """Whether ``position`` [m] (shape (3,)) lies within ``threshold`` [m] of any instance box."""
+    return any(float(inst.distance(position, dims=dims)[0]) <= threshold for inst in instances)
+
+
+@dataclass(frozen=True)
+class LetterMaker:
+    """Turns a position and the events of a step into a letter over an automaton's atoms.
+
+    Attributes
+    ----------
+    atoms: the automaton's atoms.
+    referent_map: instances per descriptor text.
+    near_threshold: nearness radius [m].
+    dims: 2 (ground robot, distances in the plane) or 3 (drone).
+    """
+
+    atoms: tuple[Atom, ...]
+    referent_map: ReferentMap
+    near_threshold: float = 1.0
+    dims: int = 2
+    _near: tuple[tuple[Atom, tuple[Instance, ...]], ...] = field(init=False, default=())
+
+    def __post_init__(self) -> None:
+        if not (self.near_threshold >= 0.0 and math.isfinite(self.near_threshold)):
+            raise InvalidInputError(f'near_threshold must be >= 0, got {self.near_threshold}')
+        if self.dims not in (2, 3):
+            raise InvalidInputError(f'dims must be 2 or 3, got {self.dims}')
+        near = tuple((a, self.referent_map.instances(str(a.args[0])))
+                     for a in self.atoms if a.skill == 'near')
+        object.__setattr__(self, '_near', near)
+
+    def letter(self, position: Sequence[float], events: Iterable[Atom] = ()) -> frozenset[Atom]:
+        """Atoms true at ``position`` [m] (shape (3,)), plus the given event atoms.
+
+        Raises
+        ------
+        InvalidInputError
+            On a position that is not 3 finite numbers, or more than one event.
+        """
+        p = np.asarray(position, dtype=float)
+        if p.shape != (3,) or not np.all(np.isfinite(p)):
+            raise InvalidInputError(f'a position must be 3 finite numbers, got {position!r}')
+        true = {a for a, insts in self._near
+                if near_atom_holds(insts, p, self.near_threshold, self.dims)}
+        ev = [e for e in events if e in self.atoms]
+        if len(ev) > 1:
+            raise InvalidInputError('at most one pick or release per step: '
+                                    + ', '.join(e.key for e in ev))
+        true.update(ev)
+        return frozenset(true)
+
+
+class ExecutionMonitor:
+    """Progresses an automaton along the executed trace and reports a verdict per letter.
+
+    Parameters
+    ----------
+    automaton: the task automaton.
+    letters: how positions and events become letters.
+    state: the automaton state to start from (its initial state by default); the
+        first letter read is the one at the robot's start pose.
+    """
+
+    def __init__(self, automaton: Automaton, letters: LetterMaker,
+                 state: Optional[int] = None) -> None:
+        self.automaton = automaton
+        self.letters = letters
+        self.state = automaton.initial if state is None else int(state)
+        if not 0 <= self.state < automaton.num_states:
+            raise InvalidInputError(f'no automaton state {state}')
+        self.steps = 0
+        self.last: Optional[MonitorReport] = None
+
+    def verdict_of(self, state: int) -> Verdict:
+        """The verdict of being in ``state``."""
+        if state in self.automaton.accepting:
+            return Verdict.SATISFIED
+        if self.automaton.distance_to_accepting(state) is None:
+            return Verdict.VIOLATED
+        return Verdict.PROGRESSING
+
+    def with_referent_map(self, referent_map: ReferentMap) -> 'ExecutionMonitor':
+        """A monitor in the same state that reads letters with a new referent map."""
+        m = ExecutionMonitor(self.automaton, LetterMaker(
+            self.letters.atoms, referent_map, self.letters.near_threshold, self.letters.dims),
+            self.state)
+        m.steps, m.last = self.steps, self.last
+        return m
+
+    def update(self, position: Sequence[float], events: Iterable[Atom] = ()) -> MonitorReport:
+        """Read the letter at ``position`` [m] with ``events``; return the report.
+
+        Once violated, the monitor stays violated (the sink absorbs); once satisfied
+        it keeps reading (a later letter may still break an obligation in a
+        non-accepting continuation, which the automaton tracks).
+        """
+        letter = self.letters.letter(position, events)
+        return self.read(letter)
+
+    def read(self, letter: AbstractSet[Atom]) -> MonitorReport:
+        """Read an already-built letter; return the report."""
+        before = self.state
+        after = self.automaton.step(before, letter)
+        verdict = self.verdict_of(after)
+        blamed: tuple[str, ...] = ()
+        if verdict is Verdict.VIOLATED and self.verdict_of(before) is not Verdict.VIOLATED:
+            blamed = self._blame(before, letter)
+        self.state = after
+        self.steps += 1
+        self.last = MonitorReport(self.steps, after, before, verdict,
+                                  tuple(sorted(a.key for a in letter)), blamed)
+        return self.last
+
+    def _blame(self, state: int, letter: AbstractSet[Atom]) -> tuple[str, ...]:
+        """Atoms of ``letter`` without which the step would not have been fatal."""
+        out = []
+        for a in letter:
+            alt = self.automaton.step(state, frozenset(letter) - {a})
+            if self.automaton.distance_to_accepting(alt) is not None:
+                out.append(a.key)
+        return tuple(sorted(out))

@@ -67,14 +67,14 @@ def _finite_json(obj: Any) -> Any:
 
 
 def payload(schema: str, instruction_id: str, **fields: Any) -> dict[str, Any]:
-    """A JSON payload dict: ``{'schema', 'version', 'id', **fields}``."""
+    """Return a JSON payload dict: ``{'schema', 'version', 'id', **fields}``."""
     d: dict[str, Any] = {'schema': schema, 'version': SCHEMA_VERSION, 'id': instruction_id}
     d.update(fields)
     return d
 
 
 def json_msg(data: Mapping[str, Any]) -> String:
-    """A ``std_msgs/String`` holding ``data`` as compact JSON (non-finite floats -> null)."""
+    """Return a ``std_msgs/String`` holding ``data`` as compact JSON (non-finite floats -> null)."""
     return String(data=json.dumps(_finite_json(dict(data)), separators=(',', ':'), allow_nan=False))
 
 
@@ -113,7 +113,7 @@ def _safe_id(value: Any) -> str:
 
 
 def salvage_id(text: str) -> str:
-    """The ``id`` of a payload that failed validation, when one can be read, else ''."""
+    """Return the ``id`` of a payload that failed validation, when one can be read, else ''."""
     try:
         data = json.loads(text[:MAX_PAYLOAD_BYTES])
     except (ValueError, RecursionError):
@@ -123,7 +123,7 @@ def salvage_id(text: str) -> str:
 
 # ---------------------------------------------------------------------------- time
 def stamp_key(stamp: Time) -> int:
-    """A stamp as integer nanoseconds (a key that survives the round trip through a message)."""
+    """Return a stamp as integer nanoseconds (a key that survives the round trip through a message)."""
     return int(stamp.sec) * 1_000_000_000 + int(stamp.nanosec)
 
 
@@ -134,7 +134,7 @@ def stamp_from_key(key: int) -> Time:
 
 # ---------------------------------------------------------------------------- poses, paths
 def yaw_to_quaternion(yaw: float) -> Quaternion:
-    """Unit quaternion of a rotation ``yaw`` [rad] about +z."""
+    """Return the unit quaternion of a rotation ``yaw`` [rad] about +z."""
     return Quaternion(x=0.0, y=0.0, z=math.sin(yaw / 2.0), w=math.cos(yaw / 2.0))
 
 
@@ -160,7 +160,7 @@ def path_headings(points: np.ndarray) -> np.ndarray:
 
 
 def path_msg(points: np.ndarray, stamp: Optional[Time] = None, frame_id: str = FRAME_ID) -> Path:
-    """A ``nav_msgs/Path`` through ``points`` (N, 3) [m], each pose facing the next point."""
+    """Return a ``nav_msgs/Path`` through ``points`` (N, 3) [m], each pose facing the next point."""
     p = np.asarray(points, dtype=float).reshape(-1, 3)
     header = Header(stamp=stamp or Time(), frame_id=frame_id)
     msg = Path(header=header)
@@ -189,7 +189,7 @@ def path_points(msg: Path, check_finite: bool = True) -> np.ndarray:
 
 def odometry_msg(pose: Pose, stamp: Optional[Time] = None, velocity: Sequence[float] = (0.0, 0.0, 0.0),
                  frame_id: str = FRAME_ID, child_frame_id: str = 'base_link') -> Odometry:
-    """A ``nav_msgs/Odometry`` of ``pose`` with linear ``velocity`` [m/s] in the map frame."""
+    """Return a ``nav_msgs/Odometry`` of ``pose`` with linear ``velocity`` [m/s] in the map frame."""
     msg = Odometry()
     msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
     msg.child_frame_id = child_frame_id
@@ -202,7 +202,7 @@ def odometry_msg(pose: Pose, stamp: Optional[Time] = None, velocity: Sequence[fl
 
 
 def odometry_pose(msg: Odometry) -> Pose:
-    """The pose in an odometry message.
+    """Return the pose in an odometry message.
 
     Raises
     ------
@@ -220,7 +220,7 @@ def odometry_pose(msg: Odometry) -> Pose:
 # ---------------------------------------------------------------------------- occupancy grid
 def occupancy_grid_msg(raster: OccupancyRaster, stamp: Optional[Time] = None,
                        frame_id: str = FRAME_ID) -> OccupancyGrid:
-    """A ``nav_msgs/OccupancyGrid`` of ``raster`` (row-major, origin at cell (0, 0)'s corner)."""
+    """Return a ``nav_msgs/OccupancyGrid`` of ``raster`` (row-major, origin at cell (0, 0)'s corner)."""
     msg = OccupancyGrid()
     msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
     msg.info.resolution = float(raster.resolution)
@@ -233,7 +233,7 @@ def occupancy_grid_msg(raster: OccupancyRaster, stamp: Optional[Time] = None,
 
 
 def occupancy_raster(msg: OccupancyGrid) -> OccupancyRaster:
-    """The grid of an ``OccupancyGrid`` message (origin rotation must be identity).
+    """Return the grid of an ``OccupancyGrid`` message (origin rotation must be identity).
 
     Raises
     ------
@@ -262,7 +262,7 @@ def occupancy_raster(msg: OccupancyGrid) -> OccupancyRaster:
 # ---------------------------------------------------------------------------- point clouds
 def point_cloud_msg(points: np.ndarray, values: Optional[Mapping[str, np.ndarray]] = None,
                     stamp: Optional[Time] = None, frame_id: str = FRAME_ID) -> PointCloud2:
-    """An unorganised ``PointCloud2`` with float32 fields x, y, z and any extra ``values``.
+    """Return an unorganised ``PointCloud2`` with float32 fields x, y, z and any extra ``values``.
 
     Parameters
     ----------
@@ -334,14 +334,14 @@ _ENCODINGS = {'rgb8': (np.uint8, 3), '32FC1': (np.float32, 1), '32SC1': (np.int3
 
 def image_msg(array: np.ndarray, encoding: str, stamp: Optional[Time] = None,
               frame_id: str = 'camera_optical') -> Image:
-    """A ``sensor_msgs/Image`` of ``array``: rgb8 (H, W, 3) uint8, 32FC1 (H, W) depth [m], 32SC1 labels."""
+    """Return an ``Image`` of ``array``: rgb8 (H, W, 3) uint8, 32FC1 (H, W) depth [m], 32SC1 labels."""
     if encoding not in _ENCODINGS:
         raise InvalidInputError(f'unsupported image encoding {encoding!r}')
     dtype, channels = _ENCODINGS[encoding]
     a = np.ascontiguousarray(np.asarray(array), dtype=np.dtype(dtype).newbyteorder('<'))
     if (channels == 1 and a.ndim != 2) or (channels > 1 and (a.ndim != 3 or a.shape[2] != channels)):
-        raise InvalidInputError(f'{encoding} image needs shape (H, W{", %d" % channels if channels > 1 else ""})'
-                                f', got {a.shape}')
+        shape = '(H, W, %d)' % channels if channels > 1 else '(H, W)'
+        raise InvalidInputError(f'{encoding} image needs shape {shape}, got {a.shape}')
     msg = Image()
     msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
     msg.height, msg.width = int(a.shape[0]), int(a.shape[1])
@@ -353,7 +353,7 @@ def image_msg(array: np.ndarray, encoding: str, stamp: Optional[Time] = None,
 
 
 def image_array(msg: Image) -> np.ndarray:
-    """The pixels of a ``sensor_msgs/Image`` (encodings as in :func:`image_msg`).
+    """Return the pixels of a ``sensor_msgs/Image`` (encodings as in :func:`image_msg`).
 
     Raises
     ------
@@ -375,7 +375,7 @@ def image_array(msg: Image) -> np.ndarray:
 
 def camera_info_msg(width: int, height: int, fx: float, fy: float, cx: float, cy: float,
                     stamp: Optional[Time] = None, frame_id: str = 'camera_optical') -> CameraInfo:
-    """A ``CameraInfo`` of a pinhole camera without distortion (intrinsics in pixels)."""
+    """Return a ``CameraInfo`` of a pinhole camera without distortion (intrinsics in pixels)."""
     msg = CameraInfo()
     msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
     msg.width, msg.height = int(width), int(height)
@@ -424,7 +424,8 @@ def referent_markers(rmap: ReferentMap, stamp: Optional[Time] = None,
                 m.pose.orientation = Quaternion(w=1.0)
                 sx, sy, sz = (max(float(s), 0.1) for s in inst.size)
                 ok = g.outcome.value == 'RESOLVED'
-                m.color.r, m.color.g, m.color.b, m.color.a = (0.1, 0.8, 0.2, 0.6) if ok else (1.0, 0.6, 0.0, 0.6)
+                rgba = (0.1, 0.8, 0.2, 0.6) if ok else (1.0, 0.6, 0.0, 0.6)
+                m.color.r, m.color.g, m.color.b, m.color.a = rgba
                 if kind == Marker.CUBE:
                     m.scale.x, m.scale.y, m.scale.z = sx, sy, sz
                 else:

@@ -145,7 +145,7 @@ class ExecutionMonitor:
         self.last: Optional[MonitorReport] = None
 
     def verdict_of(self, state: int) -> Verdict:
-        """The verdict of being in ``state``."""
+        """Return the verdict of being in ``state``."""
         if state in self.automaton.accepting:
             return Verdict.SATISFIED
         if self.automaton.distance_to_accepting(state) is None:
@@ -153,7 +153,7 @@ class ExecutionMonitor:
         return Verdict.PROGRESSING
 
     def with_referent_map(self, referent_map: ReferentMap) -> 'ExecutionMonitor':
-        """A monitor in the same state that reads letters with a new referent map."""
+        """Return a monitor in the same state that reads letters with a new referent map."""
         m = ExecutionMonitor(self.automaton, LetterMaker(
             self.letters.atoms, referent_map, self.letters.near_threshold, self.letters.dims),
             self.state)

@@ -24,7 +24,7 @@ def builtin_scene_names() -> tuple[str, ...]:
 
 
 def builtin_scene_path(name: str) -> Path:
-    """The file of a built-in scene.
+    """Return the file of a built-in scene.
 
     Raises
     ------

@@ -229,7 +229,7 @@ class SimulatedWorld:
         return tuple(self._objects.values())
 
     def current_scene(self) -> Scene:
-        """The scene with objects at their current positions (for the camera)."""
+        """Return the scene with objects at their current positions (for the camera)."""
         return replace(self.scene, objects=self.objects())
 
     def step(self, dt: float) -> Pose:
@@ -249,7 +249,7 @@ class SimulatedWorld:
 
     def find_object(self, object_id: str = '', near_point: Optional[Sequence[float]] = None,
                     name: str = '') -> Optional[SceneObject]:
-        """The object with ``object_id``; else the one whose label matches ``name`` nearest ``near_point``.
+        """Find the object ``object_id``, else the one matching ``name`` nearest ``near_point``.
 
         ``name`` is a snake_case descriptor name (``plush_toy`` matches ``green plush toy``).
         """

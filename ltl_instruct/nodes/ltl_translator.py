@@ -1,0 +1,216 @@
+"""``ltl_translator``: English instruction -> task formula, shown to a person for checking.
+
+Subscribes ``instruction`` (std_msgs/String): plain English text, or a JSON payload
+``{"schema": "ltl_instruct/instruction", "version": 1, "id": ..., "text": ...}`` that
+may give a ``formula`` instead of text (parsed with the formula grammar, never run).
+Each instruction gets an ``id`` (the given one, else ``<node prefix>-<n>``).
+
+Publishes ``verification/request`` (the formula, its referents and the ordered
+subgoals in English) and ``task_spec`` (latched JSON). With ``require_confirmation``
+the task spec waits for ``verification/reply`` ``{"id", "accept": true|false}``;
+otherwise it is accepted at once. A failed translation is still published on
+``task_spec`` (``ok: false`` with a typed error), so that ``task_progression`` ends the
+instruction with one terminal ``failed`` status: nothing is dropped.
+"""
+from __future__ import annotations
+
+import os
+import queue
+import sys
+import threading
+import time
+from typing import Any, Optional
+
+from rclpy.node import Node
+from std_msgs.msg import String
+
+from ltl_instruct import conversions as conv
+from ltl_instruct.core.automaton.english import describe_task
+from ltl_instruct.core.errors import (
+    ErrorCode, InvalidInputError, LimitExceededError, LtlInstructError, TranslationError,
+)
+from ltl_instruct.core.spec import avoided_referents_of, parse_formula, referents_of
+from ltl_instruct.nodes.common import ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node
+
+PARAMS = (
+    ParamSpec('backend', 'offline', 'translator backend', choices=('offline', 'llm', 'learned')),
+    ParamSpec('model_path', '', 'model directory or file for the llm/learned backends ("" = default)'),
+    ParamSpec('require_confirmation', False,
+              'wait for verification/reply before publishing the task spec'),
+    ParamSpec('confirmation_timeout', 120.0, 'how long to wait for verification/reply [s]', 1.0, 3600.0),
+    ParamSpec('max_instruction_chars', 2000, 'longest instruction accepted [characters]', 10, 100000),
+)
+
+
+class LtlTranslatorNode(Node):
+    """Instruction in, verification request and task spec out."""
+
+    def __init__(self) -> None:
+        super().__init__('ltl_translator')
+        self.params = declare_parameters(self, PARAMS)
+        self._translator: Any = None
+        self._translator_error: Optional[LtlInstructError] = None
+        self._prefix = os.urandom(3).hex()
+        self._count = 0
+        self._jobs: queue.Queue = queue.Queue()
+        self._replies: dict[str, bool] = {}
+        self._reply_event = threading.Condition()
+        self._closing = threading.Event()
+        self.spec_pub = self.create_publisher(String, 'task_spec', latched_qos())
+        self.verify_pub = self.create_publisher(String, 'verification/request', latched_qos())
+        self.create_subscription(String, 'instruction', self.on_instruction, reliable_qos())
+        self.create_subscription(String, 'verification/reply', self.on_reply, reliable_qos())
+        self._worker = threading.Thread(target=self._work, name='translate', daemon=True)
+        self._worker.start()
+        self.get_logger().info(f'ltl_translator: backend {self.params["backend"]}')
+
+    # ------------------------------------------------------------------ callbacks
+    def on_instruction(self, msg: String) -> None:
+        """Give the instruction an id and queue it (translation runs in the worker thread)."""
+        self._count += 1
+        fallback_id = f'{self._prefix}-{self._count}'
+        self._jobs.put((fallback_id, msg.data, time.monotonic()))
+
+    def on_reply(self, msg: String) -> None:
+        """Record a person's answer to a verification request."""
+        try:
+            reply = conv.parse_json_payload(msg.data, conv.VERIFICATION_REPLY)
+        except LtlInstructError as e:
+            self.get_logger().warning(f'verification reply rejected: {e.message}')
+            return
+        with self._reply_event:
+            self._replies[reply['id']] = bool(reply.get('accept', False))
+            self._reply_event.notify_all()
+
+    # ------------------------------------------------------------------ work
+    def close(self) -> None:
+        """Stop the worker thread."""
+        self._closing.set()
+        self._jobs.put(None)
+
+    def _work(self) -> None:
+        while not self._closing.is_set():
+            job = self._jobs.get()
+            if job is None:
+                return
+            fallback_id, text, received = job
+            try:
+                self._serve(fallback_id, text, received)
+            except Exception as e:  # noqa: BLE001 - a bug must not kill the worker or lose the instruction
+                self.get_logger().error(f'internal error on {fallback_id}: {e!r}')
+                self._publish_spec(fallback_id, '', received, error=LtlInstructError(
+                    f'internal error: {e!r}', ErrorCode.INTERNAL_ERROR))
+
+    def _read_instruction(self, fallback_id: str, text: str) -> tuple[str, str, Optional[str]]:
+        """``(id, text, formula or None)`` of an instruction message."""
+        limit = self.params['max_instruction_chars']
+        stripped = text.strip()
+        if stripped.startswith('{'):
+            data = conv.parse_json_payload(stripped, conv.INSTRUCTION)
+            body, formula = data.get('text', ''), data.get('formula')
+            if not isinstance(body, str) or (formula is not None and not isinstance(formula, str)):
+                raise InvalidInputError('instruction "text" and "formula" must be strings',
+                                        details={'id': data['id']})
+            if not body.strip() and not formula:
+                raise InvalidInputError('instruction has neither "text" nor "formula"',
+                                        details={'id': data['id']})
+            if len(body) > limit or (formula and len(formula) > limit):
+                raise LimitExceededError(f'instruction longer than {limit} characters',
+                                         details={'id': data['id']})
+            return data['id'], body, formula
+        if len(text) > limit:
+            raise LimitExceededError(f'instruction of {len(text)} characters exceeds the limit of {limit}')
+        if not stripped:
+            raise InvalidInputError('empty instruction')
+        return fallback_id, text, None
+
+    def _serve(self, fallback_id: str, text: str, received: float) -> None:
+        iid = fallback_id
+        try:
+            iid, body, formula_text = self._read_instruction(fallback_id, text)
+        except LtlInstructError as e:
+            iid = str(e.details.get('id') or conv.salvage_id(text) or fallback_id)
+            self._publish_spec(iid, text[:200], received, error=e)
+            return
+        started = time.monotonic()
+        try:
+            if formula_text is not None:
+                formula = parse_formula(formula_text)
+                backend, notes = 'formula', ()
+            else:
+                translation = self._translate(body)
+                formula, backend, notes = translation.formula, translation.backend, translation.notes
+            description = describe_task(formula)
+        except LtlInstructError as e:
+            self._publish_spec(iid, body, received, error=e)
+            return
+        except RecursionError:
+            self._publish_spec(iid, body, received, error=LimitExceededError('instruction nests too deeply'))
+            return
+        elapsed = time.monotonic() - started
+        spec = dict(formula=str(formula), referents=[str(d) for d in referents_of(formula)],
+                    avoid=[str(d) for d in avoided_referents_of(formula)], backend=backend,
+                    notes=list(notes), description=description.to_dict(),
+                    verification_text=description.text())
+        needs_reply = self.params['require_confirmation']
+        self.verify_pub.publish(conv.json_msg(conv.payload(
+            conv.VERIFICATION_REQUEST, iid, instruction=body, requires_reply=needs_reply, **spec)))
+        if needs_reply:
+            accepted = self._wait_for_reply(iid)
+            if accepted is None:
+                self._publish_spec(iid, body, received, error=LtlInstructError(
+                    'no verification reply in time', ErrorCode.TIMEOUT))
+                return
+            if not accepted:
+                self._publish_spec(iid, body, received, error=LtlInstructError(
+                    'the person rejected the formula', ErrorCode.VERIFICATION_FAILED))
+                return
+        self._publish_spec(iid, body, received, spec=spec, translate_s=elapsed)
+
+    def _translate(self, text: str) -> Any:
+        if self._translator is None and self._translator_error is None:
+            try:
+                from ltl_instruct.core.language import make_translator
+                opts = {'model_path': self.params['model_path']} if self.params['model_path'] else {}
+                self._translator = make_translator(self.params['backend'], **opts)
+            except ImportError as e:
+                self._translator_error = TranslationError(f'translator backend unavailable: {e}',
+                                                          ErrorCode.MODEL_ERROR)
+            except LtlInstructError as e:
+                self._translator_error = e
+        if self._translator_error is not None:
+            raise self._translator_error
+        return self._translator.translate(text)
+
+    def _wait_for_reply(self, iid: str) -> Optional[bool]:
+        deadline = time.monotonic() + self.params['confirmation_timeout']
+        with self._reply_event:
+            while iid not in self._replies:
+                left = deadline - time.monotonic()
+                if left <= 0 or self._closing.is_set():
+                    return None
+                self._reply_event.wait(min(left, 0.5))
+            return self._replies.pop(iid)
+
+    def _publish_spec(self, iid: str, instruction: str, received: float,
+                      spec: Optional[dict[str, Any]] = None, error: Optional[LtlInstructError] = None,
+                      translate_s: float = 0.0) -> None:
+        fields: dict[str, Any] = dict(instruction=instruction, ok=error is None,
+                                      timing={'translate_s': translate_s,
+                                              'queue_s': time.monotonic() - received - translate_s})
+        if error is not None:
+            fields['error'] = error.to_dict()
+            self.get_logger().warning(f'{iid}: [{error.code.value}] {error.message}')
+        else:
+            fields.update(spec or {})
+            self.get_logger().info(f'{iid}: {fields["formula"]}')
+        self.spec_pub.publish(conv.json_msg(conv.payload(conv.TASK_SPEC, iid, **fields)))
+
+
+def main(args: Optional[list[str]] = None) -> int:
+    """Entry point of the ``ltl_translator`` console script."""
+    return run_node(LtlTranslatorNode, args)
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,200 @@
+"""``sim_world``: a kinematic simulator for the demo and the tests.
+
+Publishes the scene's occupancy ``map`` (latched; plus ``map_cloud`` for a drone),
+``odom`` at ``rate_hz``, and, when the synthetic camera is available, RGB-D and label
+images with ``camera_info``. It follows each ``plan`` (nav_msgs/Path) at ``max_speed``,
+stops at the path index of every ``skill/request`` (pick, release), carries it out in
+the simulated world (a picked object moves with the robot) and reports on
+``skill/result``. Bad input (NaN in a plan, garbage JSON) is logged and dropped.
+"""
+from __future__ import annotations
+
+import sys
+import time
+from typing import Any, Optional
+
+import numpy as np
+from nav_msgs.msg import OccupancyGrid, Odometry, Path
+from rclpy.node import Node
+from sensor_msgs.msg import CameraInfo, Image, PointCloud2
+from std_msgs.msg import String
+
+from ltl_instruct import conversions as conv
+from ltl_instruct.core.errors import LtlInstructError
+from ltl_instruct.core.world.builtin import resolve_scene
+from ltl_instruct.core.world.robot import SimulatedWorld, obstacle_points, rasterize_scene
+from ltl_instruct.nodes.common import (
+    ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node, sensor_qos,
+)
+
+PARAMS = (
+    ParamSpec('scene', 'apartment', 'built-in scene name or path of a scene file'),
+    ParamSpec('rate_hz', 20.0, 'simulation and odometry rate [Hz]', 1.0, 200.0),
+    ParamSpec('time_scale', 1.0, 'simulated seconds per wall-clock second', 0.1, 50.0),
+    ParamSpec('max_speed', 1.0, 'robot speed along the plan [m/s]', 0.05, 20.0),
+    ParamSpec('map_resolution', 0.1, 'occupancy grid cell size [m]', 0.02, 2.0),
+    ParamSpec('cloud_spacing', 1.0, 'point spacing of the 3D map_cloud for a drone [m]', 0.1, 10.0),
+    ParamSpec('camera_rate_hz', 2.0, 'camera frame rate [Hz]; 0 turns the camera off', 0.0, 30.0),
+    ParamSpec('camera_width', 160, 'camera image width [px]', 16, 1920),
+    ParamSpec('camera_height', 120, 'camera image height [px]', 12, 1080),
+    ParamSpec('reach', 1.0, 'how far from an object the robot may pick or release [m]', 0.1, 5.0),
+    ParamSpec('skill_duration', 0.5, 'simulated time a pick or release takes [s]', 0.0, 30.0),
+)
+
+
+class SimWorldNode(Node):
+    """The simulator: world in, map/odom/camera/skill results out."""
+
+    def __init__(self) -> None:
+        super().__init__('sim_world')
+        self.params = declare_parameters(self, PARAMS)
+        self.scene = resolve_scene(self.params['scene'])
+        self.world = SimulatedWorld(self.scene, max_speed=self.params['max_speed'],
+                                    reach=self.params['reach'])
+        self._plan_key: Optional[int] = None
+        self._pending: dict[int, dict[str, Any]] = {}   # path index -> skill request
+        self._skill_busy_until = 0.0
+        self._last_tick = time.monotonic()
+        self._camera = self._make_camera()
+
+        self.map_pub = self.create_publisher(OccupancyGrid, 'map', latched_qos(1))
+        self.cloud_pub = self.create_publisher(PointCloud2, 'map_cloud', latched_qos(1))
+        self.odom_pub = self.create_publisher(Odometry, 'odom', reliable_qos(10))
+        self.result_pub = self.create_publisher(String, 'skill/result', reliable_qos())
+        self.rgb_pub = self.create_publisher(Image, 'camera/color/image_raw', sensor_qos())
+        self.depth_pub = self.create_publisher(Image, 'camera/depth/image_raw', sensor_qos())
+        self.labels_pub = self.create_publisher(Image, 'camera/labels/image_raw', sensor_qos())
+        self.info_pub = self.create_publisher(CameraInfo, 'camera/color/camera_info', sensor_qos())
+        self.create_subscription(Path, 'plan', self.on_plan, latched_qos(1))
+        self.create_subscription(String, 'skill/request', self.on_skill_request, reliable_qos())
+        self.publish_map()
+        self.create_timer(1.0 / self.params['rate_hz'], self.on_tick)
+        if self._camera is not None and self.params['camera_rate_hz'] > 0.0:
+            self.create_timer(1.0 / self.params['camera_rate_hz'], self.on_camera)
+        self.get_logger().info(f'sim_world: scene {self.scene.name} ({len(self.scene.objects)} objects), '
+                               f'robot {self.scene.robot.kind} at {self.scene.robot.start}')
+
+    # ------------------------------------------------------------------ set-up
+    def _make_camera(self) -> Any:
+        if self.params['camera_rate_hz'] <= 0.0:
+            return None
+        try:
+            from ltl_instruct.core.world.camera import SyntheticCamera
+        except ImportError as e:  # the camera module is optional for the simulator
+            self.get_logger().warning(f'no synthetic camera ({e}); camera topics are off')
+            return None
+        try:
+            return SyntheticCamera(self.scene, width=self.params['camera_width'],
+                                   height=self.params['camera_height'])
+        except (TypeError, LtlInstructError) as e:
+            self.get_logger().warning(f'synthetic camera could not start: {e}; camera topics are off')
+            return None
+
+    def publish_map(self) -> None:
+        """Publish the latched occupancy grid (and, for a drone, the 3D obstacle cloud)."""
+        stamp = self.get_clock().now().to_msg()
+        self.map_pub.publish(conv.occupancy_grid_msg(
+            rasterize_scene(self.scene, self.params['map_resolution']), stamp))
+        if self.scene.robot.kind == 'drone':
+            self.cloud_pub.publish(conv.point_cloud_msg(
+                obstacle_points(self.scene, self.params['cloud_spacing']), stamp=stamp))
+
+    # ------------------------------------------------------------------ callbacks
+    def on_plan(self, msg: Path) -> None:
+        """Follow a new plan (an empty one stops the robot)."""
+        try:
+            points = conv.path_points(msg)
+        except LtlInstructError as e:
+            self.get_logger().warning(f'plan rejected: {e.message}')
+            return
+        self._pending.clear()
+        self._plan_key = conv.stamp_key(msg.header.stamp)
+        if len(points) == 0:
+            self.world.robot.stop()
+            return
+        self.world.robot.follow(points)
+        self.get_logger().info(f'following a plan of {len(points)} poses')
+
+    def on_skill_request(self, msg: String) -> None:
+        """Queue a pick or release at a path index of the current plan."""
+        try:
+            req = conv.parse_json_payload(msg.data, conv.SKILL_REQUEST)
+            skill = req['skill']
+            index = int(req['path_index'])
+            if skill not in ('pick', 'release') or not isinstance(req.get('args'), list):
+                raise ValueError(f'bad skill request {skill!r}')
+        except (LtlInstructError, KeyError, ValueError, TypeError) as e:
+            self.get_logger().warning(f'skill request rejected: {e}')
+            return
+        if req.get('plan_stamp') is not None and int(req['plan_stamp']) != self._plan_key:
+            self.get_logger().warning('skill request for another plan: carried out where the robot is')
+            self.world.robot.pause()
+            self._pending[-1] = req
+            return
+        self._pending[index] = req
+        if not self.world.robot.add_stop(index):
+            self._pending[-1] = self._pending.pop(index)
+
+    def on_tick(self) -> None:
+        """Advance the simulation and publish odometry; carry out a skill at a stop."""
+        now = time.monotonic()
+        dt = min(now - self._last_tick, 0.5) * self.params['time_scale']
+        self._last_tick = now
+        robot = self.world.robot
+        if robot.is_paused and now >= self._skill_busy_until:
+            due = [i for i in self._pending if i <= robot.path_index]
+            if due:
+                self._do_skill(self._pending.pop(min(due)))
+                self._skill_busy_until = now + self.params['skill_duration'] / self.params['time_scale']
+            elif not any(i == robot.path_index for i in self._pending):
+                robot.resume()
+        before = robot.pose.xyz
+        pose = self.world.step(dt)
+        velocity = (pose.xyz - before) / dt if dt > 0 else np.zeros(3)
+        self.odom_pub.publish(conv.odometry_msg(pose, self.get_clock().now().to_msg(), velocity))
+
+    def _do_skill(self, req: dict[str, Any]) -> None:
+        targets = req.get('targets') or []
+        args = [str(a) for a in req['args']]
+
+        def resolve(i: int) -> Any:
+            t = targets[i] if i < len(targets) and isinstance(targets[i], dict) else {}
+            name = args[i].split('::')[0] if i < len(args) else ''
+            return self.world.find_object(str(t.get('id', '')), t.get('center'), name)
+
+        if req['skill'] == 'pick':
+            outcome = self.world.pick(resolve(0))
+        else:
+            outcome = self.world.release(resolve(0), resolve(1))
+        self.get_logger().info(f'{req["skill"]}: {outcome.reason}')
+        self.result_pub.publish(conv.json_msg(conv.payload(
+            conv.SKILL_RESULT, req['id'], skill=req['skill'], args=args, ok=outcome.ok,
+            object_id=outcome.object_id, target_id=outcome.target_id,
+            path_index=req.get('path_index'), plan_stamp=req.get('plan_stamp'),
+            error={'code': outcome.error_code, 'message': outcome.reason} if not outcome.ok else None)))
+
+    def on_camera(self) -> None:
+        """Render and publish one RGB-D + labels frame from the robot's pose."""
+        try:
+            frame = self._camera.render(self.world.robot.pose, scene=self.world.current_scene())
+        except TypeError:
+            frame = self._camera.render(self.world.robot.pose)
+        except LtlInstructError as e:
+            self.get_logger().warning(f'camera: {e.message}')
+            return
+        stamp = self.get_clock().now().to_msg()
+        self.rgb_pub.publish(conv.image_msg(frame.rgb, 'rgb8', stamp))
+        self.depth_pub.publish(conv.image_msg(frame.depth, '32FC1', stamp))
+        if getattr(frame, 'labels', None) is not None:
+            self.labels_pub.publish(conv.image_msg(frame.labels, '32SC1', stamp))
+        k = frame.intrinsics
+        self.info_pub.publish(conv.camera_info_msg(k.width, k.height, k.fx, k.fy, k.cx, k.cy, stamp))
+
+
+def main(args: Optional[list[str]] = None) -> int:
+    """Entry point of the ``sim_world`` console script."""
+    return run_node(SimWorldNode, args)
+
+
+if __name__ == '__main__':
+    sys.exit(main())

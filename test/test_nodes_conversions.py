@@ -1,0 +1,130 @@
+"""Message <-> core conversions: round trips and typed errors on bad messages."""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+from nav_msgs.msg import OccupancyGrid
+from sensor_msgs.msg import Image
+
+from ltl_instruct import conversions as conv
+from ltl_instruct.core.errors import InvalidInputError, LimitExceededError
+from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap
+from ltl_instruct.core.world.builtin import resolve_scene
+from ltl_instruct.core.world.robot import Pose, rasterize_scene
+
+
+def test_json_payload_round_trip_and_schema_checks():
+    msg = conv.json_msg(conv.payload(conv.TASK_SPEC, 'abc', formula='F near[x]', value=float('nan')))
+    data = conv.parse_json_payload(msg.data, conv.TASK_SPEC)
+    assert data['id'] == 'abc' and data['formula'] == 'F near[x]' and data['value'] is None
+    with pytest.raises(InvalidInputError):
+        conv.parse_json_payload(msg.data, conv.REFERENT_MAP)
+    for bad in ('{not json', '[1, 2]', '"text"', json.dumps({'schema': conv.TASK_SPEC, 'version': 1}),
+                json.dumps({'schema': conv.TASK_SPEC, 'version': 99, 'id': 'x'}), '[' * 100000):
+        with pytest.raises(InvalidInputError):
+            conv.parse_json_payload(bad, conv.TASK_SPEC)
+    with pytest.raises(LimitExceededError):
+        conv.parse_json_payload('x' * 100, max_bytes=10)
+    assert conv.salvage_id(json.dumps({'id': 'keep-me', 'schema': 'wrong'})) == 'keep-me'
+    assert conv.salvage_id('garbage') == ''
+
+
+@settings(derandomize=True, max_examples=50, deadline=None)
+@given(st.lists(st.tuples(st.floats(-100, 100), st.floats(-100, 100), st.floats(0, 30)),
+                min_size=1, max_size=40))
+def test_path_round_trip_keeps_points_and_unit_quaternions(points):
+    p = np.asarray(points, dtype=float)
+    msg = conv.path_msg(p, conv.stamp_from_key(1_234_567_890_123))
+    assert msg.header.frame_id == 'map'
+    assert conv.stamp_key(msg.header.stamp) == 1_234_567_890_123
+    assert np.allclose(conv.path_points(msg), p)
+    for ps in msg.poses:
+        q = ps.pose.orientation
+        assert math.isclose(q.x ** 2 + q.y ** 2 + q.z ** 2 + q.w ** 2, 1.0, rel_tol=1e-9)
+
+
+def test_path_with_nan_is_rejected():
+    msg = conv.path_msg(np.array([[0.0, 0.0, 0.0], [1.0, 1.0, 0.0]]))
+    msg.poses[1].pose.position.x = float('nan')
+    with pytest.raises(InvalidInputError):
+        conv.path_points(msg)
+
+
+def test_odometry_round_trip_and_nan_rejected():
+    pose = Pose((1.0, -2.0, 0.5), 2.5)
+    back = conv.odometry_pose(conv.odometry_msg(pose))
+    assert np.allclose(back.position, pose.position) and back.yaw == pytest.approx(2.5)
+    msg = conv.odometry_msg(pose)
+    msg.pose.pose.position.y = float('nan')
+    with pytest.raises(InvalidInputError):
+        conv.odometry_pose(msg)
+
+
+def test_occupancy_grid_round_trip_and_bad_grids():
+    raster = rasterize_scene(resolve_scene('apartment'), 0.2)
+    back = conv.occupancy_raster(conv.occupancy_grid_msg(raster))
+    assert np.array_equal(back.cells, raster.cells) and back.resolution == pytest.approx(0.2)
+    assert back.origin == raster.origin
+    with pytest.raises(InvalidInputError, match='empty'):
+        conv.occupancy_raster(OccupancyGrid())
+    msg = conv.occupancy_grid_msg(raster)
+    msg.data = msg.data[:-1]
+    with pytest.raises(InvalidInputError):
+        conv.occupancy_raster(msg)
+
+
+def test_point_cloud_round_trip_with_a_value_field():
+    rng = np.random.default_rng(0)
+    pts = rng.normal(size=(100, 3)).astype(np.float32)
+    values = rng.choice([-1.0, 0.0, 1.0], size=100)
+    msg = conv.point_cloud_msg(pts, {'value': values})
+    assert msg.point_step == 16 and msg.width == 100
+    assert [f.name for f in msg.fields] == ['x', 'y', 'z', 'value']
+    fields = conv.point_cloud_fields(msg)
+    assert np.allclose(conv.point_cloud_xyz(msg), pts) and np.allclose(fields['value'], values)
+    with pytest.raises(InvalidInputError):
+        conv.point_cloud_msg(pts, {'value': values[:5]})
+    msg.data = msg.data[:-4]
+    with pytest.raises(InvalidInputError):
+        conv.point_cloud_fields(msg)
+
+
+@pytest.mark.parametrize('encoding,array', [
+    ('rgb8', np.arange(4 * 5 * 3, dtype=np.uint8).reshape(4, 5, 3)),
+    ('32FC1', np.linspace(0.1, 9.0, 20, dtype=np.float32).reshape(4, 5)),
+    ('32SC1', np.arange(20, dtype=np.int32).reshape(4, 5) - 3),
+])
+def test_image_round_trip(encoding, array):
+    msg = conv.image_msg(array, encoding)
+    assert msg.encoding == encoding and msg.height == 4 and msg.width == 5
+    assert np.array_equal(conv.image_array(msg), array)
+
+
+def test_bad_images_are_rejected():
+    with pytest.raises(InvalidInputError):
+        conv.image_msg(np.zeros((4, 5)), 'rgb8')
+    with pytest.raises(InvalidInputError):
+        conv.image_msg(np.zeros((4, 5)), 'bgr16')
+    msg = Image(height=4, width=5, encoding='32FC1', step=20, data=bytes(10))
+    with pytest.raises(InvalidInputError):
+        conv.image_array(msg)
+
+
+def test_camera_info_round_trip_and_invalid():
+    msg = conv.camera_info_msg(160, 120, 100.0, 101.0, 80.0, 60.0)
+    assert conv.camera_intrinsics(msg) == (160, 120, 100.0, 101.0, 80.0, 60.0)
+    msg.k[0] = float('nan')
+    with pytest.raises(InvalidInputError):
+        conv.camera_intrinsics(msg)
+
+
+def test_referent_markers_one_cube_and_label_per_instance():
+    rmap = ReferentMap({'sofa': Grounding('sofa', Outcome.AMBIGUOUS, (
+        Instance('sofa_1', 'sofa', (1, 2, 0.4), (2, 1, 0.8)), Instance('sofa_2', 'sofa', (5, 2, 0.4))))})
+    markers = conv.referent_markers(rmap).markers
+    assert len(markers) == 1 + 4
+    assert markers[1].scale.x == 2.0 and markers[2].text == 'sofa (sofa_1)'

@@ -1,0 +1,105 @@
+"""Execution monitoring: letters from positions, verdicts, blame, and replanning state."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from ltl_instruct.core.automaton import compile_automaton
+from ltl_instruct.core.errors import InvalidInputError
+from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap
+from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, Verdict
+from ltl_instruct.core.spec import near, parse_formula
+
+
+def _rmap(**places):
+    return ReferentMap({name: Grounding(name, Outcome.RESOLVED, (Instance(name, name, xyz, (0.4, 0.4, 0.4)),))
+                        for name, xyz in places.items()})
+
+
+RMAP = _rmap(sofa=(2.0, 0.0, 0.0), computer=(6.0, 0.0, 0.0), door=(4.0, 3.0, 0.0))
+
+
+def _monitor(text, rmap=RMAP):
+    aut = compile_automaton(parse_formula(text))
+    return ExecutionMonitor(aut, LetterMaker(aut.atoms, rmap, near_threshold=1.0, dims=2))
+
+
+def test_sequence_progresses_then_is_satisfied():
+    m = _monitor('F (near[sofa] & F near[computer]) & G !near[door]')
+    verdicts = [m.update(p).verdict for p in ([0, 0, 0], [2, 0, 0], [4, 0, 0], [6, 0, 0])]
+    assert verdicts == [Verdict.PROGRESSING, Verdict.PROGRESSING, Verdict.PROGRESSING, Verdict.SATISFIED]
+    assert m.last is not None and m.last.letter == ('near[computer]',)
+
+
+def test_wrong_order_is_not_satisfied():
+    m = _monitor('F (near[sofa] & F near[computer])')
+    assert m.update([6, 0, 0]).verdict is Verdict.PROGRESSING
+    assert m.update([2, 0, 0]).verdict is Verdict.PROGRESSING
+    assert m.update([6, 0, 0]).verdict is Verdict.SATISFIED
+
+
+def test_violation_blames_the_atom_that_did_it():
+    m = _monitor('F near[computer] & G !near[door]')
+    assert m.update([0, 0, 0]).verdict is Verdict.PROGRESSING
+    report = m.update([4.0, 2.4, 0.0])
+    assert report.verdict is Verdict.VIOLATED and report.blamed_atoms == ('near[door]',)
+    assert report.changed
+    # the sink absorbs
+    assert m.update([6, 0, 0]).verdict is Verdict.VIOLATED
+
+
+def test_events_are_read_once_and_only_known_ones():
+    m = _monitor('F (pick[toy] & F release[toy, basket])', _rmap(toy=(1, 0, 0), basket=(3, 0, 0)))
+    pick = parse_formula('pick[toy]')
+    release = parse_formula('release[toy, basket]')
+    other = parse_formula('pick[cup]')
+    assert m.update([1, 0, 0], [other]).verdict is Verdict.PROGRESSING
+    assert m.update([1, 0, 0], [pick]).changed
+    assert m.update([3, 0, 0], [release]).verdict is Verdict.SATISFIED
+    with pytest.raises(InvalidInputError):
+        m.letters.letter([0, 0, 0], [pick, release])
+
+
+def test_nan_positions_are_rejected_and_state_kept():
+    m = _monitor('F near[sofa]')
+    with pytest.raises(InvalidInputError):
+        m.update([np.nan, 0, 0])
+    with pytest.raises(InvalidInputError):
+        m.update([0, 0])
+    assert m.state == m.automaton.initial and m.steps == 0
+
+
+def test_a_new_referent_map_keeps_the_automaton_state():
+    m = _monitor('F (near[sofa] & F near[computer])')
+    m.update([2, 0, 0])
+    moved = _rmap(sofa=(2.0, 0.0, 0.0), computer=(9.0, 9.0, 0.0))
+    m2 = m.with_referent_map(moved)
+    assert m2.state == m.state and m2.steps == m.steps
+    assert m2.update([6, 0, 0]).verdict is Verdict.PROGRESSING     # the computer is elsewhere now
+    assert m2.update([9, 8.5, 0]).verdict is Verdict.SATISFIED
+
+
+def test_unresolved_descriptors_are_never_near():
+    lm = LetterMaker((near('ghost'),), ReferentMap({}), 1.0, 2)
+    assert lm.letter([0, 0, 0]) == frozenset()
+
+
+def test_letter_maker_settings_are_checked():
+    with pytest.raises(InvalidInputError):
+        LetterMaker((), RMAP, near_threshold=-1.0)
+    with pytest.raises(InvalidInputError):
+        LetterMaker((), RMAP, dims=4)
+
+
+@settings(derandomize=True, max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.floats(-2, 10), st.floats(-2, 6)), min_size=1, max_size=25))
+def test_monitor_agrees_with_the_automaton_on_the_same_trace(xy):
+    """The monitor's verdict is exactly the automaton's acceptance of the letters it read."""
+    m = _monitor('F (near[sofa] & F near[computer]) & G !near[door]')
+    trace = []
+    for x, y in xy:
+        trace.append(m.letters.letter([x, y, 0.0]))
+        report = m.update([x, y, 0.0])
+    assert (report.verdict is Verdict.SATISFIED) == m.automaton.accepts(trace)
+    assert report.state == m.automaton.run(trace)[-1]

@@ -1,0 +1,77 @@
+"""Bringup: node command lines, parameter specs, and a clean stop on Ctrl-C."""
+from __future__ import annotations
+
+import os
+import random
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file, node_command
+from ltl_instruct.core.errors import InvalidInputError
+from ltl_instruct.nodes.common import ParamSpec
+
+REPO = Path(__file__).resolve().parent.parent
+
+
+def test_node_command_passes_the_params_file_and_overrides():
+    cmd = node_command('sim_world', Path('/x/p.yaml'), {'scene': 'city_block', 'use_camera': False})
+    assert cmd[:3] == [sys.executable, '-m', 'ltl_instruct.nodes.sim_world']
+    assert cmd[3:] == ['--ros-args', '--params-file', '/x/p.yaml', '-p', 'scene:=city_block',
+                       '-p', 'use_camera:=false']
+
+
+def test_default_params_file_is_the_packaged_config():
+    assert default_params_file() == REPO / 'config' / 'ltl_instruct.yaml'
+
+
+def test_unknown_nodes_are_refused():
+    with pytest.raises(InvalidInputError):
+        NodeGraph(['sim_world', 'teleporter'])
+
+
+def test_param_spec_checks_type_range_and_choices():
+    speed = ParamSpec('max_speed', 1.0, 'speed [m/s]', 0.05, 20.0)
+    assert speed.check(2) == 2.0
+    for bad in (0.0, 25.0, float('nan'), 'fast', True):
+        with pytest.raises(InvalidInputError):
+            speed.check(bad)
+    kind = ParamSpec('robot_kind', 'ground', 'kind', choices=('ground', 'drone'))
+    assert kind.check('drone') == 'drone'
+    with pytest.raises(InvalidInputError):
+        kind.check('boat')
+    d = speed.descriptor()
+    assert d.floating_point_range[0].from_value == 0.05 and 'speed' in d.description
+    assert ParamSpec('n', 5, 'count', 1, 10).descriptor().integer_range[0].to_value == 10
+
+
+def test_bringup_starts_nodes_and_stops_them_cleanly_on_ctrl_c(tmp_path):
+    env = dict(os.environ, ROS_DOMAIN_ID=str(random.randint(120, 229)), ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST',
+               PYTHONPATH=str(REPO))
+    proc = subprocess.Popen([sys.executable, '-m', 'ltl_instruct.cli', 'bringup', '--sim', '--nodes', 'sim_world',
+                             '--log-dir', str(tmp_path)], env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 30
+        log = tmp_path / 'sim_world.log'
+        while time.monotonic() < deadline and not (log.is_file() and 'sim_world: scene' in log.read_text()):
+            time.sleep(0.2)
+        assert proc.poll() is None
+        os.killpg(proc.pid, signal.SIGINT)
+        out, _ = proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+    assert proc.returncode == 0, out
+    assert "stopped: {'sim_world': 0}" in out
+    assert 'sim_world: scene apartment' in (tmp_path / 'sim_world.log').read_text()
+
+
+def test_all_nodes_are_console_scripts():
+    text = (REPO / 'setup.py').read_text()
+    for node in ALL_NODES:
+        assert f"'{node}'" in text

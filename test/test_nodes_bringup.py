@@ -50,11 +50,12 @@ def test_param_spec_checks_type_range_and_choices():
 
 
 def test_bringup_starts_nodes_and_stops_them_cleanly_on_ctrl_c(tmp_path):
-    env = dict(os.environ, ROS_DOMAIN_ID=str(random.randint(120, 229)), ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST',
-               PYTHONPATH=str(REPO))
-    proc = subprocess.Popen([sys.executable, '-m', 'ltl_instruct.cli', 'bringup', '--sim', '--nodes', 'sim_world',
-                             '--log-dir', str(tmp_path)], env=env, stdout=subprocess.PIPE,
-                            stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    env = dict(os.environ, ROS_DOMAIN_ID=str(random.randint(120, 229)),
+               ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST', PYTHONPATH=str(REPO))
+    proc = subprocess.Popen([sys.executable, '-m', 'ltl_instruct.cli', 'bringup', '--sim',
+                             '--nodes', 'sim_world', '--log-dir', str(tmp_path)], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            start_new_session=True)
     try:
         deadline = time.monotonic() + 30
         log = tmp_path / 'sim_world.log'

@@ -1,0 +1,547 @@
+"""One navigation segment: a symbolic TPSM in, a path into its goal region out.
+
+A :class:`SegmentRequest` is JSON-ready (it is what the ``fmt_planner`` node receives as
+``plan_request``): the start, the regions of the atoms that matter, the ``goal`` and
+``allowed`` guards over them, the bounds and the planner settings. :func:`solve_segment`
+answers it with FMT* in process and returns a :class:`SegmentResult`: a path whose every
+point but the last keeps the automaton where it is (free, and ``allowed`` holds) and
+whose last point is the first one in the goal region, or a typed failure
+(``START_OCCUPIED``, ``GOAL_OCCUPIED``, ``NO_VALID_PATH``, ``TIMEOUT``).
+
+Edges are checked exactly where possible: a point's clearance (to obstacles and bounds)
+and its margin (to every region boundary) certify a ball in which nothing changes, so
+the check steps over that ball; near a boundary it steps by ``check_resolution`` (2 cm
+by default), so no avoid region thicker than that can be jumped.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field, replace
+from typing import Any, Callable, Mapping, Optional, Sequence
+
+import numpy as np
+
+from ltl_instruct.core.automaton.guards import Guard
+from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError, PlanningError
+from ltl_instruct.core.planning.fmt import FmtSettings, GoalSpec, plan_motion
+from ltl_instruct.core.planning.occupancy import PlanningWorld
+from ltl_instruct.core.planning.regions import (
+    AtomRegion, KeyCube, RegionSet, eval_guard_vectorised, eval_key_cubes, guard_keys, key_cubes,
+)
+
+TARGET_KEY = '__target__'
+MAX_REGIONS = 256
+MAX_INSTANCES = 4096
+MAX_CUBES = 4096
+
+
+def _guard_from(d: Any, what: str) -> Guard:
+    if not isinstance(d, Mapping):
+        raise InvalidInputError(f'segment request: {what} must be a guard object')
+    cubes = d.get('cubes')
+    if not isinstance(cubes, list) or len(cubes) > MAX_CUBES:
+        raise InvalidInputError(f'segment request: {what}.cubes must be a list of at most {MAX_CUBES}')
+    try:
+        return Guard.from_dict(d)
+    except LtlInstructError as e:
+        raise InvalidInputError(f'segment request: {what}: {e.message}') from e
+    except (ValueError, TypeError, AttributeError) as e:
+        raise InvalidInputError(f'segment request: {what}: {e}') from e
+
+
+def _point(v: Any, dims: int, what: str) -> tuple[float, ...]:
+    try:
+        vals = tuple(float(x) for x in v)
+    except (TypeError, ValueError) as e:
+        raise InvalidInputError(f'segment request: {what} must be a list of numbers') from e
+    if len(vals) < dims or not all(math.isfinite(x) for x in vals[:dims]):
+        raise InvalidInputError(f'segment request: {what} needs {dims} finite numbers, got {list(vals)}')
+    return vals[:dims]
+
+
+@dataclass(frozen=True)
+class SegmentRequest:
+    """A symbolic TPSM to plan through.
+
+    Attributes
+    ----------
+    id: ties the request to its task (``<instruction id>/<n>``).
+    start: start position [m], shape (dims,).
+    dims: 2 (ground) or 3 (drone).
+    regions: regions of every near-atom the guards mention.
+    goal: letters that take the automaton to the next state.
+    allowed: letters that keep it in the current state.
+    settings: motion-planner settings.
+    target: optional ``(atom key, instance index)``: the goal also needs that instance.
+    bounds_min, bounds_max: optional limits [m] (within the world's).
+    transition: ``(state, next state)`` of the automaton, for messages.
+    """
+
+    id: str
+    start: tuple[float, ...]
+    dims: int
+    regions: tuple[AtomRegion, ...]
+    goal: Guard
+    allowed: Guard
+    settings: FmtSettings = field(default_factory=FmtSettings)
+    target: Optional[tuple[str, int]] = None
+    bounds_min: Optional[tuple[float, ...]] = None
+    bounds_max: Optional[tuple[float, ...]] = None
+    transition: tuple[int, int] = (-1, -1)
+
+    def describe(self) -> str:
+        """``transition 0 -> 1 (goal: near[a], allowed: !near[b])`` for messages."""
+        return (f'transition {self.transition[0]} -> {self.transition[1]} '
+                f'(goal: {self.goal}, allowed: {self.allowed})')
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dict (the ``request`` of a ``plan_request`` payload)."""
+        d: dict[str, Any] = {
+            'id': self.id, 'start': list(self.start), 'dims': self.dims,
+            'regions': [r.to_dict() for r in self.regions],
+            'goal': self.goal.to_dict(), 'allowed': self.allowed.to_dict(),
+            'settings': self.settings.to_dict(), 'transition': list(self.transition),
+            'target': None if self.target is None else {'atom': self.target[0], 'instance': self.target[1]},
+        }
+        if self.bounds_min is not None and self.bounds_max is not None:
+            d['bounds'] = {'min': list(self.bounds_min), 'max': list(self.bounds_max)}
+        return d
+
+    @staticmethod
+    def from_dict(d: Any) -> 'SegmentRequest':
+        """Validate and build a request from JSON data.
+
+        Raises
+        ------
+        InvalidInputError
+            On a missing or malformed field, non-finite numbers, a guard atom with no
+            region, or sizes over the limits.
+        """
+        if not isinstance(d, Mapping):
+            raise InvalidInputError('segment request must be a JSON object')
+        dims = d.get('dims')
+        if dims not in (2, 3):
+            raise InvalidInputError(f'segment request: dims must be 2 or 3, got {dims!r}')
+        start = _point(d.get('start'), dims, 'start')
+        raw_regions = d.get('regions', [])
+        if not isinstance(raw_regions, list) or len(raw_regions) > MAX_REGIONS:
+            raise InvalidInputError(f'segment request: regions must be a list of at most {MAX_REGIONS}')
+        regions = tuple(AtomRegion.from_dict(r) if isinstance(r, Mapping) else _bad_region(r)
+                        for r in raw_regions)
+        if sum(len(r.centers) for r in regions) > MAX_INSTANCES:
+            raise InvalidInputError(f'segment request: more than {MAX_INSTANCES} instances')
+        goal = _guard_from(d.get('goal'), 'goal')
+        allowed = _guard_from(d.get('allowed'), 'allowed')
+        known = {r.key for r in regions}
+        missing = sorted(k for k in guard_keys(goal) | guard_keys(allowed)
+                         if k not in known and not k.startswith(('pick[', 'release[')))
+        if missing:
+            raise InvalidInputError(f'segment request: no region for {", ".join(missing)}')
+        settings_d = d.get('settings') or {}
+        if not isinstance(settings_d, Mapping):
+            raise InvalidInputError('segment request: settings must be an object')
+        settings = FmtSettings.from_dict(settings_d)
+        target = None
+        t = d.get('target')
+        if t is not None:
+            if not isinstance(t, Mapping) or t.get('atom') not in known or not isinstance(t.get('instance'), int):
+                raise InvalidInputError('segment request: target must name a region and an instance index')
+            region = next(r for r in regions if r.key == t['atom'])
+            if not 0 <= t['instance'] < len(region.centers):
+                raise InvalidInputError('segment request: target instance index out of range')
+            target = (str(t['atom']), int(t['instance']))
+        bmin = bmax = None
+        if d.get('bounds') is not None:
+            b = d['bounds']
+            if not isinstance(b, Mapping):
+                raise InvalidInputError('segment request: bounds must be {min, max}')
+            bmin, bmax = _point(b.get('min'), dims, 'bounds.min'), _point(b.get('max'), dims, 'bounds.max')
+        tr = d.get('transition', [-1, -1])
+        if not (isinstance(tr, (list, tuple)) and len(tr) == 2 and all(isinstance(x, int) for x in tr)):
+            raise InvalidInputError('segment request: transition must be two integers')
+        rid = d.get('id', '')
+        if not isinstance(rid, str) or len(rid) > 400:
+            raise InvalidInputError('segment request: id must be text (at most 400 characters)')
+        return SegmentRequest(rid, start, dims, regions, goal, allowed, settings, target, bmin, bmax,
+                              (int(tr[0]), int(tr[1])))
+
+
+def _bad_region(r: Any) -> AtomRegion:
+    raise InvalidInputError(f'segment request: a region must be an object, got {type(r).__name__}')
+
+
+@dataclass(frozen=True, eq=False)
+class SegmentResult:
+    """A solved segment or a typed failure.
+
+    Attributes
+    ----------
+    request_id: the request's id.
+    waypoints: the simplified path [m], shape (N, dims), N >= 2; None on failure.
+    points: the same path resampled at ``path_spacing`` [m], shape (M, dims); None on failure.
+    length: path length [m] (0 on failure).
+    error: the typed failure, or None.
+    seconds: wall-clock time of the whole solve [s].
+    planner_seconds: time inside OMPL [s].
+    """
+
+    request_id: str
+    waypoints: Optional[np.ndarray]
+    points: Optional[np.ndarray]
+    length: float = 0.0
+    error: Optional[LtlInstructError] = None
+    seconds: float = 0.0
+    planner_seconds: float = 0.0
+
+    @property
+    def ok(self) -> bool:
+        """Whether a path was found."""
+        return self.waypoints is not None and self.error is None
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dict."""
+        d: dict[str, Any] = {'request_id': self.request_id, 'ok': self.ok, 'length': self.length,
+                             'seconds': self.seconds, 'planner_seconds': self.planner_seconds}
+        if self.waypoints is not None:
+            d['waypoints'] = np.round(self.waypoints, 6).tolist()
+        if self.error is not None:
+            d['error'] = self.error.to_dict()
+        return d
+
+    @staticmethod
+    def failure(request_id: str, error: LtlInstructError, seconds: float = 0.0) -> 'SegmentResult':
+        """A failed result."""
+        return SegmentResult(request_id, None, None, 0.0, error, seconds)
+
+    @staticmethod
+    def from_waypoints(request_id: str, waypoints: np.ndarray, spacing: float = 0.05) -> 'SegmentResult':
+        """A result from a path received from elsewhere (e.g. over DDS)."""
+        w = np.asarray(waypoints, dtype=float)
+        if w.ndim != 2 or len(w) < 1 or not np.all(np.isfinite(w)):
+            raise InvalidInputError('a segment path must be a non-empty (N, dims) array of finite numbers')
+        if len(w) == 1:
+            w = np.vstack([w, w])
+        return SegmentResult(request_id, w, resample(w, spacing) if spacing > 0 else w, path_length(w))
+
+
+# --------------------------------------------------------------------------- path helpers
+
+def path_length(points: np.ndarray) -> float:
+    """Length [m] of a polyline (N, dims)."""
+    p = np.asarray(points, dtype=float)
+    return float(np.linalg.norm(np.diff(p, axis=0), axis=1).sum()) if len(p) > 1 else 0.0
+
+
+def resample(points: np.ndarray, spacing: float) -> np.ndarray:
+    """The polyline (N, dims) with every vertex kept and points added so no gap exceeds ``spacing`` [m]."""
+    p = np.asarray(points, dtype=float)
+    if len(p) < 2:
+        return p.copy()
+    out = [p[:1]]
+    for a, b in zip(p[:-1], p[1:]):
+        n = max(1, int(math.ceil(float(np.linalg.norm(b - a)) / spacing - 1e-9)))
+        t = np.arange(1, n + 1, dtype=float)[:, None] / n
+        out.append(a + t * (b - a))
+    return np.vstack(out)
+
+
+class SegmentProblem:
+    """The validity, goal and edge checks of one request in one world (shared by FMT*, RRT*, grid)."""
+
+    def __init__(self, request: SegmentRequest, world: PlanningWorld) -> None:
+        if request.dims != world.dims:
+            raise InvalidInputError(f'the request is {request.dims}D but the map is {world.dims}D')
+        self.request = request
+        self.world = world
+        regions = list(request.regions)
+        goal_cubes: tuple[KeyCube, ...] = key_cubes(request.goal)
+        if request.target is not None:
+            key, index = request.target
+            region = next((r for r in regions if r.key == key), None)
+            if region is None or not 0 <= index < len(region.centers):
+                raise InvalidInputError(f'target {request.target} names no instance')
+            regions.append(replace(region.only(index), key=TARGET_KEY))
+            goal_cubes = tuple((pos | {TARGET_KEY}, neg) for pos, neg in goal_cubes)
+        self.regions = RegionSet(regions, world.dims)
+        self.goal_cubes = goal_cubes
+        self.allowed_cubes = key_cubes(request.allowed)
+        self.valid_cubes = self.goal_cubes + self.allowed_cubes
+        lo = np.asarray(world.bounds_min, dtype=float)
+        hi = np.asarray(world.bounds_max, dtype=float)
+        if request.bounds_min is not None and request.bounds_max is not None:
+            lo = np.maximum(lo, request.bounds_min)
+            hi = np.minimum(hi, request.bounds_max)
+        self.lo, self.hi = lo, hi
+        self.resolution = request.settings.check_resolution
+        self._radius_of = {r.key: r.radius for r in regions}
+
+    # -- points
+    def letter(self, p: Sequence[float]) -> frozenset[str]:
+        """True atom keys at a point."""
+        return self.regions.letter_and_margin(p)[0]
+
+    def in_bounds(self, p: Sequence[float]) -> bool:
+        """Inside the request's bounds."""
+        return all(self.lo[k] <= p[k] <= self.hi[k] for k in range(self.world.dims))
+
+    def state_valid(self, p: Sequence[float]) -> bool:
+        """Free, in bounds, and the letter is allowed or in the goal."""
+        if not self.in_bounds(p) or self.world.clearance(p) < 0:
+            return False
+        return eval_key_cubes(self.valid_cubes, self.letter(p))
+
+    def in_goal(self, p: Sequence[float]) -> bool:
+        """The letter at ``p`` satisfies the goal."""
+        return eval_key_cubes(self.goal_cubes, self.letter(p))
+
+    def goal_lower_bound(self, p: Sequence[float]) -> float:
+        """A lower bound of the distance [m] from ``p`` to the goal region."""
+        nearest = dict(zip((r.key for r in self.regions.regions), self.regions.nearest(p)))
+        best = math.inf
+        for pos, _ in self.goal_cubes:
+            need = 0.0
+            for k in pos:
+                need = max(need, nearest.get(k, math.inf) - self._radius_of.get(k, 0.0))
+            best = min(best, need)
+        return max(best, 0.0) if best != math.inf else 1e9
+
+    def motion_valid(self, a: Sequence[float], b: Sequence[float]) -> bool:
+        """Every point of the straight motion a -> b is valid (exact in open space, fine near boundaries)."""
+        dims = self.world.dims
+        length = math.sqrt(sum((b[k] - a[k]) ** 2 for k in range(dims)))
+        s = 0.0
+        while True:
+            t = s / length if length > 0 else 1.0
+            p = tuple(a[k] + t * (b[k] - a[k]) for k in range(dims))
+            if not self.in_bounds(p):
+                return False
+            c = self.world.clearance(p)
+            if c < 0:
+                return False
+            letter, margin = self.regions.letter_and_margin(p)
+            if not eval_key_cubes(self.valid_cubes, letter):
+                return False
+            if s >= length:
+                return True
+            s = min(length, s + max(min(c, margin), self.resolution))
+
+    # -- vectorised
+    def classify(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """``(valid, goal)`` flags for points (N, dims), each shape (N,)."""
+        p = np.atleast_2d(np.asarray(points, dtype=float))
+        val = self.regions.valuation(p)
+        goal = eval_guard_vectorised(self.goal_cubes, val, len(p))
+        allowed = eval_guard_vectorised(self.allowed_cubes, val, len(p))
+        inb = np.all((p[:, :self.world.dims] >= self.lo) & (p[:, :self.world.dims] <= self.hi), axis=1)
+        free = self.world.is_free(p) & inb
+        return free & (goal | allowed), free & goal
+
+    def sample_goal(self, count: int, seed: int, batches: int = 24, batch: int = 4096) -> np.ndarray:
+        """Up to ``count`` valid goal points (M, dims), by rejection sampling near the goal atoms."""
+        rng = np.random.default_rng(seed)
+        dims = self.world.dims
+        boxes: list[tuple[np.ndarray, np.ndarray]] = []
+        for pos, _ in self.goal_cubes:
+            candidates = [self.regions.by_key[k] for k in pos if k in self.regions.by_key]
+            if not candidates:
+                boxes.append((self.lo, self.hi))
+                continue
+            region = min(candidates, key=lambda r: len(r.centers))
+            for c, s in zip(region.centers, region.sizes):
+                lo = np.maximum(np.asarray(c[:dims]) - np.asarray(s[:dims]) / 2 - region.radius, self.lo)
+                hi = np.minimum(np.asarray(c[:dims]) + np.asarray(s[:dims]) / 2 + region.radius, self.hi)
+                if np.all(lo <= hi):
+                    boxes.append((lo, hi))
+        if not boxes:
+            return np.zeros((0, dims))
+        vol = np.array([float(np.prod(np.maximum(h - lo_, 1e-3))) for lo_, h in boxes])
+        found: list[np.ndarray] = []
+        total = 0
+        for _ in range(batches):
+            which = rng.choice(len(boxes), size=batch, p=vol / vol.sum())
+            lo = np.array([boxes[i][0] for i in which])
+            hi = np.array([boxes[i][1] for i in which])
+            pts = lo + rng.random((batch, dims)) * (hi - lo)
+            _, goal = self.classify(pts)
+            if goal.any():
+                found.append(pts[goal])
+                total += int(goal.sum())
+            if total >= count:
+                break
+        if not found:
+            return np.zeros((0, dims))
+        return np.vstack(found)[:count]
+
+    def first_goal_prefix(self, points: np.ndarray) -> Optional[np.ndarray]:
+        """The dense path cut at its first goal point, or None if it never reaches the goal.
+
+        Raises
+        ------
+        PlanningError
+            (``INTERNAL_ERROR``) if a point before the goal is invalid: the edge checks
+            and this vectorised check disagree.
+        """
+        dense = resample(points, self.resolution)
+        valid, goal = self.classify(dense)
+        hits = np.flatnonzero(goal[1:]) + 1
+        if len(hits) == 0:
+            return None
+        g = int(hits[0])
+        if not valid[1:g].all():
+            raise PlanningError('a planned path left the allowed space before its goal', ErrorCode.INTERNAL_ERROR)
+        return dense[:g + 1]
+
+    def goal_projections(self, p: Sequence[float]) -> list[np.ndarray]:
+        """Nearest points to ``p`` of each instance's near-ball of each goal cube's true atoms."""
+        dims = self.world.dims
+        a = np.asarray(p[:dims], dtype=float)
+        out = []
+        for pos, _ in self.goal_cubes:
+            for k in pos:
+                region = self.regions.by_key.get(k)
+                if region is None:
+                    continue
+                for c, sz in zip(region.centers, region.sizes):
+                    lo = np.asarray(c[:dims]) - np.asarray(sz[:dims]) / 2
+                    hi = np.asarray(c[:dims]) + np.asarray(sz[:dims]) / 2
+                    q = np.clip(a, lo, hi)
+                    d = float(np.linalg.norm(a - q))
+                    r = region.radius * (1.0 - 1e-6)
+                    out.append(a.copy() if d <= r else q + (a - q) * (r / d))
+        return out
+
+    def refine_end(self, path: np.ndarray, pool: np.ndarray) -> np.ndarray:
+        """Re-choose where the path enters the goal: the cheapest straight exit from any vertex."""
+        path = resample(path, 0.1)
+        prefix = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(path, axis=0), axis=1))])
+        best_cost = prefix[-1]
+        best = path
+        for i in range(len(path) - 1):
+            a = path[i]
+            if prefix[i] >= best_cost:
+                break
+            near_pool = pool[np.argsort(np.linalg.norm(pool - a, axis=1))[:3]] if len(pool) else pool
+            cands = self.goal_projections(a) + [q for q in near_pool]
+            cands.sort(key=lambda q: float(np.linalg.norm(q - a)))
+            for q in cands:
+                if prefix[i] + float(np.linalg.norm(q - a)) >= best_cost:
+                    break
+                if not self.state_valid(tuple(q)) or not self.motion_valid(tuple(a), tuple(q)):
+                    continue
+                cut = self.first_goal_prefix(np.vstack([a, q]))
+                if cut is None:
+                    continue
+                cost = prefix[i] + float(np.linalg.norm(cut[-1] - a))
+                if cost < best_cost - 1e-9:
+                    best_cost = cost
+                    best = np.vstack([path[:i + 1], cut[-1:]])
+                break
+        return _drop_collinear(best)
+
+    def shortcut(self, path: np.ndarray, rounds: int = 4, spacing: float = 0.5,
+                 pool: Optional[np.ndarray] = None, window: int = 60) -> np.ndarray:
+        """Shorten a path (ending at its first goal point) without leaving the valid space."""
+        best = path
+        for r in range(rounds):
+            pts = resample(best, spacing / (2 ** max(0, r - 1))) if r > 0 else best
+            out = [pts[0]]
+            i = 0
+            n = len(pts)
+            while i < n - 1:
+                j = min(n - 1, i + window)
+                while j > i + 1 and not self.motion_valid(pts[i], pts[j]):
+                    j -= 1
+                out.append(pts[j])
+                i = j
+            if pool is not None:
+                out = list(self.refine_end(np.asarray(out), pool))
+            cand = np.asarray(out)
+            cut = self.first_goal_prefix(cand)
+            if cut is None:
+                break
+            cand = _drop_collinear(cut)
+            if path_length(cand) < path_length(best) - 1e-9:
+                best = cand
+            elif r > 0:
+                break
+        return best
+
+
+def _drop_collinear(points: np.ndarray, tol: float = 1e-9) -> np.ndarray:
+    """Remove interior points that lie on the segment between their neighbours."""
+    if len(points) <= 2:
+        return points
+    keep = [0]
+    for i in range(1, len(points) - 1):
+        a, b, c = points[keep[-1]], points[i], points[i + 1]
+        ab, bc = b - a, c - b
+        n1, n2 = np.linalg.norm(ab), np.linalg.norm(bc)
+        if n1 < tol:
+            continue
+        if n2 > tol and abs(float(np.dot(ab, bc)) - n1 * n2) <= 1e-9 * max(1.0, n1 * n2):
+            continue
+        keep.append(i)
+    keep.append(len(points) - 1)
+    return points[keep]
+
+
+SolveFn = Callable[[SegmentRequest], SegmentResult]
+
+
+def solve_segment(request: SegmentRequest, world: PlanningWorld,
+                  settings: Optional[FmtSettings] = None) -> SegmentResult:
+    """Plan one segment in process with FMT* (or RRT*); never raises for a planning failure.
+
+    ``settings`` overrides ``request.settings`` when given. Bad input (a request that
+    does not fit the world) raises :class:`InvalidInputError`.
+    """
+    t0 = time.monotonic()
+    if settings is not None:
+        request = replace(request, settings=settings)
+    s = request.settings
+    problem = SegmentProblem(request, world)
+    start = tuple(float(x) for x in request.start[:world.dims])
+    where = request.describe()
+    fmt_start = ', '.join(f'{x:.2f}' for x in start)
+
+    def fail(code: ErrorCode, why: str, **details: Any) -> SegmentResult:
+        err = PlanningError(f'{where}: {why}', code, details={'transition': list(request.transition),
+                                                             'start': list(start), **details})
+        return SegmentResult.failure(request.id, err, time.monotonic() - t0)
+
+    if len(start) != world.dims or not all(math.isfinite(x) for x in start):
+        raise InvalidInputError(f'start must be {world.dims} finite numbers, got {request.start}')
+    if not problem.in_bounds(start) or world.clearance(start) < 0:
+        return fail(ErrorCode.START_OCCUPIED,
+                    f'the start ({fmt_start}) is in collision or outside the map '
+                    f'(obstacles grown by the robot radius {world.robot_radius} m)')
+    if problem.in_goal(start):
+        w = np.array([start, start])
+        return SegmentResult(request.id, w, w.copy(), 0.0, None, time.monotonic() - t0)
+    if not eval_key_cubes(problem.allowed_cubes, problem.letter(start)):
+        return fail(ErrorCode.START_OCCUPIED,
+                    f'the start ({fmt_start}) lies in a region to avoid (atoms true there: '
+                    f'{", ".join(sorted(problem.letter(start))) or "none"})')
+    samples = problem.sample_goal(s.goal_samples, s.seed)
+    if len(samples) == 0:
+        return fail(ErrorCode.GOAL_OCCUPIED, 'every goal region is blocked: no free point satisfies the goal')
+    outcome = plan_motion(world.dims, problem.lo, problem.hi, start, problem.state_valid, problem.motion_valid,
+                          GoalSpec(problem.in_goal, problem.goal_lower_bound, samples), s)
+    if outcome.points is None:
+        if outcome.timed_out:
+            return fail(ErrorCode.TIMEOUT, f'no path within the time limit of {s.time_limit} s '
+                        f'({s.num_samples} samples)', planner_status=outcome.status)
+        return fail(ErrorCode.NO_VALID_PATH, f'no path from ({fmt_start}) reaches the goal region without '
+                    f'entering an obstacle or a region to avoid ({s.num_samples} samples)',
+                    planner_status=outcome.status)
+    raw = np.vstack([np.asarray(start)[None], outcome.points[1:]])
+    cut = problem.first_goal_prefix(raw)
+    if cut is None:
+        return fail(ErrorCode.NO_VALID_PATH, 'the planner\'s path does not reach the goal region')
+    path = _drop_collinear(cut)
+    if s.simplify:
+        path = problem.shortcut(path, pool=samples)
+    dense = resample(path, s.path_spacing) if s.path_spacing > 0 else path
+    return SegmentResult(request.id, path, dense, path_length(path), None, time.monotonic() - t0,
+                         outcome.seconds)

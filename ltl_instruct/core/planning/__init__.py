@@ -24,5 +24,7 @@ from ltl_instruct.core.planning.regions import (  # noqa: F401
 from ltl_instruct.core.planning.segment import (  # noqa: F401
     SegmentProblem, SegmentRequest, SegmentResult, SolveFn, path_length, resample, solve_segment,
 )
-from ltl_instruct.core.planning.taskplan import NAVIGATE, SKILL, PlanStep, TaskPlan, Verification  # noqa: F401
+from ltl_instruct.core.planning.taskplan import (  # noqa: F401
+    NAVIGATE, SKILL, PlanStep, TaskPlan, Verification,
+)
 from ltl_instruct.core.planning.verify import verify_plan  # noqa: F401

@@ -97,7 +97,8 @@ class PlanningWorld:
             hi = np.zeros((0, self.dims))
         object.__setattr__(self, '_lo', lo)
         object.__setattr__(self, '_hi', hi)
-        object.__setattr__(self, '_boxes', tuple((tuple(a), tuple(b)) for a, b in zip(lo.tolist(), hi.tolist())))
+        boxes = tuple((tuple(a), tuple(b)) for a, b in zip(lo.tolist(), hi.tolist()))
+        object.__setattr__(self, '_boxes', boxes)
 
     # ------------------------------------------------------------------ vectorised
     @property
@@ -124,7 +125,7 @@ class PlanningWorld:
 
     # ------------------------------------------------------------------ scalar (planner callbacks)
     def clearance(self, p: Sequence[float]) -> float:
-        """A radius [m] around ``p`` in which every point is free; -1 if ``p`` is not free.
+        """Return a radius [m] around ``p`` in which every point is free; -1 if ``p`` is not free.
 
         Exact for bounds and boxes (distance to the nearest inflated box or bound); an
         occupancy lookup gives 0 for a free point (its cells are checked one by one).
@@ -158,7 +159,7 @@ class PlanningWorld:
 # --------------------------------------------------------------------------- factories
 
 def world_from_scene(scene: Scene, robot_radius: Optional[float] = None) -> PlanningWorld:
-    """The planning world of a scene: its blocking boxes, inflated by the robot radius.
+    """Build the planning world of a scene: its blocking boxes, inflated by the robot radius.
 
     A ground robot plans in (x, y) inside the scene bounds shrunk by its radius; a drone
     in (x, y, z) with z inside its altitude band (or the scene's z bounds).
@@ -186,7 +187,7 @@ def _inflate(blocked: np.ndarray, resolution: float, radius: float) -> np.ndarra
 
 def world_from_occupancy(cells: np.ndarray, resolution: float, origin: Sequence[float],
                          robot_radius: float = 0.3, occupied_threshold: int = 50) -> PlanningWorld:
-    """A 2D world from an occupancy grid (``nav_msgs/OccupancyGrid`` layout).
+    """Build a 2D world from an occupancy grid (``nav_msgs/OccupancyGrid`` layout).
 
     Parameters
     ----------
@@ -215,7 +216,7 @@ def world_from_occupancy(cells: np.ndarray, resolution: float, origin: Sequence[
 def world_from_points(points: np.ndarray, voxel: float = 0.2, robot_radius: float = 0.3,
                       bounds_min: Optional[Sequence[float]] = None,
                       bounds_max: Optional[Sequence[float]] = None) -> PlanningWorld:
-    """A 3D world from obstacle points (a drone's map cloud), voxelised and inflated.
+    """Build a 3D world from obstacle points (a drone's map cloud), voxelised and inflated.
 
     Parameters
     ----------

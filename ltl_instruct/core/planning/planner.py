@@ -230,8 +230,8 @@ class _Search:
             return None
         w = np.asarray(result.waypoints, dtype=float)[:, :self.dims]
         if np.linalg.norm(w[0] - pos) > 1e-6:
-            self.failures.append(PlanningError(f'{req.describe()}: the returned path does not start at the robot',
-                                               ErrorCode.NO_VALID_PATH))
+            self.failures.append(PlanningError(
+                f'{req.describe()}: the returned path does not start at the robot', ErrorCode.NO_VALID_PATH))
             return None
         states = self.run_states(state, w)
         if any(s != state for s in states[:-1]) or states[-1] != dst:
@@ -295,7 +295,8 @@ class _Search:
 
 def _failure_error(search: _Search, formula: str) -> LtlInstructError:
     fails = search.failures
-    details: dict[str, Any] = {'failures': [f.to_dict() for f in fails[:20]], 'segments_solved': search.solves}
+    details: dict[str, Any] = {'failures': [f.to_dict() for f in fails[:20]],
+                               'segments_solved': search.solves}
     if search.out_of_budget:
         lead = fails[0].message if fails else 'no segment was solved'
         return PlanningError(f'gave up after {search.solves} segments / {search.settings.time_budget} s '
@@ -303,7 +304,8 @@ def _failure_error(search: _Search, formula: str) -> LtlInstructError:
                              details)
     if not fails:
         return PlanningError(f'no transition of "{formula}" can be attempted from here (a release needs '
-                             'its object in hand, a pick needs a free hand)', ErrorCode.NO_VALID_PATH, details)
+                             'its object in hand, a pick needs a free hand)', ErrorCode.NO_VALID_PATH,
+                             details)
     seen: list[str] = []
     for f in fails:
         if f.message not in seen:
@@ -360,7 +362,8 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
         raise UnsatisfiableError(f'the task "{formula}" can never be completed: no sequence of steps '
                                  'satisfies it', details={'formula': formula})
     if not world.is_free(p0[None])[0]:
-        raise PlanningError(f'the start ({", ".join(f"{x:.2f}" for x in p0)}) is in collision or outside the map',
+        where = ', '.join(f'{x:.2f}' for x in p0)
+        raise PlanningError(f'the start ({where}) is in collision or outside the map',
                             ErrorCode.START_OCCUPIED, details={'start': p0.tolist()})
     fmt = settings.fmt
     solver: SolveFn = solve if solve is not None else (lambda req: solve_segment(req, world, fmt))
@@ -372,7 +375,8 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
         state = int(initial_state)
     if state == automaton.sink:
         raise PlanningError(f'the start already violates "{formula}" (atoms true there: '
-                            f'{", ".join(sorted(search.letter_keys(p0))) or "none"})', ErrorCode.START_OCCUPIED,
+                            f'{", ".join(sorted(search.letter_keys(p0))) or "none"})',
+                            ErrorCode.START_OCCUPIED,
                             details={'start': p0.tolist()})
     steps = search.search(state, p0, None, frozenset({(state, None)}))
     if steps is None:
@@ -387,11 +391,12 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
     return TaskPlan(formula, p0, dims, tuple(steps), 'planned' if steps else 'satisfied', verification, stats)
 
 
-def referent_regions(automaton: Automaton, referent_map: ReferentMap, threshold: float) -> tuple[AtomRegion, ...]:
-    """The regions of every near-atom of a task (including where its skills happen)."""
+def referent_regions(automaton: Automaton, referent_map: ReferentMap,
+                     threshold: float) -> tuple[AtomRegion, ...]:
+    """Return the regions of every near-atom of a task (including where its skills happen)."""
     extra = []
     for a in automaton.atoms:
         if a.is_event:
             extra.append(Atom('near', (a.args[0] if a.skill == 'pick' else a.args[1],)))
-    return regions_for(atoms_needed(*(e.guard for e in automaton.edges()), extra=extra) + list(automaton.atoms),
-                       referent_map, threshold)
+    atoms = atoms_needed(*(e.guard for e in automaton.edges()), extra=extra) + list(automaton.atoms)
+    return regions_for(atoms, referent_map, threshold)

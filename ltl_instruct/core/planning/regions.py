@@ -48,7 +48,8 @@ class AtomRegion:
 
     def __post_init__(self) -> None:
         if len(self.centers) != len(self.sizes):
-            raise InvalidInputError(f'region {self.key}: {len(self.centers)} centres, {len(self.sizes)} sizes')
+            raise InvalidInputError(
+                f'region {self.key}: {len(self.centers)} centres, {len(self.sizes)} sizes')
         vals = [v for c in self.centers for v in c] + [v for s in self.sizes for v in s] + [self.radius]
         if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in vals) or self.radius < 0 \
                 or any(v < 0 for s in self.sizes for v in s):
@@ -65,7 +66,7 @@ class AtomRegion:
         return np.sqrt((gap ** 2).sum(axis=2)).min(axis=1)
 
     def only(self, index: int) -> 'AtomRegion':
-        """The same region restricted to one instance."""
+        """Return the same region restricted to one instance."""
         return AtomRegion(self.key, (self.centers[index],), (self.sizes[index],), self.radius)
 
     def to_dict(self) -> dict[str, Any]:
@@ -95,12 +96,12 @@ def _vec3(v: Any) -> tuple[float, float, float]:
 
 
 def near_atom_of(descriptor_text: str) -> str:
-    """The key of the near-atom of a descriptor text: ``red_sofa`` -> ``near[red_sofa]``."""
+    """Return the key of the near-atom of a descriptor text: ``red_sofa`` -> ``near[red_sofa]``."""
     return f'near[{descriptor_text}]'
 
 
 def regions_for(atoms: Iterable[Atom], referent_map: ReferentMap, radius: float) -> tuple[AtomRegion, ...]:
-    """The regions of the near-atoms among ``atoms``, from the referent map's instances.
+    """Build the regions of the near-atoms among ``atoms`` from the referent map's instances.
 
     A descriptor with no instance gives an empty region (the atom is false everywhere).
     """
@@ -119,7 +120,7 @@ KeyCube = tuple[frozenset[str], frozenset[str]]
 
 
 def navigation_guard(guard: Guard) -> Guard:
-    """The guard restricted to letters with no event atom true (what holds while driving)."""
+    """Restrict a guard to letters with no event atom true (what holds while driving)."""
     cubes = []
     for c in guard.cubes:
         if any(a.is_event for a in c.pos):
@@ -129,7 +130,7 @@ def navigation_guard(guard: Guard) -> Guard:
 
 
 def skill_guard(guard: Guard, event: Atom) -> Guard:
-    """The guard over near-atoms of the letters in which ``event`` (and no other event) is true."""
+    """Restrict a guard to the letters in which ``event`` (and no other event) is true."""
     cubes = []
     for c in guard.cubes:
         if event in c.neg or any(a.is_event and a != event for a in c.pos):
@@ -139,7 +140,7 @@ def skill_guard(guard: Guard, event: Atom) -> Guard:
 
 
 def key_cubes(guard: Guard) -> tuple[KeyCube, ...]:
-    """The guard's cubes as (true keys, false keys)."""
+    """Return the guard's cubes as (true keys, false keys)."""
     return tuple((frozenset(a.key for a in c.pos), frozenset(a.key for a in c.neg)) for c in guard.cubes)
 
 
@@ -184,7 +185,7 @@ class RegionSet:
         return nearest
 
     def letter_and_margin(self, p: Sequence[float]) -> tuple[frozenset[str], float]:
-        """The true keys at point ``p``, and how far [m] ``p`` may move before any changes."""
+        """Return the true keys at ``p``, and how far [m] ``p`` may move before any changes."""
         nearest = self.nearest(p)
         true = []
         margin = math.inf
@@ -205,7 +206,8 @@ def eval_key_cubes(cubes: Sequence[KeyCube], letter: frozenset[str]) -> bool:
     return False
 
 
-def eval_guard_vectorised(cubes: Sequence[KeyCube], valuation: Mapping[str, np.ndarray], n: int) -> np.ndarray:
+def eval_guard_vectorised(cubes: Sequence[KeyCube], valuation: Mapping[str, np.ndarray],
+                          n: int) -> np.ndarray:
     """Whether each of ``n`` points satisfies a guard, given the atom valuation; shape (n,).
 
     Atoms missing from ``valuation`` are false.
@@ -246,7 +248,7 @@ class TaskProgressionMap:
 
     def render(self, bounds_min: Sequence[float], bounds_max: Sequence[float], spacing: float = 0.25,
                z: float = 0.0, max_points: int = 2_000_000) -> tuple[np.ndarray, np.ndarray]:
-        """The TPSM as points for people and RViz: a grid over the bounds.
+        """Render the TPSM as points for people and RViz: a grid over the bounds.
 
         Returns
         -------
@@ -267,7 +269,7 @@ class TaskProgressionMap:
 
 
 def atoms_needed(*guards: Guard, extra: Optional[Iterable[Atom]] = None) -> list[Atom]:
-    """The non-event atoms of some guards (and ``extra``), in a stable order."""
+    """List the non-event atoms of some guards (and ``extra``), in a stable order."""
     seen: dict[str, Atom] = {}
     for g in guards:
         for a in g.atoms:

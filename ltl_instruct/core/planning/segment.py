@@ -145,7 +145,8 @@ class SegmentRequest:
         target = None
         t = d.get('target')
         if t is not None:
-            if not isinstance(t, Mapping) or t.get('atom') not in known or not isinstance(t.get('instance'), int):
+            if not isinstance(t, Mapping) or t.get('atom') not in known \
+                    or not isinstance(t.get('instance'), int):
                 raise InvalidInputError('segment request: target must name a region and an instance index')
             region = next(r for r in regions if r.key == t['atom'])
             if not 0 <= t['instance'] < len(region.centers):
@@ -211,12 +212,12 @@ class SegmentResult:
 
     @staticmethod
     def failure(request_id: str, error: LtlInstructError, seconds: float = 0.0) -> 'SegmentResult':
-        """A failed result."""
+        """Make a failed result."""
         return SegmentResult(request_id, None, None, 0.0, error, seconds)
 
     @staticmethod
     def from_waypoints(request_id: str, waypoints: np.ndarray, spacing: float = 0.05) -> 'SegmentResult':
-        """A result from a path received from elsewhere (e.g. over DDS)."""
+        """Make a result from a path received from elsewhere (e.g. over DDS)."""
         w = np.asarray(waypoints, dtype=float)
         if w.ndim != 2 or len(w) < 1 or not np.all(np.isfinite(w)):
             raise InvalidInputError('a segment path must be a non-empty (N, dims) array of finite numbers')
@@ -234,7 +235,7 @@ def path_length(points: np.ndarray) -> float:
 
 
 def resample(points: np.ndarray, spacing: float) -> np.ndarray:
-    """The polyline (N, dims) with every vertex kept and points added so no gap exceeds ``spacing`` [m]."""
+    """Resample a polyline (N, dims): keep every vertex, add points so no gap exceeds ``spacing`` [m]."""
     p = np.asarray(points, dtype=float)
     if len(p) < 2:
         return p.copy()
@@ -278,7 +279,7 @@ class SegmentProblem:
 
     # -- points
     def letter(self, p: Sequence[float]) -> frozenset[str]:
-        """True atom keys at a point."""
+        """Return the true atom keys at a point."""
         return self.regions.letter_and_margin(p)[0]
 
     def in_bounds(self, p: Sequence[float]) -> bool:
@@ -292,11 +293,11 @@ class SegmentProblem:
         return eval_key_cubes(self.valid_cubes, self.letter(p))
 
     def in_goal(self, p: Sequence[float]) -> bool:
-        """The letter at ``p`` satisfies the goal."""
+        """Whether the letter at ``p`` satisfies the goal."""
         return eval_key_cubes(self.goal_cubes, self.letter(p))
 
     def goal_lower_bound(self, p: Sequence[float]) -> float:
-        """A lower bound of the distance [m] from ``p`` to the goal region."""
+        """Return a lower bound of the distance [m] from ``p`` to the goal region."""
         nearest = dict(zip((r.key for r in self.regions.regions), self.regions.nearest(p)))
         best = math.inf
         for pos, _ in self.goal_cubes:
@@ -328,7 +329,7 @@ class SegmentProblem:
 
     # -- vectorised
     def classify(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """``(valid, goal)`` flags for points (N, dims), each shape (N,)."""
+        """Return ``(valid, goal)`` flags for points (N, dims), each shape (N,)."""
         p = np.atleast_2d(np.asarray(points, dtype=float))
         val = self.regions.valuation(p)
         goal = eval_guard_vectorised(self.goal_cubes, val, len(p))
@@ -374,7 +375,7 @@ class SegmentProblem:
         return np.vstack(found)[:count]
 
     def first_goal_prefix(self, points: np.ndarray) -> Optional[np.ndarray]:
-        """The dense path cut at its first goal point, or None if it never reaches the goal.
+        """Cut the densified path at its first goal point; None if it never reaches the goal.
 
         Raises
         ------
@@ -389,11 +390,12 @@ class SegmentProblem:
             return None
         g = int(hits[0])
         if not valid[1:g].all():
-            raise PlanningError('a planned path left the allowed space before its goal', ErrorCode.INTERNAL_ERROR)
+            raise PlanningError('a planned path left the allowed space before its goal',
+                                ErrorCode.INTERNAL_ERROR)
         return dense[:g + 1]
 
     def goal_projections(self, p: Sequence[float]) -> list[np.ndarray]:
-        """Nearest points to ``p`` of each instance's near-ball of each goal cube's true atoms."""
+        """Return the nearest points to ``p`` of the near-balls of every goal cube's true atoms."""
         dims = self.world.dims
         a = np.asarray(p[:dims], dtype=float)
         out = []
@@ -506,8 +508,8 @@ def solve_segment(request: SegmentRequest, world: PlanningWorld,
     fmt_start = ', '.join(f'{x:.2f}' for x in start)
 
     def fail(code: ErrorCode, why: str, **details: Any) -> SegmentResult:
-        err = PlanningError(f'{where}: {why}', code, details={'transition': list(request.transition),
-                                                             'start': list(start), **details})
+        facts = {'transition': list(request.transition), 'start': list(start), **details}
+        err = PlanningError(f'{where}: {why}', code, details=facts)
         return SegmentResult.failure(request.id, err, time.monotonic() - t0)
 
     if len(start) != world.dims or not all(math.isfinite(x) for x in start):
@@ -526,8 +528,9 @@ def solve_segment(request: SegmentRequest, world: PlanningWorld,
     samples = problem.sample_goal(s.goal_samples, s.seed)
     if len(samples) == 0:
         return fail(ErrorCode.GOAL_OCCUPIED, 'every goal region is blocked: no free point satisfies the goal')
-    outcome = plan_motion(world.dims, problem.lo, problem.hi, start, problem.state_valid, problem.motion_valid,
-                          GoalSpec(problem.in_goal, problem.goal_lower_bound, samples), s)
+    goal = GoalSpec(problem.in_goal, problem.goal_lower_bound, samples)
+    outcome = plan_motion(world.dims, problem.lo, problem.hi, start, problem.state_valid,
+                          problem.motion_valid, goal, s)
     if outcome.points is None:
         if outcome.timed_out:
             return fail(ErrorCode.TIMEOUT, f'no path within the time limit of {s.time_limit} s '

@@ -133,7 +133,7 @@ class TaskPlan:
         return [self.steps[0].state_before] + [s.state_after for s in self.steps]
 
     def path(self) -> np.ndarray:
-        """The whole path [m], shape (N, dims) (the start alone when there is no step)."""
+        """Return the whole path [m], shape (N, dims) (the start alone when there is no step)."""
         parts = [np.asarray(self.start, dtype=float)[None, :self.dims]]
         for s in self.steps:
             if s.kind == NAVIGATE:

@@ -45,7 +45,7 @@ def _near(referent_map: ReferentMap, descriptor: str, point: np.ndarray, dims: i
 
 
 def _collision(world: PlanningWorld, points: np.ndarray) -> np.ndarray:
-    """Samples (N, dims) where the robot would hit something or leave the bounds; shape (N,)."""
+    """Flag samples (N, dims) where the robot would hit something or leave the bounds; shape (N,)."""
     d = world.dims
     lo = np.asarray(world.bounds_min) - 1e-9
     hi = np.asarray(world.bounds_max) + 1e-9

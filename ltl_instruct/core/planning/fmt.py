@@ -37,7 +37,8 @@ class FmtSettings:
     extended_fmt: FMT* adds samples when it fails (then it runs to the time limit).
     time_limit: wall-clock limit per segment [s].
     seed: seed of OMPL's sampler and of the goal sampler.
-    check_resolution: largest step [m] of an edge check where no clearance certifies it.
+    check_resolution: smallest step [m] of an edge check near a region boundary (obstacles
+        are checked exactly): no avoid region thicker than this can be jumped.
     path_spacing: spacing [m] of the returned dense path (0: only the waypoints).
     simplify: shortcut the path (never leaving the allowed space).
     planner: ``fmt`` or ``rrtstar`` (RRT* runs for the whole time limit).
@@ -52,7 +53,7 @@ class FmtSettings:
     extended_fmt: bool = False
     time_limit: float = 5.0
     seed: int = 0
-    check_resolution: float = 0.02
+    check_resolution: float = 0.01
     path_spacing: float = 0.05
     simplify: bool = True
     planner: str = 'fmt'

@@ -156,6 +156,35 @@ class PlanningWorld:
         return best
 
 
+    def segment_hits_box(self, a: Sequence[float], b: Sequence[float]) -> bool:
+        """Whether the straight segment a -> b touches an inflated box (exact slab test)."""
+        d = self.dims
+        seg_lo = [min(a[k], b[k]) for k in range(d)]
+        seg_hi = [max(a[k], b[k]) for k in range(d)]
+        for lo, hi in self._boxes:
+            if any(seg_hi[k] < lo[k] or seg_lo[k] > hi[k] for k in range(d)):
+                continue
+            t0, t1 = 0.0, 1.0
+            for k in range(d):
+                delta = b[k] - a[k]
+                if delta == 0.0:
+                    if a[k] < lo[k] or a[k] > hi[k]:
+                        t0, t1 = 1.0, 0.0
+                        break
+                    continue
+                u = (lo[k] - a[k]) / delta
+                v = (hi[k] - a[k]) / delta
+                if u > v:
+                    u, v = v, u
+                t0 = max(t0, u)
+                t1 = min(t1, v)
+                if t0 > t1:
+                    break
+            if t0 <= t1:
+                return True
+        return False
+
+
 # --------------------------------------------------------------------------- factories
 
 def world_from_scene(scene: Scene, robot_radius: Optional[float] = None) -> PlanningWorld:

@@ -1,0 +1,176 @@
+"""Planning core: the collision model (scenes, occupancy grids, point clouds) and atom regions."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from ltl_instruct.core.automaton import compile_automaton
+from ltl_instruct.core.automaton.guards import Guard
+from ltl_instruct.core.errors import InvalidInputError, LtlInstructError
+from ltl_instruct.core.grounding.rsm import Instance
+from ltl_instruct.core.planning import (
+    AVOID, GOAL, NEUTRAL, AtomRegion, RegionSet, TaskProgressionMap, navigation_guard, skill_guard,
+    world_from_occupancy, world_from_points, world_from_scene,
+)
+from ltl_instruct.core.planning.regions import eval_guard_vectorised, eval_key_cubes, key_cubes
+from ltl_instruct.core.spec import parse_formula
+from ltl_instruct.core.world.scene import scene_from_dict
+
+SCENE = {
+    'bounds': {'min': [0, 0, 0], 'max': [10, 8, 3]},
+    'robot': {'kind': 'ground', 'start': [1, 1, 0], 'radius': 0.3},
+    'obstacles': [{'center': [5, 2, 1], 'size': [0.2, 4, 2]}],
+    'objects': [{'label': 'sofa', 'center': [8, 6, 0.4], 'size': [1, 1, 0.8]},
+                {'label': 'rug', 'center': [2, 6, 0.0], 'size': [2, 2, 0.01], 'passable': True}],
+}
+
+
+def test_scene_world_inflates_obstacles_and_solid_objects_by_the_robot_radius():
+    w = world_from_scene(scene_from_dict(SCENE))
+    assert w.dims == 2
+    assert w.bounds_min == (0.3, 0.3) and w.bounds_max == (9.7, 7.7)
+    # wall x in [4.9, 5.1]: 0.25 m away is blocked, 0.35 m is free
+    assert not w.is_free(np.array([[4.65, 2.0]]))[0]
+    assert w.is_free(np.array([[4.55, 2.0]]))[0]
+    # the sofa is solid, the rug passable
+    assert not w.is_free(np.array([[8.0, 6.0]]))[0]
+    assert w.is_free(np.array([[2.0, 6.0]]))[0]
+    # out of bounds and NaN are never free
+    assert not w.is_free(np.array([[0.1, 1.0], [np.nan, 1.0]])).any()
+
+
+def test_drone_world_plans_inside_the_altitude_band():
+    d = dict(SCENE, robot={'kind': 'drone', 'start': [1, 1, 1.5], 'radius': 0.2}, altitude={'min': 1.0, 'max': 2.5})
+    w = world_from_scene(scene_from_dict(d))
+    assert w.dims == 3
+    assert w.bounds_min[2] == 1.0 and w.bounds_max[2] == 2.5
+    assert w.is_free(np.array([[1, 1, 1.5]]))[0]
+    assert not w.is_free(np.array([[1, 1, 0.5]]))[0]
+
+
+@settings(max_examples=150, derandomize=True, deadline=None)
+@given(st.floats(0.3, 9.7), st.floats(0.3, 7.7), st.floats(0, 2 * math.pi), st.floats(0, 1))
+def test_clearance_certifies_a_free_ball(x, y, angle, frac):
+    w = world_from_scene(scene_from_dict(SCENE))
+    c = w.clearance((x, y))
+    assert (c >= 0) == bool(w.is_free(np.array([[x, y]]))[0])
+    if c > 0:
+        q = np.array([[x + 0.999 * c * frac * math.cos(angle), y + 0.999 * c * frac * math.sin(angle)]])
+        assert w.is_free(q)[0]
+
+
+def test_occupancy_grid_world_blocks_occupied_unknown_and_inflated_cells():
+    cells = np.zeros((20, 30), dtype=np.int8)   # 3 m x 2 m at 0.1 m
+    cells[:, 15] = 100                           # a wall at x in [1.5, 1.6)
+    cells[0, 0] = -1                             # unknown corner
+    w = world_from_occupancy(cells, 0.1, (0.0, 0.0), robot_radius=0.25)
+    assert not w.is_free(np.array([[1.55, 1.0]]))[0]
+    assert not w.is_free(np.array([[1.35, 1.0]]))[0]       # within the radius of the wall
+    assert w.is_free(np.array([[1.0, 1.0]]))[0]
+    assert not w.is_free(np.array([[0.05, 0.05]]))[0]
+    assert w.clearance((1.0, 1.0)) == 0.0 and w.clearance((1.55, 1.0)) < 0
+    with pytest.raises(InvalidInputError):
+        world_from_occupancy(np.zeros((0, 0)), 0.1, (0, 0))
+    with pytest.raises(InvalidInputError):
+        world_from_occupancy(cells, float('nan'), (0, 0))
+
+
+def test_point_cloud_world_is_3d_and_inflated():
+    pts = np.array([[2.0, y, z] for y in np.arange(0, 4, 0.1) for z in np.arange(0, 3, 0.1)])
+    w = world_from_points(pts, voxel=0.1, robot_radius=0.2, bounds_min=(0, 0, 0), bounds_max=(4, 4, 3))
+    assert w.dims == 3
+    assert not w.is_free(np.array([[2.05, 1.0, 1.0]]))[0]
+    assert not w.is_free(np.array([[2.25, 1.0, 1.0]]))[0]
+    assert w.is_free(np.array([[3.0, 1.0, 1.0]]))[0]
+    with pytest.raises(InvalidInputError):
+        world_from_points(np.full((3, 3), np.nan))
+
+
+# --------------------------------------------------------------------------- regions
+
+@settings(max_examples=100, derandomize=True, deadline=None)
+@given(st.lists(st.tuples(st.floats(-5, 5), st.floats(-5, 5), st.floats(0, 2)), min_size=1, max_size=20),
+       st.floats(0, 3), st.floats(0, 3), st.integers(2, 3))
+def test_region_distance_matches_the_referent_map_instances(points, sx, sy, dims):
+    inst = [Instance('a', 'a', (1.0, -2.0, 0.5), (sx, sy, 1.0)), Instance('b', 'b', (-3.0, 1.0, 1.0))]
+    region = AtomRegion('near[a]', tuple(i.center for i in inst), tuple(i.size for i in inst), 1.0)
+    p = np.asarray(points)
+    expected = np.min([i.distance(p, dims) for i in inst], axis=0)
+    assert np.allclose(region.distance(p, dims), expected)
+
+
+@settings(max_examples=150, derandomize=True, deadline=None)
+@given(st.floats(-4, 4), st.floats(-4, 4), st.floats(0, 2 * math.pi), st.floats(0, 0.999))
+def test_letter_margin_means_no_atom_changes_inside_it(x, y, angle, frac):
+    regions = RegionSet([AtomRegion('near[a]', ((0.0, 0.0, 0.0),), ((1.0, 2.0, 0.0),), 1.0),
+                         AtomRegion('near[b]', ((2.0, 1.0, 0.0), (-2.0, -2.0, 0.0)), ((0.0, 0.0, 0.0),) * 2, 0.7)],
+                        dims=2)
+    letter, margin = regions.letter_and_margin((x, y))
+    vec = regions.valuation(np.array([[x, y]]))
+    assert letter == frozenset(k for k, v in vec.items() if v[0])
+    q = (x + frac * margin * math.cos(angle), y + frac * margin * math.sin(angle))
+    assert regions.letter_and_margin(q)[0] == letter
+
+
+def _letters(atoms):
+    out = []
+    for mask in range(2 ** len(atoms)):
+        out.append(frozenset(a for i, a in enumerate(atoms) if mask >> i & 1))
+    return out
+
+
+@pytest.mark.parametrize('text', [
+    'F (pick[cup] & F release[cup, table]) & G !near[door]',
+    '(!near[a] U (near[a] & pick[x])) | F release[x, a]',
+])
+def test_navigation_and_skill_guards_agree_with_the_automaton(text):
+    aut = compile_automaton(parse_formula(text))
+    nav_atoms = [a for a in aut.atoms if not a.is_event]
+    events = [a for a in aut.atoms if a.is_event]
+    for e in aut.edges():
+        nav = key_cubes(navigation_guard(e.guard))
+        for letter in _letters(nav_atoms):
+            keys = frozenset(a.key for a in letter)
+            assert eval_key_cubes(nav, keys) == e.guard.evaluate(letter)
+            for ev in events:
+                sk = key_cubes(skill_guard(e.guard, ev))
+                assert eval_key_cubes(sk, keys) == e.guard.evaluate(letter | {ev})
+
+
+def test_tpsm_classifies_goal_avoid_and_neutral_points():
+    aut = compile_automaton(parse_formula('F near[a] & G !near[b]'))
+    s0 = aut.initial
+    edge = next(e for e in aut.edges_from(s0) if e.dst not in (s0, aut.sink))
+    regions = (AtomRegion('near[a]', ((5.0, 0.0, 0.0),), ((0.0, 0.0, 0.0),), 1.0),
+               AtomRegion('near[b]', ((0.0, 5.0, 0.0),), ((0.0, 0.0, 0.0),), 1.0))
+    tpsm = TaskProgressionMap(navigation_guard(edge.guard), navigation_guard(aut.self_loop(s0)), regions, 2)
+    values = tpsm.classify(np.array([[5.0, 0.5], [0.0, 5.5], [2.0, 2.0]]))
+    assert values.tolist() == [GOAL, AVOID, NEUTRAL]
+    pts, vals = tpsm.render((0, 0), (6, 6), spacing=0.5)
+    assert pts.shape[1] == 3 and len(pts) == len(vals) == 13 * 13
+    assert {GOAL, AVOID, NEUTRAL} <= set(vals.tolist())
+    with pytest.raises(InvalidInputError):
+        tpsm.render((0, 0), (6, 6), spacing=0.0)
+
+
+def test_guard_evaluation_vectorised_matches_scalar():
+    g = Guard.from_dict({'cubes': [{'pos': ['near[a]'], 'neg': ['near[b]']}, {'pos': ['near[c]'], 'neg': []}]})
+    cubes = key_cubes(g)
+    rng = np.random.default_rng(0)
+    val = {k: rng.random(64) < 0.5 for k in ('near[a]', 'near[b]', 'near[c]')}
+    vec = eval_guard_vectorised(cubes, val, 64)
+    for i in range(64):
+        letter = frozenset(k for k, v in val.items() if v[i])
+        assert vec[i] == eval_key_cubes(cubes, letter)
+
+
+def test_region_from_dict_rejects_garbage():
+    for bad in [{}, {'atom': 'near[a]', 'radius': 'x'}, {'atom': 'near[a]', 'radius': 1.0, 'instances': [{'center': [1]}]},
+                {'atom': 'near[a]', 'radius': float('nan'), 'instances': []}]:
+        with pytest.raises(LtlInstructError):
+            AtomRegion.from_dict(bad)
+    r = AtomRegion('near[a]', ((1.0, 2.0, 0.0),), ((0.5, 0.5, 0.5),), 1.2)
+    assert AtomRegion.from_dict(r.to_dict()) == r

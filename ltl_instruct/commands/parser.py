@@ -24,11 +24,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     train = sub.add_parser('train', help='train a parser (and the baseline) for one city map')
     eval_ = sub.add_parser('eval', help='score a trained parser and the baseline on the test split')
     for p in (train, eval_):
-        p.add_argument('--city', required=True, help='city name: DIR/instructions/NAME.tsv, DIR/maps/NAME.json')
+        p.add_argument('--city', required=True,
+                       help='city name: DIR/instructions/NAME.tsv, DIR/maps/NAME.json')
         p.add_argument('--data', required=True, help='osm-trajectories folder')
         p.add_argument('--threads', type=int, default=2, help='torch CPU threads (default 2)')
     train.add_argument('--out', required=True, help='model file to write')
-    train.add_argument('--epochs', type=int, default=None, help='training epochs (default from TrainingConfig)')
+    train.add_argument('--epochs', type=int, default=None,
+                       help='training epochs (default from TrainingConfig)')
     train.add_argument('--time-limit', type=float, default=None,
                        help='seconds after which no new epoch starts (default 1080)')
     train.add_argument('--seed', type=int, default=0, help='random seed (default 0)')

@@ -33,7 +33,7 @@ _RESERVED = frozenset({'true', 'false', 'near', 'pick', 'release'})
 
 
 def snake_case_name(name: str) -> str:
-    """The proposition for a landmark name: lower-case snake_case, as the grammar wants.
+    """Make the proposition for a landmark name: lower-case snake_case, as the grammar wants.
 
     ``"Busch-Reisinger Museum"`` becomes ``busch_reisinger_museum``; a name that
     would start with a digit gets a leading ``l_``; reserved words get ``_place``.
@@ -137,7 +137,7 @@ class LandmarkMap:
         return float(np.linalg.norm(self.xy[i] - self.xy[j]))
 
     def graph(self) -> nx.Graph:
-        """The map as a networkx graph, edge attribute ``weight`` [m]."""
+        """Build the map as a networkx graph, edge attribute ``weight`` [m]."""
         g = nx.Graph()
         g.add_nodes_from(range(self.num_landmarks))
         for i, j in sorted(self.edges):
@@ -145,7 +145,7 @@ class LandmarkMap:
         return g
 
     def neighbours(self) -> list[list[tuple[int, float]]]:
-        """Adjacency lists: ``neighbours()[i]`` = [(j, length [m]), ...], sorted by j."""
+        """Adjacency lists: item i is [(j, length [m]), ...], sorted by j."""
         adj: list[list[tuple[int, float]]] = [[] for _ in range(self.num_landmarks)]
         for i, j in sorted(self.edges):
             d = self.edge_length(i, j)
@@ -216,7 +216,7 @@ def shortest_path(lmap: LandmarkMap, start: int, goal: int) -> list[int]:
 
 def kth_shortest_path(lmap: LandmarkMap, start: int, goal: int, k: int,
                       graph: Optional[nx.Graph] = None) -> list[int]:
-    """The k-th (k >= 1) shortest simple path start -> goal; the longest found if fewer exist."""
+    """Find the k-th (k >= 1) shortest simple path start -> goal; the longest found if fewer exist."""
     if k < 1:
         raise InvalidInputError(f'k must be at least 1, got {k}')
     g = graph if graph is not None else lmap.graph()
@@ -233,7 +233,7 @@ def kth_shortest_path(lmap: LandmarkMap, start: int, goal: int, k: int,
 
 def simulate_trajectory(lmap: LandmarkMap, rng: np.random.Generator, p: float = 0.2,
                         graph: Optional[nx.Graph] = None) -> list[int]:
-    """A simulated trajectory: uniform start != end, the k-th shortest path, k ~ Geometric(p).
+    """Simulate a trajectory: uniform start != end, the k-th shortest path, k ~ Geometric(p).
 
     ``rng`` is a numpy generator (seed it for repeatable trajectories).
     """

@@ -15,6 +15,6 @@ if TYPE_CHECKING:  # pragma: no cover
 
 
 def load_translator(model_path: str) -> 'LearnedTranslator':
-    """The ``learned`` backend for the map a model was trained on (raises ``ModelLoadError``)."""
+    """Load the ``learned`` backend for the map a model was trained on (raises ``ModelLoadError``)."""
     from ltl_instruct.core.language.learned.translator import LearnedTranslator
     return LearnedTranslator.from_file(model_path)

@@ -14,7 +14,9 @@ from typing import Any
 import torch
 
 from ltl_instruct.core.errors import ErrorCode, LtlInstructError
-from ltl_instruct.core.language.learned.model import GoalBaseline, ParserConfig, SemanticParser, WordVocabulary
+from ltl_instruct.core.language.learned.model import (
+    GoalBaseline, ParserConfig, SemanticParser, WordVocabulary,
+)
 from ltl_instruct.core.language.learned.programs import OutputVocabulary
 from ltl_instruct.core.world.landmarks import LandmarkMap
 

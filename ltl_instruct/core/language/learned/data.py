@@ -136,7 +136,7 @@ def _parse_row(row: list[str], n: int, alt_by_figure: dict[str, tuple[int, ...]]
 
 
 def trajectory_rank(city: str, path: tuple[int, ...]) -> str:
-    """The hash that orders trajectories for the test split (hex SHA-256)."""
+    """Hash that orders trajectories for the test split (hex SHA-256)."""
     key = f'{SPLIT_SALT}|{city}|' + '-'.join(str(v) for v in path)
     return hashlib.sha256(key.encode('utf-8')).hexdigest()
 

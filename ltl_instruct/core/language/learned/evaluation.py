@@ -76,7 +76,7 @@ class PathScores:
 
 def plan_best_program(bundle: ParserBundle, programs: Sequence[tuple[int, ...]],
                       start: int) -> tuple[Optional[tuple[int, ...]], list[int]]:
-    """The first program of the beam with a plan from ``start``, and that plan ([start] if none)."""
+    """Return the first program of the beam with a plan from ``start``, and that plan ([start] if none)."""
     for prog in programs:
         try:
             formula = program_to_formula(bundle.out_vocab, prog)

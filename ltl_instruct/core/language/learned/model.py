@@ -122,7 +122,7 @@ class SemanticParser(nn.Module):
 
     # ------------------------------------------------------------------ network
     def encode(self, words: torch.Tensor, lengths: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
-        """Encoder states (B, T, 60) and word mask (B, T) for padded word ids (B, T)."""
+        """Encode padded word ids (B, T): encoder states (B, T, 60) and word mask (B, T) ."""
         emb = self.word_embedding(words)
         packed = nn.utils.rnn.pack_padded_sequence(emb, lengths, batch_first=True, enforce_sorted=False)
         out, _ = self.encoder(packed)
@@ -147,7 +147,7 @@ class SemanticParser(nn.Module):
     # ------------------------------------------------------------------ scoring
     def program_log_probs(self, states: torch.Tensor, mask: torch.Tensor, example: Sequence[int],
                           programs: Sequence[Sequence[int]]) -> torch.Tensor:
-        """log p(program | instruction) for each program (END appended), shape (P,), with gradient.
+        """Return log p(program | instruction) for each program (END appended), shape (P,), with gradient.
 
         ``example[i]`` is the row of ``states`` that program i belongs to.
         """
@@ -174,7 +174,8 @@ class SemanticParser(nn.Module):
                 hist.append(tok)
         flat = valid.reshape(-1)
         rows = np.repeat(np.asarray(example, dtype=np.int64), width)[flat]
-        logp = self._masked_log_probs(states[rows], mask[rows], torch.from_numpy(history.reshape(-1, k)[flat]),
+        hist_t = torch.from_numpy(history.reshape(-1, k)[flat])
+        logp = self._masked_log_probs(states[rows], mask[rows], hist_t,
                                       stack.reshape(-1)[flat], length.reshape(-1)[flat],
                                       last.reshape(-1)[flat])
         picked = logp.gather(1, torch.from_numpy(target.reshape(-1)[flat])[:, None])[:, 0]
@@ -187,60 +188,64 @@ class SemanticParser(nn.Module):
                     epsilon: float = 0.0, rng: Optional[np.random.Generator] = None) -> list[BeamResult]:
         """Constrained beam search for each instruction of the batch (states (B, T, 60)).
 
-        With ``epsilon`` > 0, each slot takes a random allowed continuation with that
-        probability (randomised beam search for exploration during training).
+        Each step keeps the ``beam`` best continuations of the unfinished programs;
+        those that chose END join the finished ones. Returns the ``beam`` best
+        finished programs; with ``epsilon`` > 0 (randomised beam search, for
+        exploration during training) each slot takes a random allowed continuation
+        with that probability, and every finished program is returned.
         """
         width = beam or self.config.beam
         n_batch = states.shape[0]
         k, vsize, end = self.config.history, self.out_vocab.size, self.out_vocab.end_id
         effect = self._effect.numpy()
         rng = rng or np.random.default_rng(0)
-        # hypotheses per instruction: token lists, score, stack, done
-        hyps: list[list[tuple[list[int], float, int, bool]]] = [[([], 0.0, 0, False)] for _ in range(n_batch)]
+        # live hypotheses per instruction: (tokens, log-prob, stack size); finished ones kept apart,
+        # so that short finished programs do not crowd the unfinished ones out of the beam
+        live: list[list[tuple[list[int], float, int]]] = [[([], 0.0, 0)] for _ in range(n_batch)]
+        finished: list[list[tuple[tuple[int, ...], float]]] = [[] for _ in range(n_batch)]
         for _ in range(self.config.max_program + 1):
-            live = [(b, j) for b in range(n_batch) for j, h in enumerate(hyps[b]) if not h[3]]
-            if not live:
+            flat = [(b, h) for b in range(n_batch) for h in live[b]]
+            if not flat:
                 break
-            hist = np.array([([self.start_id] * k + hyps[b][j][0])[-k:] for b, j in live], dtype=np.int64)
-            stack = np.array([hyps[b][j][2] for b, j in live], dtype=np.int64)
-            length = np.array([len(hyps[b][j][0]) for b, j in live], dtype=np.int64)
-            last = np.array([hyps[b][j][0][-1] if hyps[b][j][0] else -1 for b, j in live], dtype=np.int64)
-            rows = torch.tensor([b for b, _ in live], dtype=torch.long)
+            hist = np.array([([self.start_id] * k + h[0])[-k:] for _, h in flat], dtype=np.int64)
+            stack = np.array([h[2] for _, h in flat], dtype=np.int64)
+            length = np.array([len(h[0]) for _, h in flat], dtype=np.int64)
+            last = np.array([h[0][-1] if h[0] else -1 for _, h in flat], dtype=np.int64)
+            rows = torch.tensor([b for b, _ in flat], dtype=torch.long)
             logp = self._masked_log_probs(states[rows], mask[rows], torch.from_numpy(hist),
                                           stack, length, last).numpy()
-            new: list[list[tuple[list[int], float, int, bool]]] = [[h for h in hyps[b] if h[3]]
-                                                                   for b in range(n_batch)]
-            by_batch: dict[int, list[int]] = {}
-            for r, (b, _) in enumerate(live):
-                by_batch.setdefault(b, []).append(r)
-            for b, rs in by_batch.items():
-                cand_scores = np.concatenate([hyps[b][live[r][1]][1] + logp[r] for r in rs])
-                finite = np.flatnonzero(np.isfinite(cand_scores))
-                slots = width - len(new[b]) if epsilon == 0.0 else width
-                order = finite[np.argsort(-cand_scores[finite], kind='stable')]
-                if epsilon > 0.0 and len(order) > 1:
-                    n_random = int(rng.binomial(min(slots, len(order)), epsilon))
-                    top = order[:max(0, slots - n_random)]
-                    rest = order[len(top):]
-                    extra = rng.choice(rest, size=min(n_random, len(rest)), replace=False) if len(rest) else []
-                    chosen = np.concatenate([top, np.asarray(extra, dtype=np.int64)])
+            total = np.array([h[1] for _, h in flat])[:, None] + logp
+            new_live: list[list[tuple[list[int], float, int]]] = [[] for _ in range(n_batch)]
+            row = 0
+            for b in range(n_batch):
+                rs = np.arange(row, row + len(live[b]))
+                row += len(live[b])
+                if not len(rs):
+                    continue
+                cand = total[rs].reshape(-1)
+                valid = np.flatnonzero(np.isfinite(cand))
+                order = valid[np.argsort(-cand[valid], kind='stable')]
+                if epsilon > 0.0 and len(order) > width:
+                    n_random = int(rng.binomial(width, epsilon))
+                    top = order[:width - n_random]
+                    extra = rng.choice(order[width - n_random:], size=n_random, replace=False)
+                    chosen = np.concatenate([top, extra.astype(np.int64)])
                 else:
-                    chosen = order[:slots]
+                    chosen = order[:width]
                 for c in chosen:
                     r, tok = rs[int(c) // vsize], int(c) % vsize
-                    toks, _, depth, _ = hyps[b][live[r][1]]
+                    toks, _, depth = flat[r][1]
                     if tok == end:
-                        new[b].append((toks, float(cand_scores[c]), depth, True))
+                        finished[b].append((tuple(toks), float(cand[c])))
                     else:
-                        new[b].append((toks + [tok], float(cand_scores[c]), depth + int(effect[tok]), False))
-                # keep the finished and live hypotheses within the beam width
-                new[b].sort(key=lambda h: -h[1])
-                new[b] = new[b][:max(width, sum(1 for h in new[b] if h[3]))]
-            hyps = new
+                        new_live[b].append((toks + [tok], float(cand[c]), depth + int(effect[tok])))
+            live = new_live
         results = []
         for b in range(n_batch):
-            done = sorted((h for h in hyps[b] if h[3]), key=lambda h: -h[1])[:width]
-            results.append(BeamResult([tuple(h[0]) for h in done], [h[1] for h in done]))
+            done = sorted(finished[b], key=lambda h: -h[1])
+            if epsilon == 0.0:
+                done = done[:width]
+            results.append(BeamResult([h[0] for h in done], [h[1] for h in done]))
         return results
 
 

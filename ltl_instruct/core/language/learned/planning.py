@@ -37,7 +37,7 @@ class LandmarkPlan:
 
 
 def _letters(lmap: LandmarkMap, aut: Automaton) -> list[frozenset[Atom]]:
-    """The letter read at each landmark, restricted to the automaton's atoms."""
+    """Return the letter read at each landmark, restricted to the automaton's atoms."""
     known = set(aut.atoms)
     return [frozenset({near(p)}) & known for p in lmap.props]
 

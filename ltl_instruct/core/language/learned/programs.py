@@ -96,7 +96,7 @@ def allowed_mask(vocab: OutputVocabulary, stack: np.ndarray, length: np.ndarray,
     s = stack[:, None]
     remaining = (max_len - length)[:, None]  # tokens still allowed, this one included
     ok_landmark = (kinds == KIND_LANDMARK) & (s <= remaining - 1) & (remaining >= 1)
-    ok_unary = (kinds == KIND_UNARY) & (s >= 1) & (remaining >= 1)
+    ok_unary = (kinds == KIND_UNARY) & (s >= 1) & (s <= remaining)
     ok_binary = (kinds == KIND_BINARY) & (s >= 2) & (remaining >= 1)
     ok_end = (kinds == KIND_END) & (s == 1)
     mask = ok_landmark | ok_unary | ok_binary | ok_end
@@ -135,7 +135,7 @@ def is_valid_program(vocab: OutputVocabulary, program: Sequence[int]) -> bool:
 
 
 def program_to_formula(vocab: OutputVocabulary, program: Sequence[int]) -> Formula:
-    """The formula AST of a postfix program; raises ``InvalidInputError`` if malformed."""
+    """Build the formula AST of a postfix program; raises ``InvalidInputError`` if malformed."""
     if not is_valid_program(vocab, program):
         raise InvalidInputError(f'not a valid postfix program: {vocab.text(program)!r}')
     n = len(vocab.props)

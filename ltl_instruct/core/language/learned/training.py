@@ -68,7 +68,7 @@ class RewardCache:
         return self._first[key]
 
     def plan(self, program: tuple[int, ...], start: int) -> Optional[tuple[int, ...]]:
-        """The program's plan from ``start`` (landmark ids), None if it has none (cached)."""
+        """Plan the program from ``start`` (landmark ids), None if it has none (cached)."""
         key = (program, start)
         if key not in self._plans:
             try:
@@ -219,6 +219,6 @@ def train_baseline(baseline: GoalBaseline, words: WordVocabulary, demos: Sequenc
 
 def new_parser(words: WordVocabulary, out_vocab: OutputVocabulary,
                config: ParserConfig = ParserConfig(), seed: int = 0) -> SemanticParser:
-    """A freshly initialised parser (seeded)."""
+    """Build a freshly initialised parser (seeded)."""
     torch.manual_seed(seed)
     return SemanticParser(words.size, out_vocab, config)

@@ -54,7 +54,8 @@ def test_straight_segment_is_short_and_ends_at_the_goal_boundary():
     result = solve_segment(req, world)
     _check_path(req, world, result)
     assert result.length == pytest.approx(8.0 - 0.8, abs=0.02)
-    assert result.points is not None and np.max(np.linalg.norm(np.diff(result.points, axis=0), axis=1)) <= 0.05 + 1e-9
+    assert result.points is not None
+    assert np.max(np.linalg.norm(np.diff(result.points, axis=0), axis=1)) <= 0.05 + 1e-9
 
 
 def test_avoid_region_in_the_way_is_circumvented_and_seed_fixes_the_path():
@@ -130,8 +131,8 @@ def test_target_restricts_the_goal_to_one_instance():
     world = _world()
     near_first = solve_segment(SegmentRequest('t', (1.0, 1.0), 2, regions, goal, allowed, FAST), world)
     assert np.linalg.norm(near_first.waypoints[-1] - [2.0, 3.0]) <= 0.81
-    far = solve_segment(SegmentRequest('t', (1.0, 1.0), 2, regions, goal, allowed, FAST, target=('near[a]', 1)),
-                        world)
+    far = solve_segment(SegmentRequest('t', (1.0, 1.0), 2, regions, goal, allowed, FAST,
+                                       target=('near[a]', 1)), world)
     assert far.ok and np.linalg.norm(far.waypoints[-1] - [9.0, 3.0]) <= 0.81
     # the other instance is avoided on the way
     dense = resample(far.waypoints, 0.01)

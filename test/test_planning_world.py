@@ -43,7 +43,8 @@ def test_scene_world_inflates_obstacles_and_solid_objects_by_the_robot_radius():
 
 
 def test_drone_world_plans_inside_the_altitude_band():
-    d = dict(SCENE, robot={'kind': 'drone', 'start': [1, 1, 1.5], 'radius': 0.2}, altitude={'min': 1.0, 'max': 2.5})
+    d = dict(SCENE, robot={'kind': 'drone', 'start': [1, 1, 1.5], 'radius': 0.2},
+             altitude={'min': 1.0, 'max': 2.5})
     w = world_from_scene(scene_from_dict(d))
     assert w.dims == 3
     assert w.bounds_min[2] == 1.0 and w.bounds_max[2] == 2.5
@@ -106,7 +107,8 @@ def test_region_distance_matches_the_referent_map_instances(points, sx, sy, dims
 @given(st.floats(-4, 4), st.floats(-4, 4), st.floats(0, 2 * math.pi), st.floats(0, 0.999))
 def test_letter_margin_means_no_atom_changes_inside_it(x, y, angle, frac):
     regions = RegionSet([AtomRegion('near[a]', ((0.0, 0.0, 0.0),), ((1.0, 2.0, 0.0),), 1.0),
-                         AtomRegion('near[b]', ((2.0, 1.0, 0.0), (-2.0, -2.0, 0.0)), ((0.0, 0.0, 0.0),) * 2, 0.7)],
+                         AtomRegion('near[b]', ((2.0, 1.0, 0.0), (-2.0, -2.0, 0.0)),
+                                    ((0.0, 0.0, 0.0),) * 2, 0.7)],
                         dims=2)
     letter, margin = regions.letter_and_margin((x, y))
     vec = regions.valuation(np.array([[x, y]]))
@@ -157,7 +159,8 @@ def test_tpsm_classifies_goal_avoid_and_neutral_points():
 
 
 def test_guard_evaluation_vectorised_matches_scalar():
-    g = Guard.from_dict({'cubes': [{'pos': ['near[a]'], 'neg': ['near[b]']}, {'pos': ['near[c]'], 'neg': []}]})
+    g = Guard.from_dict({'cubes': [{'pos': ['near[a]'], 'neg': ['near[b]']},
+                                   {'pos': ['near[c]'], 'neg': []}]})
     cubes = key_cubes(g)
     rng = np.random.default_rng(0)
     val = {k: rng.random(64) < 0.5 for k in ('near[a]', 'near[b]', 'near[c]')}
@@ -168,7 +171,8 @@ def test_guard_evaluation_vectorised_matches_scalar():
 
 
 def test_region_from_dict_rejects_garbage():
-    for bad in [{}, {'atom': 'near[a]', 'radius': 'x'}, {'atom': 'near[a]', 'radius': 1.0, 'instances': [{'center': [1]}]},
+    for bad in [{}, {'atom': 'near[a]', 'radius': 'x'},
+                {'atom': 'near[a]', 'radius': 1.0, 'instances': [{'center': [1]}]},
                 {'atom': 'near[a]', 'radius': float('nan'), 'instances': []}]:
         with pytest.raises(LtlInstructError):
             AtomRegion.from_dict(bad)

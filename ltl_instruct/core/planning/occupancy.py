@@ -155,7 +155,6 @@ class PlanningWorld:
             best = 0.0  # free, but no certified radius: the caller samples finely
         return best
 
-
     def segment_hits_box(self, a: Sequence[float], b: Sequence[float]) -> bool:
         """Whether the straight segment a -> b touches an inflated box (exact slab test)."""
         d = self.dims

@@ -76,14 +76,24 @@ class PathScores:
 
 def plan_best_program(bundle: ParserBundle, programs: Sequence[tuple[int, ...]],
                       start: int) -> tuple[Optional[tuple[int, ...]], list[int]]:
-    """Return the first program of the beam with a plan from ``start``, and that plan ([start] if none)."""
+    """Return the best program of the beam whose plan from ``start`` moves, and that plan.
+
+    A program already satisfied at the start asks nothing of the robot, so it is
+    taken only when no program of the beam leads anywhere; ``(None, [start])`` when
+    no program has a plan at all.
+    """
+    standing: Optional[tuple[int, ...]] = None
     for prog in programs:
         try:
             formula = program_to_formula(bundle.out_vocab, prog)
-            return prog, list(plan_on_landmarks(bundle.landmark_map, formula, start).path)
+            path = list(plan_on_landmarks(bundle.landmark_map, formula, start).path)
         except LtlInstructError:
             continue
-    return None, [start]
+        if len(path) > 1:
+            return prog, path
+        if standing is None:
+            standing = prog
+    return standing, [start]
 
 
 def evaluate(bundle: ParserBundle, demos: Sequence[Demonstration], batch: int = 32) -> dict:

@@ -118,6 +118,10 @@ class SemanticParser(nn.Module):
         self.attention = nn.Linear(c.decoder_hidden, enc, bias=False)
         self.combine = nn.Linear(c.decoder_hidden + enc, c.decoder_hidden)
         self.output = nn.Linear(c.decoder_hidden, out_vocab.size)
+        # start from the uniform policy over allowed tokens: a randomly initialised output
+        # layer prefers arbitrary long programs, and the search then never meets short ones
+        nn.init.normal_(self.output.weight, std=0.01)
+        nn.init.zeros_(self.output.bias)
         self._effect = torch.from_numpy(stack_effect(out_vocab))
 
     # ------------------------------------------------------------------ network
@@ -188,64 +192,63 @@ class SemanticParser(nn.Module):
                     epsilon: float = 0.0, rng: Optional[np.random.Generator] = None) -> list[BeamResult]:
         """Constrained beam search for each instruction of the batch (states (B, T, 60)).
 
-        Each step keeps the ``beam`` best continuations of the unfinished programs;
-        those that chose END join the finished ones. Returns the ``beam`` best
-        finished programs; with ``epsilon`` > 0 (randomised beam search, for
+        Finished programs (those that chose END) stay in the beam and compete with
+        the unfinished ones; each step keeps the ``beam`` best. Returns the finished
+        programs, best first. With ``epsilon`` > 0 (randomised beam search, for
         exploration during training) each slot takes a random allowed continuation
-        with that probability, and every finished program is returned.
+        with that probability.
         """
         width = beam or self.config.beam
         n_batch = states.shape[0]
         k, vsize, end = self.config.history, self.out_vocab.size, self.out_vocab.end_id
         effect = self._effect.numpy()
         rng = rng or np.random.default_rng(0)
-        # live hypotheses per instruction: (tokens, log-prob, stack size); finished ones kept apart,
-        # so that short finished programs do not crowd the unfinished ones out of the beam
-        live: list[list[tuple[list[int], float, int]]] = [[([], 0.0, 0)] for _ in range(n_batch)]
-        finished: list[list[tuple[tuple[int, ...], float]]] = [[] for _ in range(n_batch)]
+        # hypotheses per instruction: token lists, score, stack, done
+        hyps: list[list[tuple[list[int], float, int, bool]]] = [[([], 0.0, 0, False)] for _ in range(n_batch)]
         for _ in range(self.config.max_program + 1):
-            flat = [(b, h) for b in range(n_batch) for h in live[b]]
-            if not flat:
+            live = [(b, j) for b in range(n_batch) for j, h in enumerate(hyps[b]) if not h[3]]
+            if not live:
                 break
-            hist = np.array([([self.start_id] * k + h[0])[-k:] for _, h in flat], dtype=np.int64)
-            stack = np.array([h[2] for _, h in flat], dtype=np.int64)
-            length = np.array([len(h[0]) for _, h in flat], dtype=np.int64)
-            last = np.array([h[0][-1] if h[0] else -1 for _, h in flat], dtype=np.int64)
-            rows = torch.tensor([b for b, _ in flat], dtype=torch.long)
+            hist = np.array([([self.start_id] * k + hyps[b][j][0])[-k:] for b, j in live], dtype=np.int64)
+            stack = np.array([hyps[b][j][2] for b, j in live], dtype=np.int64)
+            length = np.array([len(hyps[b][j][0]) for b, j in live], dtype=np.int64)
+            last = np.array([hyps[b][j][0][-1] if hyps[b][j][0] else -1 for b, j in live], dtype=np.int64)
+            rows = torch.tensor([b for b, _ in live], dtype=torch.long)
             logp = self._masked_log_probs(states[rows], mask[rows], torch.from_numpy(hist),
                                           stack, length, last).numpy()
-            total = np.array([h[1] for _, h in flat])[:, None] + logp
-            new_live: list[list[tuple[list[int], float, int]]] = [[] for _ in range(n_batch)]
-            row = 0
-            for b in range(n_batch):
-                rs = np.arange(row, row + len(live[b]))
-                row += len(live[b])
-                if not len(rs):
-                    continue
-                cand = total[rs].reshape(-1)
-                valid = np.flatnonzero(np.isfinite(cand))
-                order = valid[np.argsort(-cand[valid], kind='stable')]
-                if epsilon > 0.0 and len(order) > width:
-                    n_random = int(rng.binomial(width, epsilon))
-                    top = order[:width - n_random]
-                    extra = rng.choice(order[width - n_random:], size=n_random, replace=False)
-                    chosen = np.concatenate([top, extra.astype(np.int64)])
+            new: list[list[tuple[list[int], float, int, bool]]] = [[h for h in hyps[b] if h[3]]
+                                                                   for b in range(n_batch)]
+            by_batch: dict[int, list[int]] = {}
+            for r, (b, _) in enumerate(live):
+                by_batch.setdefault(b, []).append(r)
+            for b, rs in by_batch.items():
+                cand_scores = np.concatenate([hyps[b][live[r][1]][1] + logp[r] for r in rs])
+                finite = np.flatnonzero(np.isfinite(cand_scores))
+                slots = width - len(new[b]) if epsilon == 0.0 else width
+                order = finite[np.argsort(-cand_scores[finite], kind='stable')]
+                if epsilon > 0.0 and len(order) > 1:
+                    n_random = int(rng.binomial(min(slots, len(order)), epsilon))
+                    top = order[:max(0, slots - n_random)]
+                    rest = order[len(top):]
+                    extra = rng.choice(rest, size=min(n_random, len(rest)), replace=False)
+                    chosen = np.concatenate([top, np.asarray(extra, dtype=np.int64)])
                 else:
-                    chosen = order[:width]
+                    chosen = order[:slots]
                 for c in chosen:
                     r, tok = rs[int(c) // vsize], int(c) % vsize
-                    toks, _, depth = flat[r][1]
+                    toks, _, depth, _ = hyps[b][live[r][1]]
                     if tok == end:
-                        finished[b].append((tuple(toks), float(cand[c])))
+                        new[b].append((toks, float(cand_scores[c]), depth, True))
                     else:
-                        new_live[b].append((toks + [tok], float(cand[c]), depth + int(effect[tok])))
-            live = new_live
+                        new[b].append((toks + [tok], float(cand_scores[c]), depth + int(effect[tok]), False))
+                # keep the finished and live hypotheses within the beam width
+                new[b].sort(key=lambda h: -h[1])
+                new[b] = new[b][:max(width, sum(1 for h in new[b] if h[3]))]
+            hyps = new
         results = []
         for b in range(n_batch):
-            done = sorted(finished[b], key=lambda h: -h[1])
-            if epsilon == 0.0:
-                done = done[:width]
-            results.append(BeamResult([h[0] for h in done], [h[1] for h in done]))
+            done = sorted((h for h in hyps[b] if h[3]), key=lambda h: -h[1])[:width]
+            results.append(BeamResult([tuple(h[0]) for h in done], [h[1] for h in done]))
         return results
 
 

@@ -15,7 +15,7 @@ import numpy as np
 class Outcome(str, enum.Enum):
     """How resolving one descriptor ended."""
 
-    RESOLVED = 'RESOLVED'                  # exactly one instance
+    RESOLVED = 'RESOLVED'                  # exactly one instance (every instance, if only avoided)
     AMBIGUOUS = 'AMBIGUOUS'                # several instances satisfy it
     UNKNOWN_REFERENT = 'UNKNOWN_REFERENT'  # nothing of that name detected
     NO_MATCH = 'NO_MATCH'                  # detected, but none satisfies the relations
@@ -73,19 +73,23 @@ class Grounding:
     outcome: Outcome
     instances: tuple[Instance, ...] = ()
     explanation: tuple[str, ...] = ()
+    # False when the descriptor only occurs under a negation (``G !near[door]``): finding
+    # nothing is then harmless, and several instances are all meant (not ambiguous).
+    required: bool = True
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""
         return {'descriptor': self.descriptor, 'outcome': self.outcome.value,
                 'instances': [i.to_dict() for i in self.instances],
-                'explanation': list(self.explanation)}
+                'explanation': list(self.explanation), 'required': self.required}
 
     @staticmethod
     def from_dict(d: Mapping[str, Any]) -> 'Grounding':
         """Inverse of :meth:`to_dict`."""
         return Grounding(str(d['descriptor']), Outcome(d['outcome']),
                          tuple(Instance.from_dict(i) for i in d.get('instances', [])),
-                         tuple(str(e) for e in d.get('explanation', [])))
+                         tuple(str(e) for e in d.get('explanation', [])),
+                         bool(d.get('required', True)))
 
 
 @dataclass(frozen=True)

@@ -30,7 +30,9 @@ from visualization_msgs.msg import Marker, MarkerArray
 
 from ltl_instruct.core.errors import InvalidInputError, LimitExceededError
 from ltl_instruct.core.grounding.rsm import ReferentMap
+from ltl_instruct.core.planning import PlanningWorld, world_from_points
 from ltl_instruct.core.world.robot import OccupancyRaster, Pose
+from ltl_instruct.core.world.scene import Box
 
 SCHEMA_VERSION = 1
 MAX_PAYLOAD_BYTES = 1_000_000
@@ -257,6 +259,98 @@ def occupancy_raster(msg: OccupancyGrid) -> OccupancyRaster:
         raise InvalidInputError('map origin is not finite')
     cells = np.asarray(msg.data, dtype=np.int8).reshape(h, w)
     return OccupancyRaster(cells, float(info.resolution), (float(o.x), float(o.y)))
+
+
+def occupied_rectangles(cells: np.ndarray, occupied_threshold: int = 50) -> list[tuple[int, int, int, int]]:
+    """Cover the blocked cells of a grid with rectangles ``(row0, row1, col0, col1)`` (ends excluded).
+
+    Blocked: values >= ``occupied_threshold`` or unknown (< 0). Runs of blocked cells in a
+    row are merged with the rectangle above them when they span the same columns, so walls
+    and furniture become a few rectangles (exact: every blocked cell is covered, no free one).
+    """
+    blocked = (cells >= occupied_threshold) | (cells < 0)
+    rects: list[list[int]] = []
+    open_by_span: dict[tuple[int, int], list[int]] = {}
+    for r in range(blocked.shape[0]):
+        row = np.concatenate([[False], blocked[r], [False]])
+        edges = np.flatnonzero(row[1:] != row[:-1])
+        spans = list(zip(edges[::2].tolist(), edges[1::2].tolist()))
+        still_open: dict[tuple[int, int], list[int]] = {}
+        for span in spans:
+            rect = open_by_span.get(span)
+            if rect is not None and rect[1] == r:
+                rect[1] = r + 1
+            else:
+                rect = [r, r + 1, span[0], span[1]]
+                rects.append(rect)
+            still_open[span] = rect
+        open_by_span = still_open
+    return [tuple(x) for x in rects]  # type: ignore[misc]
+
+
+def planning_world_from_grid(msg: OccupancyGrid, robot_radius: float) -> PlanningWorld:
+    """Return the 2D planning world of an occupancy grid: blocked cells as exact boxes, inflated.
+
+    Occupied (>= 50) and unknown (< 0) cells are blocked. They are merged into rectangles
+    (:func:`occupied_rectangles`) so the planner checks a few boxes exactly instead of
+    looking cells up: the same free space, much faster.
+
+    Raises
+    ------
+    InvalidInputError
+        On an empty or malformed grid.
+    """
+    raster = occupancy_raster(msg)
+    res = raster.resolution
+    ox, oy = raster.origin
+    boxes = []
+    for r0, r1, c0, c1 in occupied_rectangles(raster.cells):
+        lo = (ox + c0 * res, oy + r0 * res)
+        hi = (ox + c1 * res, oy + r1 * res)
+        boxes.append(Box(((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, 0.0),
+                         (hi[0] - lo[0], hi[1] - lo[1], 1.0)))
+    bmin = (ox + robot_radius, oy + robot_radius)
+    bmax = (ox + raster.width * res - robot_radius, oy + raster.height * res - robot_radius)
+    if bmin[0] > bmax[0] or bmin[1] > bmax[1]:
+        raise InvalidInputError('the map is smaller than the robot')
+    return PlanningWorld(2, bmin, bmax, float(robot_radius), tuple(boxes))
+
+
+def parse_bounds(text: str) -> Optional[tuple[tuple[float, float, float], tuple[float, float, float]]]:
+    """Parse ``'xmin,ymin,zmin,xmax,ymax,zmax'`` [m] ('' -> None).
+
+    Raises
+    ------
+    InvalidInputError
+        Unless six finite numbers with min below max on every axis.
+    """
+    if not text.strip():
+        return None
+    try:
+        v = [float(x) for x in text.split(',')]
+    except ValueError:
+        raise InvalidInputError(f'bounds must be six numbers xmin,ymin,zmin,xmax,ymax,zmax, '
+                                f'got {text!r}') from None
+    if len(v) != 6 or not all(math.isfinite(x) for x in v) or any(v[k] >= v[k + 3] for k in range(3)):
+        raise InvalidInputError(f'bounds must be six finite numbers with min < max, got {text!r}')
+    return (v[0], v[1], v[2]), (v[3], v[4], v[5])
+
+
+def planning_world_from_cloud(msg: PointCloud2, voxel: float, robot_radius: float,
+                              bounds: Optional[tuple[Sequence[float], Sequence[float]]] = None,
+                              ) -> PlanningWorld:
+    """Return the 3D planning world of an obstacle cloud, voxelised and inflated, inside ``bounds`` [m].
+
+    Raises
+    ------
+    InvalidInputError
+        On an empty or malformed cloud.
+    """
+    points = point_cloud_xyz(msg)
+    if len(points) == 0:
+        raise InvalidInputError('the 3D map is empty (0 points)')
+    lo, hi = bounds if bounds is not None else (None, None)
+    return world_from_points(points, voxel=voxel, robot_radius=robot_radius, bounds_min=lo, bounds_max=hi)
 
 
 # ---------------------------------------------------------------------------- point clouds

@@ -1,0 +1,242 @@
+"""A client of the node graph: send instructions, collect what the nodes publish.
+
+Used by ``ltl-instruct demo``, the pipeline benchmark and the DDS tests. It owns one
+rclpy node spun in a background thread, so callers simply call :meth:`GraphClient.send`
+and wait on :meth:`GraphClient.wait_terminal` (every wait has a timeout).
+"""
+from __future__ import annotations
+
+import itertools
+import os
+import threading
+import time
+from dataclasses import dataclass, field
+from typing import Any, Callable, Optional
+
+import numpy as np
+import rclpy
+from nav_msgs.msg import OccupancyGrid, Odometry, Path
+from rclpy.context import Context
+from rclpy.executors import MultiThreadedExecutor
+from std_msgs.msg import String
+
+from ltl_instruct import conversions as conv
+from ltl_instruct.core.errors import InvalidInputError, LtlInstructError, ErrorCode
+from ltl_instruct.nodes.common import latched_qos, reliable_qos
+
+TERMINAL = ('planned', 'satisfied', 'failed')
+
+
+@dataclass
+class Received:
+    """Everything the client has heard, by instruction id where there is one.
+
+    ``statuses``: id -> every task_status payload in arrival order; ``plans``: plan
+    stamp key -> points (N, 3) [m]; ``odom``: (time [s], position (3,)) pairs.
+    """
+
+    statuses: dict[str, list[dict[str, Any]]] = field(default_factory=dict)
+    specs: dict[str, dict[str, Any]] = field(default_factory=dict)
+    verifications: dict[str, dict[str, Any]] = field(default_factory=dict)
+    referent_maps: dict[str, dict[str, Any]] = field(default_factory=dict)
+    task_plans: dict[str, dict[str, Any]] = field(default_factory=dict)
+    plans: dict[int, np.ndarray] = field(default_factory=dict)
+    skill_results: list[dict[str, Any]] = field(default_factory=list)
+    odom: list[tuple[float, np.ndarray]] = field(default_factory=list)
+    map: Optional[OccupancyGrid] = None
+    arrival: dict[tuple[str, str], float] = field(default_factory=dict)
+
+
+class GraphClient:
+    """Publishes instructions and records statuses, plans and odometry.
+
+    Parameters
+    ----------
+    name: node name (a random suffix keeps several clients apart).
+    record_odom: keep every odometry position (for drawing the driven path).
+    """
+
+    def __init__(self, name: str = 'ltl_instruct_client', record_odom: bool = False) -> None:
+        self.context = Context()
+        rclpy.init(context=self.context, args=[])
+        self.node = rclpy.create_node(f'{name}_{os.urandom(3).hex()}', context=self.context)
+        self.received = Received()
+        self.record_odom = record_odom
+        self._cond = threading.Condition()
+        self._ids = itertools.count(1)
+        self._prefix = os.urandom(3).hex()
+        n = self.node
+        self.instruction_pub = n.create_publisher(String, 'instruction', reliable_qos())
+        self.reply_pub = n.create_publisher(String, 'verification/reply', reliable_qos())
+        self.task_spec_pub = n.create_publisher(String, 'task_spec', latched_qos())
+        self.odom_pub = n.create_publisher(Odometry, 'odom', reliable_qos(10))
+        self.map_pub = n.create_publisher(OccupancyGrid, 'map', latched_qos(1))
+        n.create_subscription(String, 'task_status', self._on_status, latched_qos())
+        n.create_subscription(String, 'task_spec', self._keyed('specs'), latched_qos())
+        n.create_subscription(String, 'verification/request', self._keyed('verifications'), latched_qos())
+        n.create_subscription(String, 'referent_map', self._keyed('referent_maps'), latched_qos())
+        n.create_subscription(String, 'task_plan', self._keyed('task_plans'), latched_qos(1))
+        n.create_subscription(Path, 'plan', self._on_plan, latched_qos(1))
+        n.create_subscription(String, 'skill/result', self._on_skill_result, reliable_qos())
+        n.create_subscription(Odometry, 'odom', self._on_odom, reliable_qos(10))
+        n.create_subscription(OccupancyGrid, 'map', self._on_map, latched_qos(1))
+        self._executor = MultiThreadedExecutor(num_threads=2, context=self.context)
+        self._executor.add_node(self.node)
+        self._thread = threading.Thread(target=self._spin, name='client-spin', daemon=True)
+        self._thread.start()
+
+    # ------------------------------------------------------------------ lifecycle
+    def _spin(self) -> None:
+        try:
+            self._executor.spin()
+        except Exception:  # noqa: BLE001 - shutting down
+            pass
+
+    def close(self) -> None:
+        """Stop spinning and shut this client's context down."""
+        self._executor.shutdown(timeout_sec=1.0)
+        self.node.destroy_node()
+        rclpy.try_shutdown(context=self.context)
+        self._thread.join(timeout=2.0)
+
+    def __enter__(self) -> 'GraphClient':
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # ------------------------------------------------------------------ callbacks
+    def _record(self, kind: str, iid: str) -> None:
+        self.received.arrival.setdefault((kind, iid), time.monotonic())
+
+    def _keyed(self, attr: str) -> Callable[[String], None]:
+        def on_message(msg: String) -> None:
+            try:
+                data = conv.parse_json_payload(msg.data)
+            except LtlInstructError:
+                return
+            with self._cond:
+                getattr(self.received, attr)[data['id']] = data
+                self._record(attr, data['id'])
+                self._cond.notify_all()
+        return on_message
+
+    def _on_status(self, msg: String) -> None:
+        try:
+            data = conv.parse_json_payload(msg.data, conv.TASK_STATUS)
+        except LtlInstructError:
+            return
+        with self._cond:
+            self.received.statuses.setdefault(data['id'], []).append(data)
+            if data.get('terminal'):
+                self._record('terminal', data['id'])
+            self._cond.notify_all()
+
+    def _on_plan(self, msg: Path) -> None:
+        with self._cond:
+            self.received.plans[conv.stamp_key(msg.header.stamp)] = conv.path_points(msg, check_finite=False)
+            self._cond.notify_all()
+
+    def _on_skill_result(self, msg: String) -> None:
+        try:
+            data = conv.parse_json_payload(msg.data, conv.SKILL_RESULT)
+        except LtlInstructError:
+            return
+        with self._cond:
+            self.received.skill_results.append(data)
+            self._cond.notify_all()
+
+    def _on_odom(self, msg: Odometry) -> None:
+        if not self.record_odom:
+            return
+        try:
+            pose = conv.odometry_pose(msg)
+        except LtlInstructError:
+            return
+        with self._cond:
+            self.received.odom.append((time.monotonic(), pose.xyz))
+
+    def _on_map(self, msg: OccupancyGrid) -> None:
+        with self._cond:
+            self.received.map = msg
+            self._cond.notify_all()
+
+    # ------------------------------------------------------------------ actions
+    def wait_until(self, predicate: Callable[[], Any], timeout: float) -> Any:
+        """Wait until ``predicate()`` is truthy (checked under the lock); return it, or None on timeout."""
+        deadline = time.monotonic() + timeout
+        with self._cond:
+            while True:
+                value = predicate()
+                if value:
+                    return value
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    return None
+                self._cond.wait(min(left, 0.1))
+
+    def wait_for_graph(self, timeout: float = 20.0, need_sim: bool = False) -> bool:
+        """Wait until the pipeline nodes listen (and, with ``need_sim``, the map has come)."""
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            ready = (self.instruction_pub.get_subscription_count() >= 1
+                     and self.task_spec_pub.get_subscription_count() >= 2
+                     and self.node.count_publishers('task_status') >= 1
+                     and self.node.count_subscribers('plan_request') >= 1)
+            if ready and (not need_sim or self.received.map is not None):
+                return True
+            time.sleep(0.05)
+        return False
+
+    def new_id(self) -> str:
+        """Return a fresh instruction id."""
+        return f'client-{self._prefix}-{next(self._ids)}'
+
+    def send(self, text: Optional[str] = None, formula: Optional[str] = None,
+             iid: Optional[str] = None) -> str:
+        """Publish an instruction (English ``text`` or a ``formula``); return its id."""
+        if text is None and formula is None:
+            raise InvalidInputError('send needs text or a formula')
+        iid = iid or self.new_id()
+        fields: dict[str, Any] = {}
+        if text is not None:
+            fields['text'] = text
+        if formula is not None:
+            fields['formula'] = formula
+        self._record('sent', iid)
+        self.instruction_pub.publish(conv.json_msg(conv.payload(conv.INSTRUCTION, iid, **fields)))
+        return iid
+
+    def send_raw(self, text: str) -> None:
+        """Publish ``text`` on ``instruction`` as it is (plain English or garbage)."""
+        self.instruction_pub.publish(String(data=text))
+
+    def reply(self, iid: str, accept: bool) -> None:
+        """Answer a verification request."""
+        self.reply_pub.publish(conv.json_msg(conv.payload(conv.VERIFICATION_REPLY, iid, accept=accept)))
+
+    def terminal(self, iid: str) -> Optional[dict[str, Any]]:
+        """Return the terminal status of ``iid`` if it has come."""
+        for s in self.received.statuses.get(iid, []):
+            if s.get('terminal'):
+                return s
+        return None
+
+    def wait_terminal(self, iid: str, timeout: float = 30.0) -> dict[str, Any]:
+        """Wait for the terminal status of ``iid``.
+
+        Raises
+        ------
+        LtlInstructError
+            (TIMEOUT) if none comes in time.
+        """
+        s = self.wait_until(lambda: self.terminal(iid), timeout)
+        if s is None:
+            raise LtlInstructError(f'no terminal task_status for {iid} within {timeout} s', ErrorCode.TIMEOUT)
+        return s
+
+    def wait_status(self, iid: str, status: str, timeout: float = 60.0) -> Optional[dict[str, Any]]:
+        """Wait for a status named ``status`` (e.g. ``satisfied`` during execution) for ``iid``."""
+        return self.wait_until(
+            lambda: next((s for s in self.received.statuses.get(iid, []) if s.get('status') == status), None),
+            timeout)

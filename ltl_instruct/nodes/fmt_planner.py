@@ -1,0 +1,175 @@
+"""``fmt_planner``: FMT* (OMPL) for one task-progression segment at a time.
+
+Reads the static map (``map``, nav_msgs/OccupancyGrid, for a ground robot; or
+``map_cloud``, a PointCloud2 of obstacle points, for a drone) and answers every
+``plan_request`` (the symbolic TPSM: regions of the atoms that matter plus the
+``goal`` and ``allowed`` guards) with a ``plan_segment`` (nav_msgs/Path whose header
+stamp echoes the request's ``stamp``) and a JSON verdict on ``~/status`` (``ok`` or a
+typed error: ``START_OCCUPIED``, ``GOAL_OCCUPIED``, ``NO_VALID_PATH``, ``TIMEOUT``,
+``INVALID_INPUT`` for an empty or malformed map...). A path is published only on
+success. Requests are served one at a time, in order, in a worker thread.
+"""
+from __future__ import annotations
+
+import json
+import queue
+import sys
+import threading
+import time
+from dataclasses import replace
+from typing import Any, Optional
+
+import numpy as np
+from nav_msgs.msg import OccupancyGrid, Path
+from rclpy.node import Node
+from sensor_msgs.msg import PointCloud2
+from std_msgs.msg import String
+
+from ltl_instruct import conversions as conv
+from ltl_instruct.core import planning
+from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
+from ltl_instruct.nodes.common import ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node
+
+PARAMS = (
+    ParamSpec('robot_radius', 0.3, 'obstacles are inflated by this much [m]', 0.0, 10.0),
+    ParamSpec('num_samples', 3000, 'FMT* samples per segment', 10, 1000000),
+    ParamSpec('radius_multiplier', 1.1, 'FMT* neighbourhood radius multiplier', 0.1, 100.0),
+    ParamSpec('heuristics', True, 'FMT* expands towards the goal first'),
+    ParamSpec('time_limit', 2.0, 'planning time per segment [s]', 0.05, 3600.0),
+    ParamSpec('seed', 0, 'seed of the samplers (a fixed seed gives the same path)', 0, 2 ** 31 - 1),
+    ParamSpec('path_spacing', 0.1, 'largest distance between two published poses [m]', 0.01, 5.0),
+    ParamSpec('cloud_voxel', 1.0, 'voxel size used to rebuild 3D obstacles from map_cloud [m]', 0.05, 10.0),
+    ParamSpec('bounds', '', '3D planning bounds "xmin,ymin,zmin,xmax,ymax,zmax" [m] for map_cloud '
+              '("" = the extent of the points)'),
+    ParamSpec('max_queue', 256, 'requests waiting at most; more fail with TIMEOUT', 1, 100000),
+)
+
+
+class FmtPlannerNode(Node):
+    """Map + plan_request in, plan_segment + status out."""
+
+    def __init__(self) -> None:
+        super().__init__('fmt_planner')
+        self.params = declare_parameters(self, PARAMS)
+        self._bounds = conv.parse_bounds(self.params['bounds'])
+        self._world: Any = None
+        self._world_error: Optional[LtlInstructError] = InvalidInputError('no map received yet')
+        self._lock = threading.Lock()
+        self._jobs: queue.Queue = queue.Queue()
+        self._closing = threading.Event()
+        self.segment_pub = self.create_publisher(Path, 'plan_segment', reliable_qos())
+        self.status_pub = self.create_publisher(String, '~/status', reliable_qos())
+        self.create_subscription(OccupancyGrid, 'map', self.on_map, latched_qos(1))
+        self.create_subscription(PointCloud2, 'map_cloud', self.on_map_cloud, latched_qos(1))
+        self.create_subscription(String, 'plan_request', self.on_plan_request, reliable_qos())
+        self._worker = threading.Thread(target=self._work, name='fmt', daemon=True)
+        self._worker.start()
+
+    # ------------------------------------------------------------------ maps
+    def on_map(self, msg: OccupancyGrid) -> None:
+        """Use a new 2D occupancy grid (an empty or malformed one is rejected and remembered)."""
+        try:
+            world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
+        except LtlInstructError as e:
+            self._set_world(None, e)
+            return
+        self._set_world(world, None)
+        info = msg.info
+        self.get_logger().info(f'map: {info.width}x{info.height} cells of {info.resolution:.3f} m')
+
+    def on_map_cloud(self, msg: PointCloud2) -> None:
+        """Use a new 3D obstacle cloud (for a drone)."""
+        try:
+            world = conv.planning_world_from_cloud(msg, self.params['cloud_voxel'],
+                                                   self.params['robot_radius'], self._bounds)
+        except LtlInstructError as e:
+            self._set_world(None, e)
+            return
+        self._set_world(world, None)
+        self.get_logger().info(f'map_cloud: {msg.width * msg.height} obstacle points')
+
+    def _set_world(self, world: Any, error: Optional[LtlInstructError]) -> None:
+        with self._lock:
+            self._world, self._world_error = world, error
+        if error is not None:
+            self.get_logger().warning(f'map rejected: [{error.code.value}] {error.message}')
+
+    # ------------------------------------------------------------------ requests
+    def on_plan_request(self, msg: String) -> None:
+        """Queue a request (it is answered in order by the worker thread)."""
+        if self._jobs.qsize() >= self.params['max_queue']:
+            self._reply_error(msg.data, LtlInstructError('planner queue is full', ErrorCode.TIMEOUT))
+            return
+        self._jobs.put(msg.data)
+
+    def close(self) -> None:
+        """Stop the worker thread."""
+        self._closing.set()
+        self._jobs.put(None)
+
+    def _work(self) -> None:
+        while not self._closing.is_set():
+            text = self._jobs.get()
+            if text is None:
+                return
+            try:
+                self._serve(text)
+            except LtlInstructError as e:
+                self._reply_error(text, e)
+            except Exception as e:  # noqa: BLE001 - a bug must not kill the planner
+                self.get_logger().error(f'internal error: {e!r}')
+                self._reply_error(text, LtlInstructError(f'internal error: {e!r}', ErrorCode.INTERNAL_ERROR))
+
+    def _serve(self, text: str) -> None:
+        data = conv.parse_json_payload(text, conv.PLAN_REQUEST)
+        stamp = data.get('stamp')
+        if not isinstance(stamp, int) or stamp < 0:
+            raise InvalidInputError('plan_request needs a non-negative integer "stamp"')
+        request = planning.SegmentRequest.from_dict(data.get('request') or {})
+        with self._lock:
+            world, world_error = self._world, self._world_error
+        if world is None:
+            raise world_error or InvalidInputError('no map')
+        if request.dims != world.dims:
+            raise InvalidInputError(f'a {request.dims}D request for a {world.dims}D map')
+        t0 = time.monotonic()
+        p = self.params
+        settings = replace(request.settings, num_samples=p['num_samples'],
+                           radius_multiplier=p['radius_multiplier'], heuristics=p['heuristics'],
+                           time_limit=p['time_limit'], seed=p['seed'], path_spacing=p['path_spacing'])
+        result = planning.solve_segment(request, world, settings)
+        seconds = time.monotonic() - t0
+        body = dict(request_id=data.get('request_id', ''), stamp=stamp, ok=result.ok,
+                    plan_s=seconds, result=result.to_dict())
+        if result.ok:
+            self.segment_pub.publish(conv.path_msg(_as_3d(result.points), conv.stamp_from_key(stamp)))
+        else:
+            body['error'] = result.error.to_dict() if result.error is not None else None
+        self.status_pub.publish(conv.json_msg(conv.payload(conv.SEGMENT_STATUS, data['id'], **body)))
+
+    def _reply_error(self, text: str, error: LtlInstructError) -> None:
+        iid = conv.salvage_id(text) or 'unidentified'
+        rid = ''
+        try:
+            d = json.loads(text)
+            rid = str(d.get('request_id', ''))[:400] if isinstance(d, dict) else ''
+        except (ValueError, RecursionError):
+            pass
+        self.get_logger().warning(f'{iid}: [{error.code.value}] {error.message}')
+        self.status_pub.publish(conv.json_msg(conv.payload(
+            conv.SEGMENT_STATUS, iid, request_id=rid, ok=False, error=error.to_dict())))
+
+
+def _as_3d(points: np.ndarray) -> np.ndarray:
+    """Pad a 2D path (N, 2) with z = 0 [m]; a 3D one is returned as is."""
+    p = np.asarray(points, dtype=float)
+    return p if p.shape[1] == 3 else np.column_stack([p[:, :2], np.zeros(len(p))])
+
+
+def main(args: Optional[list[str]] = None) -> int:
+    """Entry point of the ``fmt_planner`` console script."""
+    return run_node(FmtPlannerNode, args)
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -1,0 +1,572 @@
+"""``task_progression``: automaton, task progression maps, progressive planning, monitoring.
+
+For every instruction it waits for the ``task_spec`` and the ``referent_map`` with the
+same ``id``, compiles the formula into an automaton, and plans progressively: each
+navigation transition becomes a ``plan_request`` (the symbolic TPSM) that the
+``fmt_planner`` node answers with a ``plan_segment``. The whole plan is checked
+against the automaton before it is published (``plan``, ``task_plan``, ``tpsm``).
+
+Every instruction ends with exactly one terminal ``task_status`` (``planned``,
+``satisfied`` when nothing has to move, or ``failed`` with a typed error code).
+Execution statuses follow with ``phase: execution``: the robot's odometry and skill
+results are read by the automaton (``progressing``, ``satisfied``, ``violated`` with
+the atoms that did it). A new referent map for the running task, or a failed skill,
+triggers a replan from the current automaton state and pose.
+
+Planning runs in one worker thread (instructions are served in order); callbacks
+stay short, so odometry and segment replies are handled while a plan is being made.
+"""
+from __future__ import annotations
+
+import itertools
+import math
+import queue
+import sys
+import threading
+import time
+from collections import OrderedDict
+from dataclasses import dataclass, field
+from typing import Any, Optional
+
+import numpy as np
+from nav_msgs.msg import OccupancyGrid, Odometry, Path
+from rclpy.node import Node
+from sensor_msgs.msg import PointCloud2
+from std_msgs.msg import String
+
+from ltl_instruct import conversions as conv
+from ltl_instruct.core import planning
+from ltl_instruct.core.automaton import Automaton, compile_automaton
+from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError, PlanningError
+from ltl_instruct.core.grounding.rsm import ReferentMap
+from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, Verdict
+from ltl_instruct.core.spec import Atom, parse_formula
+from ltl_instruct.nodes.common import (
+    ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node,
+)
+
+PARAMS = (
+    ParamSpec('near_threshold', 1.0, 'nearness radius of near[x] [m]', 0.05, 50.0),
+    ParamSpec('robot_kind', 'ground', 'ground (2D planning) or drone (3D)', choices=('ground', 'drone')),
+    ParamSpec('grounding_timeout', 10.0, 'how long a task spec waits for its referent map [s]', 0.5, 600.0),
+    ParamSpec('segment_timeout', 10.0, 'how long to wait for one plan_segment [s]', 0.5, 600.0),
+    ParamSpec('odom_timeout', 5.0, 'how long planning waits for a first odometry pose [s]', 0.1, 600.0),
+    ParamSpec('max_segments', 60, 'segment solves before planning gives up (TIMEOUT)', 1, 100000),
+    ParamSpec('time_budget', 60.0, 'wall-clock budget of one plan [s]', 0.1, 3600.0),
+    ParamSpec('robot_radius', 0.3, 'obstacle inflation for the plan check [m]', 0.0, 10.0),
+    ParamSpec('cloud_voxel', 1.0, 'voxel size of the 3D map from map_cloud [m]', 0.05, 10.0),
+    ParamSpec('bounds', '', '3D bounds "xmin,ymin,zmin,xmax,ymax,zmax" [m] for map_cloud ("" = its extent)'),
+    ParamSpec('max_replans', 3, 'replans allowed per instruction during execution', 0, 100),
+    ParamSpec('tpsm_spacing', 0.25, 'point spacing of the tpsm cloud [m]', 0.05, 5.0),
+    ParamSpec('start_x', float('nan'), 'start x when no odometry comes [m] (nan: wait for odom)'),
+    ParamSpec('start_y', float('nan'), 'start y when no odometry comes [m]'),
+    ParamSpec('start_z', 0.0, 'start z when no odometry comes [m]'),
+)
+
+_TERMINAL = ('planned', 'satisfied', 'failed')
+_SEEN_LIMIT = 10000
+
+
+@dataclass
+class _Pending:
+    """An instruction waiting for its task spec and referent map."""
+
+    iid: str
+    spec: Optional[dict[str, Any]] = None
+    rmap: Optional[dict[str, Any]] = None
+    since: float = field(default_factory=time.monotonic)
+    queued: bool = False
+
+
+@dataclass
+class _Active:
+    """The task being executed and monitored."""
+
+    iid: str
+    automaton: Automaton
+    referent_map: ReferentMap
+    monitor: ExecutionMonitor
+    plan_stamp: int
+    rmap_revision: int
+    plan: Any = None
+    replans: int = 0
+    finished: bool = False
+    events: list = field(default_factory=list)
+
+
+class TaskProgressionNode(Node):
+    """Task spec + referent map in, verified plan and task status out."""
+
+    def __init__(self) -> None:
+        super().__init__('task_progression')
+        self.params = declare_parameters(self, [p for p in PARAMS if not p.name.startswith('start_')])
+        self.start_override = self._start_override()
+        self._lock = threading.RLock()
+        self._pending: dict[str, _Pending] = {}
+        self._finished: OrderedDict[str, str] = OrderedDict()   # id -> terminal status
+        self._jobs: queue.Queue = queue.Queue()
+        self._pose: Optional[np.ndarray] = None
+        self._pose_event = threading.Event()
+        self._active: Optional[_Active] = None
+        self._segments: dict[str, dict[str, Any]] = {}   # request_id -> segment status
+        self._paths: dict[int, np.ndarray] = {}          # stamp key -> segment points
+        self._segment_cond = threading.Condition(self._lock)
+        self._stamps = itertools.count(int(time.time() * 1e9))
+        self._unidentified = itertools.count(1)
+        self._last_input_warning = 0.0
+        self._closing = threading.Event()
+        self._bounds = conv.parse_bounds(self.params['bounds'])
+        self._world: Any = None
+        self._world_error: LtlInstructError = InvalidInputError('no map received yet')
+
+        self.status_pub = self.create_publisher(String, 'task_status', latched_qos())
+        self.plan_pub = self.create_publisher(Path, 'plan', latched_qos(1))
+        self.task_plan_pub = self.create_publisher(String, 'task_plan', latched_qos(1))
+        self.tpsm_pub = self.create_publisher(PointCloud2, 'tpsm', latched_qos(1))
+        self.request_pub = self.create_publisher(String, 'plan_request', reliable_qos())
+        self.skill_pub = self.create_publisher(String, 'skill/request', reliable_qos())
+        self.create_subscription(String, 'task_spec', self.on_task_spec, latched_qos())
+        self.create_subscription(String, 'referent_map', self.on_referent_map, latched_qos())
+        self.create_subscription(Odometry, 'odom', self.on_odom, reliable_qos(10))
+        self.create_subscription(Path, 'plan_segment', self.on_plan_segment, reliable_qos())
+        self.create_subscription(String, 'fmt_planner/status', self.on_segment_status, reliable_qos())
+        self.create_subscription(String, 'skill/result', self.on_skill_result, reliable_qos())
+        if self.params['robot_kind'] == 'drone':
+            self.create_subscription(PointCloud2, 'map_cloud', self.on_map_cloud, latched_qos(1))
+        else:
+            self.create_subscription(OccupancyGrid, 'map', self.on_map, latched_qos(1))
+        self.create_timer(0.25, self.on_timer)
+        self._worker = threading.Thread(target=self._work, name='plan', daemon=True)
+        self._worker.start()
+
+    def _start_override(self) -> Optional[np.ndarray]:
+        values = []
+        for name in ('start_x', 'start_y', 'start_z'):
+            spec = next(p for p in PARAMS if p.name == name)
+            self.declare_parameter(name, spec.default, spec.descriptor())
+            v = self.get_parameter(name).value
+            values.append(float(v) if isinstance(v, (int, float)) else float('nan'))
+        if math.isnan(values[0]) or math.isnan(values[1]):
+            return None
+        if not all(math.isfinite(v) for v in values):
+            raise InvalidInputError('start_x/start_y/start_z must be finite')
+        return np.asarray(values)
+
+    # ------------------------------------------------------------------ status
+    def publish_status(self, iid: str, status: str, terminal: bool, phase: str = 'planning',
+                       error: Optional[LtlInstructError] = None, **fields: Any) -> None:
+        """Publish one ``task_status``; a terminal one is sent at most once per id."""
+        with self._lock:
+            if terminal:
+                if iid in self._finished:
+                    return
+                self._finished[iid] = status
+                while len(self._finished) > _SEEN_LIMIT:
+                    self._finished.popitem(last=False)
+                self._pending.pop(iid, None)
+        body = dict(status=status, terminal=terminal, phase=phase,
+                    error=error.to_dict() if error is not None else None, **fields)
+        if error is not None:
+            self.get_logger().warning(f'{iid}: {status} [{error.code.value}] {error.message}')
+        else:
+            self.get_logger().info(f'{iid}: {status}')
+        self.status_pub.publish(conv.json_msg(conv.payload(conv.TASK_STATUS, iid, **body)))
+
+    def _fail(self, iid: str, error: LtlInstructError, **fields: Any) -> None:
+        self.publish_status(iid, 'failed', True, error=error, **fields)
+
+    def _input_warning(self, iid: str, error: LtlInstructError) -> None:
+        """Publish a non-terminal report of rejected input (NaN odometry...), at most 2 per second."""
+        now = time.monotonic()
+        if now - self._last_input_warning < 0.5:
+            return
+        self._last_input_warning = now
+        self.publish_status(iid, 'input_rejected', False, phase='input', error=error)
+
+    # ------------------------------------------------------------------ inputs
+    def on_task_spec(self, msg: String) -> None:
+        """Take a translated instruction (or a failed translation)."""
+        try:
+            spec = conv.parse_json_payload(msg.data, conv.TASK_SPEC)
+        except LtlInstructError as e:
+            iid = conv.salvage_id(msg.data) or f'unidentified-{next(self._unidentified)}'
+            self._fail(iid, e, stage='task_spec')
+            return
+        iid = spec['id']
+        with self._lock:
+            if iid in self._finished:
+                return
+            if not spec.get('ok', False):
+                err = spec.get('error') or {}
+                self._fail(iid, _error_from_dict(err, ErrorCode.TRANSLATION_ERROR),
+                           stage='translation', instruction=spec.get('instruction', ''))
+                return
+            if not isinstance(spec.get('formula'), str):
+                self._fail(iid, InvalidInputError('task spec has no formula'), stage='task_spec')
+                return
+            p = self._pending.setdefault(iid, _Pending(iid))
+            p.spec = spec
+            self._maybe_queue(p)
+
+    def on_referent_map(self, msg: String) -> None:
+        """Groundings for an instruction (or a new revision for the running task)."""
+        try:
+            data = conv.parse_json_payload(msg.data, conv.REFERENT_MAP)
+        except LtlInstructError as e:
+            self.get_logger().warning(f'referent map rejected: {e.message}')
+            return
+        iid = data['id']
+        with self._lock:
+            active = self._active
+            if active is not None and active.iid == iid and not active.finished:
+                if int(data.get('revision', 0)) > active.rmap_revision and data.get('ok', False):
+                    self._jobs.put(('replan', iid, data, 'the referent map changed'))
+                return
+            if iid in self._finished:
+                return
+            p = self._pending.setdefault(iid, _Pending(iid))
+            p.rmap = data
+            self._maybe_queue(p)
+
+    def _maybe_queue(self, p: _Pending) -> None:
+        if p.spec is not None and p.rmap is not None and not p.queued:
+            p.queued = True
+            self._jobs.put(('plan', p.iid, None, ''))
+
+    def on_map(self, msg: OccupancyGrid) -> None:
+        """Keep the 2D world the plans are checked against (a bad map is remembered as the error)."""
+        try:
+            world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
+        except LtlInstructError as e:
+            world, self._world_error = None, e
+        with self._lock:
+            self._world = world
+
+    def on_map_cloud(self, msg: PointCloud2) -> None:
+        """Keep the 3D world of a drone."""
+        try:
+            world = conv.planning_world_from_cloud(msg, self.params['cloud_voxel'],
+                                                   self.params['robot_radius'], self._bounds)
+        except LtlInstructError as e:
+            world, self._world_error = None, e
+        with self._lock:
+            self._world = world
+
+    def on_odom(self, msg: Odometry) -> None:
+        """Keep the pose; progress the running task's automaton."""
+        try:
+            pose = conv.odometry_pose(msg)
+        except LtlInstructError as e:
+            with self._lock:
+                iid = self._active.iid if self._active is not None else ''
+            self._input_warning(iid, e)
+            return
+        with self._lock:
+            self._pose = pose.xyz
+            self._pose_event.set()
+            active = self._active
+            if active is None or active.finished:
+                return
+            event = active.events.pop(0) if active.events else None
+            try:
+                report = active.monitor.update(self._pose, [event] if event is not None else [])
+            except LtlInstructError as e:
+                self._input_warning(active.iid, e)
+                return
+            if report.verdict is Verdict.PROGRESSING and not report.changed:
+                return
+            if report.verdict is not Verdict.PROGRESSING:
+                active.finished = True
+            plan = active.plan
+        if report.changed and report.verdict is Verdict.PROGRESSING:
+            self._publish_tpsm(plan, report.state)
+        self.publish_status(active.iid, report.verdict.value, False, phase='execution',
+                            automaton_state=report.state, monitor=report.to_dict())
+
+    def on_plan_segment(self, msg: Path) -> None:
+        """Store a segment from the planner, matched to its request by the header stamp."""
+        try:
+            points = conv.path_points(msg)
+        except LtlInstructError as e:
+            self.get_logger().warning(f'plan_segment rejected: {e.message}')
+            return
+        with self._segment_cond:
+            self._paths[conv.stamp_key(msg.header.stamp)] = points
+            self._segment_cond.notify_all()
+
+    def on_segment_status(self, msg: String) -> None:
+        """Store the planner's verdict on one request (ok, or a typed error)."""
+        try:
+            data = conv.parse_json_payload(msg.data, conv.SEGMENT_STATUS)
+        except LtlInstructError as e:
+            self.get_logger().warning(f'segment status rejected: {e.message}')
+            return
+        with self._segment_cond:
+            self._segments[str(data.get('request_id', ''))] = data
+            self._segment_cond.notify_all()
+
+    def on_skill_result(self, msg: String) -> None:
+        """Handle the end of a pick or release: an event for the automaton, or a replan."""
+        try:
+            data = conv.parse_json_payload(msg.data, conv.SKILL_RESULT)
+            skill, args = data['skill'], [str(a) for a in data['args']]
+            atom = parse_formula(f'{skill}[{", ".join(args)}]')
+            if not isinstance(atom, Atom):
+                raise InvalidInputError('skill result does not name one atom')
+        except (LtlInstructError, KeyError, TypeError) as e:
+            self.get_logger().warning(f'skill result rejected: {e}')
+            return
+        with self._lock:
+            active = self._active
+            if active is None or active.iid != data['id'] or active.finished:
+                return
+            if data.get('ok'):
+                active.events.append(atom)
+                return
+            err = _error_from_dict(data.get('error') or {}, ErrorCode.SKILL_FAILED)
+        self.publish_status(data['id'], 'skill_failed', False, phase='execution', error=err)
+        self._jobs.put(('replan', data['id'], None, f'{skill} failed: {err.message}'))
+
+    def on_timer(self) -> None:
+        """Fail instructions whose referent map never came."""
+        now = time.monotonic()
+        late = []
+        with self._lock:
+            for p in self._pending.values():
+                if not p.queued and p.spec is not None and now - p.since > self.params['grounding_timeout']:
+                    late.append(p.iid)
+        for iid in late:
+            self._fail(iid, LtlInstructError('no referent map came for this instruction in time',
+                                             ErrorCode.TIMEOUT), stage='grounding')
+
+    # ------------------------------------------------------------------ planning (worker thread)
+    def close(self) -> None:
+        """Stop the worker thread."""
+        self._closing.set()
+        self._jobs.put(None)
+        with self._segment_cond:
+            self._segment_cond.notify_all()
+
+    def _work(self) -> None:
+        while not self._closing.is_set():
+            job = self._jobs.get()
+            if job is None:
+                return
+            kind, iid, data, reason = job
+            try:
+                if kind == 'plan':
+                    self._plan_instruction(iid)
+                else:
+                    self._replan(iid, data, reason)
+            except LtlInstructError as e:
+                if kind == 'plan':
+                    self._fail(iid, e)
+                else:
+                    self.publish_status(iid, 'failed', False, phase='execution', error=e)
+            except Exception as e:  # noqa: BLE001 - a bug must not kill the worker or lose the instruction
+                self.get_logger().error(f'internal error on {iid}: {e!r}')
+                err = LtlInstructError(f'internal error: {e!r}', ErrorCode.INTERNAL_ERROR)
+                if kind == 'plan':
+                    self._fail(iid, err)
+                else:
+                    self.publish_status(iid, 'failed', False, phase='execution', error=err)
+
+    def _current_pose(self) -> np.ndarray:
+        if self.start_override is not None and self._pose is None:
+            return self.start_override
+        if not self._pose_event.wait(self.params['odom_timeout']):
+            raise InvalidInputError('no odometry received: cannot plan from an unknown pose')
+        with self._lock:
+            assert self._pose is not None
+            return self._pose.copy()
+
+    def _plan_instruction(self, iid: str) -> None:
+        with self._lock:
+            p = self._pending.get(iid)
+            if p is None or p.spec is None or p.rmap is None:
+                return
+            spec, rdata = p.spec, p.rmap
+        timing: dict[str, float] = {k: float(v) for k, v in (spec.get('timing') or {}).items()
+                                    if isinstance(v, (int, float))}
+        timing.update({k: float(v) for k, v in (rdata.get('timing') or {}).items()
+                       if isinstance(v, (int, float))})
+        t0 = time.monotonic()
+        formula = parse_formula(spec['formula'])
+        automaton = compile_automaton(formula)
+        timing['automaton_s'] = time.monotonic() - t0
+        if not automaton.is_satisfiable:
+            raise LtlInstructError(f'the task "{formula}" can never be completed: no sequence of steps '
+                                   'satisfies it', ErrorCode.UNSATISFIABLE, details={'formula': str(formula)})
+        if not rdata.get('ok', False):
+            raise _error_from_dict(rdata.get('error') or {}, ErrorCode.UNKNOWN_REFERENT)
+        rmap = ReferentMap.from_dict(rdata.get('referent_map') or {})
+        start = self._current_pose()
+        self._plan_and_publish(iid, automaton, rmap, start, None, timing,
+                               int(rdata.get('revision', 0)), replans=0)
+
+    def _replan(self, iid: str, rdata: Optional[dict[str, Any]], reason: str) -> None:
+        with self._lock:
+            active = self._active
+            if active is None or active.iid != iid or active.finished:
+                return
+            if active.replans >= self.params['max_replans']:
+                active.finished = True
+                err: Optional[LtlInstructError] = PlanningError(
+                    f'gave up after {active.replans} replans ({reason})', ErrorCode.NO_VALID_PATH)
+            else:
+                err = None
+            rmap, revision = active.referent_map, active.rmap_revision
+            if rdata is not None:
+                rmap = ReferentMap.from_dict(rdata.get('referent_map') or {})
+                revision = int(rdata.get('revision', revision))
+            state = active.monitor.state
+            replans = active.replans + 1
+        if err is not None:
+            self.publish_status(iid, 'failed', False, phase='execution', error=err)
+            return
+        self.publish_status(iid, 'replanning', False, phase='execution', reason=reason, automaton_state=state)
+        start = self._current_pose()
+        self._plan_and_publish(iid, active.automaton, rmap, start, state, {}, revision, replans)
+
+    def _letters(self, automaton: Automaton, rmap: ReferentMap) -> LetterMaker:
+        dims = 3 if self.params['robot_kind'] == 'drone' else 2
+        return LetterMaker(automaton.atoms, rmap, self.params['near_threshold'], dims)
+
+    def _world_or_error(self) -> Any:
+        with self._lock:
+            if self._world is None:
+                raise InvalidInputError(f'cannot plan without a valid map: {self._world_error.message}')
+            return self._world
+
+    def _plan_and_publish(self, iid: str, automaton: Automaton, rmap: ReferentMap, start: np.ndarray,
+                          state: Optional[int], timing: dict[str, float], revision: int,
+                          replans: int) -> None:
+        """Plan (from ``state``, or the initial state when None), then publish everything and monitor."""
+        world = self._world_or_error()
+        settings = planning.PlannerSettings(near_threshold=self.params['near_threshold'],
+                                            max_segments=self.params['max_segments'],
+                                            time_budget=self.params['time_budget'])
+        t0 = time.monotonic()
+        plan = planning.plan_task(automaton, rmap, world, start, settings,
+                                  solve=lambda request: self._remote_solve(iid, request, world.dims),
+                                  request_id=iid, initial_state=state)
+        timing['plan_s'] = time.monotonic() - t0   # every segment over DDS, and the plan check
+        first = state is None
+        if plan.status == 'satisfied' or not plan.steps:
+            if first:
+                self.publish_status(iid, 'satisfied', True, formula=str(automaton.formula), timing=timing,
+                                    reason='the task already holds at the robot\'s pose')
+            else:
+                self.publish_status(iid, 'satisfied', False, phase='execution')
+            return
+        stamp = next(self._stamps)
+        letters = self._letters(automaton, rmap)
+        monitor_state = automaton.initial if first else state
+        path, skills = _path_and_skills(plan, rmap)
+        with self._lock:
+            self._active = _Active(iid, automaton, rmap, ExecutionMonitor(automaton, letters, monitor_state),
+                                   stamp, revision, plan, replans)
+        stamp_msg = conv.stamp_from_key(stamp)
+        self.plan_pub.publish(conv.path_msg(path, stamp_msg))
+        self.task_plan_pub.publish(conv.json_msg(conv.payload(
+            conv.TASK_PLAN, iid, plan_stamp=stamp, revision=revision, skills=skills, **plan.to_dict())))
+        self._publish_tpsm(plan, plan.steps[0].state_before)
+        for skill in skills:
+            self.skill_pub.publish(conv.json_msg(conv.payload(
+                conv.SKILL_REQUEST, iid, plan_stamp=stamp, **skill)))
+        fields = dict(formula=str(automaton.formula), timing=timing, plan_stamp=stamp,
+                      num_poses=int(len(path)), length_m=round(plan.length, 3), num_skills=len(skills),
+                      automaton_states=plan.states, verification=plan.verification.to_dict())
+        if first:
+            self.publish_status(iid, 'planned', True, **fields)
+        else:
+            self.publish_status(iid, 'replanned', False, phase='execution', **fields)
+
+    def _remote_solve(self, iid: str, request: Any, dims: int) -> Any:
+        """Send one ``plan_request`` and wait for the planner's answer (bounded by ``segment_timeout``)."""
+        stamp = next(self._stamps)
+        rid = f'{request.id}#{stamp}'
+        self.request_pub.publish(conv.json_msg(conv.payload(
+            conv.PLAN_REQUEST, iid, request_id=rid, stamp=stamp, request=request.to_dict())))
+        deadline = time.monotonic() + self.params['segment_timeout']
+        with self._segment_cond:
+            while not self._closing.is_set():
+                status = self._segments.get(rid)
+                if status is not None and (not status.get('ok') or stamp in self._paths):
+                    self._segments.pop(rid, None)
+                    points = self._paths.pop(stamp, None)
+                    if not status.get('ok') or points is None or len(points) == 0:
+                        err = _error_from_dict(status.get('error') or {}, ErrorCode.NO_VALID_PATH)
+                        return planning.SegmentResult.failure(request.id, err)
+                    return planning.SegmentResult.from_waypoints(request.id, points[:, :dims], spacing=0.0)
+                left = deadline - time.monotonic()
+                if left <= 0:
+                    break
+                self._segment_cond.wait(min(left, 0.2))
+        return planning.SegmentResult.failure(request.id, LtlInstructError(
+            f'{request.describe()}: no plan_segment within {self.params["segment_timeout"]} s',
+            ErrorCode.TIMEOUT))
+
+    def _publish_tpsm(self, plan: Any, state: int) -> None:
+        """Publish the TPSM of the navigate step leaving ``state`` (1 goal, -1 avoid, 0 neutral)."""
+        step = next((s for s in plan.steps if s.kind == planning.NAVIGATE and s.state_before == state
+                     and s.request is not None), None)
+        with self._lock:
+            world = self._world
+        if step is None or world is None:
+            return
+        req = step.request
+        tpsm = planning.TaskProgressionMap(req.goal, req.allowed, req.regions, req.dims)
+        lo, hi = np.asarray(world.bounds_min), np.asarray(world.bounds_max)
+        spacing = max(self.params['tpsm_spacing'], float(np.prod(hi - lo) / 200_000) ** (1.0 / len(lo)))
+        try:
+            points, values = tpsm.render(lo, hi, spacing)
+        except LtlInstructError as e:
+            self.get_logger().warning(f'tpsm not rendered: {e.message}')
+            return
+        self.tpsm_pub.publish(conv.point_cloud_msg(points, {'value': values.astype(np.float32)},
+                                                   self.get_clock().now().to_msg()))
+
+
+def _path_and_skills(plan: Any, rmap: ReferentMap) -> tuple[np.ndarray, list[dict[str, Any]]]:
+    """Return the plan's path (N, 3) [m] and a skill request body per skill step (with its path index)."""
+    path = plan.path()
+    if path.shape[1] == 2:
+        path = np.column_stack([path, np.zeros(len(path))])
+    skills: list[dict[str, Any]] = []
+    index = 0
+    for step in plan.steps:
+        if step.kind == planning.NAVIGATE:
+            index += len(step.waypoints) - 1
+            continue
+        atom = parse_formula(step.skill)
+        if not isinstance(atom, Atom):
+            continue
+        where = np.asarray(step.waypoints[-1], dtype=float)
+        targets = []
+        for arg in atom.args:
+            insts = rmap.instances(str(arg))
+            best = min(insts, key=lambda i: float(i.distance(where, dims=len(where))[0]), default=None)
+            targets.append({'id': best.id, 'center': list(best.center)} if best is not None else {})
+        skills.append({'skill': atom.skill, 'args': [str(a) for a in atom.args], 'targets': targets,
+                       'path_index': index, 'position': where.tolist(),
+                       'state_before': step.state_before, 'state_after': step.state_after})
+    return path, skills
+
+
+def _error_from_dict(err: dict[str, Any], default: ErrorCode) -> LtlInstructError:
+    try:
+        code = ErrorCode(err.get('code', default.value))
+    except ValueError:
+        code = default
+    return LtlInstructError(str(err.get('message', code.value))[:2000], code,
+                            details=err.get('details') if isinstance(err.get('details'), dict) else None)
+
+
+def main(args: Optional[list[str]] = None) -> int:
+    """Entry point of the ``task_progression`` console script."""
+    return run_node(TaskProgressionNode, args, threads=4)
+
+
+if __name__ == '__main__':
+    sys.exit(main())

@@ -128,3 +128,40 @@ def test_referent_markers_one_cube_and_label_per_instance():
     markers = conv.referent_markers(rmap).markers
     assert len(markers) == 1 + 4
     assert markers[1].scale.x == 2.0 and markers[2].text == 'sofa (sofa_1)'
+
+
+@settings(derandomize=True, max_examples=30, deadline=None)
+@given(st.integers(0, 2 ** 31 - 1))
+def test_occupied_rectangles_cover_exactly_the_blocked_cells(seed):
+    rng = np.random.default_rng(seed)
+    cells = rng.choice(np.array([0, 100, -1], dtype=np.int8), size=(rng.integers(1, 30), rng.integers(1, 30)),
+                       p=[0.6, 0.3, 0.1])
+    cover = np.zeros(cells.shape, dtype=int)
+    for r0, r1, c0, c1 in conv.occupied_rectangles(cells):
+        cover[r0:r1, c0:c1] += 1
+    assert np.array_equal(cover, ((cells >= 50) | (cells < 0)).astype(int))   # covered once, nothing free
+
+
+def test_planning_world_from_grid_matches_the_grid():
+    raster = rasterize_scene(resolve_scene('apartment'), 0.1)
+    world = conv.planning_world_from_grid(conv.occupancy_grid_msg(raster), robot_radius=0.0)
+    assert len(world.obstacles) < 80
+    pts = np.random.default_rng(1).uniform([0.05, 0.05], [19.95, 14.95], size=(5000, 2))
+    cols = ((pts[:, 0] - raster.origin[0]) / raster.resolution).astype(int)
+    rows = ((pts[:, 1] - raster.origin[1]) / raster.resolution).astype(int)
+    on_cell_edge = (np.abs(pts / raster.resolution - np.round(pts / raster.resolution)) < 1e-6).any(axis=1)
+    free = raster.cells[rows, cols] == 0
+    assert np.array_equal(world.is_free(pts)[~on_cell_edge], free[~on_cell_edge])
+    inflated = conv.planning_world_from_grid(conv.occupancy_grid_msg(raster), robot_radius=0.3)
+    assert not inflated.is_free(np.array([[10.0, 1.0], [10.35, 1.0], [1.5, 0.35]])).any()   # wall + radius
+    assert inflated.is_free(np.array([[1.5, 1.5]]))[0]
+    with pytest.raises(InvalidInputError):
+        conv.planning_world_from_grid(OccupancyGrid(), 0.3)
+
+
+def test_bounds_text():
+    assert conv.parse_bounds('') is None
+    assert conv.parse_bounds('0,0,2,120,100,30') == ((0.0, 0.0, 2.0), (120.0, 100.0, 30.0))
+    for bad in ('1,2,3', '0,0,0,0,1,1', 'a,b,c,d,e,f', '0,0,0,nan,1,1'):
+        with pytest.raises(InvalidInputError):
+            conv.parse_bounds(bad)

@@ -90,7 +90,8 @@ def allowed_mask(vocab: OutputVocabulary, stack: np.ndarray, length: np.ndarray,
     Boolean array (B, vocab.size). A landmark is allowed only while the program
     can still be closed within ``max_len``; a unary operator needs one operand
     and may not repeat itself (``F F``, ``G G``, ``! !`` say nothing new); a
-    binary operator needs two; END needs exactly one formula on the stack.
+    binary operator needs two; END needs exactly one formula on the stack; ``F`` and
+    ``G`` may not apply directly to ``F`` or ``G``.
     """
     kinds = vocab.kinds()[None, :]
     s = stack[:, None]
@@ -102,7 +103,11 @@ def allowed_mask(vocab: OutputVocabulary, stack: np.ndarray, length: np.ndarray,
     mask = ok_landmark | ok_unary | ok_binary | ok_end
     ids = np.arange(vocab.size)[None, :]
     no_repeat = ~((ids == last[:, None]) & (kinds == KIND_UNARY) & (ids != vocab.op_id('X')))
-    return mask & no_repeat
+    # F and G directly on F or G: over finite traces F F p = F p, G G p = G p, and
+    # F G p = G F p = "p at the last step"; one spelling (none) keeps the search small
+    eventually_always = np.isin(ids, [vocab.op_id('F'), vocab.op_id('G')])
+    after_fg = np.isin(last, [vocab.op_id('F'), vocab.op_id('G')])[:, None]
+    return mask & no_repeat & ~(eventually_always & after_fg)
 
 
 def stack_effect(vocab: OutputVocabulary) -> np.ndarray:

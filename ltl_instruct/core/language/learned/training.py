@@ -94,7 +94,7 @@ class RewardCache:
 class TrainingConfig:
     """Training settings."""
 
-    epochs: int = 12
+    epochs: int = 30
     batch: int = 8
     learning_rate: float = 1e-3
     beam: int = 20

@@ -10,3 +10,4 @@ from ltl_instruct.core.grounding.resolve import (  # noqa: F401
     Resolution, Resolver, ground_formula, grounding_error, instances_from_scene, required_referents,
 )
 from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap  # noqa: F401
+from ltl_instruct.core.grounding.semantic_map import SemanticMap, SemanticMapParams  # noqa: F401

@@ -73,7 +73,8 @@ class GroundingParams:
             vp = tuple(self.viewpoint)
             finite = all(isinstance(v, (int, float)) and math.isfinite(v) for v in vp)
             if len(vp) not in (3, 4) or not finite:
-                raise InvalidInputError(f'viewpoint must be 3 or 4 finite numbers (x, y, z[, yaw]), got {vp!r}')
+                raise InvalidInputError(f'viewpoint must be 3 or 4 finite numbers (x, y, z[, yaw]), '
+                                        f'got {vp!r}')
             object.__setattr__(self, 'viewpoint', tuple(float(v) for v in vp))
 
     def threshold_of(self, comparator: str) -> float:

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from typing import Any, Mapping, Optional, Sequence
 
 import numpy as np
@@ -114,12 +115,17 @@ def _safe_id(value: Any) -> str:
     return value[:200] if isinstance(value, str) else ''
 
 
+_ID_PATTERN = re.compile(r'"id"\s*:\s*"([A-Za-z0-9_.:#/@+-]{1,200})"')
+
+
 def salvage_id(text: str) -> str:
     """Return the ``id`` of a payload that failed validation, when one can be read, else ''."""
     try:
         data = json.loads(text[:MAX_PAYLOAD_BYTES])
     except (ValueError, RecursionError):
-        return ''
+        # truncated or broken JSON: the id may still be readable
+        m = _ID_PATTERN.search(text[:10000])
+        return m.group(1) if m else ''
     return _safe_id(data.get('id')) if isinstance(data, dict) else ''
 
 

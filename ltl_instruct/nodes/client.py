@@ -163,12 +163,12 @@ class GraphClient:
 
     # ------------------------------------------------------------------ actions
     def wait_until(self, predicate: Callable[[], Any], timeout: float) -> Any:
-        """Wait until ``predicate()`` is truthy (checked under the lock); return it, or None on timeout."""
+        """Wait until ``predicate()`` is truthy or an array (checked under the lock); return it, or None."""
         deadline = time.monotonic() + timeout
         with self._cond:
             while True:
                 value = predicate()
-                if value:
+                if isinstance(value, np.ndarray) or value:   # an array (a plan) counts when present
                     return value
                 left = deadline - time.monotonic()
                 if left <= 0:

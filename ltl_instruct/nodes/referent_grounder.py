@@ -38,8 +38,11 @@ PARAMS = (
     ParamSpec('scene', '', 'known objects: built-in scene name or scene file ("" = camera only)'),
     ParamSpec('use_camera', True, 'integrate camera frames (depth + labels) into the semantic map'),
     ParamSpec('camera_min_interval', 0.5, 'least time between two integrated frames [s]', 0.0, 60.0),
-    ParamSpec('relation_threshold', 0.5, 'comparator threshold t of spec/formula.md [m]', 0.0, 50.0),
+    ParamSpec('axis_threshold', 0.1, 'threshold of above/below/left/right/front/behind [m]', 0.0, 50.0),
+    ParamSpec('nextto_threshold', 1.0, 'isnextto holds below this distance [m]', 0.0, 50.0),
+    ParamSpec('between_threshold', 0.5, 'isbetween holds within this distance of the segment [m]', 0.0, 50.0),
     ParamSpec('viewpoint', 'origin', 'frame of reference of the comparators', choices=('origin', 'robot')),
+    ParamSpec('use_embeddings', False, 'also match names with the packaged sentence-embedding model'),
 )
 
 
@@ -52,7 +55,7 @@ class ReferentGrounderNode(Node):
         self._lock = threading.Lock()
         self._known = grounding.instances_from_scene(resolve_scene(self.params['scene'])) \
             if self.params['scene'] else ()
-        self._semantic_map: Any = grounding.SemanticMap() if self.params['use_camera'] else None
+        self._semantic_map: Any = self._make_semantic_map() if self.params['use_camera'] else None
         self._pose: Any = None
         self._info: Optional[CameraInfo] = None
         self._labels: Optional[Image] = None
@@ -69,6 +72,13 @@ class ReferentGrounderNode(Node):
         self.get_logger().info(f'referent_grounder: {len(self._known)} known objects, '
                                f'camera {"on" if self._semantic_map is not None else "off"}')
 
+    def _make_semantic_map(self) -> Any:
+        semantic_map = getattr(grounding, 'SemanticMap', None)
+        if semantic_map is None:
+            self.get_logger().warning('no semantic map in this build: grounding uses the known objects only')
+            return None
+        return semantic_map()
+
     # ------------------------------------------------------------------ grounding
     def _instances(self) -> tuple:
         detected = tuple(self._semantic_map.instances()) if self._semantic_map is not None else ()
@@ -80,8 +90,12 @@ class ReferentGrounderNode(Node):
     def _grounding_params(self) -> Any:
         viewpoint = None
         if self.params['viewpoint'] == 'robot' and self._pose is not None:
-            viewpoint = tuple(self._pose.position)
-        return grounding.GroundingParams(threshold=self.params['relation_threshold'], viewpoint=viewpoint)
+            viewpoint = tuple(self._pose.position) + (self._pose.yaw,)
+        p = self.params
+        return grounding.GroundingParams(axis_threshold=p['axis_threshold'],
+                                         nextto_threshold=p['nextto_threshold'],
+                                         between_threshold=p['between_threshold'], viewpoint=viewpoint,
+                                         use_embeddings=p['use_embeddings'])
 
     def on_task_spec(self, msg: String) -> None:
         """Ground a task's descriptors and publish its referent map (failed specs are skipped)."""

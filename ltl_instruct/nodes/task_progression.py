@@ -64,6 +64,7 @@ PARAMS = (
 )
 
 _TERMINAL = ('planned', 'satisfied', 'failed')
+NO_INSTRUCTION = 'no-instruction'   # the id of input rejected while no task runs
 _SEEN_LIMIT = 10000
 
 
@@ -258,7 +259,7 @@ class TaskProgressionNode(Node):
             pose = conv.odometry_pose(msg)
         except LtlInstructError as e:
             with self._lock:
-                iid = self._active.iid if self._active is not None else ''
+                iid = self._active.iid if self._active is not None else NO_INSTRUCTION
             self._input_warning(iid, e)
             return
         with self._lock:

@@ -1,0 +1,260 @@
+"""The node graph end to end: real rclpy nodes in separate processes over DDS.
+
+The graph (five nodes, the simulator on the built-in apartment) is started once for the
+module on a test-private ``ROS_DOMAIN_ID``, localhost only, and stopped in teardown.
+Many instructions go through it: good ones, bad ones, a burst of 50.
+"""
+from __future__ import annotations
+
+import json
+import os
+import random
+import time
+
+import numpy as np
+import pytest
+from nav_msgs.msg import OccupancyGrid
+from std_msgs.msg import String
+
+from ltl_instruct import conversions as conv
+from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file
+from ltl_instruct.core.automaton import compile_automaton
+from ltl_instruct.core.grounding.rsm import ReferentMap
+from ltl_instruct.core.spec import parse_formula
+from ltl_instruct.core.world.builtin import resolve_scene
+from ltl_instruct.core.world.robot import Pose
+
+DOMAIN_ID = str(random.Random(os.getpid() ^ int(time.time())).randint(120, 229))
+NEAR = 1.0
+TIMEOUT = 5.0   # every bad input gets its typed error within this many seconds
+
+
+@pytest.fixture(scope='module')
+def graph(tmp_path_factory):
+    os.environ['ROS_DOMAIN_ID'] = DOMAIN_ID
+    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
+    os.environ.pop('ROS_LOCALHOST_ONLY', None)
+    from ltl_instruct.nodes.client import GraphClient
+    logs = tmp_path_factory.mktemp('node_logs')
+    overrides = {'sim_world': {'time_scale': 8.0, 'max_speed': 1.5, 'camera_rate_hz': 0.0},
+                 'referent_grounder': {'use_camera': False},
+                 'task_progression': {'near_threshold': NEAR}}
+    g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
+    client = GraphClient('test_client', record_odom=True)
+    try:
+        assert client.wait_for_graph(timeout=60.0, need_sim=True), _logs(logs, g)
+        yield g, client, logs
+    finally:
+        client.close()
+        codes = g.stop()
+        # every node was alive to the end and stopped cleanly on SIGINT
+        assert all(c == 0 for c in codes.values()), (codes, _logs(logs, g))
+
+
+def _logs(logs, g) -> str:
+    out = [f'dead: {g.dead()}']
+    for p in sorted(logs.glob('*.log')):
+        out.append(f'--- {p.name}\n' + p.read_text(errors='replace')[-3000:])
+    return '\n'.join(out)
+
+
+def _alive(g) -> None:
+    assert not g.dead(), g.dead()
+
+
+def _densify(points: np.ndarray, spacing: float = 0.05) -> np.ndarray:
+    out = [points[:1]]
+    for a, b in zip(points[:-1], points[1:]):
+        n = max(1, int(np.ceil(np.linalg.norm(b - a) / spacing)))
+        out.append(a + (b - a) * (np.arange(1, n + 1)[:, None] / n))
+    return np.concatenate(out)
+
+
+def _trace(formula: str, rmap: ReferentMap, points: np.ndarray, skills: list) -> list:
+    """Letters along the path, computed here from the referent map (not the nodes' code)."""
+    aut = compile_automaton(parse_formula(formula))
+    letters = []
+    for p in points:
+        letter = set()
+        for atom in aut.atoms:
+            if atom.skill == 'near':
+                insts = rmap.instances(str(atom.args[0]))
+                if any(inst.distance(p, dims=2)[0] <= NEAR for inst in insts):
+                    letter.add(atom)
+        letters.append(letter)
+    return aut, letters
+
+
+def test_instruction_yields_a_plan_the_automaton_accepts(graph):
+    g, client, _ = graph
+    formula = 'F (near[sofa::isbehind(pillar)] & F near[computer]) & G !near[door]'
+    iid = client.send(formula=formula)
+    status = client.wait_terminal(iid, timeout=30.0)
+    assert status['status'] == 'planned', status
+    plan = client.wait_until(lambda: client.received.plans.get(status['plan_stamp']), 5.0)
+    assert plan is not None and len(plan) >= 2
+    rmap = ReferentMap.from_dict(client.received.referent_maps[iid]['referent_map'])
+    aut, letters = _trace(formula, rmap, _densify(plan), [])
+    assert aut.accepts(letters)
+    # the sofa behind the pillar is the one at larger x, never the other
+    sofa = rmap.instances('sofa::isbehind(pillar)')
+    assert [i.id for i in sofa] == ['sofa_2']
+    # and the path stays clear of walls (the map the simulator publishes)
+    grid = conv.occupancy_raster(client.received.map)
+    dense = _densify(plan)
+    cols = ((dense[:, 0] - grid.origin[0]) / grid.resolution).astype(int)
+    rows = ((dense[:, 1] - grid.origin[1]) / grid.resolution).astype(int)
+    assert np.all(grid.cells[rows, cols] == 0)
+    _alive(g)
+
+
+def test_english_instruction_is_translated_planned_and_executed(graph):
+    g, client, _ = graph
+    iid = client.send(text='go to the fridge')
+    status = client.wait_terminal(iid, timeout=30.0)
+    assert status['status'] == 'planned', status
+    assert client.received.specs[iid]['formula'] == 'F near[fridge]'
+    verification = client.received.verifications[iid]
+    assert 'fridge' in verification['verification_text']
+    done = client.wait_status(iid, 'satisfied', timeout=60.0)
+    assert done is not None and done['phase'] == 'execution'
+    fridge = resolve_scene('apartment').object_by_id('fridge')
+    last = client.received.odom[-1][1]
+    assert fridge.box.distance(last, dims=2)[0] <= NEAR + 0.05
+
+
+@pytest.mark.parametrize('case', ['nonsense', 'bad_json', 'unknown_referent', 'unsatisfiable',
+                                  'huge_text', 'bad_formula'])
+def test_bad_instruction_gets_a_typed_error_and_the_next_is_served(graph, case):
+    g, client, _ = graph
+    t0 = time.monotonic()
+    if case == 'nonsense':
+        iid = client.send(text='purple monkey dishwasher sideways')
+        expected = {'TRANSLATION_ERROR'}
+    elif case == 'bad_json':
+        iid = 'garbage-spec-1'
+        client.task_spec_pub.publish(
+            String(data='{"schema": "ltl_instruct/task_spec", "id": "garbage-spec-1", '))
+        expected = {'INVALID_INPUT'}
+    elif case == 'unknown_referent':
+        iid = client.send(formula='F near[unicorn]')
+        expected = {'UNKNOWN_REFERENT'}
+    elif case == 'unsatisfiable':
+        iid = client.send(formula='F near[sofa] & G !near[sofa]')
+        expected = {'UNSATISFIABLE'}
+    elif case == 'huge_text':
+        iid = client.send(text='go to the sofa ' * 5000)
+        expected = {'LIMIT_EXCEEDED'}
+    else:
+        iid = client.send(formula='F (near[sofa] &')
+        expected = {'PARSE_ERROR'}
+    status = client.wait_terminal(iid, timeout=TIMEOUT)
+    assert time.monotonic() - t0 <= TIMEOUT
+    assert status['status'] == 'failed' and status['error']['code'] in expected, status
+    assert status['error']['message']
+    _alive(g)
+    good = client.send(formula='F near[tv]')
+    assert client.wait_terminal(good, timeout=30.0)['status'] == 'planned'
+
+
+def test_garbage_without_an_id_still_gets_a_status(graph):
+    g, client, _ = graph
+    before = sum(len(v) for v in client.received.statuses.values())
+    client.task_spec_pub.publish(String(data='\x00\x01 not json at all'))
+    got = client.wait_until(lambda: [s for k, v in client.received.statuses.items()
+                                     if k.startswith('unidentified')
+                                     for s in v if s['error']['code'] == 'INVALID_INPUT'], TIMEOUT)
+    assert got and sum(len(v) for v in client.received.statuses.values()) > before
+    _alive(g)
+
+
+def test_nan_odometry_is_reported_and_ignored(graph):
+    g, client, _ = graph
+    msg = conv.odometry_msg(Pose((float('nan'), 1.0, 0.0), 0.0))
+    deadline = time.monotonic() + TIMEOUT
+    found = None
+    while found is None and time.monotonic() < deadline:
+        client.odom_pub.publish(msg)
+        found = client.wait_until(lambda: next(
+            (s for v in client.received.statuses.values() for s in v
+             if s['status'] == 'input_rejected' and s['error']['code'] == 'INVALID_INPUT'), None), 0.5)
+    assert found is not None
+    _alive(g)
+    good = client.send(formula='F near[lamp]')
+    assert client.wait_terminal(good, timeout=30.0)['status'] == 'planned'
+
+
+def test_empty_map_gives_a_typed_error_then_the_good_map_serves_again(graph):
+    g, client, _ = graph
+    good_map = client.received.map
+    assert good_map is not None
+    client.map_pub.publish(OccupancyGrid())          # an empty map
+    time.sleep(0.5)
+    iid = client.send(formula='F near[bed]')
+    status = client.wait_terminal(iid, timeout=TIMEOUT + 5.0)
+    assert status['status'] == 'failed' and status['error']['code'] == 'INVALID_INPUT', status
+    assert 'map' in status['error']['message']
+    client.map_pub.publish(good_map)
+    time.sleep(0.5)
+    again = client.send(formula='F near[bed]')
+    assert client.wait_terminal(again, timeout=30.0)['status'] == 'planned'
+    _alive(g)
+
+
+def test_burst_of_50_instructions_gets_50_terminal_statuses(graph):
+    g, client, _ = graph
+    kinds = ['F near[fridge]', 'F near[unicorn]', 'F near[sofa] & G !near[sofa]',
+             'F (near[tv] & F near[lamp])']
+    ids = [client.send(formula=kinds[i % len(kinds)]) for i in range(50)]
+    done = client.wait_until(lambda: all(client.terminal(i) for i in ids) or None, 120.0)
+    missing = [i for i in ids if client.terminal(i) is None]
+    assert done and not missing, missing
+    for i in ids:
+        terminals = [s for s in client.received.statuses[i] if s.get('terminal')]
+        assert len(terminals) == 1, terminals
+    outcomes = [client.terminal(i)['status'] for i in ids]
+    # good ones are planned (or already satisfied where the robot stands), bad ones fail
+    wrong = [(kinds[k % len(kinds)], client.terminal(i)['status'], client.terminal(i)['error'])
+             for k, i in enumerate(ids) if (client.terminal(i)['status'] != 'failed') != (k % 4 in (0, 3))]
+    assert not wrong, wrong[:3]
+    assert outcomes.count('failed') == 25
+    _alive(g)
+
+
+def test_late_subscriber_gets_latched_spec_referent_map_and_plan(graph):
+    g, client, _ = graph
+    iid = client.send(formula='F near[printer]')
+    status = client.wait_terminal(iid, timeout=30.0)
+    assert status['status'] == 'planned'
+    from ltl_instruct.nodes.client import GraphClient
+    late = GraphClient('late_joiner')
+    try:
+        got = late.wait_until(lambda: (late.received.specs.get(iid) and late.received.referent_maps.get(iid)
+                                       and late.received.plans.get(status['plan_stamp']) is not None
+                                       and late.received.task_plans.get(iid) and late.terminal(iid)), 10.0)
+        assert got, (list(late.received.specs), list(late.received.referent_maps), list(late.received.plans))
+        assert late.terminal(iid)['status'] == 'planned'
+    finally:
+        late.close()
+
+
+def test_pick_and_place_is_executed_with_skill_results(graph):
+    g, client, _ = graph
+    formula = 'F (pick[green_plush_toy] & F release[green_plush_toy, basket])'
+    iid = client.send(formula=formula)
+    status = client.wait_terminal(iid, timeout=30.0)
+    assert status['status'] == 'planned' and status['num_skills'] == 2, status
+    done = client.wait_status(iid, 'satisfied', timeout=60.0)
+    assert done is not None, client.received.statuses[iid]
+    results = [r for r in client.received.skill_results if r['id'] == iid]
+    assert [r['skill'] for r in results] == ['pick', 'release'] and all(r['ok'] for r in results)
+
+
+def test_task_plan_lists_steps_with_automaton_states(graph):
+    g, client, _ = graph
+    iid = client.send(formula='F (near[armchair] & F near[plant])')
+    assert client.wait_terminal(iid, timeout=30.0)['status'] == 'planned'
+    plan = client.wait_until(lambda: client.received.task_plans.get(iid), 5.0)
+    assert plan is not None
+    text = json.dumps(plan)
+    assert 'armchair' in text and 'plant' in text

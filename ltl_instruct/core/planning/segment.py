@@ -28,7 +28,8 @@ from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructEr
 from ltl_instruct.core.planning.fmt import FmtSettings, GoalSpec, plan_motion
 from ltl_instruct.core.planning.occupancy import PlanningWorld
 from ltl_instruct.core.planning.regions import (
-    AtomRegion, KeyCube, RegionSet, eval_guard_vectorised, eval_key_cubes, guard_keys, key_cubes,
+    AtomRegion, KeyCube, RegionSet, TaskProgressionMap, eval_guard_vectorised, eval_key_cubes, guard_keys,
+    key_cubes,
 )
 
 TARGET_KEY = '__target__'
@@ -96,6 +97,10 @@ class SegmentRequest:
         what = f'segment {self.id!r}' if self.transition == (-1, -1) else \
             f'transition {self.transition[0]} -> {self.transition[1]}'
         return f'{what} (goal: {self.goal}, allowed: {self.allowed})'
+
+    def tpsm(self) -> TaskProgressionMap:
+        """Return the request's task progression map (render it for RViz with ``.render``)."""
+        return TaskProgressionMap(self.goal, self.allowed, self.regions, self.dims)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict (the ``request`` of a ``plan_request`` payload)."""

@@ -1,0 +1,1019 @@
+"""The offline translator: deterministic rules from English instructions to task formulas.
+
+No model, no network: the instruction is normalised into tokens
+(:mod:`ltl_instruct.core.language.text`), list references and self-corrections are
+resolved by rewriting the tokens (:mod:`ltl_instruct.core.language.rewrite`), the
+sentences are cut into clauses at connectives ("then", "but", ", and go..."), and
+each clause is read as a goal, a delivery, an avoidance (global or scoped), an
+ordering constraint, or a count. Noun phrases become descriptors
+(:mod:`ltl_instruct.core.language.phrases`). The clauses build a small task model:
+conjoined chains of steps plus constraints, rendered as a formula in the
+conventions of the development set (``spatial-temporal-dev/CONVENTIONS.md``).
+
+Whatever the rules cannot place raises :class:`TranslationError` naming the words
+left over; nothing is dropped silently.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import Optional, Sequence
+
+from ltl_instruct.core.errors import ErrorCode, LimitExceededError, TranslationError
+from ltl_instruct.core.language.base import Translation
+from ltl_instruct.core.language.phrases import NAME_VERBS, NounPhrase, PhraseParser
+from ltl_instruct.core.language.rewrite import apply_corrections, resolve_list_references
+from ltl_instruct.core.language.text import NUMBER_WORDS, PUNCT, tokenize
+from ltl_instruct.core.spec import (
+    Always, And, Atom, Descriptor, Eventually, Formula, Not, Or, Until, WeakUntil,
+)
+
+MAX_INSTRUCTION_CHARS = 2000
+
+AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('avoid',), ('stay', 'away', 'from'), ('keep', 'away', 'from'), ('keep', 'off'), ('stay', 'off'),
+    ('stay', 'clear', 'of'), ('steer', 'clear', 'of'), ('keep', 'clear', 'of'), ('stay', 'out', 'of'),
+    ('keep', 'out', 'of'), ('do', 'not'), ('never',), ('not',), ('keep', 'your', 'distance', 'from'),
+    ('stay', 'far', 'from'), ('keep', 'far', 'from'), ('without', 'going'), ('without', 'passing'),
+    ('without', 'touching'), ('stay', 'away'), ('keep', 'away'), ('and', 'not'), ('but', 'not'),
+    ('avoiding',), ('while', 'avoiding'), ('no',), ('ignore',) if False else ('shun',),
+), key=lambda t: -len(t)))
+
+# After "do not"/"never": verbs and particles to skip before the avoided noun phrase.
+AVOID_FILLER = frozenset('''
+go ever drive fly walk move come get pass bump touch run head enter step visit stop cross approach land
+anywhere back near close to by into in over through past on onto around at the area of again even
+going passing touching knock hit disturb wake anywhere let yourself be into enter visiting
+'''.split()) - {'the'}
+
+GOAL_VERBS = frozenset('''
+go goes head visit navigate move drive fly walk run come return check find locate reach get stop swing make
+proceed travel survey inspect land charge stand hover approach enter circle pass explore search look patrol
+wander roll arrive be need want please robot drone hey can could would you i will just also then now first
+next lastly finally and so okay kindly go ahead end up
+'''.split())
+GOAL_PARTICLES = frozenset('''
+to over by at for on out back in into through past up down your way off around toward towards inside
+there from onto me quickly straight directly
+'''.split())
+FILLERS = frozenset('''
+please pls hey robot drone can could would you will just also then now first next lastly finally and so
+okay kindly i need want like to be sure make remember also yes alright right well oh hmm um er but
+'''.split())
+DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
+                           'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',
+                           'stash', 'store', 'push', 'relocate', 'chuck'})
+PUT_VERBS = frozenset({'put', 'place', 'leave', 'drop', 'set', 'toss', 'throw', 'stick', 'stash', 'store',
+                       'dump', 'chuck'})
+PICK_VERBS = frozenset({'pick', 'grab', 'fetch', 'collect', 'get', 'retrieve', 'lift'})
+TRASH = Descriptor('trash_can')
+
+CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
+    'only', 'not', 'never', 'do', 'stay', 'keep', 'avoid', 'on', 'once', 'after', 'before', 'while',
+    'if', 'either', 'also', 'just', 'first', 'but', 'when', 'until', 'whatever', 'finally', 'no', 'steer',
+    'along', 'take', 'fly', 'survey', 'drive', 'land', 'stop', 'swing', 'make', 'patrol', 'charge', 'hover',
+    'whichever', 'order', 'in', 'twice', 'three', 'exactly', 'at', 'and', 'then'}) - {
+    'be', 'robot', 'drone', 'hey', 'okay', 'kindly', 'so', 'now', 'lastly', 'up', 'end', 'ahead', 'i',
+    'you', 'can', 'could', 'would', 'will', 'need', 'want', 'please'} | {'i', 'you', 'please'}
+
+
+def _near(d: Descriptor) -> Atom:
+    return Atom('near', (d,))
+
+
+def _and(*parts: Optional[Formula]) -> Optional[Formula]:
+    items: list[Formula] = []
+    for p in parts:
+        if p is None:
+            continue
+        items.extend(p.operands if isinstance(p, And) else (p,))
+    if not items:
+        return None
+    return items[0] if len(items) == 1 else And(tuple(items))
+
+
+def _or(parts: Sequence[Formula]) -> Formula:
+    items: list[Formula] = []
+    for p in parts:
+        items.extend(p.operands if isinstance(p, Or) else (p,))
+    return items[0] if len(items) == 1 else Or(tuple(items))
+
+
+def _never(ds: Sequence[Descriptor]) -> list[Formula]:
+    return [Always(Not(_near(d))) for d in ds]
+
+
+def at_least(x: Formula, n: int, tail: Optional[Formula] = None) -> Formula:
+    """``n`` separate visits of ``x`` (then ``tail``): ``F (x & F (!x & F (x ...)))``."""
+    body: Optional[Formula] = tail
+    for k in range(n):
+        body = Eventually(_and(x, body)) if body is not None else Eventually(x)
+        if k < n - 1:
+            body = Eventually(And((Not(x), body)))
+    assert body is not None
+    return body
+
+
+def at_most(x: Formula, n: int) -> Formula:
+    """At most ``n`` separate visits of ``x`` (the development set's convention for n = 1)."""
+    body: Formula = Always(Not(x))
+    for k in range(n):
+        inner = WeakUntil(x, body if k == 0 else And((Not(x), body)))
+        body = WeakUntil(Not(x), And((x, inner)))
+    return body
+
+
+def exactly(x: Formula, n: int) -> Formula:
+    """Exactly ``n`` separate visits of ``x``."""
+    body: Formula = Until(Not(x), And((x, WeakUntil(x, Always(Not(x))))))
+    for _ in range(n - 1):
+        body = Until(Not(x), And((x, Until(x, And((Not(x), body))))))
+    return body
+
+
+@dataclass
+class Step:
+    """One step of a chain (a sequence of things to do, in order).
+
+    kind: ``visit`` (targets are alternatives), ``leave`` (be away from the target),
+    ``deliver`` (pick ``targets[0]``, release at one of ``dests``), ``pick``,
+    ``all``/``any`` (sub-chains, all of them in any order / one of them), ``formula``.
+    """
+
+    kind: str
+    targets: list[Descriptor] = field(default_factory=list)
+    dests: list[Descriptor] = field(default_factory=list)
+    avoid_until: list[Descriptor] = field(default_factory=list)
+    avoid_after: list[Descriptor] = field(default_factory=list)
+    carry_avoid: list[Descriptor] = field(default_factory=list)
+    after_pick_avoid: list[Descriptor] = field(default_factory=list)
+    after_release_avoid: list[Descriptor] = field(default_factory=list)
+    chains: list[list['Step']] = field(default_factory=list)
+    formula: Optional[Formula] = None
+    avoid_at: list[Descriptor] = field(default_factory=list)
+
+
+def render(steps: Sequence[Step]) -> Optional[Formula]:
+    """The formula of a chain of steps: each step eventually, the rest after it."""
+    if not steps:
+        return None
+    s, rest = steps[0], list(steps[1:])
+    if s.kind == 'all':
+        parts = [render(c) for c in s.chains[:-1]] + [render(list(s.chains[-1]) + rest)]
+        return _and(*parts)
+    if s.kind == 'any':
+        alts = [render(list(c) + rest) for c in s.chains]
+        return _or([a for a in alts if a is not None])
+    tail = render(rest)
+    if s.kind == 'formula':
+        assert s.formula is not None
+        return _and(s.formula, tail)
+    if s.kind == 'leave':
+        return Eventually(_and(Not(_near(s.targets[0])), tail))
+    if s.kind == 'visit':
+        core: Formula = _or([_near(t) for t in s.targets])
+        body = _and(core, *[Not(_near(d)) for d in s.avoid_at], *_never(s.avoid_after), tail)
+    elif s.kind == 'pick':
+        obj = s.targets[0]
+        body = _and(_near(obj), Eventually(_and(Atom('pick', (obj,)), *_never(s.after_pick_avoid), tail)))
+    else:
+        obj = s.targets[0]
+        arrivals = []
+        for d in s.dests:
+            rel = _and(Atom('release', (obj, d)), *_never(s.after_release_avoid), tail)
+            arrive = _and(_near(d), Eventually(rel))
+            assert arrive is not None
+            if s.carry_avoid:
+                arrivals.append(_until_avoid(s.carry_avoid, arrive))
+            else:
+                arrivals.append(Eventually(arrive))
+        body = _and(_near(obj), Eventually(_and(Atom('pick', (obj,)), *_never(s.after_pick_avoid),
+                                                 _or(arrivals))))
+    assert body is not None
+    if s.avoid_until:
+        return _until_avoid(s.avoid_until, body)
+    return Eventually(body)
+
+
+def _until_avoid(avoid: Sequence[Descriptor], goal: Formula) -> Formula:
+    guard = _and(*[Not(_near(d)) for d in avoid])
+    assert guard is not None
+    return Until(guard, goal)
+
+
+@dataclass
+class _Clause:
+    connector: str          # 'seq', 'and', 'pre', 'or'
+    tokens: list[str]
+
+
+@dataclass
+class _Scope:
+    kind: str = 'global'   # global, until, onway, after, carry, after_pick, after_release
+    target: Optional[NounPhrase] = None
+    event: str = 'near'    # for until: near / pick / release
+
+
+class _Task:
+    """Mutable builder of chains and constraints while the clauses are read."""
+
+    def __init__(self) -> None:
+        self.chain: list[Step] = []
+        self.constraints: list[Formula] = []
+        self.repeat = 1
+
+    def find_step(self, d: Descriptor, head: str = '') -> Optional[Step]:
+        for s in reversed(self._all_steps()):
+            if s.kind in ('visit', 'deliver', 'pick'):
+                names = s.targets + s.dests
+                if d in names or (head and any(n.name.split('_')[-1] == head for n in names)):
+                    return s
+        return None
+
+    def _all_steps(self) -> list[Step]:
+        out: list[Step] = []
+
+        def walk(steps: Sequence[Step]) -> None:
+            for s in steps:
+                out.append(s)
+                for c in s.chains:
+                    walk(c)
+        walk(self.chain)
+        return out
+
+    def last_step(self, kinds: tuple[str, ...] = ('visit', 'deliver', 'pick', 'all', 'any')
+                  ) -> Optional[Step]:
+        for s in reversed(self.chain):
+            if s.kind in kinds:
+                return s
+        return None
+
+    def formula(self) -> Formula:
+        chain = self.chain * self.repeat
+        f = _and(render(chain), *self.constraints)
+        if f is None:
+            raise TranslationError('the instruction names nothing to do and nothing to avoid')
+        return f
+
+
+class OfflineTranslator:
+    """Rule-based translator (the default backend): deterministic, no model, milliseconds.
+
+    Parameters
+    ----------
+    avoid_scope:
+        ``'global'`` (default, the development set's convention): "go to X and
+        avoid Y" is ``F near[x] & G !near[y]``. ``'goal'`` reads it as the
+        drone-planning data set does: Y is avoided at the moment X is reached,
+        ``F (near[x] & !near[y])``.
+    """
+
+    name = 'offline'
+
+    def __init__(self, avoid_scope: str = 'global') -> None:
+        if avoid_scope not in ('global', 'goal'):
+            raise TranslationError(f'avoid_scope must be global or goal, not {avoid_scope!r}',
+                                   ErrorCode.INVALID_INPUT)
+        self.avoid_scope = avoid_scope
+
+    def translate(self, instruction: str) -> Translation:
+        """Translate one instruction (raises :class:`TranslationError` naming what it cannot place)."""
+        if not isinstance(instruction, str):
+            raise TranslationError('the instruction must be text', ErrorCode.INVALID_INPUT)
+        if len(instruction) > MAX_INSTRUCTION_CHARS:
+            raise LimitExceededError(f'the instruction is {len(instruction)} characters long; '
+                                     f'the limit is {MAX_INSTRUCTION_CHARS}')
+        started = time.perf_counter()
+        tokens = tokenize(instruction)
+        if not any(t not in PUNCT for t in tokens):
+            raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
+        notes: list[str] = []
+        tokens = resolve_list_references(tokens, notes)
+        tokens = apply_corrections(tokens, notes)
+        reader = _Reader(self.avoid_scope, notes)
+        formula = reader.read(tokens)
+        elapsed = time.perf_counter() - started
+        return Translation(instruction, formula, self.name, tuple(notes),
+                           {'seconds': elapsed, 'tokens': ' '.join(tokens)})
+
+
+def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
+    return tuple(tokens[i:i + len(words)]) == tuple(words)
+
+
+def _find(tokens: Sequence[str], words: Sequence[str], start: int = 0) -> int:
+    for i in range(start, len(tokens) - len(words) + 1):
+        if _starts(tokens, i, words):
+            return i
+    return -1
+
+
+class _Reader:
+    """Reads the clauses of one instruction into a :class:`_Task`."""
+
+    def __init__(self, avoid_scope: str, notes: list[str]) -> None:
+        self.phrases = PhraseParser()
+        self.task = _Task()
+        self.avoid_scope = avoid_scope
+        self.notes = notes
+        self.last_place: Optional[NounPhrase] = None
+        self.last_object: Optional[NounPhrase] = None
+        self.conditional: Optional[NounPhrase] = None
+        self.pending_avoid_at: list[Descriptor] = []
+
+    # ----------------------------------------------------------------- structure
+    def read(self, tokens: list[str]) -> Formula:
+        for sentence in self._sentences(tokens):
+            self._read_sentence(sentence)
+        if self.pending_avoid_at:
+            step = self.task.last_step(('visit',))
+            if step is not None:
+                step.avoid_at.extend(self.pending_avoid_at)
+            else:
+                self.task.constraints.extend(_never(self.pending_avoid_at))
+        return self.task.formula()
+
+    @staticmethod
+    def _sentences(tokens: list[str]) -> list[list[str]]:
+        out: list[list[str]] = [[]]
+        for t in tokens:
+            if t in '.;!?':
+                if out[-1]:
+                    out.append([])
+            else:
+                out[-1].append(t)
+        return [s for s in out if s]
+
+    def _read_sentence(self, tokens: list[str]) -> None:
+        while tokens and tokens[0] in (',', ':'):
+            tokens = tokens[1:]
+        if not tokens:
+            return
+        if tokens[0] == 'either' or (tokens[0] in ('go', 'you', 'can') and 'either' in tokens[:4]):
+            k = _find(tokens, [',', 'or'])
+            if k > 0:
+                self._read_alternatives([tokens[:k], tokens[k + 2:]])
+                return
+        scope: Optional[_Scope] = None
+        for clause in self._clauses(tokens):
+            scope = self._read_clause(clause, scope)
+
+    def _read_alternatives(self, parts: list[list[str]]) -> None:
+        outer = self.task
+        chains = []
+        for p in parts:
+            if p and p[0] == 'either':
+                p = p[1:]
+            self.task = _Task()
+            for clause in self._clauses(p):
+                self._read_clause(clause, None)
+            chains.append([Step('formula', formula=c) for c in self.task.constraints] + self.task.chain)
+        self.task = outer
+        self.task.chain.append(Step('any', chains=chains))
+
+    def _clauses(self, tokens: list[str]) -> list[_Clause]:
+        clauses: list[_Clause] = [_Clause('and', [])]
+        i = 0
+        n = len(tokens)
+        while i < n:
+            t = tokens[i]
+            boundary = ''
+            skip = 0
+            if t == 'then' and (i + 1 >= n or not _starts(tokens, i + 1, [','])):
+                boundary, skip = 'seq', 1
+            elif _starts(tokens, i, ['and', 'then']) or _starts(tokens, i, [',', 'then']) or \
+                    _starts(tokens, i, [',', 'and', 'then']):
+                skip = 3 if tokens[i + 1] == 'and' else 2
+                boundary = 'seq'
+            elif _starts(tokens, i, ['after', 'that']) or _starts(tokens, i, ['and', 'after', 'that']):
+                boundary, skip = 'seq', 2 if t == 'after' else 3
+            elif t in ('finally', 'afterwards', 'afterward', 'lastly') or _starts(tokens, i, ['and', 'finally']):
+                boundary, skip = 'seq', 1 if t != 'and' else 2
+            elif _starts(tokens, i, ['once', 'you', 'are', 'there']) or _starts(
+                    tokens, i, ['once', 'there']) or _starts(tokens, i, ['when', 'you', 'are', 'there']) or \
+                    _starts(tokens, i, ['once', 'you', 'get', 'there']) or _starts(
+                        tokens, i, ['once', 'you', 'reach', 'it']):
+                boundary = 'seq'
+                skip = 2 if tokens[i + 1] == 'there' else 4
+            elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
+                  ) and clauses[-1].tokens and 'make' not in clauses[-1].tokens and \
+                    'visited' not in tokens[i:]:
+                boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
+            elif t in (',', 'and', 'but', 'so', 'while', 'or') and i > 0:
+                j = i + 1
+                while j < n and tokens[j] in (',', 'and', 'but', 'so'):
+                    j += 1
+                if t == 'while' and j < n and tokens[j] in ('avoiding', 'staying', 'keeping', 'never'):
+                    boundary, skip = 'and', 1
+                elif t == 'or' and j < n and tokens[j] in GOAL_VERBS | DELIVER_VERBS:
+                    boundary, skip = 'or', j - i
+                elif j < n and tokens[j] in CLAUSE_STARTERS and t != 'while' and not (
+                        tokens[j] in ('at', 'in', 'on', 'twice', 'three', 'exactly', 'order', 'and')
+                        and not _starts(tokens, j, ['on', 'the', 'way']) and not _starts(
+                            tokens, j, ['on', 'your', 'way']) and not _starts(tokens, j, ['in', 'that', 'order'])):
+                    boundary, skip = 'and', j - i
+            if boundary:
+                if clauses[-1].tokens:
+                    clauses.append(_Clause(boundary, []))
+                elif boundary != 'and':
+                    clauses[-1].connector = boundary
+                i += skip
+                continue
+            clauses[-1].tokens.append(t)
+            i += 1
+        return [c for c in clauses if c.tokens]
+
+    # ----------------------------------------------------------------- clauses
+    def _read_clause(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
+        """Read one clause; returns the scope that carries to the next clause of the sentence."""
+        tokens = self._strip_fillers(clause.tokens)
+        if not tokens:
+            return scope
+        s = ' '.join(tokens)
+        if s.endswith(' is fine') or s.endswith(' is okay') or s in ('whichever', 'i do not care which',
+                                                                     'order does not matter'):
+            return scope
+        if s.startswith('either way'):
+            tokens = tokens[2:]
+        new_scope, tokens = self._leading_scope(tokens)
+        if new_scope is not None:
+            scope = new_scope
+            tokens = self._strip_fillers(tokens)
+            if not tokens:
+                return scope
+        if tokens[0] == 'if':
+            self._read_conditional(tokens)
+            return scope
+        if self._read_ordering(tokens, clause):
+            return scope
+        if self._avoid_start(tokens) is not None:
+            self._read_avoid(tokens, scope)
+            return scope
+        if tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS or _starts(tokens, 0, ['throw', 'away']):
+            if self._read_delivery(tokens, clause):
+                return scope
+        self._read_goal(tokens, clause, scope)
+        return scope
+
+    @staticmethod
+    def _strip_fillers(tokens: list[str]) -> list[str]:
+        i = 0
+        while i < len(tokens) and (tokens[i] in FILLERS or tokens[i] == ',') and not (
+                tokens[i] in ('first', 'just') and False):
+            if tokens[i] == 'make' and not _starts(tokens, i, ['make', 'sure']):
+                break
+            if tokens[i] == 'i' and i + 1 < len(tokens) and tokens[i + 1] in ('need', 'want', 'would'):
+                i += 2
+                continue
+            if tokens[i] == 'to' and i + 1 < len(tokens) and tokens[i + 1] == 'the':
+                break
+            i += 1
+        out = tokens[i:]
+        while out and out[-1] in (',', 'please', 'too', 'now', 'again', 'thanks', 'first', 'instead', 'ok',
+                                  'okay', 'then', 'as', 'well'):
+            if out[-1] == 'well' and len(out) > 1 and out[-2] == 'as':
+                out = out[:-2]
+                continue
+            out = out[:-1]
+        return out
+
+    def _leading_scope(self, tokens: list[str]) -> tuple[Optional[_Scope], list[str]]:
+        """Scope phrases that open a clause: "on the way to X,", "once you've reached X,", "after ..."."""
+        for lead in (['on', 'the', 'way'], ['on', 'your', 'way'], ['along', 'the', 'way'], ['on', 'its', 'way']):
+            if _starts(tokens, 0, lead):
+                rest = tokens[len(lead):]
+                if _starts(rest, 0, ['from', 'there']):
+                    rest = rest[2:]
+                if rest and rest[0] in ('to', 'towards', 'toward'):
+                    np = self.phrases.parse(rest, 1)
+                    if np is not None:
+                        return _Scope('onway', self._resolve(np, place=True)), rest[np.end:]
+                if rest and rest[0] == 'there':
+                    return _Scope('onway'), rest[1:]
+                if rest and rest[0] == 'back':
+                    return _Scope('onway'), rest[1:]
+                return _Scope('global'), rest
+        if tokens[0] in ('once', 'after', 'when', 'while') and len(tokens) > 1:
+            sc, end = self._event_phrase(tokens, 1)
+            if sc is not None:
+                return sc, tokens[end:]
+        return None, tokens
+
+    def _event_phrase(self, tokens: list[str], i: int) -> tuple[Optional[_Scope], int]:
+        """After "once/after/while": the event (reaching X, picking it up, dropping it off, carrying it)."""
+        j = i
+        while j < len(tokens) and tokens[j] in ('you', 'have', 'are', 'i', 'it', 'is', 'been', 'the', 'robot'):
+            j += 1
+        if j >= len(tokens):
+            return None, i
+        w = tokens[j]
+        if w in ('carrying', 'holding', 'transporting', 'bringing', 'taking', 'moving', 'returning'):
+            k = j + 1
+            np = self.phrases.parse(tokens, k)
+            end = np.end if np is not None else k
+            if end < len(tokens) and tokens[end] in ('back', 'over'):
+                end += 1
+            return _Scope('carry'), end
+        if w in ('picked', 'grabbed', 'got', 'gotten', 'collected', 'fetched', 'pick', 'grab', 'picking'):
+            k = j + 1
+            if k < len(tokens) and tokens[k] == 'up':
+                k += 1
+            np = self.phrases.parse(tokens, k)
+            end = np.end if np is not None else k
+            if end < len(tokens) and tokens[end] == 'up':
+                end += 1
+            return _Scope('after_pick'), end
+        if w in ('dropped', 'delivered', 'released', 'put', 'placed', 'left', 'drop', 'deliver', 'dropping',
+                 'delivering'):
+            k = j + 1
+            np = self.phrases.parse(tokens, k)
+            end = np.end if np is not None else k
+            while end < len(tokens) and tokens[end] in ('off', 'down'):
+                end += 1
+            return _Scope('after_release'), end
+        k = j
+        while k < len(tokens) and tokens[k] in NAME_VERBS | GOAL_PARTICLES | {
+                'reached', 'visited', 'arrived', 'checked', 'passed', 'gone', 'been', 'going', 'visiting',
+                'reaching', 'seen', 'got', 'gotten', 'made', 'landed', 'surveyed', 'at', 'there'}:
+            if tokens[k] == 'there':
+                step = self.task.last_step(('visit', 'deliver'))
+                return _Scope('after', self.last_place if step else None), k + 1
+            k += 1
+        if k == j:
+            return None, i
+        np = self.phrases.parse(tokens, k)
+        if np is None:
+            return None, i
+        return _Scope('after', self._resolve(np, place=True)), np.end
+
+    def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:
+        if np.pronoun in ('there', 'here') and self.last_place is not None:
+            return self.last_place
+        if np.pronoun in ('it', 'them', 'that') and self.last_object is not None and not place:
+            return self.last_object
+        if np.pronoun in ('it', 'them', 'that') and place and self.last_place is not None:
+            return self.last_place
+        return np
+
+    def _np_list(self, tokens: list[str], i: int, place: bool = True, destination_stops: bool = False
+                 ) -> tuple[list[NounPhrase], str, int]:
+        nps, joiner, end = self.phrases.parse_list(tokens, i, destination_stops)
+        nps = [self._resolve(np, place) for np in nps]
+        if nps and place:
+            self.last_place = nps[-1]
+        return nps, joiner, end
+
+    # ----------------------------------------------------------------- kinds of clause
+    def _avoid_start(self, tokens: list[str]) -> Optional[int]:
+        for trig in AVOID_TRIGGERS:
+            if _starts(tokens, 0, trig):
+                k = len(trig)
+                if trig in (('do', 'not'), ('never',), ('not',), ('and', 'not'), ('but', 'not'), ('no',)):
+                    if _starts(tokens, k, ['let']):
+                        return None
+                    while k < len(tokens) and tokens[k] in AVOID_FILLER:
+                        k += 1
+                return k
+        return None
+
+    def _read_avoid(self, tokens: list[str], scope: Optional[_Scope]) -> None:
+        k = self._avoid_start(tokens)
+        assert k is not None
+        nps, _, end = self._np_list(tokens, k, place=False)
+        if not nps:
+            raise TranslationError(f'could not place what to avoid in "{" ".join(tokens)}"',
+                                   details={'part': ' '.join(tokens)})
+        targets = [np.descriptor for np in nps]
+        rest = tokens[end:]
+        rest = [t for t in rest if t != ',']
+        # "more than once / more than N times" is a count, not an avoidance.
+        if _starts(rest, 0, ['more', 'than']) or _starts(rest, 0, ['any', 'more', 'than']):
+            j = 2 if rest[0] == 'more' else 3
+            n = self._count_word(rest, j)
+            for d in targets:
+                self.task.constraints.append(at_most(_near(d), n[0] if n else 1))
+            return
+        local, rest = self._trailing_scope(rest)
+        if local is not None:
+            scope = local
+        leftover = [t for t in rest if t not in ('at', 'all', 'times', 'the', 'whole', 'time', 'entire',
+                                                   'ever', 'please', 'way', 'along', 'throughout', 'any',
+                                                   'point', 'either', 'too', 'as', 'well', 'again')]
+        if leftover and leftover[0] not in ('when', 'while'):
+            raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
+                                   details={'part': ' '.join(leftover)})
+        self._apply_avoid(targets, scope)
+
+    def _trailing_scope(self, rest: list[str]) -> tuple[Optional[_Scope], list[str]]:
+        if not rest:
+            return None, rest
+        if rest[0] == 'until' or _starts(rest, 0, ['before', 'you']) or _starts(rest, 0, ['unless']):
+            j = 1
+            while j < len(rest) and rest[j] in ('you', 'have', 'i', 'we', 'are', 'been', 'the', 'robot', 'has'):
+                j += 1
+            event = 'near'
+            if j < len(rest) and rest[j] in ('got', 'gotten', 'picked', 'grabbed', 'collected', 'fetched',
+                                             'get', 'pick', 'grab', 'retrieved'):
+                if self.last_object is not None and (j + 1 >= len(rest) or rest[j + 1] in (
+                        'it', 'them', 'up')):
+                    return _Scope('until', self.last_object, 'pick'), []
+                event = 'pick' if rest[j] not in ('got', 'gotten', 'get') else 'near'
+            while j < len(rest) and rest[j] in NAME_VERBS | GOAL_PARTICLES | {
+                    'reached', 'visited', 'arrived', 'checked', 'been', 'got', 'gotten', 'seen', 'see',
+                    'picked', 'grabbed', 'passed', 'gone', 'made', 'up', 'at', 'visiting', 'reaching'}:
+                j += 1
+            nps, _, end = self._np_list(rest, j)
+            if nps:
+                return _Scope('until', nps[0], event), rest[end:]
+        if _starts(rest, 0, ['on', 'the', 'way']) or _starts(rest, 0, ['on', 'your', 'way']) or \
+                _starts(rest, 0, ['along', 'the', 'way']):
+            sc, rem = self._leading_scope(rest)
+            if sc is not None and _starts(rest, 0, ['along', 'the', 'way']):
+                return _Scope('global'), rem
+            return sc, rem
+        if rest[0] in ('while', 'when', 'after', 'once'):
+            sc, end = self._event_phrase(rest, 1)
+            if sc is not None:
+                return sc, rest[end:]
+        return None, rest
+
+    def _apply_avoid(self, targets: list[Descriptor], scope: Optional[_Scope]) -> None:
+        kind = scope.kind if scope is not None else 'global'
+        if kind == 'until' and scope is not None and scope.target is not None:
+            d = scope.target.descriptor
+            if scope.event == 'pick':
+                self.task.constraints.append(_until_avoid(targets, Atom('pick', (d,))))
+            else:
+                self.task.constraints.append(_until_avoid(targets, _near(d)))
+                if self.task.find_step(d) is None:
+                    self.task.chain.append(Step('visit', [d]))
+            return
+        if kind == 'onway':
+            step: Optional[Step]
+            if scope is not None and scope.target is not None:
+                step = self.task.find_step(scope.target.descriptor)
+                if step is None:
+                    step = Step('visit', [scope.target.descriptor])
+                    self.task.chain.append(step)
+            else:
+                step = self.task.last_step(('visit', 'deliver'))
+            if step is None:
+                self.task.constraints.extend(_never(targets))
+            elif step.kind == 'deliver':
+                step.carry_avoid.extend(targets)
+            else:
+                step.avoid_until.extend(targets)
+            return
+        if kind == 'carry':
+            step = self.task.last_step(('deliver',))
+            if step is not None:
+                step.carry_avoid.extend(targets)
+                return
+        if kind == 'after_pick':
+            step = self.task.last_step(('deliver', 'pick'))
+            if step is not None:
+                step.after_pick_avoid.extend(targets)
+                return
+        if kind == 'after_release':
+            step = self.task.last_step(('deliver',))
+            if step is not None:
+                step.after_release_avoid.extend(targets)
+                return
+        if kind == 'after' and scope is not None and scope.target is not None:
+            step = self.task.find_step(scope.target.descriptor, scope.target.head)
+            if step is None:
+                step = Step('visit', [scope.target.descriptor])
+                self.task.chain.append(step)
+            if step.kind == 'deliver':
+                step.after_release_avoid.extend(targets)
+            else:
+                step.avoid_after.extend(targets)
+            return
+        if self.avoid_scope == 'goal':
+            step = self.task.last_step(('visit',))
+            if step is not None and step is self.task.chain[-1]:
+                step.avoid_at.extend(targets)
+            else:
+                self.pending_avoid_at.extend(targets)
+            return
+        self.task.constraints.extend(_never(targets))
+
+    def _read_conditional(self, tokens: list[str]) -> None:
+        """ "if you go into X at all, check Y first" -> ``!near[x] W near[y]``."""
+        j = 1
+        while j < len(tokens) and tokens[j] in NAME_VERBS | GOAL_PARTICLES | {'you', 'ever', 'want', 'do',
+                                                                               'choose', 'pick', 'decide'}:
+            j += 1
+        np = self.phrases.parse(tokens, j)
+        if np is None:
+            raise TranslationError(f'could not place the condition "{" ".join(tokens)}"',
+                                   details={'part': ' '.join(tokens)})
+        rest = [t for t in tokens[np.end:] if t not in ('at', 'all')]
+        if 'choose' in tokens[:j] or 'pick' in tokens[:j] or 'decide' in tokens[:j]:
+            # "if you choose X, avoid Y": the avoidance binds only that alternative.
+            rest = self._strip_fillers(rest)
+            step = self.task.last_step(('visit',))
+            if step is None or np.descriptor not in step.targets or self._avoid_start(rest) is None:
+                raise TranslationError(f'could not place the condition "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(tokens)})
+            k = self._avoid_start(rest)
+            assert k is not None
+            nps, _, _ = self._np_list(rest, k, place=False)
+            chains = []
+            for d in step.targets:
+                extra = [Step('formula', formula=f) for f in _never([n.descriptor for n in nps])] \
+                    if d == np.descriptor else []
+                chains.append(extra + [Step('visit', [d])])
+            step.kind, step.targets, step.chains = 'any', [], chains
+            return
+        rest = self._strip_fillers(rest)
+        k = 0
+        while k < len(rest) and rest[k] in NAME_VERBS | GOAL_PARTICLES:
+            k += 1
+        first = self.phrases.parse(rest, k)
+        if first is None:
+            self.conditional = np
+            return
+        self.task.constraints.append(WeakUntil(Not(_near(np.descriptor)), _near(first.descriptor)))
+
+    def _read_ordering(self, tokens: list[str], clause: _Clause) -> bool:
+        """ "only after X", "not before X", "not until you've been to both X and Y", "X before that"."""
+        s = tokens
+        k = -1
+        for lead in (['only', 'after'], ['not', 'before'], ['not', 'until'], ['but', 'only', 'after'],
+                     ['only', 'once'], ['only', 'when'], ['not', 'till']):
+            if _starts(s, 0, lead):
+                k = len(lead)
+                break
+        if k >= 0:
+            prev = self.task.last_step(('visit', 'deliver'))
+            if prev is None:
+                return False
+            k = self._skip_event_verbs(s, k)
+            nps, _, end = self._np_list(s, k)
+            if not nps:
+                return False
+            for x in prev.targets:
+                for np in nps:
+                    self.task.constraints.append(Until(Not(_near(x)), _near(np.descriptor)))
+            self._check_leftover(s[end:], s)
+            return True
+        if _starts(s, 0, ['make', 'sure']) and s[-2:] == ['before', 'that']:
+            prev = self.task.last_step(('visit', 'deliver'))
+            k = self._skip_event_verbs(s, 2)
+            nps, _, end = self._np_list(s, k)
+            if prev is None or not nps:
+                return False
+            for x in prev.targets:
+                for np in nps:
+                    self.task.constraints.append(Until(Not(_near(x)), _near(np.descriptor)))
+            return True
+        return False
+
+    @staticmethod
+    def _skip_event_verbs(s: list[str], k: int) -> int:
+        while k < len(s) and s[k] in NAME_VERBS | GOAL_PARTICLES | {
+                'you', 'have', 'been', 'visited', 'reached', 'checked', 'gone', 'got', 'gotten', 'i', 'are',
+                'both', 'the', 'robot', 'has', 'seen', 'visiting', 'going', 'reaching', 'passed', 'made',
+                'make', 'sure'} - {'the'}:
+            k += 1
+        return k
+
+    def _check_leftover(self, rest: list[str], whole: list[str]) -> None:
+        rest = [t for t in rest if t not in (',', 'please', 'first', 'too', 'again', 'then')]
+        if rest:
+            raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
+                                   details={'part': ' '.join(rest)})
+
+    def _count_word(self, tokens: list[str], i: int) -> Optional[tuple[int, int]]:
+        """A count at ``tokens[i]``: ``once``, ``twice``, ``three times``, ``3 times``; (n, end)."""
+        if i >= len(tokens):
+            return None
+        w = tokens[i]
+        if w in ('once', 'twice', 'thrice'):
+            return NUMBER_WORDS[w], i + 1
+        if (w in NUMBER_WORDS or w.isdigit()) and i + 1 < len(tokens) and tokens[i + 1] in ('times', 'time'):
+            return (int(w) if w.isdigit() else NUMBER_WORDS[w]), i + 2
+        if w in ('on', 'in') and i + 1 < len(tokens):
+            j = i + 1
+            if tokens[j] in NUMBER_WORDS or tokens[j].isdigit():
+                n = int(tokens[j]) if tokens[j].isdigit() else NUMBER_WORDS[tokens[j]]
+                k = j + 1
+                while k < len(tokens) and tokens[k] in ('separate', 'different', 'distinct', 'occasions',
+                                                        'instances', 'times', 'visits', 'occasion'):
+                    k += 1
+                if k > j + 1:
+                    return n, k
+        return None
+
+    def _read_count(self, rest: list[str], targets: list[Descriptor]) -> tuple[bool, list[str]]:
+        """Counting phrases after a goal: at least / at most / exactly / N times / twice in a row."""
+        mode = 'at_least'
+        i = 0
+        if _starts(rest, 0, ['exactly']) or _starts(rest, 0, ['only']) or _starts(rest, 0, ['just']):
+            mode, i = 'exactly', 1
+        elif _starts(rest, 0, ['at', 'least']) or _starts(rest, 0, ['no', 'less', 'than']) or _starts(
+                rest, 0, ['not', 'less', 'than']) or _starts(rest, 0, ['no', 'fewer', 'than']):
+            mode, i = 'at_least', 2 if rest[0] == 'at' else 3
+        elif _starts(rest, 0, ['at', 'most']) or _starts(rest, 0, ['no', 'more', 'than']) or _starts(
+                rest, 0, ['not', 'more', 'than']) or _starts(rest, 0, ['max']) or _starts(
+                rest, 0, ['maximum']) or _starts(rest, 0, ['up', 'to']):
+            mode, i = 'at_most', 2 if rest[0] in ('at', 'up') else (1 if rest[0] in ('max', 'maximum') else 3)
+        c = self._count_word(rest, i)
+        if c is None:
+            return False, rest
+        n, end = c
+        if _starts(rest, end, ['in', 'a', 'row']):
+            self.task.repeat = n
+            return True, rest[end + 3:]
+        if n == 1 and mode == 'at_least' and i == 0:
+            mode = 'at_least'
+        for d in targets:
+            x = _near(d)
+            if mode == 'at_least':
+                for k in range(n):
+                    if k:
+                        self.task.chain.append(Step('leave', [d]))
+                    self.task.chain.append(Step('visit', [d]))
+            elif mode == 'exactly':
+                self.task.constraints.append(exactly(x, n))
+                self.task.chain.append(Step('visit', [d]))
+            else:
+                self.task.constraints.append(at_most(x, n))
+        return True, rest[end:]
+
+    def _read_delivery(self, tokens: list[str], clause: _Clause) -> bool:
+        verb = tokens[0]
+        k = 1
+        implicit_dest: Optional[Descriptor] = None
+        if verb == 'throw' and 'away' in tokens[:4] or verb in ('bin', 'dump', 'chuck') and 'in' not in tokens:
+            implicit_dest = TRASH
+        if _starts(tokens, 0, ['pick', 'up']) or _starts(tokens, 0, ['throw', 'away']) or _starts(
+                tokens, 0, ['throw', 'out']):
+            k = 2
+        elif tokens[0] == 'get' and _starts(tokens, 1, ['rid', 'of']):
+            k, implicit_dest = 3, TRASH
+        while k < len(tokens) and tokens[k] in ('me', 'up', 'back'):
+            k += 1
+        objs, joiner, end = self._np_list(tokens, k, place=False, destination_stops=verb in PUT_VERBS)
+        if not objs:
+            return False
+        for o in objs:
+            self.last_object = o
+        rest = tokens[end:]
+        while rest and rest[0] in ('up', 'back', 'over', 'away', 'out', 'down', 'off', 'along'):
+            if rest[0] == 'away' and verb in ('throw', 'toss', 'put'):
+                implicit_dest = TRASH
+            rest = rest[1:]
+        if verb in PICK_VERBS and (not rest or rest[0] not in ('to', 'into', 'in', 'on', 'onto', 'at')):
+            # a plain pick; a following "and bring it to X" turns it into a delivery.
+            for o in objs:
+                self.task.chain.append(Step('pick', [o.descriptor]))
+            self._check_leftover(rest, tokens)
+            return True
+        dests: list[NounPhrase] = []
+        if rest and rest[0] in ('to', 'into', 'in', 'on', 'onto', 'at', 'inside', 'by', 'next', 'under',
+                                'near', 'beside', 'over', 'with'):
+            j = 1
+            if _starts(rest, 0, ['next', 'to']):
+                j = 2
+            while j < len(rest) and rest[j] in ('the', 'top', 'of') and _starts(rest, j, ['top', 'of']):
+                j += 2
+            dests, _, dend = self._np_list(rest, j)
+            rest = rest[dend:]
+        elif implicit_dest is None:
+            if verb in ('take', 'bring', 'get', 'fetch', 'grab'):
+                dests = []
+            else:
+                return False
+        dest_ds = [d.descriptor for d in dests] or ([implicit_dest] if implicit_dest else [])
+        if implicit_dest is not None and not dests:
+            self.notes.append('"throw away" releases the object at the implicit trash_can')
+        if not dest_ds:
+            for o in objs:
+                self.task.chain.append(Step('pick', [o.descriptor]))
+            return True
+        ok, rest = self._read_count(rest, dest_ds)
+        rest = [t for t in rest if t not in (',', 'too', 'please', 'instead', 'as', 'well', 'again')]
+        if rest and rest[0] in ('while', 'when', 'on', 'along', 'and', 'without'):
+            sc, rem = self._trailing_scope(rest)
+            if sc is None and rest[0] == 'and':
+                pass
+            rest = rem
+        self._check_leftover(rest, tokens)
+        # "pick up X and put it on Y": the pick step becomes the delivery.
+        obj_ds = [o.descriptor for o in objs]
+        last = self.task.chain[-1] if self.task.chain else None
+        if last is not None and last.kind == 'pick' and last.targets[0] in obj_ds and len(obj_ds) == 1:
+            last.kind, last.dests = 'deliver', list(dest_ds)
+            return True
+        steps = [Step('deliver', [o], list(dest_ds)) for o in obj_ds]
+        if len(steps) == 1:
+            self.task.chain.append(steps[0])
+        else:
+            self.task.chain.append(Step('any' if joiner == 'or' else 'all', chains=[[s] for s in steps]))
+        return True
+
+    def _read_goal(self, tokens: list[str], clause: _Clause, scope: Optional[_Scope]) -> None:
+        k = 0
+        if _starts(tokens, 0, ['take', 'off']):
+            k = 2
+            while k < len(tokens) and tokens[k] in ('and', ','):
+                k += 1
+        patrol_from = False
+        while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES) and not (
+                tokens[k] in ('back',) and k + 1 < len(tokens) and tokens[k + 1] in ('door', 'gate', 'yard',
+                                                                                      'room', 'porch')):
+            if tokens[k] == 'from' and k > 0 and tokens[k - 1] in ('patrol', 'go', 'fly', 'drive'):
+                patrol_from = True
+            k += 1
+        nps, joiner, end = self._np_list(tokens, k)
+        if not nps:
+            raise TranslationError(f'could not place "{" ".join(tokens)}"', details={'part': ' '.join(tokens)})
+        rest = tokens[end:]
+        targets = [np.descriptor for np in nps]
+        if patrol_from and rest and rest[0] == 'to':
+            more, _, e2 = self._np_list(rest, 1)
+            targets += [np.descriptor for np in more]
+            joiner = 'then'
+            rest = rest[e2:]
+        # "X in that order" / "in any order"
+        ordered = False
+        for phrase in (['in', 'that', 'order'], ['in', 'order'], ['in', 'this', 'order'], ['one', 'after',
+                                                                                            'the', 'other']):
+            if _starts(rest, 0, phrase):
+                ordered, rest = True, rest[len(phrase):]
+        for phrase in (['in', 'any', 'order'], ['order', 'does', 'not', 'matter'], ['in', 'whatever', 'order'],
+                       ['in', 'either', 'order'], ['whichever'], ['i', 'do', 'not', 'care', 'which'],
+                       ['in', 'arbitrary', 'order'], ['in', 'no', 'particular', 'order']):
+            if _starts(rest, 0, phrase):
+                rest = rest[len(phrase):]
+        rest = [t for t in rest if t != ',']
+        counted, rest = self._read_count(rest, targets)
+        if counted:
+            self._goal_trailer(rest, tokens, targets)
+            return
+        if clause.connector == 'pre' and self.task.chain:
+            last = self.task.chain.pop()
+            self._add_targets(targets, joiner, ordered)
+            self.task.chain.append(last)
+        else:
+            self._add_targets(targets, joiner, ordered)
+        self._goal_trailer(rest, tokens, targets)
+        if self.conditional is not None:
+            self.task.constraints.append(WeakUntil(Not(_near(self.conditional.descriptor)),
+                                                   _near(targets[0])))
+            self.task.chain.pop()
+            self.conditional = None
+
+    def _add_targets(self, targets: list[Descriptor], joiner: str, ordered: bool) -> None:
+        if len(targets) == 1 or joiner == 'or':
+            self.task.chain.append(Step('visit', list(targets)))
+        elif ordered or joiner == 'then':
+            self.task.chain.extend(Step('visit', [t]) for t in targets)
+        else:
+            self.task.chain.append(Step('all', chains=[[Step('visit', [t])] for t in targets]))
+
+    def _goal_trailer(self, rest: list[str], whole: list[str], targets: list[Descriptor]) -> None:
+        """What may follow a goal: "before Y", "after Y", "only after Y", "through Y", an avoidance."""
+        rest = [t for t in rest if t not in (',', 'please', 'first', 'too', 'again', 'then', 'instead')]
+        if not rest:
+            return
+        only = False
+        if rest[0] == 'only':
+            only, rest = True, rest[1:]
+        if rest and rest[0] in ('before', 'after', 'through', 'via', 'by', 'past') and len(rest) > 1:
+            word = rest[0]
+            k = self._skip_event_verbs(rest, 1)
+            nps, _, end = self._np_list(rest, k)
+            if nps:
+                others = [np.descriptor for np in nps]
+                moved = self.task.chain.pop()
+                if word == 'before':
+                    self.task.chain.append(moved)
+                    self.task.chain.extend(Step('visit', [d]) for d in others)
+                    for d in others:
+                        for x in targets:
+                            self.task.constraints.append(Until(Not(_near(d)), _near(x)))
+                else:
+                    self.task.chain.extend(Step('visit', [d]) for d in others)
+                    self.task.chain.append(moved)
+                    if only or word == 'after':
+                        if only:
+                            for d in others:
+                                for x in targets:
+                                    self.task.constraints.append(Until(Not(_near(x)), _near(d)))
+                self._goal_trailer(rest[end:], whole, targets)
+                return
+        if self._avoid_start(rest) is not None or rest[0] in ('while', 'avoiding', 'without'):
+            r = rest[1:] if rest[0] == 'while' else rest
+            if self._avoid_start(r) is not None:
+                self._read_avoid(r, None)
+                return
+        if rest[0] in ('while', 'on', 'along', 'when', 'until'):
+            sc, rem = self._trailing_scope(rest)
+            if sc is not None and sc.kind == 'global':
+                self._check_leftover(rem, whole)
+                return
+        raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
+                               details={'part': ' '.join(rest)})

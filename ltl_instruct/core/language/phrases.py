@@ -1,0 +1,275 @@
+"""Noun phrases to referent descriptors, and the lexicon the offline translator reads by.
+
+A noun phrase such as "the vase next to the lamp that's on the table behind the
+couch" becomes the descriptor ``vase::isnextto(lamp::isabove(table::isbehind(couch)))``:
+each trailing modifier attaches to the nearest noun before it; ``and`` followed by
+another relation ("left of the counter and in front of the fridge") chains a second
+relation on the same noun; ``between`` takes two noun phrases.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Optional, Sequence
+
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
+from ltl_instruct.core.spec import Descriptor, Relation
+
+DETERMINERS = frozenset({'the', 'a', 'an', 'my', 'your', 'our', 'his', 'her', 'their', 'these', 'those',
+                         'some', 'any', 'each', 'both', 'either', 'this'})
+
+# Token sequences that introduce a spatial relation, longest first when matched.
+RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
+    (('between',), 'isbetween'), (('in', 'between'), 'isbetween'),
+    (('on', 'top', 'of'), 'isabove'), (('on', 'the', 'top', 'of'), 'isabove'), (('on',), 'isabove'),
+    (('onto',), 'isabove'), (('above',), 'isabove'), (('over',), 'isabove'), (('atop',), 'isabove'),
+    (('sitting', 'on'), 'isabove'), (('under',), 'isbelow'), (('underneath',), 'isbelow'),
+    (('below',), 'isbelow'), (('beneath',), 'isbelow'),
+    (('to', 'the', 'left', 'of'), 'isleftof'), (('left', 'of'), 'isleftof'),
+    (('on', 'the', 'left', 'of'), 'isleftof'), (('to', 'left', 'of'), 'isleftof'),
+    (('on', 'the', 'left', 'side', 'of'), 'isleftof'),
+    (('to', 'the', 'right', 'of'), 'isrightof'), (('right', 'of'), 'isrightof'),
+    (('on', 'the', 'right', 'of'), 'isrightof'), (('to', 'right', 'of'), 'isrightof'),
+    (('on', 'the', 'right', 'side', 'of'), 'isrightof'),
+    (('in', 'front', 'of'), 'isinfrontof'), (('infront', 'of'), 'isinfrontof'),
+    (('behind',), 'isbehind'), (('in', 'back', 'of'), 'isbehind'), (('at', 'the', 'back', 'of'), 'isbehind'),
+    (('next', 'to'), 'isnextto'), (('by',), 'isnextto'), (('beside',), 'isnextto'),
+    (('besides',), 'isnextto'), (('near',), 'isnextto'), (('close', 'to'), 'isnextto'),
+    (('adjacent', 'to'), 'isnextto'), (('nearby',), 'isnextto'),
+), key=lambda p: -len(p[0])))
+
+# Destination prepositions: in "put X on Y" they end the object, they are not relations.
+DESTINATION_PREPS = frozenset({'on', 'onto', 'in', 'into', 'at', 'to', 'over', 'inside', 'by'})
+
+# Words that introduce a relative clause before a relation ("that's on", "which is behind").
+RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
+    ('that', 'is', 'right'), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
+    ('that', 'sits'), ('that', 'is', 'sitting'), ('that', 'is', 'lying'), ('sitting',), ('located',),
+    ('placed',), ('standing',), ('lying',), ('right',), ('just',), ('directly',), ('the', 'one'),
+)
+
+# Words that are never part of a name.
+STOPWORDS = frozenset('''
+and or then to from at in into on onto with for until while before after when once but so if of as because
+also too again there here please it them that which who whom where is are be been being was were you i we
+me us he she they finally instead order every all way time times twice thrice exactly least most more
+than no not never do does did go going gone went get got visit visited reach reached the a an my your
+our this these those some any each both either neither can could would will should must may might shall
+has have had make sure just now first lastly last next then around up down off out over through past via
+whichever whatever matter care which else other others until till avoid avoiding away stay keep clear
+while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant
+fine enough again cannot cant dont one along throughout entire whole during without except only
+'''.split()) - {'one'}
+
+NAME_VERBS = frozenset('''
+go goes head visit navigate move drive fly walk run come return check find locate reach get bring take put
+place leave drop toss throw carry deliver grab pick fetch survey land stop swing patrol charge stand make
+'''.split())
+
+
+@dataclass(frozen=True)
+class NounPhrase:
+    """A parsed noun phrase: its descriptor and the token span it came from.
+
+    Attributes
+    ----------
+    descriptor: the referent descriptor.
+    start, end: token span ``[start, end)`` in the token list parsed.
+    head: the last word of the head name (``cup`` in ``red_cup``), used to match corrections.
+    pronoun: the pronoun or placeholder it stands for (``it``, ``there``, ``one``), else ``''``.
+    """
+
+    descriptor: Descriptor
+    start: int
+    end: int
+    head: str
+    pronoun: str = ''
+
+
+def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
+    """The comparator a relation phrase at ``tokens[i]`` introduces, and the index after it."""
+    for words, comparator in RELATION_PHRASES:
+        n = len(words)
+        if tuple(tokens[i:i + n]) == words:
+            if words == ('over',) and i + 1 < len(tokens) and tokens[i + 1] in ('to', 'there', 'here'):
+                continue
+            return comparator, i + n
+    return None
+
+
+def _relative_lead(tokens: Sequence[str], i: int) -> int:
+    """Length of a relative-clause lead-in at ``i`` that is followed by a relation, else 0."""
+    for lead in RELATIVE_LEADS:
+        n = len(lead)
+        if tuple(tokens[i:i + n]) == lead and match_relation(tokens, i + n) is not None:
+            return n
+    return 0
+
+
+def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
+    """Whether ``tokens[i]`` can be part of an object's name."""
+    if i >= len(tokens):
+        return False
+    w = tokens[i]
+    if w in PUNCT or not w.replace('_', '').isalnum():
+        return False
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ''
+    if w in ORDINALS:
+        return nxt not in PUNCT and nxt not in STOPWORDS and nxt != '' and nxt not in ('one',)
+    if w in NUMBER_WORDS or w.isdigit():
+        return have_name and nxt not in ('times', 'more', 'separate')
+    if w in STOPWORDS:
+        return False
+    return True
+
+
+def singular(word: str) -> str:
+    """Crude singular of a plural noun (``chairs`` -> ``chair``, ``boxes`` -> ``box``)."""
+    if word.endswith('ies') and len(word) > 4:
+        return word[:-3] + 'y'
+    if word.endswith(('ches', 'shes', 'xes', 'sses')):
+        return word[:-2]
+    if word.endswith('s') and not word.endswith('ss') and len(word) > 3:
+        return word[:-1]
+    return word
+
+
+def name_of(words: Sequence[str]) -> str:
+    """Snake-case name from name words; cardinal number words after a noun become digits."""
+    out = []
+    for k, w in enumerate(words):
+        if k > 0 and w in NUMBER_WORDS and w not in ('once', 'twice', 'thrice'):
+            w = str(NUMBER_WORDS[w])
+        out.append(w)
+    name = '_'.join(out)
+    if name and not name[0].isalpha():
+        name = 'n_' + name
+    return name
+
+
+class PhraseParser:
+    """Parses noun phrases in a token list; remembers the last ones for pronouns and "the one"."""
+
+    def __init__(self) -> None:
+        self.last: Optional[NounPhrase] = None
+
+    def parse(self, tokens: Sequence[str], i: int, destination_stops: bool = False,
+              depth: int = 0) -> Optional[NounPhrase]:
+        """Parse one noun phrase starting at ``tokens[i]``; None if there is none.
+
+        Parameters
+        ----------
+        tokens:
+            The token list.
+        i:
+            Where the phrase starts (determiners are skipped).
+        destination_stops:
+            True for the object of put/place verbs: a bare destination preposition
+            ("on", "in", "at") ends the phrase instead of starting a relation.
+        depth:
+            Nesting level, bounded so hostile input cannot recurse deeply.
+        """
+        if depth > 8:
+            return None
+        start = i
+        while i < len(tokens) and tokens[i] in DETERMINERS:
+            i += 1
+        words: list[str] = []
+        pronoun = ''
+        if i < len(tokens) and tokens[i] in ('it', 'them', 'there', 'that', 'here') and not (
+                tokens[i] == 'that' and i + 1 < len(tokens) and tokens[i + 1] == 'is'):
+            pronoun = tokens[i]
+            i += 1
+        else:
+            while is_name_word(tokens, i, bool(words)) and not (
+                    words and (match_relation(tokens, i) or _relative_lead(tokens, i))):
+                words.append(tokens[i])
+                i += 1
+        if not words and not pronoun:
+            return None
+        if pronoun:
+            if self.last is None:
+                return None
+            ref = self.last
+            return NounPhrase(ref.descriptor, start, i, ref.head, pronoun)
+        one = words[-1] == 'one'
+        if one:
+            base = self.last.descriptor.name if self.last is not None else ''
+            if len(words) == 1:
+                words = base.split('_') if base else words
+            elif self.last is not None:
+                words = words[:-1] + [self.last.head]
+        head = words[-1]
+        relations: list[Relation] = []
+        while i < len(tokens):
+            j = i
+            lead = _relative_lead(tokens, j)
+            if not lead and relations and tokens[j] == 'and':
+                lead = 1 + _relative_lead(tokens, j + 1) if match_relation(tokens, j + 1 + _relative_lead(
+                    tokens, j + 1)) else 0
+            j += lead
+            rel = match_relation(tokens, j)
+            if rel is None:
+                break
+            comparator, k = rel
+            if destination_stops and not lead and tokens[j] in DESTINATION_PREPS:
+                break
+            arg1 = self.parse(tokens, k, destination_stops, depth + 1)
+            if arg1 is None:
+                break
+            if comparator == 'isbetween':
+                if arg1.end < len(tokens) and tokens[arg1.end] == 'and':
+                    arg2 = self.parse(tokens, arg1.end + 1, destination_stops, depth + 1)
+                else:
+                    arg2 = None
+                if arg2 is None:
+                    break
+                relations.append(Relation(comparator, (arg1.descriptor, arg2.descriptor)))
+                i = arg2.end
+            else:
+                relations.append(Relation(comparator, (arg1.descriptor,)))
+                i = arg1.end
+        np = NounPhrase(Descriptor(name_of(words), tuple(relations)), start, i, head,
+                        'one' if one else '')
+        if depth == 0:
+            self.last = np
+        return np
+
+    def parse_list(self, tokens: Sequence[str], i: int, destination_stops: bool = False
+                   ) -> tuple[list[NounPhrase], str, int]:
+        """Parse "X, Y and Z" / "X or Y" / "either X or Y" / "both X and Y".
+
+        Returns
+        -------
+        (phrases, joiner, end): joiner is ``'and'``, ``'or'`` or ``''`` for a single phrase.
+        """
+        joiner = ''
+        if i < len(tokens) and tokens[i] in ('either', 'both'):
+            i += 1
+        phrases: list[NounPhrase] = []
+        first = self.parse(tokens, i, destination_stops)
+        if first is None:
+            return [], '', i
+        phrases.append(first)
+        i = first.end
+        while i < len(tokens):
+            j = i
+            sep = ''
+            if tokens[j] == ',':
+                j += 1
+                sep = 'and'
+            if j < len(tokens) and tokens[j] in ('and', 'or', 'nor'):
+                sep = 'or' if tokens[j] == 'or' else 'and'
+                j += 1
+            if not sep:
+                break
+            if j < len(tokens) and tokens[j] in ('then', 'after', 'finally', 'also'):
+                break
+            nxt = self.parse(tokens, j, destination_stops)
+            if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
+                break
+            if j < len(tokens) and tokens[j] in NAME_VERBS:
+                break
+            phrases.append(nxt)
+            joiner = sep if sep == 'or' or not joiner else joiner
+            i = nxt.end
+        return phrases, joiner, i

@@ -1,0 +1,410 @@
+"""Token rewrites before clause reading: list positions and self-corrections.
+
+Both are resolved by rewriting the token list, so the clause reader only ever
+sees the final intent:
+
+- "There's an umbrella, a backpack and a pair of boots. Bring the first one to
+  the coat rack." -> "bring the umbrella to the coat rack" (also "the last two",
+  "the middle one", "the other two", "the one right before the plant", "them in
+  reverse order").
+- "Go to the fridge - no wait, I meant the freezer." -> "go to the freezer";
+  "forget the garage, do the laundry room instead"; "never mind the avoiding
+  part"; "the couch is fine"; "scratch that, twice is enough"; "do it the
+  other way round".
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from ltl_instruct.core.errors import TranslationError
+from ltl_instruct.core.language.phrases import DETERMINERS, NounPhrase, PhraseParser, singular
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
+
+_LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
+                          'notice'})
+_LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
+                       'there', '-'})
+_REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'reverse', 'before', 'after', 'former',
+                                     'latter', 'them', 'all'}
+
+
+def _np_text(tokens: list[str], np: NounPhrase) -> list[str]:
+    span = tokens[np.start:np.end]
+    while span and span[0] in DETERMINERS:
+        span = span[1:]
+    return ['the'] + span
+
+
+def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], str]]:
+    """The first enumeration of at least three (or two, with "and") noun phrases, and its category."""
+    parser = PhraseParser()
+    starts = [0] + [i + 1 for i, t in enumerate(tokens) if t in _LIST_INTROS]
+    for s in starts:
+        if s >= len(tokens):
+            continue
+        nps, joiner, end = parser.parse_list(tokens, s)
+        if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
+            continue
+        if end < len(tokens) and tokens[end] not in _LIST_END:
+            continue
+        # the category before a colon: "three chairs: a red one by the desk, ..."
+        category = ''
+        if s >= 2 and tokens[s - 1] == ':':
+            category = singular(tokens[s - 2])
+        return s, end, nps, category
+    return None
+
+
+def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
+    """Replace references by list position ("the second one") with the phrase they point to.
+
+    Only applies where an enumeration is followed by such a reference; the
+    enumeration itself only sets the scene and is removed.
+    """
+    found = _find_list(tokens)
+    if found is None:
+        return tokens
+    s, end, nps, category = found
+    tail = tokens[end:]
+    if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail):
+        return tokens
+    items = []
+    for np in nps:
+        words = _np_text(tokens, np)
+        if category and 'one' in words:
+            words = [category if w == 'one' else w for w in words]
+        items.append(words)
+    used: set[int] = set()
+
+    def joined(idx: list[int], sep: str = 'and') -> list[str]:
+        out: list[str] = []
+        for k, i in enumerate(idx):
+            used.add(i)
+            if k:
+                out += [',', sep] if sep == 'then' else [sep]
+            out += items[i]
+        return out
+
+    out: list[str] = []
+    i = 0
+    n = len(items)
+    while i < len(tail):
+        t = tail[i]
+        nxt = tail[i + 1] if i + 1 < len(tail) else ''
+        if t == 'the' and nxt:
+            w = tail[i + 2] if i + 2 < len(tail) else ''
+            one = 1 if w in ('one', 'item', 'thing') else 0
+            if nxt in ORDINALS and (not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or')):
+                idx = ORDINALS[nxt] - 1
+                if idx >= n:
+                    raise TranslationError(f'"the {nxt}" points past the end of a list of {n}',
+                                           details={'part': f'the {nxt}'})
+                out += joined([idx])
+                i += 2 + one
+                continue
+            if nxt == 'last' and w in ('two', 'three'):
+                k = NUMBER_WORDS[w]
+                out += joined(list(range(n - k, n)))
+                i += 3
+                continue
+            if nxt == 'first' and w in ('two', 'three'):
+                out += joined(list(range(NUMBER_WORDS[w])))
+                i += 3
+                continue
+            if nxt in ('last', 'latter') and (not w or w in PUNCT or one or w in ('and', 'then', 'to')):
+                out += joined([n - 1])
+                i += 2 + one
+                continue
+            if nxt == 'former':
+                out += joined([0])
+                i += 2
+                continue
+            if nxt == 'middle' and n % 2 == 1:
+                out += joined([n // 2])
+                i += 2 + one
+                continue
+            if nxt == 'other' or (nxt == 'rest' and not w):
+                rest_idx = [k for k in range(n) if k not in used]
+                out += joined(rest_idx)
+                i += 2 + (1 if w in ('two', 'three', 'ones', 'one') else 0)
+                continue
+            if nxt == 'one' and w in ('right', 'just', 'immediately', 'before', 'after', 'directly'):
+                j = i + 2
+                while j < len(tail) and tail[j] in ('right', 'just', 'immediately', 'directly'):
+                    j += 1
+                if j < len(tail) and tail[j] in ('before', 'after'):
+                    parser = PhraseParser()
+                    ref = parser.parse(tail, j + 1)
+                    if ref is not None:
+                        k = next((m for m, it in enumerate(items) if it[-1] == ref.head), -1)
+                        if k >= 0:
+                            k2 = k - 1 if tail[j] == 'before' else k + 1
+                            if 0 <= k2 < n:
+                                out += joined([k2])
+                                i = ref.end
+                                continue
+        if t in ORDINALS and (i == 0 or tail[i - 1] in (',', 'then', 'and', ':')) and (
+                not nxt or nxt in PUNCT or nxt in ('and', 'then', 'one')):
+            out += joined([ORDINALS[t] - 1])
+            i += 2 if nxt == 'one' else 1
+            continue
+        if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['reverse', 'order']:
+            out += joined(list(range(n - 1, -1, -1)), 'then')
+            i += 4
+            continue
+        if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['that', 'order']:
+            out += joined(list(range(n)), 'then')
+            i += 4
+            continue
+        if t in ('them', 'all') and (nxt in ('all',) or t == 'them'):
+            out += joined(list(range(n)))
+            i += 2 if nxt == 'all' else 1
+            continue
+        out.append(t)
+        i += 1
+    notes.append('list of ' + ', '.join(' '.join(it[1:]) for it in items) + ': positions resolved')
+    # earlier sentences stay; the sentence that holds the list only sets the scene
+    keep = max((k for k in range(s) if tokens[k] in '.;!?'), default=-1)
+    return tokens[:keep + 1] + out
+
+
+# ------------------------------------------------------------------ self-corrections
+
+_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('no', 'wait'), ('oh', 'wait'), ('wait',), ('sorry',), ('er',), ('um',), ('uh',), ('i', 'mean'),
+    ('i', 'meant'), ('actually',), ('scratch', 'that'), ('forget',), ('ignore',), ('never', 'mind'),
+    ('hmm',), ('make', 'that'), ('correction',), ('oops',), ('rather',), ('no',),
+), key=lambda m: -len(m)))
+_CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip'})
+
+
+def _marker_at(tokens: list[str], i: int) -> int:
+    if i > 0 and tokens[i - 1] not in PUNCT and tokens[i - 1] not in ('hmm', 'oh', 'wait', 'actually', 'er',
+                                                                      'um', 'sorry', 'no'):
+        return 0
+    for m in _MARKERS:
+        if tuple(tokens[i:i + len(m)]) == m:
+            if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',',):
+                return 0
+            if m == ('ignore',) and i == 0:
+                return 0
+            if m == ('forget',) and i == 0:
+                return 0
+            return len(m)
+    return 0
+
+
+def _np_spans(tokens: list[str]) -> list[NounPhrase]:
+    """Top-level noun phrases introduced by a determiner or after a verb particle."""
+    parser = PhraseParser()
+    out: list[NounPhrase] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] in DETERMINERS or (i > 0 and tokens[i - 1] in ('to', 'by', 'at', 'visit', 'avoid', ',')):
+            np = parser.parse(tokens, i)
+            if np is not None and np.end > i and not np.pronoun:
+                out.append(np)
+                i = np.end
+                continue
+        i += 1
+    return out
+
+
+def _strip_corr(seg: list[str]) -> list[str]:
+    while seg and seg[0] in (',', 'i', 'mean', 'meant', 'just', 'wait', 'no', 'actually', 'sorry', 'er',
+                             'um', 'hmm', 'oh', 'make', 'that', 'rather', 'go', 'to', 'do', 'instead'):
+        if seg[0] == 'that' and len(seg) > 1 and seg[1] == 'is':
+            break
+        if seg[0] == 'go' and len(seg) > 1 and seg[1] not in ('to',):
+            break
+        if seg[0] == 'make' and not (len(seg) > 1 and seg[1] == 'that'):
+            break
+        seg = seg[1:]
+    while seg and seg[-1] in (',', 'instead', 'please', 'then'):
+        seg = seg[:-1]
+    return seg
+
+
+def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
+    """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
+    parser = PhraseParser()
+    np = parser.parse(new, 0)
+    if np is None or np.end != len(new):
+        return None
+    spans = _np_spans(prev)
+    if not spans:
+        return None
+    target = next((sp for sp in reversed(spans) if sp.head == np.head), spans[-1])
+    new_words = new
+    if np.pronoun == 'one' or 'one' in new[:np.end]:
+        old = prev[target.start:target.end]
+        old_name_end = target.start
+        while old_name_end < target.end and (old[old_name_end - target.start] in DETERMINERS or
+                                             old_name_end == target.start):
+            old_name_end += 1
+        old_head = [w for w in prev[target.start:target.end] if w not in DETERMINERS]
+        k = new.index('one')
+        name = []
+        for w in old_head:
+            if w in ('left', 'right', 'behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below', 'by',
+                     'near', 'beside', 'to', 'that', 'which'):
+                break
+            name.append(w)
+        new_words = new[:k] + (name[-1:] if k > 0 and any(w not in DETERMINERS for w in new[:k]) else name) + \
+            new[k + 1:]
+    start, end = target.start, target.end
+    # an either-or group is corrected as a whole ("the sofa or the armchair ... just the sofa")
+    for sp in spans:
+        if sp.end < len(prev) and prev[sp.end] == 'or' and sp.end + 1 <= start <= sp.end + 2:
+            start = min(start, sp.start)
+        if sp.start > end and prev[end:sp.start] in (['or'], ['or', 'the']):
+            end = sp.end
+        if start <= sp.start and sp.start - end <= 1 and end < len(prev) and prev[end] == 'or':
+            end = max(end, sp.end)
+    return prev[:start] + new_words + prev[end:]
+
+
+def _remove_clause(prev: list[str], pos: int) -> list[str]:
+    """Remove the clause around token ``pos`` (from the connective before it to the next stop)."""
+    a = pos
+    while a > 0 and prev[a - 1] not in PUNCT and prev[a - 1] not in ('and', 'but', 'then'):
+        a -= 1
+    while a > 0 and prev[a - 1] in ('and', 'but', 'then', ','):
+        a -= 1
+    b = pos
+    while b < len(prev) and prev[b] not in '.;!?':
+        b += 1
+    return prev[:a] + prev[b:]
+
+
+_AVOID_WORDS = ('avoid', 'never', 'away', 'clear', 'not', 'off')
+
+
+def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
+    """Apply self-corrections so only the final intent remains."""
+    i = 0
+    out = list(tokens)
+    guard = 0
+    while i < len(out) and guard < 50:
+        guard += 1
+        m = _marker_at(out, i)
+        if not m or i == 0 and out[i] not in ('actually',):
+            i += 1
+            continue
+        prev = out[:i]
+        while prev and prev[-1] in (',', 'hmm', 'oh'):
+            prev = prev[:-1]
+        j = i + m
+        stop = j
+        while stop < len(out) and out[stop] not in '.;!?':
+            stop += 1
+        seg = out[j:stop]
+        after = out[stop:]
+        marker = out[i]
+        result = _correct(prev, marker, seg, notes)
+        if result is None:
+            # not a correction we understand: drop the marker word and read on
+            out = prev + ([','] if prev and prev[-1] not in PUNCT else []) + seg + after
+            i = len(prev) + 1
+            continue
+        out = result + after
+        i = len(result)
+    return out
+
+
+def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    s = ' '.join(seg)
+    if marker in _CANCEL or marker == 'never':
+        # "forget the garage, do the laundry room instead" / "ignore the last thing, go to X instead"
+        if seg and seg[0] == 'mind':
+            seg = seg[1:]
+        if seg and seg[0] == 'that' or marker == 'scratch':
+            seg = seg[1:] if seg and seg[0] == 'that' else seg
+        k = seg.index(',') if ',' in seg else len(seg)
+        target, rest = seg[:k], seg[k + 1:]
+        tgt = ' '.join(target)
+        if any(w in tgt for w in ('avoid', 'avoiding', 'avoidance')):
+            pos = next((p for p in range(len(prev) - 1, -1, -1) if prev[p] in _AVOID_WORDS), -1)
+            if pos < 0:
+                return None
+            notes.append('the avoidance was retracted')
+            return _remove_clause(prev, pos) + rest
+        new = _strip_corr(rest)
+        count_fix = _count_correction(prev, seg)
+        if count_fix is not None:
+            notes.append('the count was corrected')
+            return count_fix
+        if tgt in ('', 'the last thing', 'the last one', 'the last part', 'that last part', 'that', 'it',
+                   'the last bit', 'that last one', 'last thing'):
+            spans = _np_spans(prev)
+            if not spans:
+                return None
+            last = spans[-1]
+            if new:
+                notes.append('the last goal was replaced')
+                return prev[:last.start] + new + prev[last.end:]
+            notes.append('the last goal was dropped')
+            return _remove_clause(prev, last.start)
+        spans = _np_spans(prev)
+        parser = PhraseParser()
+        tnp = parser.parse(target, 0)
+        if tnp is None:
+            return None
+        hit = next((sp for sp in reversed(spans) if sp.descriptor == tnp.descriptor or sp.head == tnp.head), None)
+        if hit is None:
+            return None
+        if new:
+            notes.append(f'"{tgt}" was replaced')
+            return prev[:hit.start] + new + prev[hit.end:]
+        notes.append(f'"{tgt}" was dropped')
+        return _remove_clause(prev, hit.start)
+    # "the couch is fine, just avoid the rug"
+    if ' is fine' in s or ' is okay' in s or ' is ok' in s or ' are fine' in s:
+        k = next(p for p in range(len(seg)) if seg[p] in ('is', 'are'))
+        parser = PhraseParser()
+        tnp = parser.parse(seg, 0)
+        rest = seg[k + 2:]
+        if tnp is not None:
+            for sp in reversed(_np_spans(prev)):
+                if sp.head == tnp.head:
+                    notes.append(f'avoiding {tnp.descriptor} was retracted')
+                    prev = _remove_clause(prev, sp.start)
+                    break
+        return prev + ([','] if prev and prev[-1] not in PUNCT else []) + rest
+    if 'other way' in s or 'reverse' in s or 'opposite order' in s:
+        spans = _np_spans(prev)
+        if len(spans) < 2:
+            return None
+        out = list(prev)
+        texts = [prev[sp.start:sp.end] for sp in spans]
+        for sp, txt in reversed(list(zip(spans, reversed(texts)))):
+            out[sp.start:sp.end] = txt
+        notes.append('the order was reversed')
+        return out
+    count_fix = _count_correction(prev, seg)
+    if count_fix is not None:
+        notes.append('the count was corrected')
+        return count_fix
+    new = _strip_corr(seg)
+    if not new:
+        return prev
+    replaced = _replace_np(prev, new)
+    if replaced is not None:
+        notes.append(f'corrected to "{" ".join(new)}"')
+        return replaced
+    return None
+
+
+def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
+    counts = ('once', 'twice', 'thrice')
+    new = next((k for k, w in enumerate(seg) if w in counts or (w in NUMBER_WORDS and k + 1 < len(seg)
+                                                                and seg[k + 1] == 'times')), -1)
+    if new < 0 or not ({'enough', 'instead', 'is', 'make', 'only', 'just'} & set(seg)):
+        return None
+    new_words = seg[new:new + (1 if seg[new] in counts else 2)]
+    for p in range(len(prev) - 1, -1, -1):
+        if prev[p] in counts:
+            return prev[:p] + new_words + prev[p + 1:]
+        if prev[p] == 'times' and p > 0 and prev[p - 1] in NUMBER_WORDS:
+            return prev[:p - 1] + new_words + prev[p + 1:]
+    return None

@@ -1,0 +1,87 @@
+"""Text normalisation for the offline translator: lower case, typos, contractions, tokens.
+
+The offline translator reads a token list, never the raw string. This module
+turns what people type (contractions, chat spelling, small typos, ordinals such
+as ``2nd``, punctuation runs) into that token list. Punctuation that carries
+structure (``, . ; : ! ?``) stays as its own token; everything else that is not
+a letter or digit is dropped.
+"""
+from __future__ import annotations
+
+import re
+
+# Chat spellings and typos seen in instructions to robots; whole-word replacements.
+TYPOS: dict[str, str] = {
+    'teh': 'the', 'hte': 'the', 'u': 'you', 'ur': 'you are', 'n': 'and', 'atleast': 'at least',
+    'dont': 'do not', 'youre': 'you are', 'actualy': 'actually', 'acutally': 'actually',
+    'thrid': 'third', 'undr': 'under', 'vist': 'visit', 'pls': 'please', 'plz': 'please',
+    'kitchn': 'kitchen', 'dishwsher': 'dishwasher', 'litterbox': 'litter box', 'doesnt': 'does not',
+    'cant': 'cannot', 'wont': 'will not', 'im': 'i am', 'ive': 'i have', 'youve': 'you have',
+    'thats': 'that is', 'theres': 'there is', 'its': 'it is', 'didnt': 'did not', 'isnt': 'is not',
+    'goto': 'go to', 'infront': 'in front', 'nxt': 'next', 'frist': 'first', 'secnd': 'second',
+    'avoiid': 'avoid', 'aviod': 'avoid', 'fridg': 'fridge', 'bathrom': 'bathroom', 'thn': 'then',
+    'untill': 'until', 'til': 'until', 'till': 'until', 'b4': 'before', 'w': 'with', 'thru': 'through',
+    'ok': 'okay', 'tv': 'tv', 'behing': 'behind', 'betwen': 'between', 'betweeen': 'between',
+    'nevr': 'never', 'alway': 'always', 'alwasy': 'always', 'twond': 'second', 'oppposite': 'opposite',
+    'ofthe': 'of the', 'tothe': 'to the', 'togo': 'to go', 'dnt': 'do not', 'bak': 'back',
+    'visti': 'visit', 'vsit': 'visit', 'vist1': 'visit', 'gp': 'go', 'og': 'go',
+}
+
+CONTRACTIONS: tuple[tuple[str, str], ...] = (
+    (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
+    (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
+    (r"\bi'm\b", 'i am'), (r"\b(that|there|it|what|where|here|who)'s\b", r'\1 is'),
+    (r"'d\b", ' would'), (r"'s\b", ''), (r"s'(?=\s)", 's'),
+)
+
+ORDINAL_DIGITS: dict[str, str] = {
+    '1st': 'first', '2nd': 'second', '3rd': 'third', '4th': 'fourth', '5th': 'fifth',
+    '6th': 'sixth', '7th': 'seventh', '8th': 'eighth', '9th': 'ninth', '10th': 'tenth',
+}
+
+NUMBER_WORDS: dict[str, int] = {
+    'one': 1, 'two': 2, 'three': 3, 'four': 4, 'five': 5, 'six': 6, 'seven': 7, 'eight': 8,
+    'nine': 9, 'ten': 10, 'once': 1, 'twice': 2, 'thrice': 3,
+}
+
+ORDINALS: dict[str, int] = {
+    'first': 1, 'second': 2, 'third': 3, 'fourth': 4, 'fifth': 5, 'sixth': 6, 'seventh': 7,
+    'eighth': 8, 'ninth': 9, 'tenth': 10,
+}
+
+PUNCT = frozenset(',.;:!?')
+_TOKEN_RE = re.compile(r"[a-z0-9]+|[,.;:!?]")
+
+
+def tokenize(text: str) -> list[str]:
+    """Normalise an instruction and split it into word and punctuation tokens.
+
+    Parameters
+    ----------
+    text:
+        The instruction as typed.
+
+    Returns
+    -------
+    list[str]
+        Lower-case tokens; runs of the same punctuation collapse to one, a dash
+        between spaces becomes a comma, and typos in :data:`TYPOS` are fixed.
+    """
+    s = text.lower().replace('\u2019', "'").replace('\u2018', "'").replace('`', "'")
+    s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
+    for pattern, repl in CONTRACTIONS:
+        s = re.sub(pattern, repl, s)
+    s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)
+    out: list[str] = []
+    for tok in _TOKEN_RE.findall(s):
+        tok = ORDINAL_DIGITS.get(tok, tok)
+        words = TYPOS.get(tok, tok).split()
+        for w in words:
+            if w in PUNCT and out and out[-1] in PUNCT:
+                if w in '.;!?' and out[-1] == ',':
+                    out[-1] = w
+                continue
+            out.append(w)
+    while out and out[0] in PUNCT:
+        out.pop(0)
+    return out

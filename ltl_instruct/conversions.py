@@ -51,6 +51,7 @@ TASK_PLAN = 'ltl_instruct/task_plan'
 TASK_STATUS = 'ltl_instruct/task_status'
 SKILL_REQUEST = 'ltl_instruct/skill_request'
 SKILL_RESULT = 'ltl_instruct/skill_result'
+LABEL_CLASSES = 'ltl_instruct/label_classes'
 
 
 # ---------------------------------------------------------------------------- JSON payloads
@@ -207,6 +208,29 @@ def odometry_msg(pose: Pose, stamp: Optional[Time] = None, velocity: Sequence[fl
     vx, vy, vz = (float(v) for v in velocity)
     msg.twist.twist.linear.x, msg.twist.twist.linear.y, msg.twist.twist.linear.z = vx, vy, vz
     return msg
+
+
+def pose_stamped_msg(pose: Pose, stamp: Optional[Time] = None, frame_id: str = FRAME_ID) -> PoseStamped:
+    """Return a ``geometry_msgs/PoseStamped`` of ``pose``."""
+    msg = PoseStamped(header=Header(stamp=stamp or Time(), frame_id=frame_id))
+    x, y, z = pose.position
+    msg.pose.position = Point(x=float(x), y=float(y), z=float(z))
+    msg.pose.orientation = yaw_to_quaternion(pose.yaw)
+    return msg
+
+
+def pose_stamped_pose(msg: PoseStamped) -> Pose:
+    """Return the pose of a ``PoseStamped``.
+
+    Raises
+    ------
+    InvalidInputError
+        On NaN or infinite values.
+    """
+    p, q = msg.pose.position, msg.pose.orientation
+    if not all(math.isfinite(v) for v in (p.x, p.y, p.z, q.x, q.y, q.z, q.w)):
+        raise InvalidInputError('pose contains NaN or infinite values')
+    return Pose((float(p.x), float(p.y), float(p.z)), quaternion_to_yaw(q))
 
 
 def odometry_pose(msg: Odometry) -> Pose:

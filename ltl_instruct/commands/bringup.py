@@ -51,7 +51,7 @@ def node_command(name: str, params_file: Optional[Path] = None,
         cmd += ['--params-file', str(params_file)]
     for key, value in (overrides or {}).items():
         text = str(value).lower() if isinstance(value, bool) else str(value)
-        cmd += ['-p', f'{key}:={text}']
+        cmd += ['-p', f'{key}:={text or repr("")}']   # an empty string must be written as ''
     return cmd
 
 

@@ -179,8 +179,11 @@ class GraphClient:
         """Wait until the pipeline nodes listen (and, with ``need_sim``, the map has come)."""
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
+            # every pipeline node is up: the translator, the grounder and task_progression
+            # listen to task_spec (besides this client), the planner to plan_request
             ready = (self.instruction_pub.get_subscription_count() >= 1
-                     and self.task_spec_pub.get_subscription_count() >= 2
+                     and self.node.count_subscribers('task_spec') >= 3
+                     and self.node.count_publishers('referent_map') >= 1
                      and self.node.count_publishers('task_status') >= 1
                      and self.node.count_subscribers('plan_request') >= 1)
             if ready and (not need_sim or self.received.map is not None):

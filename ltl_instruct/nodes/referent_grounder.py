@@ -18,6 +18,8 @@ import threading
 import time
 from typing import Any, Optional
 
+import numpy as np
+from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import Odometry
 from rclpy.node import Node
 from sensor_msgs.msg import CameraInfo, Image
@@ -38,6 +40,9 @@ PARAMS = (
     ParamSpec('scene', '', 'known objects: built-in scene name or scene file ("" = camera only)'),
     ParamSpec('use_camera', True, 'integrate camera frames (depth + labels) into the semantic map'),
     ParamSpec('camera_min_interval', 0.5, 'least time between two integrated frames [s]', 0.0, 60.0),
+    ParamSpec('voxel_size', 0.1, 'edge of a semantic-map voxel [m]', 0.02, 2.0),
+    ParamSpec('merge_distance', 0.75, 'a detection this close to a known object of its label is that '
+              'object [m]', 0.0, 10.0),
     ParamSpec('axis_threshold', 0.1, 'threshold of above/below/left/right/front/behind [m]', 0.0, 50.0),
     ParamSpec('nextto_threshold', 1.0, 'isnextto holds below this distance [m]', 0.0, 50.0),
     ParamSpec('between_threshold', 0.5, 'isbetween holds within this distance of the segment [m]', 0.0, 50.0),
@@ -59,6 +64,7 @@ class ReferentGrounderNode(Node):
         self._pose: Any = None
         self._info: Optional[CameraInfo] = None
         self._labels: Optional[Image] = None
+        self._camera_poses: dict[int, Any] = {}
         self._last_frame = 0.0
         self._task: Optional[dict[str, Any]] = None   # the latest grounded task
         self.rmap_pub = self.create_publisher(String, 'referent_map', latched_qos())
@@ -69,6 +75,8 @@ class ReferentGrounderNode(Node):
             self.create_subscription(CameraInfo, 'camera/color/camera_info', self.on_info, sensor_qos())
             self.create_subscription(Image, 'camera/labels/image_raw', self.on_labels, sensor_qos())
             self.create_subscription(Image, 'camera/depth/image_raw', self.on_depth, sensor_qos())
+            self.create_subscription(PoseStamped, 'camera/pose', self.on_camera_pose, sensor_qos())
+            self.create_subscription(String, 'camera/labels/classes', self.on_classes, latched_qos(1))
         self.get_logger().info(f'referent_grounder: {len(self._known)} known objects, '
                                f'camera {"on" if self._semantic_map is not None else "off"}')
 
@@ -77,12 +85,23 @@ class ReferentGrounderNode(Node):
         if semantic_map is None:
             self.get_logger().warning('no semantic map in this build: grounding uses the known objects only')
             return None
-        return semantic_map()
+        return semantic_map(params=grounding.SemanticMapParams(voxel_size=self.params['voxel_size']))
 
     # ------------------------------------------------------------------ grounding
     def _instances(self) -> tuple:
         detected = tuple(self._semantic_map.instances()) if self._semantic_map is not None else ()
-        return tuple(self._known) + detected
+        return tuple(self._known) + self._new_detections(detected)
+
+    def _new_detections(self, detected: tuple) -> tuple:
+        """Detections that are not a known object seen again (same label, centres close)."""
+        limit = self.params['merge_distance']
+        out = []
+        for d in detected:
+            same = [k for k in self._known if k.label.lower() == d.label.lower()
+                    and float(np.linalg.norm(np.subtract(k.center, d.center))) <= limit + max(k.size) / 2]
+            if not same:
+                out.append(d)
+        return tuple(out)
 
     def _ground(self, formula: Formula) -> ReferentMap:
         return grounding.ground_formula(formula, self._instances(), self._grounding_params())
@@ -143,6 +162,28 @@ class ReferentGrounderNode(Node):
         except LtlInstructError:
             pass   # task_progression reports bad odometry; the last good pose is kept
 
+    def on_camera_pose(self, msg: PoseStamped) -> None:
+        """Keep the pose each camera frame was taken from (by stamp; the last few only)."""
+        try:
+            pose = conv.pose_stamped_pose(msg)
+        except LtlInstructError:
+            return
+        self._camera_poses[conv.stamp_key(msg.header.stamp)] = pose
+        while len(self._camera_poses) > 20:
+            self._camera_poses.pop(next(iter(self._camera_poses)))
+
+    def on_classes(self, msg: String) -> None:
+        """Learn the class table of the label images (class id -> label text)."""
+        try:
+            data = conv.parse_json_payload(msg.data, conv.LABEL_CLASSES)
+            table = {int(k): str(v) for k, v in dict(data['classes']).items()}
+        except (LtlInstructError, KeyError, TypeError, ValueError) as e:
+            self.get_logger().warning(f'label classes rejected: {e}')
+            return
+        if self._semantic_map is not None:
+            with self._lock:
+                self._semantic_map.class_names.update(table)
+
     def on_info(self, msg: CameraInfo) -> None:
         """Keep the latest intrinsics."""
         self._info = msg
@@ -156,9 +197,9 @@ class ReferentGrounderNode(Node):
         now = time.monotonic()
         if now - self._last_frame < self.params['camera_min_interval']:
             return
-        labels, info, pose = self._labels, self._info, self._pose
-        if labels is None or info is None or pose is None or \
-                conv.stamp_key(labels.header.stamp) != conv.stamp_key(msg.header.stamp):
+        key = conv.stamp_key(msg.header.stamp)
+        labels, info, pose = self._labels, self._info, self._camera_poses.get(key)
+        if labels is None or info is None or pose is None or conv.stamp_key(labels.header.stamp) != key:
             return
         self._last_frame = now
         try:

@@ -1,8 +1,10 @@
 """``sim_world``: a kinematic simulator for the demo and the tests.
 
 Publishes the scene's occupancy ``map`` (latched; plus ``map_cloud`` for a drone),
-``odom`` at ``rate_hz``, and, when the synthetic camera is available, RGB-D and label
-images with ``camera_info``. It follows each ``plan`` (nav_msgs/Path) at ``max_speed``,
+``odom`` at ``rate_hz``, and camera frames from the synthetic camera: RGB, depth
+(32FC1 [m]), class labels (32SC1) with their class table (``camera/labels/classes``,
+latched JSON), ``camera_info``, and the robot pose of each frame (``camera/pose``,
+same stamp). It follows each ``plan`` (nav_msgs/Path) at ``max_speed``,
 stops at the path index of every ``skill/request`` (pick, release), carries it out in
 the simulated world (a picked object moves with the robot) and reports on
 ``skill/result``. Bad input (NaN in a plan, garbage JSON) is logged and dropped.
@@ -14,6 +16,7 @@ import time
 from typing import Any, Optional
 
 import numpy as np
+from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rclpy.node import Node
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2
@@ -37,6 +40,7 @@ PARAMS = (
     ParamSpec('camera_rate_hz', 2.0, 'camera frame rate [Hz]; 0 turns the camera off', 0.0, 30.0),
     ParamSpec('camera_width', 160, 'camera image width [px]', 16, 1920),
     ParamSpec('camera_height', 120, 'camera image height [px]', 12, 1080),
+    ParamSpec('camera_range', 12.0, 'farthest depth the camera returns [m]', 0.5, 500.0),
     ParamSpec('reach', 1.0, 'how far from an object the robot may pick or release [m]', 0.1, 5.0),
     ParamSpec('skill_duration', 0.5, 'simulated time a pick or release takes [s]', 0.0, 30.0),
 )
@@ -55,6 +59,7 @@ class SimWorldNode(Node):
         self._pending: dict[int, dict[str, Any]] = {}   # path index -> skill request
         self._skill_busy_until = 0.0
         self._last_tick = time.monotonic()
+        self._classes_sent: Optional[dict[str, str]] = None
         self._camera = self._make_camera()
 
         self.map_pub = self.create_publisher(OccupancyGrid, 'map', latched_qos(1))
@@ -65,6 +70,8 @@ class SimWorldNode(Node):
         self.depth_pub = self.create_publisher(Image, 'camera/depth/image_raw', sensor_qos())
         self.labels_pub = self.create_publisher(Image, 'camera/labels/image_raw', sensor_qos())
         self.info_pub = self.create_publisher(CameraInfo, 'camera/color/camera_info', sensor_qos())
+        self.camera_pose_pub = self.create_publisher(PoseStamped, 'camera/pose', sensor_qos())
+        self.classes_pub = self.create_publisher(String, 'camera/labels/classes', latched_qos(1))
         self.create_subscription(Path, 'plan', self.on_plan, latched_qos(1))
         self.create_subscription(String, 'skill/request', self.on_skill_request, reliable_qos())
         self.publish_map()
@@ -85,8 +92,8 @@ class SimWorldNode(Node):
             return None
         try:
             return SyntheticCamera(self.scene, width=self.params['camera_width'],
-                                   height=self.params['camera_height'])
-        except (TypeError, LtlInstructError) as e:
+                                   height=self.params['camera_height'], max_range=self.params['camera_range'])
+        except LtlInstructError as e:
             self.get_logger().warning(f'synthetic camera could not start: {e}; camera topics are off')
             return None
 
@@ -175,20 +182,25 @@ class SimWorldNode(Node):
 
     def on_camera(self) -> None:
         """Render and publish one RGB-D + labels frame from the robot's pose."""
+        pose = self.world.robot.pose
         try:
-            frame = self._camera.render(self.world.robot.pose, scene=self.world.current_scene())
-        except TypeError:
-            frame = self._camera.render(self.world.robot.pose)
+            frame = self._camera.render(pose, scene=self.world.current_scene())
         except LtlInstructError as e:
             self.get_logger().warning(f'camera: {e.message}')
             return
         stamp = self.get_clock().now().to_msg()
-        self.rgb_pub.publish(conv.image_msg(frame.rgb, 'rgb8', stamp))
-        self.depth_pub.publish(conv.image_msg(frame.depth, '32FC1', stamp))
-        if getattr(frame, 'labels', None) is not None:
-            self.labels_pub.publish(conv.image_msg(frame.labels, '32SC1', stamp))
+        classes = {str(k): v for k, v in sorted(frame.classes.items())}
+        if classes != self._classes_sent:
+            self.classes_pub.publish(conv.json_msg(conv.payload(conv.LABEL_CLASSES, 'camera',
+                                                                classes=classes)))
+            self._classes_sent = classes
+        # the pose first: the grounder pairs a depth image with the pose of the same stamp
+        self.camera_pose_pub.publish(conv.pose_stamped_msg(pose, stamp))
         k = frame.intrinsics
         self.info_pub.publish(conv.camera_info_msg(k.width, k.height, k.fx, k.fy, k.cx, k.cy, stamp))
+        self.rgb_pub.publish(conv.image_msg(frame.rgb, 'rgb8', stamp))
+        self.labels_pub.publish(conv.image_msg(frame.labels, '32SC1', stamp))
+        self.depth_pub.publish(conv.image_msg(frame.depth, '32FC1', stamp))
 
 
 def main(args: Optional[list[str]] = None) -> int:

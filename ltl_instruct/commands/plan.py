@@ -71,15 +71,24 @@ def label_referent_map(formula: Formula, scene: Scene) -> ReferentMap:
 
 
 def scene_referent_map(formula: Formula, scene: Scene) -> ReferentMap:
-    """Return the grounding module's referent map when available, else :func:`label_referent_map`."""
+    """Resolve the formula's descriptors against the scene's objects with the grounding module.
+
+    Falls back to :func:`label_referent_map` where the grounding module is not installed.
+
+    Raises
+    ------
+    GroundingError
+        When a referent the task must reach resolves to nothing.
+    """
     try:
-        from ltl_instruct.core.grounding import ground_formula  # type: ignore[attr-defined]
+        from ltl_instruct.core.grounding import ground_formula, grounding_error, instances_from_scene
     except ImportError:
         return label_referent_map(formula, scene)
-    instances = [Instance(o.id, o.label, o.center, o.size or (0.0, 0.0, 0.0)) for o in scene.objects]
-    result: Any = ground_formula(formula, instances)
-    rmap = result if isinstance(result, ReferentMap) else getattr(result, 'referent_map', None)
-    return rmap if isinstance(rmap, ReferentMap) else label_referent_map(formula, scene)
+    rmap = ground_formula(formula, instances_from_scene(scene))
+    error = grounding_error(rmap)
+    if error is not None:
+        raise error
+    return rmap
 
 
 def parse_start(text: Optional[str], scene: Scene) -> tuple[float, ...]:

@@ -187,7 +187,8 @@ class SegmentResult:
     ----------
     request_id: the request's id.
     waypoints: the simplified path [m], shape (N, dims), N >= 2; None on failure.
-    points: the same path resampled at ``path_spacing`` [m], shape (M, dims); None on failure.
+    points: the same path resampled at ``path_spacing`` [m], always shape (M, 3) (a ground
+        path at z = 0), ready for a ``nav_msgs/Path``; None on failure.
     length: path length [m] (0 on failure).
     error: the typed failure, or None.
     seconds: wall-clock time of the whole solve [s].
@@ -230,10 +231,17 @@ class SegmentResult:
             raise InvalidInputError('a segment path must be a non-empty (N, dims) array of finite numbers')
         if len(w) == 1:
             w = np.vstack([w, w])
-        return SegmentResult(request_id, w, resample(w, spacing) if spacing > 0 else w, path_length(w))
+        dense = resample(w, spacing) if spacing > 0 else w
+        return SegmentResult(request_id, w, as_xyz(dense), path_length(w))
 
 
 # --------------------------------------------------------------------------- path helpers
+
+def as_xyz(points: np.ndarray) -> np.ndarray:
+    """Pad 2D points (N, 2) with z = 0 to (N, 3); 3D points are returned as they are."""
+    p = np.asarray(points, dtype=float)
+    return np.column_stack([p, np.zeros(len(p))]) if p.ndim == 2 and p.shape[1] == 2 else p
+
 
 def path_length(points: np.ndarray) -> float:
     """Length [m] of a polyline (N, dims)."""
@@ -532,7 +540,7 @@ def solve_segment(request: SegmentRequest, world: PlanningWorld,
                     f'(obstacles grown by the robot radius {world.robot_radius} m)')
     if problem.in_goal(start):
         w = np.array([start, start])
-        return SegmentResult(request.id, w, w.copy(), 0.0, None, time.monotonic() - t0)
+        return SegmentResult(request.id, w, as_xyz(w), 0.0, None, time.monotonic() - t0)
     if not eval_key_cubes(problem.allowed_cubes, problem.letter(start)):
         return fail(ErrorCode.START_OCCUPIED,
                     f'the start ({fmt_start}) lies in a region to avoid (atoms true there: '
@@ -558,5 +566,5 @@ def solve_segment(request: SegmentRequest, world: PlanningWorld,
     if s.simplify:
         path = problem.shortcut(path, pool=samples)
     dense = resample(path, s.path_spacing) if s.path_spacing > 0 else path
-    return SegmentResult(request.id, path, dense, path_length(path), None, time.monotonic() - t0,
+    return SegmentResult(request.id, path, as_xyz(dense), path_length(path), None, time.monotonic() - t0,
                          outcome.seconds)

@@ -199,7 +199,7 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
-    from matplotlib.patches import Circle, Rectangle
+    from matplotlib.patches import FancyBboxPatch, Rectangle
 
     out.parent.mkdir(parents=True, exist_ok=True)
     lo, hi = np.asarray(scene.bounds_min), np.asarray(scene.bounds_max)
@@ -227,20 +227,32 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     for descriptor, g in groundings.items():
         colour = '#d62728' if descriptor in avoid else '#2ca02c'
         for inst in g.get('instances', []):
-            c = np.asarray(inst['center'][:2])
-            half = np.asarray(inst.get('size', [0, 0, 0])[:2]) / 2.0
-            r = threshold + float(np.linalg.norm(half)) * 0.5
-            ax.add_patch(Circle(c, r, facecolor=colour, alpha=0.18, edgecolor=colour, lw=1.2, zorder=4))
-            ax.annotate(descriptor, c + np.array([0, r + 0.15]), fontsize=7.5, ha='center', color=colour,
+            # where near[x] holds: the instance's box grown by the nearness threshold
+            c = np.asarray(inst['center'][:2], dtype=float)
+            size = np.asarray(inst.get('size', [0, 0, 0])[:2], dtype=float)
+            ax.add_patch(FancyBboxPatch(tuple(c - size / 2), size[0], size[1],
+                                        boxstyle=f'round,pad={threshold},rounding_size={threshold}',
+                                        facecolor=colour, alpha=0.16, edgecolor=colour, lw=1.2, zorder=4))
+            label_y = c[1] + size[1] / 2 + threshold + 0.15
+            if label_y > hi[1] - 0.3:
+                label_y = c[1] - size[1] / 2 - threshold - 0.4
+            ax.annotate(descriptor, (c[0], label_y), fontsize=7.5, ha='center', color=colour,
                         weight='bold', zorder=7)
-    plan = report.get('plan')
-    if plan is not None and len(plan):
-        ax.plot(plan[:, 0], plan[:, 1], '--', color='#1f77b4', lw=1.5, label='planned path', zorder=8)
     driven = report.get('driven')
     if driven is not None and len(driven):
-        ax.plot(driven[:, 0], driven[:, 1], '-', color='#ff7f0e', lw=2.2, alpha=0.85,
-                label='driven path (odometry)', zorder=9)
-        ax.plot(*driven[-1, :2], 'o', color='#ff7f0e', ms=7, zorder=10)
+        ax.plot(driven[:, 0], driven[:, 1], '-', color='#ff7f0e', lw=4.0, alpha=0.7,
+                label='driven path (odometry)', zorder=8)
+        ax.plot(*driven[-1, :2], 'o', color='#ff7f0e', ms=8, zorder=10, label='robot at the end')
+    plan = report.get('plan')
+    if plan is not None and len(plan):
+        ax.plot(plan[:, 0], plan[:, 1], '--', color='#1f4e9c', lw=1.3, label='planned path', zorder=9)
+    for k, skill in enumerate((report.get('task_plan') or {}).get('skills', [])):
+        pos = skill.get('position') or []
+        if len(pos) >= 2:
+            ax.plot(pos[0], pos[1], '*', color='#9467bd', ms=14, zorder=11,
+                    label='pick / release' if k == 0 else None)
+            ax.annotate(f'{skill["skill"]}', (pos[0] + 0.25, pos[1] + 0.25), fontsize=8, color='#9467bd',
+                        weight='bold', zorder=11)
     start = scene.robot.start
     ax.plot(start[0], start[1], 's', color='k', ms=8, label='start', zorder=10)
     ax.plot([], [], 's', color='#2ca02c', alpha=0.4, label='goal referents (within reach)')
@@ -251,13 +263,15 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     ax.set_xlabel('x [m]')
     ax.set_ylabel('y [m]')
     term = report.get('terminal') or {}
-    title = f'{report.get("instruction") or ""}\n{report.get("formula") or ""}'
+    title = f'"{report["instruction"]}"\n' if report.get('instruction') else ''
+    title += str(report.get('formula') or '')
     if term.get('status') == 'failed':
         title += f'\nFAILED: {(term.get("error") or {}).get("code")}'
     else:
         title += f'\nexecution: {report.get("execution", "-")}'
     ax.set_title(title, fontsize=9)
-    ax.legend(loc='upper center', bbox_to_anchor=(0.5, -0.08), ncol=5, fontsize=8, frameon=False)
+    ax.plot([], [], color='0.25', lw=6, label='walls / obstacles')
+    ax.legend(loc='upper center', bbox_to_anchor=(0.5, -0.08), ncol=4, fontsize=8, frameon=False)
     fig.tight_layout()
     fig.savefig(out, dpi=130)
     plt.close(fig)

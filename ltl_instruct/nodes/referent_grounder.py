@@ -61,6 +61,7 @@ class ReferentGrounderNode(Node):
         self._known = grounding.instances_from_scene(resolve_scene(self.params['scene'])) \
             if self.params['scene'] else ()
         self._semantic_map: Any = self._make_semantic_map() if self.params['use_camera'] else None
+        self._detected: tuple = ()   # new detections, extracted after each integrated frame
         self._pose: Any = None
         self._info: Optional[CameraInfo] = None
         self._labels: Optional[Image] = None
@@ -89,8 +90,7 @@ class ReferentGrounderNode(Node):
 
     # ------------------------------------------------------------------ grounding
     def _instances(self) -> tuple:
-        detected = tuple(self._semantic_map.instances()) if self._semantic_map is not None else ()
-        return tuple(self._known) + self._new_detections(detected)
+        return tuple(self._known) + self._detected
 
     def _new_detections(self, detected: tuple) -> tuple:
         """Detections that are not a known object seen again (same label, centres close)."""
@@ -208,6 +208,8 @@ class ReferentGrounderNode(Node):
             intrinsics = conv.camera_intrinsics(info)
             with self._lock:
                 self._semantic_map.integrate(depth, label_img, intrinsics, pose)
+                # clustering is the slow part: done here, per frame, not per instruction
+                self._detected = self._new_detections(tuple(self._semantic_map.instances()))
                 task = self._task
                 if task is None:
                     return

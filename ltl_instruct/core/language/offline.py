@@ -21,7 +21,7 @@ from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, TranslationError
 from ltl_instruct.core.language.base import Translation
-from ltl_instruct.core.language.phrases import NAME_VERBS, NounPhrase, PhraseParser
+from ltl_instruct.core.language.phrases import DETERMINERS as DETS, NAME_VERBS, NounPhrase, PhraseParser
 from ltl_instruct.core.language.rewrite import apply_corrections, resolve_list_references
 from ltl_instruct.core.language.text import NUMBER_WORDS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
@@ -48,7 +48,7 @@ going passing touching knock hit disturb wake anywhere let yourself be into ente
 
 GOAL_VERBS = frozenset('''
 go goes head visit navigate move drive fly walk run come return check find locate reach get stop swing make
-proceed travel survey inspect land charge stand hover approach enter circle pass explore search look patrol
+proceed travel survey inspect do land charge stand hover approach enter circle pass explore search look patrol
 wander roll arrive be need want please robot drone hey can could would you i will just also then now first
 next lastly finally and so okay kindly go ahead end up
 '''.split())
@@ -67,6 +67,12 @@ PUT_VERBS = frozenset({'put', 'place', 'leave', 'drop', 'set', 'toss', 'throw', 
                        'dump', 'chuck'})
 PICK_VERBS = frozenset({'pick', 'grab', 'fetch', 'collect', 'get', 'retrieve', 'lift'})
 TRASH = Descriptor('trash_can')
+
+IGNORED_CLAUSES = frozenset({
+    'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
+    'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',
+    'thank you', 'okay', 'in that order', 'in order', 'whichever is closer', 'it does not matter which',
+    'your choice', 'up to you', 'i do not mind which', 'start', 'start up', 'go ahead'})
 
 CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
     'only', 'not', 'never', 'do', 'stay', 'keep', 'avoid', 'on', 'once', 'after', 'before', 'while',
@@ -191,6 +197,9 @@ def render(steps: Sequence[Step]) -> Optional[Formula]:
                                                  _or(arrivals))))
     assert body is not None
     if s.avoid_until:
+        if s.kind == 'visit':
+            reach = _until_avoid(s.avoid_until, core)
+            return reach if body == core else And((reach, Eventually(body)))
         return _until_avoid(s.avoid_until, body)
     return Eventually(body)
 
@@ -320,6 +329,8 @@ class _Reader:
         self.last_object: Optional[NounPhrase] = None
         self.conditional: Optional[NounPhrase] = None
         self.pending_avoid_at: list[Descriptor] = []
+        self.choice: Optional[Descriptor] = None
+        self.only = False
 
     # ----------------------------------------------------------------- structure
     def read(self, tokens: list[str]) -> Formula:
@@ -396,7 +407,7 @@ class _Reader:
                 boundary = 'seq'
                 skip = 2 if tokens[i + 1] == 'there' else 4
             elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
-                  ) and clauses[-1].tokens and 'make' not in clauses[-1].tokens and \
+                  ) and any(c.tokens for c in clauses) and 'make' not in clauses[-1].tokens and \
                     'visited' not in tokens[i:]:
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
             elif t in (',', 'and', 'but', 'so', 'while', 'or') and i > 0:
@@ -410,7 +421,7 @@ class _Reader:
                 elif j < n and tokens[j] in CLAUSE_STARTERS and t != 'while' and not (
                         tokens[j] in ('at', 'in', 'on', 'twice', 'three', 'exactly', 'order', 'and')
                         and not _starts(tokens, j, ['on', 'the', 'way']) and not _starts(
-                            tokens, j, ['on', 'your', 'way']) and not _starts(tokens, j, ['in', 'that', 'order'])):
+                            tokens, j, ['on', 'your', 'way'])):
                     boundary, skip = 'and', j - i
             if boundary:
                 if clauses[-1].tokens:
@@ -430,9 +441,6 @@ class _Reader:
         if not tokens:
             return scope
         s = ' '.join(tokens)
-        if s.endswith(' is fine') or s.endswith(' is okay') or s in ('whichever', 'i do not care which',
-                                                                     'order does not matter'):
-            return scope
         if s.startswith('either way'):
             tokens = tokens[2:]
         new_scope, tokens = self._leading_scope(tokens)
@@ -441,9 +449,32 @@ class _Reader:
             tokens = self._strip_fillers(tokens)
             if not tokens:
                 return scope
+        s = ' '.join(tokens)
+        if s.endswith((' is fine', ' is okay', ' are fine', ' is ok')) or s in IGNORED_CLAUSES or \
+                s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
+                              'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
+            return scope
+        if s in ('not both', 'but not both', 'not both of them'):
+            self._exclusive_or()
+            return scope
+        if tokens[0] in ('twice', 'thrice', 'once') or (len(tokens) > 1 and tokens[1] == 'times') or \
+                tokens[0] in ('exactly', 'at') and len(tokens) < 5:
+            step = self.task.last_step(('visit',))
+            if step is not None:
+                self.task.chain.remove(step)
+                ok, rest = self._read_count(tokens, step.targets[:1])
+                if ok and not rest:
+                    return scope
+                self.task.chain.append(step)
+        if _starts(tokens, 0, ['where', 'is']) or _starts(tokens, 0, ['there', 'is']) or _starts(
+                tokens, 0, ['there', 'are']):
+            tokens = tokens[2:]
         if tokens[0] == 'if':
             self._read_conditional(tokens)
             return scope
+        if tokens[0] == 'only' and len(tokens) > 1 and tokens[1] in GOAL_VERBS | DELIVER_VERBS:
+            tokens = tokens[1:]
+            self.only = True
         if self._read_ordering(tokens, clause):
             return scope
         if self._avoid_start(tokens) is not None:
@@ -618,7 +649,7 @@ class _Reader:
                         'it', 'them', 'up')):
                     return _Scope('until', self.last_object, 'pick'), []
                 event = 'pick' if rest[j] not in ('got', 'gotten', 'get') else 'near'
-            while j < len(rest) and rest[j] in NAME_VERBS | GOAL_PARTICLES | {
+            while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in NAME_VERBS | GOAL_PARTICLES | {
                     'reached', 'visited', 'arrived', 'checked', 'been', 'got', 'gotten', 'seen', 'see',
                     'picked', 'grabbed', 'passed', 'gone', 'made', 'up', 'at', 'visiting', 'reaching'}:
                 j += 1
@@ -638,6 +669,16 @@ class _Reader:
         return None, rest
 
     def _apply_avoid(self, targets: list[Descriptor], scope: Optional[_Scope]) -> None:
+        if self.choice is not None:
+            step = self.task.last_step(('visit',))
+            if step is not None and self.choice in step.targets:
+                chains = []
+                for d in step.targets:
+                    extra = [Step('formula', formula=f) for f in _never(targets)] if d == self.choice else []
+                    chains.append(extra + [Step('visit', [d])])
+                step.kind, step.targets, step.chains = 'any', [], chains
+            self.choice = None
+            return
         kind = scope.kind if scope is not None else 'global'
         if kind == 'until' and scope is not None and scope.target is not None:
             d = scope.target.descriptor
@@ -698,6 +739,17 @@ class _Reader:
             return
         self.task.constraints.extend(_never(targets))
 
+    def _exclusive_or(self) -> None:
+        """'X or Y but not both': one of them, and never the other."""
+        step = self.task.last_step(('visit',))
+        if step is None or len(step.targets) < 2:
+            raise TranslationError('"not both" needs two alternatives before it', details={'part': 'not both'})
+        chains = []
+        for d in step.targets:
+            others = [o for o in step.targets if o != d]
+            chains.append([Step('formula', formula=f) for f in _never(others)] + [Step('visit', [d])])
+        step.kind, step.targets, step.chains = 'any', [], chains
+
     def _read_conditional(self, tokens: list[str]) -> None:
         """ "if you go into X at all, check Y first" -> ``!near[x] W near[y]``."""
         j = 1
@@ -713,6 +765,9 @@ class _Reader:
             # "if you choose X, avoid Y": the avoidance binds only that alternative.
             rest = self._strip_fillers(rest)
             step = self.task.last_step(('visit',))
+            if not rest and step is not None and np.descriptor in step.targets:
+                self.choice = np.descriptor
+                return
             if step is None or np.descriptor not in step.targets or self._avoid_start(rest) is None:
                 raise TranslationError(f'could not place the condition "{" ".join(tokens)}"',
                                        details={'part': ' '.join(tokens)})
@@ -758,7 +813,7 @@ class _Reader:
                     self.task.constraints.append(Until(Not(_near(x)), _near(np.descriptor)))
             self._check_leftover(s[end:], s)
             return True
-        if _starts(s, 0, ['make', 'sure']) and s[-2:] == ['before', 'that']:
+        if s[-2:] == ['before', 'that'] or s[-3:] == ['before', 'doing', 'that']:
             prev = self.task.last_step(('visit', 'deliver'))
             k = self._skip_event_verbs(s, 2)
             nps, _, end = self._np_list(s, k)
@@ -872,7 +927,9 @@ class _Reader:
             self._check_leftover(rest, tokens)
             return True
         dests: list[NounPhrase] = []
-        if rest and rest[0] in ('to', 'into', 'in', 'on', 'onto', 'at', 'inside', 'by', 'next', 'under',
+        if rest and rest[0] in ('there', 'here') and self.last_place is not None:
+            dests, rest = [self.last_place], rest[1:]
+        elif rest and rest[0] in ('to', 'into', 'in', 'on', 'onto', 'at', 'inside', 'by', 'next', 'under',
                                 'near', 'beside', 'over', 'with'):
             j = 1
             if _starts(rest, 0, ['next', 'to']):
@@ -922,6 +979,7 @@ class _Reader:
                 k += 1
         patrol_from = False
         while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES) and not (
+                tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)) and not (
                 tokens[k] in ('back',) and k + 1 < len(tokens) and tokens[k + 1] in ('door', 'gate', 'yard',
                                                                                       'room', 'porch')):
             if tokens[k] == 'from' and k > 0 and tokens[k - 1] in ('patrol', 'go', 'fly', 'drive'):
@@ -930,7 +988,7 @@ class _Reader:
         nps, joiner, end = self._np_list(tokens, k)
         if not nps:
             raise TranslationError(f'could not place "{" ".join(tokens)}"', details={'part': ' '.join(tokens)})
-        rest = tokens[end:]
+        rest = [t for t in tokens[end:] if t != ',']
         targets = [np.descriptor for np in nps]
         if patrol_from and rest and rest[0] == 'to':
             more, _, e2 = self._np_list(rest, 1)
@@ -949,6 +1007,10 @@ class _Reader:
             if _starts(rest, 0, phrase):
                 rest = rest[len(phrase):]
         rest = [t for t in rest if t != ',']
+        c = self._count_word(rest, 0)
+        if c is not None and _starts(rest, c[1], ['in', 'a', 'row']):
+            self.task.repeat = c[0]
+            rest = rest[c[1] + 3:]
         counted, rest = self._read_count(rest, targets)
         if counted:
             self._goal_trailer(rest, tokens, targets)
@@ -979,7 +1041,7 @@ class _Reader:
         rest = [t for t in rest if t not in (',', 'please', 'first', 'too', 'again', 'then', 'instead')]
         if not rest:
             return
-        only = False
+        only, self.only = self.only, False
         if rest[0] == 'only':
             only, rest = True, rest[1:]
         if rest and rest[0] in ('before', 'after', 'through', 'via', 'by', 'past') and len(rest) > 1:

@@ -40,6 +40,10 @@ RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
 # Destination prepositions: in "put X on Y" they end the object, they are not relations.
 DESTINATION_PREPS = frozenset({'on', 'onto', 'in', 'into', 'at', 'to', 'over', 'inside', 'by'})
 
+# "a pair of boots", "a bag of chips": 'of' stays inside the name after these.
+CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piece', 'set', 'bunch', 'stack',
+                             'glass', 'jar', 'pile', 'bowl', 'plate', 'pack', 'packet', 'roll', 'sheet', 'slice'})
+
 # Words that introduce a relative clause before a relation ("that's on", "which is behind").
 RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
     ('that', 'is', 'right'), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
@@ -115,6 +119,12 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ''
     if w in ORDINALS:
         return nxt not in PUNCT and nxt not in STOPWORDS and nxt != '' and nxt not in ('one',)
+    if w == 'one':
+        return nxt not in ('times', 'time', 'more')
+    if w == 'can':
+        return have_name and nxt not in ('you', 'i', 'we', 'go', 'be', 'not')
+    if w in ('once', 'twice', 'thrice'):
+        return False
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')
     if w in STOPWORDS:
@@ -181,9 +191,14 @@ class PhraseParser:
             i += 1
         else:
             while is_name_word(tokens, i, bool(words)) and not (
-                    words and (match_relation(tokens, i) or _relative_lead(tokens, i))):
+                    words and (match_relation(tokens, i) or _relative_lead(tokens, i))) and not (
+                    destination_stops and words and tokens[i] in ('back', 'away', 'down')
+                    and i + 1 < len(tokens) and tokens[i + 1] in DESTINATION_PREPS):
                 words.append(tokens[i])
                 i += 1
+                if i + 1 < len(tokens) and tokens[i] == 'of' and words[-1] in CONTAINER_WORDS:
+                    words.append('of')
+                    i += 1
         if not words and not pronoun:
             return None
         if pronoun:

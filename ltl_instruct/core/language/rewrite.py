@@ -66,6 +66,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
         return tokens
     s, end, nps, category = found
     tail = tokens[end:]
+    if tail and tail[0] not in PUNCT and any(t in PUNCT for t in tail):
+        tail = tail[next(k for k, t in enumerate(tail) if t in PUNCT):]
     if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail):
         return tokens
     items = []
@@ -118,6 +120,10 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             if nxt == 'former':
                 out += joined([0])
                 i += 2
+                continue
+            if nxt == 'one' and tail[i + 2:i + 5] == ['in', 'the', 'middle'] and n % 2 == 1:
+                out += joined([n // 2])
+                i += 5
                 continue
             if nxt == 'middle' and n % 2 == 1:
                 out += joined([n // 2])
@@ -313,6 +319,8 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
 
 
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    while seg and seg[0] in (',', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh'):
+        seg = seg[1:]
     s = ' '.join(seg)
     if marker in _CANCEL or marker == 'never':
         # "forget the garage, do the laundry room instead" / "ignore the last thing, go to X instead"

@@ -31,7 +31,7 @@ from visualization_msgs.msg import Marker, MarkerArray
 
 from ltl_instruct.core.errors import InvalidInputError, LimitExceededError
 from ltl_instruct.core.grounding.rsm import ReferentMap
-from ltl_instruct.core.planning import PlanningWorld, world_from_points
+from ltl_instruct.core.planning import PlanningWorld
 from ltl_instruct.core.world.robot import OccupancyRaster, Pose
 from ltl_instruct.core.world.scene import Box
 
@@ -369,18 +369,60 @@ def parse_bounds(text: str) -> Optional[tuple[tuple[float, float, float], tuple[
 def planning_world_from_cloud(msg: PointCloud2, voxel: float, robot_radius: float,
                               bounds: Optional[tuple[Sequence[float], Sequence[float]]] = None,
                               ) -> PlanningWorld:
-    """Return the 3D planning world of an obstacle cloud, voxelised and inflated, inside ``bounds`` [m].
+    """Return the 3D planning world of an obstacle cloud inside ``bounds`` [m].
+
+    The points are voxelised (cells of ``voxel`` [m]); the occupied voxels are merged into
+    boxes (rectangles per layer, stacked where they repeat), which the planner checks
+    exactly and fast; boxes are inflated by ``robot_radius``. Default bounds: the points'
+    extent grown by one voxel.
 
     Raises
     ------
     InvalidInputError
-        On an empty or malformed cloud.
+        On an empty or malformed cloud, a bad voxel size, or too many voxels.
     """
-    points = point_cloud_xyz(msg)
+    points = point_cloud_xyz(msg).astype(float)
     if len(points) == 0:
         raise InvalidInputError('the 3D map is empty (0 points)')
-    lo, hi = bounds if bounds is not None else (None, None)
-    return world_from_points(points, voxel=voxel, robot_radius=robot_radius, bounds_min=lo, bounds_max=hi)
+    if not (voxel > 0 and math.isfinite(voxel)):
+        raise InvalidInputError(f'voxel size must be positive, got {voxel}')
+    lo = points.min(axis=0)
+    shape = np.floor((points.max(axis=0) - lo) / voxel).astype(int) + 1
+    if float(np.prod(shape.astype(float))) > 50_000_000:
+        raise InvalidInputError(f'the 3D map would need {int(np.prod(shape))} voxels; use a larger voxel')
+    idx = np.minimum(np.floor((points - lo) / voxel).astype(int), shape - 1)
+    blocked = np.zeros(tuple(shape), dtype=bool)
+    blocked[idx[:, 0], idx[:, 1], idx[:, 2]] = True
+    boxes: list[Box] = []
+    stacks: dict[tuple[int, int, int, int], list[int]] = {}
+    for z in range(shape[2]):
+        layer = np.where(blocked[:, :, z].T, 100, 0).astype(np.int8)   # rows y, columns x
+        still: dict[tuple[int, int, int, int], list[int]] = {}
+        for rect in occupied_rectangles(layer):
+            stack = stacks.get(rect)
+            if stack is not None and stack[1] == z:
+                stack[1] = z + 1
+            else:
+                stack = [z, z + 1]
+            still[rect] = stack
+        for rect, stack in stacks.items():   # stacks that did not go on are finished
+            if still.get(rect) is not stack:
+                boxes.append(_voxel_box(lo, voxel, rect, stack))
+        stacks = still
+    boxes.extend(_voxel_box(lo, voxel, rect, stack) for rect, stack in stacks.items())
+    if bounds is None:
+        bmin, bmax = tuple(lo - voxel), tuple(lo + (shape + 1) * voxel)
+    else:
+        bmin, bmax = tuple(bounds[0]), tuple(bounds[1])
+    return PlanningWorld(3, tuple(float(v) for v in bmin), tuple(float(v) for v in bmax),
+                         float(robot_radius), tuple(boxes))
+
+
+def _voxel_box(lo: np.ndarray, voxel: float, rect: tuple[int, int, int, int], stack: list[int]) -> Box:
+    r0, r1, c0, c1 = rect   # rows are y, columns are x
+    a = lo + voxel * np.array([c0, r0, stack[0]], dtype=float)
+    b = lo + voxel * np.array([c1, r1, stack[1]], dtype=float)
+    return Box(tuple(float(v) for v in (a + b) / 2), tuple(float(v) for v in b - a))
 
 
 # ---------------------------------------------------------------------------- point clouds

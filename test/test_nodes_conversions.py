@@ -165,3 +165,20 @@ def test_bounds_text():
     for bad in ('1,2,3', '0,0,0,0,1,1', 'a,b,c,d,e,f', '0,0,0,nan,1,1'):
         with pytest.raises(InvalidInputError):
             conv.parse_bounds(bad)
+
+
+def test_planning_world_from_cloud_is_boxes_never_freer_than_the_scene():
+    from ltl_instruct.core.planning import world_from_scene
+    from ltl_instruct.core.world.robot import obstacle_points
+    scene = resolve_scene('city_block')
+    msg = conv.point_cloud_msg(obstacle_points(scene, 1.0))
+    bounds = ((0.5, 0.5, 2.0), (119.5, 99.5, 30.0))
+    world = conv.planning_world_from_cloud(msg, 1.0, 0.0, bounds)
+    assert world.dims == 3 and len(world.obstacles) <= 2 * len(scene.blocking_boxes())
+    truth = world_from_scene(scene, 0.0)
+    pts = np.random.default_rng(2).uniform(bounds[0], bounds[1], size=(20000, 3))
+    free, true_free = world.is_free(pts), truth.is_free(pts)
+    assert not np.any(free & ~true_free)          # conservative: never free inside a building
+    assert (free == true_free).mean() > 0.95       # and at most a voxel too cautious
+    with pytest.raises(InvalidInputError):
+        conv.planning_world_from_cloud(conv.point_cloud_msg(np.zeros((0, 3))), 1.0, 0.5)

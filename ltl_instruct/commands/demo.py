@@ -69,13 +69,19 @@ def run(args: argparse.Namespace) -> int:
     os.environ.pop('ROS_LOCALHOST_ONLY', None)
     scene_arg = str(Path(args.scene).resolve()) if Path(args.scene).is_file() else args.scene
     kind = scene.robot.kind
+    radius = float(scene.robot.radius)
     overrides: dict[str, dict[str, object]] = {
         'sim_world': {'scene': scene_arg, 'time_scale': float(args.speed)},
         'referent_grounder': {'scene': scene_arg},
-        'task_progression': {'robot_kind': kind},
-        'fmt_planner': {'robot_radius': float(scene.robot.radius)},
+        'task_progression': {'robot_kind': kind, 'robot_radius': radius},
+        'fmt_planner': {'robot_radius': radius},
         'ltl_translator': {'require_confirmation': bool(args.interactive)},
     }
+    if kind == 'drone':   # the 3D map (a point cloud) does not carry the flight volume: pass it
+        bounds = _flight_bounds(scene)
+        overrides['task_progression']['bounds'] = bounds
+        overrides['fmt_planner']['bounds'] = bounds
+        overrides['sim_world']['max_speed'] = 4.0
     from ltl_instruct.nodes.client import GraphClient   # rclpy only when the demo runs
 
     say = (lambda *a: None) if args.json else (lambda *a: print(*a, flush=True))
@@ -158,6 +164,16 @@ def _run_instruction(client: Any, args: argparse.Namespace, instruction: Optiona
     return 0 if done['status'] == 'satisfied' else 1
 
 
+def _flight_bounds(scene: Scene) -> str:
+    """``'xmin,ymin,zmin,xmax,ymax,zmax'`` [m] a drone's centre may use: the bounds and altitude band."""
+    r = scene.robot.radius
+    lo = [scene.bounds_min[0] + r, scene.bounds_min[1] + r, scene.bounds_min[2] + r]
+    hi = [scene.bounds_max[0] - r, scene.bounds_max[1] - r, scene.bounds_max[2] - r]
+    if scene.altitude is not None:
+        lo[2], hi[2] = max(lo[2], scene.altitude[0]), min(hi[2], scene.altitude[1])
+    return ','.join(f'{v:g}' for v in lo + hi)
+
+
 def _failed(client: Any, iid: str) -> Optional[dict[str, Any]]:
     t = client.terminal(iid)
     return t if t is not None and t.get('status') == 'failed' else None
@@ -215,7 +231,7 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
             ax.add_patch(Rectangle(o.box.lo[:2], *o.size[:2], facecolor=face, edgecolor='0.4', lw=0.6,
                                    zorder=3))
         ax.annotate(o.id, o.center[:2], fontsize=6.5, ha='center', va='center', color='0.15', zorder=6)
-    threshold = 1.0 if scene.robot.kind == 'ground' else 3.0
+    threshold = float(report.get('near_threshold', 1.0))
     avoid = set()
     spec_formula = report.get('formula') or ''
     from ltl_instruct.core.spec import avoided_referents_of, parse_formula

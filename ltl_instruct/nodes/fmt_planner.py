@@ -52,8 +52,10 @@ class FmtPlannerNode(Node):
         super().__init__('fmt_planner')
         self.params = declare_parameters(self, PARAMS)
         self._bounds = conv.parse_bounds(self.params['bounds'])
-        self._world: Any = None
-        self._world_error: Optional[LtlInstructError] = InvalidInputError('no map received yet')
+        # one world per planning dimension: 2 from map (ground), 3 from map_cloud (drone)
+        self._worlds: dict[int, tuple[Any, LtlInstructError]] = {
+            d: (None, InvalidInputError(f'no {"map" if d == 2 else "map_cloud"} received yet'))
+            for d in (2, 3)}
         self._lock = threading.Lock()
         self._jobs: queue.Queue = queue.Queue()
         self._closing = threading.Event()
@@ -71,9 +73,9 @@ class FmtPlannerNode(Node):
         try:
             world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
         except LtlInstructError as e:
-            self._set_world(None, e)
+            self._set_world(2, None, e)
             return
-        self._set_world(world, None)
+        self._set_world(2, world, None)
         info = msg.info
         self.get_logger().info(f'map: {info.width}x{info.height} cells of {info.resolution:.3f} m')
 
@@ -83,14 +85,14 @@ class FmtPlannerNode(Node):
             world = conv.planning_world_from_cloud(msg, self.params['cloud_voxel'],
                                                    self.params['robot_radius'], self._bounds)
         except LtlInstructError as e:
-            self._set_world(None, e)
+            self._set_world(3, None, e)
             return
-        self._set_world(world, None)
+        self._set_world(3, world, None)
         self.get_logger().info(f'map_cloud: {msg.width * msg.height} obstacle points')
 
-    def _set_world(self, world: Any, error: Optional[LtlInstructError]) -> None:
+    def _set_world(self, dims: int, world: Any, error: Optional[LtlInstructError]) -> None:
         with self._lock:
-            self._world, self._world_error = world, error
+            self._worlds[dims] = (world, error or InvalidInputError('no map'))
         if error is not None:
             self.get_logger().warning(f'map rejected: [{error.code.value}] {error.message}')
 
@@ -127,11 +129,9 @@ class FmtPlannerNode(Node):
             raise InvalidInputError('plan_request needs a non-negative integer "stamp"')
         request = planning.SegmentRequest.from_dict(data.get('request') or {})
         with self._lock:
-            world, world_error = self._world, self._world_error
+            world, world_error = self._worlds[request.dims]
         if world is None:
-            raise world_error or InvalidInputError('no map')
-        if request.dims != world.dims:
-            raise InvalidInputError(f'a {request.dims}D request for a {world.dims}D map')
+            raise world_error
         t0 = time.monotonic()
         p = self.params
         settings = replace(request.settings, num_samples=p['num_samples'],

@@ -79,7 +79,7 @@ def _connected(scene: Scene, world: PlanningWorld, cell: float = 0.1) -> np.ndar
 
 
 def ground_scene(rng: random.Random, index: int, vault: bool) -> Optional[dict]:
-    """A 16 m x 12 m room with walls (with gaps), objects and a start; None if it fails the checks."""
+    """Generate a 16 m x 12 m room with walls, objects and a start; None if it fails the checks."""
     w, h = 16.0, 12.0
     obstacles: list[dict] = []
     for _ in range(2):
@@ -127,7 +127,7 @@ def ground_scene(rng: random.Random, index: int, vault: bool) -> Optional[dict]:
 
 
 def drone_scene(rng: random.Random, index: int) -> Optional[dict]:
-    """A 14 m x 10 m x 5 m block with buildings, objects and a start inside the altitude band."""
+    """Generate a 14 m x 10 m x 5 m block with buildings, objects and a start in the altitude band."""
     w, h = 14.0, 10.0
     obstacles = []
     for _ in range(2):
@@ -207,7 +207,7 @@ def _once(x: str) -> str:
 
 
 def ground_tasks(scene: dict, rng: random.Random) -> list[Task]:
-    """The mission patterns over the scene's objects."""
+    """List the mission patterns over the scene's objects."""
     names = [slug(o['label']) for o in scene['objects'] if o['label'] not in ('cup', 'safe', 'chair')]
     a, b, c, d = rng.sample(names, 4)
     t = [
@@ -237,7 +237,7 @@ def ground_tasks(scene: dict, rng: random.Random) -> list[Task]:
 
 
 def drone_tasks(scene: dict, rng: random.Random) -> list[Task]:
-    """The patterns for a drone."""
+    """List the mission patterns for a drone."""
     names = [slug(o['label']) for o in scene['objects'] if o['label'] not in ('tree', 'antenna', 'parcel')]
     a, b, c = rng.sample(names, 3)
     t = [
@@ -295,13 +295,17 @@ def _pct(xs: list[float], q: float) -> float:
 
 
 def compare_rrtstar(req: SegmentRequest, world: PlanningWorld, settings: FmtSettings) -> dict[str, Any]:
-    """FMT* and RRT* on one segment, raw paths, RRT* given FMT*'s time."""
+    """Run FMT* and RRT* on one segment, RRT* given FMT*'s time: raw paths, then both shortcut."""
     raw = replace(settings, simplify=False)
     fmt = solve_segment(req, world, raw)
     budget = max(fmt.planner_seconds, 0.05)
     rrt = solve_segment(req, world, replace(raw, planner='rrtstar', time_limit=budget))
+    fmt_s = solve_segment(req, world, settings)
+    rrt_s = solve_segment(req, world, replace(settings, planner='rrtstar', time_limit=budget))
     return {'fmt_ok': fmt.ok, 'fmt_length': fmt.length, 'fmt_s': fmt.planner_seconds,
-            'rrt_ok': rrt.ok, 'rrt_length': rrt.length, 'rrt_s': rrt.planner_seconds}
+            'rrt_ok': rrt.ok, 'rrt_length': rrt.length, 'rrt_s': rrt.planner_seconds,
+            'fmt_short_ok': fmt_s.ok, 'fmt_short_length': fmt_s.length,
+            'rrt_short_ok': rrt_s.ok, 'rrt_short_length': rrt_s.length}
 
 
 def run(tasks: list[Task], samples: int, grid_limit: int, drone_grid_limit: int, rrt_limit: int,
@@ -354,7 +358,7 @@ def run(tasks: list[Task], samples: int, grid_limit: int, drone_grid_limit: int,
 
 
 def summarise(rows: list[dict[str, Any]], samples: int) -> dict[str, Any]:
-    """The figures of the issue's targets."""
+    """Compute the figures of the issue's targets."""
     sat = [r for r in rows if r['satisfiable']]
     unsat = [r for r in rows if not r['satisfiable']]
     solved = [r for r in sat if r['planned'] and r['verified']]
@@ -390,6 +394,10 @@ def summarise(rows: list[dict[str, Any]], samples: int) -> dict[str, Any]:
         'rrt_over_fmt_length_median': _median([c['rrt_length'] / c['fmt_length'] for c in both
                                                if c['fmt_length'] > 0]),
         'fmt_time_median_s': _median([c['fmt_s'] for c in rrt]),
+        'rrt_short_success_pct': 100.0 * sum(c['rrt_short_ok'] for c in rrt) / max(1, len(rrt)),
+        'rrt_over_fmt_shortcut_length_median': _median([
+            c['rrt_short_length'] / c['fmt_short_length'] for c in rrt
+            if c['fmt_short_ok'] and c['rrt_short_ok'] and c['fmt_short_length'] > 0]),
     }
 
 
@@ -412,6 +420,8 @@ def print_summary(s: dict[str, Any]) -> None:
     print(f"FMT* vs RRT* with FMT*'s time, {s['rrt_segments']} ground segments, raw paths: success "
           f"{s['fmt_success_pct']:.1f} % vs {s['rrt_success_pct']:.1f} %; RRT*/FMT* length median "
           f"{s['rrt_over_fmt_length_median']:.3f}; FMT* time median {s['fmt_time_median_s']:.3f} s")
+    print(f"  both shortcut as in plans: RRT* success {s['rrt_short_success_pct']:.1f} %, RRT*/FMT* length "
+          f"median {s['rrt_over_fmt_shortcut_length_median']:.3f}")
     for f in s['failed_sat']:
         print(f"  not solved: {f['scene']} {f['pattern']}: {f['formula']} "
               f"[{f.get('code')}] {f.get('message')}")

@@ -214,3 +214,11 @@ def test_drone_plans_in_3d_within_the_band():
     assert plan.dims == 3 and plan.verification.ok
     path = plan.path()
     assert path.shape[1] == 3 and path[:, 2].min() >= 1.0 - 1e-9 and path[:, 2].max() <= 3.0 + 1e-9
+
+
+def test_a_referent_with_no_instance_is_named_in_the_error():
+    scene = scene_from_dict(ROOM)
+    aut = compile_automaton('F near[unicorn]')
+    with pytest.raises(PlanningError) as e:
+        plan_task(aut, ReferentMap({}), world_from_scene(scene), scene.robot.start, FAST)
+    assert 'near[unicorn]' in e.value.message and e.value.details['empty_regions'] == ['near[unicorn]']

@@ -307,6 +307,10 @@ def _failure_error(search: _Search, formula: str) -> LtlInstructError:
                              'its object in hand, a pick needs a free hand)', ErrorCode.NO_VALID_PATH,
                              details)
     seen: list[str] = []
+    empty = sorted(r.key for r in search.all_regions if not r.centers)
+    if empty:
+        seen.append(f'nothing in the referent map for {", ".join(empty)} (false everywhere)')
+        details['empty_regions'] = empty
     for f in fails:
         if f.message not in seen:
             seen.append(f.message)

@@ -21,6 +21,7 @@ from ltl_instruct.core.planning.occupancy import PlanningWorld
 from ltl_instruct.core.planning.segment import resample
 from ltl_instruct.core.planning.taskplan import NAVIGATE, PlanStep, Verification
 from ltl_instruct.core.spec.ast import Atom
+from ltl_instruct.core.spec.parser import parse_formula
 
 
 def _atom_truth(atoms: Sequence[Atom], referent_map: ReferentMap, points: np.ndarray, dims: int,
@@ -160,7 +161,6 @@ def _event_of(key: str, atoms: Sequence[Atom]) -> Optional[Atom]:
     for a in atoms:
         if a.key == key and a.is_event:
             return a
-    from ltl_instruct.core.spec.parser import parse_formula
     try:
         f = parse_formula(key)
     except LtlInstructError:  # an unparsable skill is reported by the caller

@@ -106,3 +106,23 @@ def test_label_lookup_matches_every_instance_of_a_bare_name():
     assert rmap.instances('window') == ()          # only avoided: absence is fine
     with pytest.raises(GroundingError):
         label_referent_map(parse_formula('F near[window]'), scene)
+
+
+def test_drone_plan_picture_has_a_side_view(tmp_path, capsys):
+    drone = {'name': 'drone', 'bounds': {'min': [0, 0, 0], 'max': [10, 8, 4]},
+             'robot': {'kind': 'drone', 'start': [1, 1, 1.5], 'radius': 0.25},
+             'altitude': {'min': 1.0, 'max': 3.0},
+             'obstacles': [{'center': [5, 3, 2], 'size': [0.4, 6, 4]}],
+             'objects': [{'label': 'tower', 'center': [8, 2, 1.5], 'size': [1, 1, 3]},
+                         {'label': 'antenna', 'center': [7, 6, 2.0], 'size': [0.2, 0.2, 1],
+                          'passable': True}]}
+    p = tmp_path / 'drone.yaml'
+    p.write_text(yaml.safe_dump(drone))
+    png = tmp_path / 'drone.png'
+    rc = main(['plan', '--scene', str(p), '--formula', 'F near[tower] & G !near[antenna]', '--json',
+               '--png', str(png), '--samples', '1500', '--start', '1,1,1.5'])
+    out = json.loads(capsys.readouterr().out)
+    assert rc == 0 and out['dims'] == 3 and out['verification']['ok']
+    assert all(len(w) == 3 for s in out['steps'] if s['kind'] == 'navigate' for w in s['waypoints'])
+    assert png.exists() and png.stat().st_size > 10_000
+    assert main(['plan', '--scene', str(p), '--formula', 'F near[tower]', '--start', '1,1']) == 2

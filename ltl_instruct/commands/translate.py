@@ -1,0 +1,168 @@
+"""``ltl-instruct translate``: English instructions to task formulas.
+
+- ``ltl-instruct translate "<instruction>" [--backend B] [--json]``
+- ``ltl-instruct translate --input FILE.jsonl --output OUT.jsonl [--backend B]``: each input
+  line has an ``instruction``; each output line repeats it and adds ``formula``, ``referents``,
+  ``avoid`` and ``subgoals``, or ``error``.
+- ``ltl-instruct translate --interactive``: the verification dialog (answer yes, correct in
+  words, or type ``formula: ...``).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from typing import Any, Callable, Optional
+
+from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
+from ltl_instruct.core.language import BACKENDS, Translation, make_translator, verification_for
+from ltl_instruct.core.language.datasets import iter_instructions
+from ltl_instruct.core.language.verification import classify_reply
+
+HELP = 'translate English instructions into task formulas'
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare the command's arguments."""
+    parser.add_argument('instruction', nargs='?', help='the instruction (omit with --input or --interactive)')
+    parser.add_argument('--backend', default='offline', choices=BACKENDS, help='translator backend')
+    parser.add_argument('--json', action='store_true', help='print one JSON object')
+    parser.add_argument('--input', help='JSON lines file, one {"instruction": ...} per line')
+    parser.add_argument('--output', help='JSON lines file to write (default: standard output)')
+    parser.add_argument('--interactive', action='store_true', help='verification dialog on the terminal')
+    parser.add_argument('--model-path', help='learned backend: trained parser bundle')
+    parser.add_argument('--base-url', help='llm backend: OpenAI-compatible endpoint ending in /v1')
+    parser.add_argument('--model', help='llm backend: model name')
+    parser.add_argument('--examples', help='llm backend: example pool (JSON lines)')
+    parser.add_argument('--timeout', type=float, default=30.0, help='llm backend: per-request timeout [s]')
+    parser.add_argument('--avoid-scope', choices=('global', 'goal'), default='global',
+                        help='offline backend: "go to X and avoid Y" as G !Y (global) or at X only (goal)')
+
+
+def _options(args: argparse.Namespace) -> dict[str, Any]:
+    if args.backend == 'offline':
+        return {'avoid_scope': args.avoid_scope}
+    if args.backend == 'learned':
+        return {'model_path': args.model_path}
+    opts: dict[str, Any] = {'timeout_s': args.timeout}
+    for key, value in (('base_url', args.base_url), ('model', args.model), ('examples_path', args.examples)):
+        if value:
+            opts[key] = value
+    return opts
+
+
+def record(t: Translation) -> dict[str, Any]:
+    """The JSON record of a translation: formula, referents, avoid, subgoals."""
+    out: dict[str, Any] = {'instruction': t.instruction, 'formula': str(t.formula),
+                           'referents': list(t.referents), 'avoid': list(t.avoid), 'backend': t.backend}
+    try:
+        v = verification_for(t)
+        out['subgoals'] = list(v.subgoals)
+    except LtlInstructError as e:
+        out['subgoals'] = []
+        out['subgoals_error'] = e.to_dict()
+    if t.notes:
+        out['notes'] = list(t.notes)
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    """Translate one instruction, a file of them, or run the dialog."""
+    translator = make_translator(args.backend, **_options(args))
+    if args.interactive:
+        return interactive(translator, input, print)
+    if args.input:
+        return _batch(translator, args.input, args.output)
+    if not args.instruction:
+        raise InvalidInputError('give an instruction, --input FILE, or --interactive')
+    t = translator.translate(args.instruction)
+    r = record(t)
+    if args.json:
+        print(json.dumps(r, indent=2))
+        return 0
+    print(f"formula:   {r['formula']}")
+    print(f"referents: {', '.join(r['referents'])}")
+    if r['avoid']:
+        print(f"avoid:     {', '.join(r['avoid'])}")
+    for line in r['subgoals']:
+        print(f'  {line}')
+    for note in r.get('notes', []):
+        print(f'note: {note}')
+    return 0
+
+
+def _batch(translator: Any, path: str, out_path: Optional[str]) -> int:
+    try:
+        lines = list(iter_instructions(path))
+    except OSError as e:
+        raise InvalidInputError(f'cannot read {path}: {e}') from e
+    out = open(out_path, 'w', encoding='utf-8') if out_path else sys.stdout
+    failures = 0
+    try:
+        for _, obj in lines:
+            if 'error' in obj:
+                rec: dict[str, Any] = {'instruction': None, 'error': obj['error']}
+                failures += 1
+            else:
+                try:
+                    rec = record(translator.translate(obj['instruction']))
+                except LtlInstructError as e:
+                    rec = {'instruction': obj['instruction'], 'error': e.to_dict()}
+                    failures += 1
+                for key, value in obj.items():
+                    rec.setdefault(key, value)
+            out.write(json.dumps(rec) + '\n')
+    finally:
+        if out_path:
+            out.close()
+    return 1 if failures else 0
+
+
+def interactive(translator: Any, ask: Callable[[str], str], say: Callable[[str], None]) -> int:
+    """The verification dialog: translate, show, and accept a yes, a correction, or a formula.
+
+    With the LLM backend a correction is sent back with the previous answer; offline,
+    the instruction and the correction are translated again together.
+    """
+    try:
+        instruction = ask('instruction> ').strip()
+    except EOFError:
+        return 2
+    correction_rounds = 0
+    t: Optional[Translation] = None
+    pending_correction = ''
+    while correction_rounds < 10:
+        try:
+            if t is not None and pending_correction and translator.name == 'llm':
+                t = translator.translate(instruction, correction=pending_correction, previous=t)
+            elif pending_correction:
+                t = translator.translate(f'{instruction}. {pending_correction}')
+            else:
+                t = translator.translate(instruction)
+            say(verification_for(t).text())
+        except LtlInstructError as e:
+            say(f'error [{e.code.value}]: {e.message}')
+            if t is None:
+                say('Rephrase the instruction, or type a formula (prefix "formula:").')
+        try:
+            reply = classify_reply(ask('reply> '))
+        except EOFError:
+            return 2
+        except LtlInstructError as e:
+            say(f'error [{e.code.value}]: {e.message}')
+            continue
+        if reply.kind == 'yes' and t is not None:
+            say(json.dumps(record(t)))
+            return 0
+        if reply.kind == 'no':
+            say('cancelled')
+            return 1
+        if reply.kind == 'formula' and reply.formula is not None:
+            t = Translation(instruction, reply.formula, 'person')
+            say(verification_for(t).text())
+            pending_correction = ''
+            correction_rounds += 1
+            continue
+        pending_correction = reply.text
+        correction_rounds += 1
+    raise LtlInstructError('too many corrections; start again', ErrorCode.VERIFICATION_FAILED)

@@ -1,0 +1,96 @@
+"""The verification dialog: what a person checks before anything moves, and their answer.
+
+For a :class:`Translation` the person sees the referents it extracted and the
+ordered English subgoals (from :func:`ltl_instruct.core.automaton.english.describe_task`).
+They answer yes, or correct it in words, or type a formula directly;
+:func:`classify_reply` says which.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Optional
+
+from ltl_instruct.core.errors import LtlInstructError
+from ltl_instruct.core.language.base import Translation
+from ltl_instruct.core.spec import Formula, parse_formula
+
+YES = frozenset({'y', 'yes', 'yep', 'yeah', 'ok', 'okay', 'correct', 'right', 'sure', 'go', 'go ahead',
+                 'looks good', 'lgtm', 'confirm', 'confirmed', 'fine', 'good'})
+NO = frozenset({'n', 'no', 'nope', 'cancel', 'abort', 'stop', 'quit', 'q'})
+
+
+@dataclass(frozen=True)
+class Verification:
+    """The text a person checks for one translation.
+
+    Attributes
+    ----------
+    formula: the formula as printed.
+    referents: English noun phrases of the referents.
+    avoid: English noun phrases of what is avoided.
+    subgoals: ordered English subgoals, then whole-task constraints and notes.
+    satisfiable: whether any plan can satisfy the task.
+    """
+
+    formula: str
+    referents: tuple[str, ...]
+    avoid: tuple[str, ...]
+    subgoals: tuple[str, ...]
+    satisfiable: bool
+
+    def text(self) -> str:
+        """Lines to show the person."""
+        lines = [f'Task formula: {self.formula}']
+        if self.referents:
+            lines.append('Referents: ' + '; '.join(self.referents))
+        if self.avoid:
+            lines.append('Avoid: ' + '; '.join(self.avoid))
+        lines.extend(self.subgoals)
+        lines.append('Is this right? Answer yes, correct it in words, or type a formula (prefix "formula:").')
+        return '\n'.join(lines)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready dict."""
+        return {'formula': self.formula, 'referents': list(self.referents), 'avoid': list(self.avoid),
+                'subgoals': list(self.subgoals), 'satisfiable': self.satisfiable}
+
+
+def verification_for(translation: Translation | Formula) -> Verification:
+    """Referents and English subgoals of a translation (via the automaton's English description)."""
+    from ltl_instruct.core.automaton.english import describe_task
+    formula = translation.formula if isinstance(translation, Translation) else translation
+    desc = describe_task(formula)
+    return Verification(desc.formula, desc.referents, desc.avoid,
+                        tuple(desc.subgoals) + tuple(desc.throughout) + tuple(desc.notes), desc.satisfiable)
+
+
+@dataclass(frozen=True)
+class Reply:
+    """A person's answer: ``kind`` is ``yes``, ``no``, ``formula`` or ``correction``."""
+
+    kind: str
+    text: str = ''
+    formula: Optional[Formula] = None
+
+
+def classify_reply(reply: str) -> Reply:
+    """Read a person's answer to the verification text.
+
+    ``yes``-like words accept; ``no``-like words cancel; ``formula: ...`` (or text
+    that parses as a formula with at least one skill atom) replaces the formula;
+    anything else is a correction in words.
+    """
+    text = ' '.join(reply.strip().split())
+    low = text.lower().rstrip('.!')
+    if low in YES:
+        return Reply('yes')
+    if low in NO:
+        return Reply('no')
+    body = text[len('formula:'):].strip() if low.startswith('formula:') else text
+    if low.startswith('formula:') or any(c in body for c in '[]&|'):
+        try:
+            return Reply('formula', body, parse_formula(body))
+        except LtlInstructError:
+            if low.startswith('formula:'):
+                raise
+    return Reply('correction', text)

@@ -123,13 +123,17 @@ def test_english_instruction_is_translated_planned_and_executed(graph):
     assert fridge.box.distance(last, dims=2)[0] <= NEAR + 0.05
 
 
-@pytest.mark.parametrize('case', ['nonsense', 'bad_json', 'unknown_referent', 'unsatisfiable',
+@pytest.mark.parametrize('case', ['nonsense', 'unplaceable', 'bad_json', 'unknown_referent', 'unsatisfiable',
                                   'huge_text', 'bad_formula'])
 def test_bad_instruction_gets_a_typed_error_and_the_next_is_served(graph, case):
     g, client, _ = graph
     t0 = time.monotonic()
     if case == 'nonsense':
+        # read as a place name by the translator, then found nowhere by the grounder
         iid = client.send(text='purple monkey dishwasher sideways')
+        expected = {'TRANSLATION_ERROR', 'UNKNOWN_REFERENT'}
+    elif case == 'unplaceable':
+        iid = client.send(text='the the the')
         expected = {'TRANSLATION_ERROR'}
     elif case == 'bad_json':
         iid = 'garbage-spec-1'

@@ -162,3 +162,23 @@ def test_obstacle_points_fill_every_box():
     assert pts.dtype == np.float32 and pts.shape[1] == 3
     for box in scene.blocking_boxes():
         assert np.any(box.contains(pts, margin=1e-3))
+
+
+def test_a_new_plan_starting_behind_the_robot_is_joined_along_the_driven_way():
+    """The robot went round a corner; the new plan starts before the corner: it drives back round it."""
+    robot = KinematicRobot((0.0, 0.0, 0.0), max_speed=1.0)
+    robot.follow(np.array([[2.0, 0.0, 0.0], [2.0, 2.0, 0.0]]))
+    for _ in range(30):
+        robot.step(0.1)                       # at (2, 1): past the corner at (2, 0)
+    assert np.allclose(robot.pose.xyz, [2.0, 1.0, 0.0])
+    robot.follow(np.array([[1.5, 0.0, 0.0], [1.5, -3.0, 0.0]]), stop_at=[1])
+    positions = [robot.step(0.05).xyz for _ in range(200)]
+    # back down to the corner, then along the old way to (1.5, 0): never across the inside of the corner
+    assert all(not (1.55 < p[0] < 1.95 and 0.05 < p[1] < 0.95) for p in positions)
+    assert robot.is_paused and robot.path_index == 1
+    assert np.allclose(robot.pose.xyz, [1.5, -3.0, 0.0])
+    # a plan that starts away from the driven way is joined straight
+    robot.resume()
+    robot.follow(np.array([[5.0, 5.0, 0.0]]))
+    robot.step(0.1)
+    assert robot.path_index == -1 and robot.pose.xyz[1] > -3.0

@@ -99,6 +99,8 @@ class KinematicRobot:
         self._stop_at: set[int] = set()  # path indices where the robot must stop
         self._paused = False
         self._travelled = 0.0
+        self._offset = 0                   # points driven back along the trail before the path
+        self._trail: list[np.ndarray] = []  # path vertices reached since the last follow()
 
     # ------------------------------------------------------------------ state
     @property
@@ -108,8 +110,8 @@ class KinematicRobot:
 
     @property
     def path_index(self) -> int:
-        """Index of the last path point reached (-1 with no path)."""
-        return -1 if self._path is None else self._segment - 1
+        """Index of the last point of the followed path reached (-1 with no path, or before it)."""
+        return -1 if self._path is None else self._segment - 1 - self._offset
 
     @property
     def is_moving(self) -> bool:
@@ -130,23 +132,54 @@ class KinematicRobot:
     def follow(self, points: np.ndarray, stop_at: Sequence[int] = ()) -> None:
         """Start following ``points`` (N, 3) [m]; stop at the given path indices.
 
-        The robot first drives from where it is to the first point.
+        A new plan usually starts where the robot was when planning began, a little
+        behind where it is now. If that start lies on the way the robot has just driven
+        (within ``REJOIN_TOLERANCE``), the robot drives back along that way to it: a
+        straight line back could cut a corner the old path went around. Otherwise it
+        drives straight to the first point.
         """
         p = validate_path(points, 2 if self.planar else 3)
         if self.planar:
             p = p.copy()
             p[:, 2] = self._position[2]
-        self._path = p
+        back = self._way_back_to(p[0])
+        self._offset = len(back)
+        self._path = np.vstack([back, p]) if len(back) else p
         self._segment = 0
-        self._stop_at = {int(i) for i in stop_at if 0 <= int(i) < len(p)}
+        self._stop_at = {int(i) + self._offset for i in stop_at if 0 <= int(i) < len(p)}
         self._paused = False
+        self._trail = [self._position.copy()]
+
+    REJOIN_TOLERANCE = 0.25   # [m]
+    TRAIL_LENGTH = 4000       # path vertices remembered
+
+    def _way_back_to(self, target: np.ndarray) -> np.ndarray:
+        """Points (K, 3) retracing the driven trail from here back to near ``target`` (K may be 0)."""
+        trail = self._trail + [self._position.copy()]
+        if len(trail) < 2:
+            return np.zeros((0, 3))
+        best = (float('inf'), -1, None)
+        for i in range(len(trail) - 1):
+            a, b = trail[i], trail[i + 1]
+            ab = b - a
+            t = float(np.clip(np.dot(target - a, ab) / max(float(np.dot(ab, ab)), 1e-12), 0.0, 1.0))
+            q = a + t * ab
+            d = float(np.linalg.norm(q - target))
+            if d < best[0]:
+                best = (d, i, q)
+        d, i, q = best
+        if d > self.REJOIN_TOLERANCE or q is None:
+            return np.zeros((0, 3))
+        # from the current position back over the vertices after segment i, to q
+        return np.vstack([np.asarray(trail[k]) for k in range(len(trail) - 1, i, -1)] + [q[None, :]])
 
     def add_stop(self, index: int) -> bool:
         """Stop at path index ``index``; if it was already passed, stop now. Return True if in time."""
         if self._path is None:
             return False
+        index = int(index) + self._offset
         if index >= self._segment:
-            self._stop_at.add(int(index))
+            self._stop_at.add(index)
             return True
         self._paused = True
         return False
@@ -155,6 +188,7 @@ class KinematicRobot:
         """Drop the current path and stand still."""
         self._path = None
         self._segment = 0
+        self._offset = 0
         self._stop_at.clear()
         self._paused = False
 
@@ -186,6 +220,9 @@ class KinematicRobot:
                     self._yaw = heading
             if dist <= budget:
                 self._position = target.copy()
+                self._trail.append(target.copy())
+                if len(self._trail) > self.TRAIL_LENGTH:
+                    del self._trail[:len(self._trail) - self.TRAIL_LENGTH]
                 self._travelled += dist
                 budget -= dist
                 reached = self._segment

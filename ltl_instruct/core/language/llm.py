@@ -240,13 +240,14 @@ class LlmTranslator:
         return content[:MAX_ANSWER_CHARS]
 
     def _ask(self, messages: list[dict[str, str]], deadline: float, check: Callable[[str], Formula]
-             ) -> tuple[Formula, int]:
+             ) -> tuple[Formula, str, int]:
         """Ask, parse, and re-ask with the error until the answer parses (bounded)."""
         last_error = ''
         for attempt in range(self.retries + 1):
             answer = self._chat(messages, deadline)
+            text = extract_formula_text(answer)
             try:
-                return check(extract_formula_text(answer)), attempt
+                return check(text), text, attempt
             except LtlInstructError as e:
                 last_error = e.message
                 messages = messages + [
@@ -293,7 +294,7 @@ class LlmTranslator:
         for ex in examples:
             m1 += [{'role': 'user', 'content': ex.instruction}, {'role': 'assistant', 'content': ex.ltl}]
         m1.append({'role': 'user', 'content': instruction})
-        ltl, tries1 = self._ask(m1, deadline, self._check_ltl)
+        _, ltl, tries1 = self._ask(m1, deadline, self._check_ltl)
         m2 = [{'role': 'system', 'content': STAGE2_SYSTEM}]
         for ex in examples:
             m2 += [{'role': 'user', 'content': f'Instruction: {ex.instruction}\nLTL: {ex.ltl}'},
@@ -303,8 +304,8 @@ class LlmTranslator:
             m2 += [{'role': 'assistant', 'content': str(previous.formula)},
                    {'role': 'user', 'content': f'The person says this is not right: "{correction}". '
                                                'Answer with the corrected formula only.'}]
-        formula, tries2 = self._ask(m2, deadline, self._check_skills)
+        formula, _, tries2 = self._ask(m2, deadline, self._check_skills)
         notes = (f'corrected: {correction}',) if correction else ()
         return Translation(instruction, formula, self.name, notes,
-                           {'ltl': str(ltl), 'examples': [e.instruction for e in examples],
+                           {'ltl': ltl, 'examples': [e.instruction for e in examples],
                             'retries': tries1 + tries2})

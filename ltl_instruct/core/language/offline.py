@@ -331,11 +331,15 @@ class _Reader:
         self.pending_avoid_at: list[Descriptor] = []
         self.choice: Optional[Descriptor] = None
         self.only = False
+        self.saw_action = False
 
     # ----------------------------------------------------------------- structure
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
             self._read_sentence(sentence)
+        if not self.saw_action:
+            raise TranslationError(f'found no action (go, bring, avoid...) in "{" ".join(tokens)}"',
+                                   details={'part': ' '.join(tokens)})
         if self.pending_avoid_at:
             step = self.task.last_step(('visit',))
             if step is not None:
@@ -370,6 +374,7 @@ class _Reader:
             scope = self._read_clause(clause, scope)
 
     def _read_alternatives(self, parts: list[list[str]]) -> None:
+        self.saw_action = True
         outer = self.task
         chains = []
         for p in parts:
@@ -470,6 +475,7 @@ class _Reader:
                 tokens, 0, ['there', 'are']):
             tokens = tokens[2:]
         if tokens[0] == 'if':
+            self.saw_action = True
             self._read_conditional(tokens)
             return scope
         if tokens[0] == 'only' and len(tokens) > 1 and tokens[1] in GOAL_VERBS | DELIVER_VERBS:
@@ -478,10 +484,12 @@ class _Reader:
         if self._read_ordering(tokens, clause):
             return scope
         if self._avoid_start(tokens) is not None:
+            self.saw_action = True
             self._read_avoid(tokens, scope)
             return scope
         if tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS or _starts(tokens, 0, ['throw', 'away']):
             if self._read_delivery(tokens, clause):
+                self.saw_action = True
                 return scope
         self._read_goal(tokens, clause, scope)
         return scope
@@ -988,6 +996,8 @@ class _Reader:
         nps, joiner, end = self._np_list(tokens, k)
         if not nps:
             raise TranslationError(f'could not place "{" ".join(tokens)}"', details={'part': ' '.join(tokens)})
+        if k > 0 or clause.connector in ('seq', 'pre', 'or'):
+            self.saw_action = True
         rest = [t for t in tokens[end:] if t != ',']
         targets = [np.descriptor for np in nps]
         if patrol_from and rest and rest[0] == 'to':

@@ -64,6 +64,9 @@ while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry
 fine enough again cannot cant dont one along throughout entire whole during without except only
 '''.split()) - {'one'}
 
+LY_NOUNS = frozenset({'family', 'assembly', 'supply', 'jelly', 'belly', 'trolley', 'pulley', 'valley', 'alley',
+                      'butterfly', 'dragonfly', 'lily', 'holly', 'bully', 'rally', 'gully', 'folly', 'doily'})
+
 NAME_VERBS = frozenset('''
 go goes head visit navigate move drive fly walk run come return check find locate reach get bring take put
 place leave drop toss throw carry deliver grab pick fetch survey land stop swing patrol charge stand make
@@ -129,6 +132,8 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return have_name and nxt not in ('times', 'more', 'separate')
     if w in STOPWORDS:
         return False
+    if w.endswith('ly') and len(w) > 5 and w not in LY_NOUNS:
+        return False  # adverbs ("quickly", "carefully") are not names
     return True
 
 

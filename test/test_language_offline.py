@@ -1,0 +1,153 @@
+"""Offline translator: every kind of language in the issue, checked on automata, and its errors."""
+from __future__ import annotations
+
+import pytest
+
+from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.errors import ErrorCode, LtlInstructError, TranslationError
+from ltl_instruct.core.language import make_translator
+from ltl_instruct.core.language.offline import OfflineTranslator, at_least, at_most, exactly
+from ltl_instruct.core.language.text import tokenize
+from ltl_instruct.core.spec import near, parse_formula
+
+T = OfflineTranslator()
+
+# Sentences written for these tests (not from any data set), with the formula each must be equivalent to.
+CASES = [
+    # single goals and drone verbs
+    ('Could you go over to the laundry hamper?', 'F near[laundry_hamper]'),
+    ('Fly over the grain silo please', 'F near[grain_silo]'),
+    ('Go find my car keys.', 'F near[car_keys]'),
+    # sequences
+    ('Go to the shed, then the greenhouse, and after that the pond.',
+     'F (near[shed] & F (near[greenhouse] & F near[pond]))'),
+    ('I want you at the piano, but before doing that, first go to the bookcase.',
+     'F (near[bookcase] & F near[piano])'),
+    ('visit the oven, the sink and the fridge, in that order',
+     'F (near[oven] & F (near[sink] & F near[fridge]))'),
+    ('Go to the lamp and the radio, in any order.', 'F near[lamp] & F near[radio]'),
+    # ordering
+    ('Go to the attic, but only after you have been to the basement.',
+     'F near[attic] & (!near[attic] U near[basement])'),
+    ("Don't go into the study until you've checked the mailbox.", '!near[study] U near[mailbox]'),
+    ('visit the lamp before the desk', 'F near[desk] & (!near[desk] U near[lamp])'),
+    ('If you go into the garage at all, check the porch first.', '!near[garage] W near[porch]'),
+    # global and scoped avoidance
+    ('Go to the door but never go near the vase.', 'F near[door] & G !near[vase]'),
+    ("Don't go near the oven or the stove. Just go to the table.",
+     'F near[table] & G !near[oven] & G !near[stove]'),
+    ('On the way to the kitchen, stay away from the bin.', '!near[bin] U near[kitchen]'),
+    ('Go to the hall. Once you have reached the hall, avoid the rug, and then go to the den.',
+     'F (near[hall] & G !near[rug] & F near[den])'),
+    ('Take the cup to the sink, and do not go near the cat while you are carrying it.',
+     'F (near[cup] & F (pick[cup] & (!near[cat] U (near[sink] & F release[cup, sink]))))'),
+    # either-or
+    ('Go to either the porch or the deck.', 'F near[porch] | F near[deck]'),
+    ('Visit the red bin or the blue bin but not both.',
+     '(F near[red_bin] & G !near[blue_bin]) | (F near[blue_bin] & G !near[red_bin])'),
+    # counting
+    ('Go to the gate exactly once.', '!near[gate] U (near[gate] & (near[gate] W G !near[gate]))'),
+    ('Visit the well at least twice.', 'F (near[well] & F (!near[well] & F near[well]))'),
+    ('Check the crib at most once.', '!near[crib] W (near[crib] & (near[crib] W G !near[crib]))'),
+    ('go to the mailbox three times',
+     'F (near[mailbox] & F (!near[mailbox] & F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))))'),
+    # deliveries
+    ('Bring the pear to the counter.', 'F (near[pear] & F (pick[pear] & F (near[counter] & F release[pear, counter])))'),
+    ('Throw away the paper cup.',
+     'F (near[paper_cup] & F (pick[paper_cup] & F (near[trash_can] & F release[paper_cup, trash_can])))'),
+    ('put the blue book on the top shelf',
+     'F (near[blue_book] & F (pick[blue_book] & F (near[top_shelf] & F release[blue_book, top_shelf])))'),
+    # spatial descriptors, nested
+    ('Go to the chair between the sofa and the bag.', 'F near[chair::isbetween(sofa, bag)]'),
+    ('Go to the fridge to the left of the cabinet.', 'F near[fridge::isleftof(cabinet)]'),
+    ('go to the cup next to the lamp that is on the table behind the couch',
+     'F near[cup::isnextto(lamp::isabove(table::isbehind(couch)))]'),
+    ('Avoid the stool that is left of the bar and in front of the oven. Go to the door.',
+     'F near[door] & G !near[stool::isleftof(bar)::isinfrontof(oven)]'),
+    # list positions
+    ('I see a kettle, a toaster and a blender. Go to the second one.', 'F near[toaster]'),
+    ('rug, chair, lamp: go to them in reverse order', 'F (near[lamp] & F (near[chair] & F near[rug]))'),
+    ('The desk, the shelf, the bin: go to the first and the last, but never the one in the middle.',
+     'F near[desk] & F near[bin] & G !near[shelf]'),
+    # self-corrections
+    ('Go to the sink - no wait, I meant the tub.', 'F near[tub]'),
+    ('Go to the den, then the porch. Actually, ignore the last thing, go to the yard instead.',
+     'F (near[den] & F near[yard])'),
+    ('Go to the box left of the bed. Sorry, I meant the one right of the bed.', 'F near[box::isrightof(bed)]'),
+    ('Go to the shed twice - scratch that, three times is enough.',
+     'F (near[shed] & F (!near[shed] & F (near[shed] & F (!near[shed] & F near[shed]))))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CASES, ids=[c[0][:40] for c in CASES])
+def test_kinds_of_language_translate_to_equivalent_formulas(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    assert got.backend == 'offline'
+
+
+def test_referents_and_avoid_follow_the_formula() -> None:
+    t = T.translate('Go to the printer, but keep away from the chair between the cabinet and the bag.')
+    assert t.referents == ('printer', 'chair::isbetween(cabinet, bag)')
+    assert t.avoid == ('chair::isbetween(cabinet, bag)',)
+
+
+def test_translation_is_deterministic() -> None:
+    text = 'Bring the mug on the desk to the sink, then go to the door and never touch the cat.'
+    assert str(T.translate(text).formula) == str(T.translate(text).formula)
+
+
+def test_what_cannot_be_placed_is_named() -> None:
+    with pytest.raises(TranslationError) as e:
+        T.translate('go to the kitchen and flibber the wobble quantumly')
+    assert e.value.code == ErrorCode.TRANSLATION_ERROR
+    assert 'flibber' in e.value.message
+
+
+@pytest.mark.parametrize('bad', ['', '   ', '...!!!', '{"garbage": true}'])
+def test_empty_or_garbage_is_a_typed_error(bad: str) -> None:
+    with pytest.raises(LtlInstructError):
+        T.translate(bad)
+
+
+def test_huge_instruction_is_refused() -> None:
+    with pytest.raises(LtlInstructError) as e:
+        T.translate('go to the sofa then ' * 500)
+    assert e.value.code == ErrorCode.LIMIT_EXCEEDED
+
+
+def test_non_text_is_refused() -> None:
+    with pytest.raises(TranslationError):
+        T.translate(None)  # type: ignore[arg-type]
+
+
+def test_goal_avoid_scope_reads_avoidance_at_the_goal() -> None:
+    t = OfflineTranslator(avoid_scope='goal').translate('go to the red room and avoid the blue room .')
+    assert equivalent(t.formula, parse_formula('F (near[red_room] & !near[blue_room])'))
+    with pytest.raises(TranslationError):
+        OfflineTranslator(avoid_scope='sideways')
+
+
+def test_count_builders_agree_with_the_conventions() -> None:
+    x = near('door')
+    assert equivalent(exactly(x, 1), parse_formula('!near[door] U (near[door] & (near[door] W G !near[door]))'))
+    assert equivalent(at_most(x, 1), parse_formula('!F (near[door] & F (!near[door] & F near[door]))'))
+    assert equivalent(at_least(x, 2), parse_formula('F (near[door] & F (!near[door] & F near[door]))'))
+    assert equivalent(exactly(x, 2), parse_formula(
+        '!near[door] U (near[door] & (near[door] U (!near[door] & (!near[door] U (near[door] & '
+        '(near[door] W G !near[door]))))))'))
+
+
+def test_tokenizer_fixes_typos_and_contractions() -> None:
+    assert tokenize("Don't go to teh 2nd floor!!") == ['do', 'not', 'go', 'to', 'the', 'second', 'floor', '!']
+
+
+def test_make_translator_backends() -> None:
+    assert make_translator().name == 'offline'
+    with pytest.raises(TranslationError):
+        make_translator('telepathy')
+    with pytest.raises(TranslationError) as e:
+        make_translator('learned')
+    assert e.value.code == ErrorCode.INVALID_INPUT
+    with pytest.raises(TranslationError):
+        make_translator('offline', colour='blue')

@@ -66,7 +66,7 @@ def test_metrics_are_checked_on_automata_not_strings() -> None:
     assert [r.equivalent for r in s.results] == [True, True, False, False]
     assert [r.aligned for r in s.results] == [True, True, True, False]   # red_sofa aligned to sofa
     assert summary['equivalence_accuracy'] == 0.5 and summary['temporal_alignment'] == 0.75
-    assert summary['referent_wer'] == pytest.approx(2 / 6)
+    assert summary['referent_wer'] == pytest.approx(2 / 6, abs=1e-3)
 
 
 def test_translate_command_single_and_batch(tmp_path: Path, capsys: Any) -> None:

@@ -59,6 +59,8 @@ def main(argv: list[str]) -> int:
     client = GraphClient('bench_pipeline')
     totals: list[float] = []
     stages: dict[str, list[float]] = {}
+    per_text: dict[str, list[float]] = {}
+    rest: list[float] = []
     failures = []
     try:
         if not client.wait_for_graph(timeout=60.0, need_sim=True):
@@ -79,9 +81,12 @@ def main(argv: list[str]) -> int:
             if k < 2:
                 continue
             totals.append(elapsed)
-            for name, value in (status.get('timing') or {}).items():
-                if isinstance(value, (int, float)):
-                    stages.setdefault(name, []).append(float(value))
+            per_text.setdefault(text, []).append(elapsed)
+            timing = {k: float(v) for k, v in (status.get('timing') or {}).items()
+                      if isinstance(v, (int, float))}
+            for name, value in timing.items():
+                stages.setdefault(name, []).append(value)
+            rest.append(elapsed - sum(timing.values()))
     finally:
         client.close()
         graph.stop()
@@ -94,6 +99,10 @@ def main(argv: list[str]) -> int:
     print('  per stage (median, as the nodes report them):')
     for name, values in stages.items():
         print(f'    {name:<14} {statistics.median(values) * 1000:8.1f} ms')
+    print(f'    {"DDS + waiting":<14} {statistics.median(rest) * 1000:8.1f} ms  (the rest of each total)')
+    print('  per instruction (median):')
+    for text, values in per_text.items():
+        print(f'    {statistics.median(values) * 1000:6.0f} ms  {text}')
     if failures:
         print(f'  {len(failures)} instruction(s) not planned: {failures[:4]}')
     return 0 if statistics.median(totals) < 1.5 else 1

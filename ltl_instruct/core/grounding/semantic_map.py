@@ -24,6 +24,7 @@ from dataclasses import dataclass
 from typing import Any, Mapping, Optional, Sequence
 
 import numpy as np
+from scipy.ndimage import minimum_filter
 
 from ltl_instruct.core.errors import InvalidInputError, LimitExceededError
 from ltl_instruct.core.grounding.rsm import Instance
@@ -46,6 +47,7 @@ class SemanticMapParams:
     min_class_score: least class score for a voxel to count as that class.
     pixel_stride: integrate every n-th pixel in each direction (1: all; 2 keeps a point
         every ~1 cm at 3 m for a 640 px wide 90 degree camera, far denser than the voxels).
+    footprint_px: window [strided px] of the nearest-depth filter that decides free space.
     """
 
     voxel_size: float = 0.1
@@ -53,6 +55,7 @@ class SemanticMapParams:
     min_cluster_voxels: int = 4
     min_class_score: float = 0.5
     pixel_stride: int = 2
+    footprint_px: int = 5
 
     def __post_init__(self) -> None:
         for name in ('voxel_size', 'max_range'):
@@ -209,7 +212,11 @@ class SemanticMap:
             u = (opt[0] * inv_z * np.float32(k.fx / s) + np.float32(k.cx / s))
             v = (opt[1] * inv_z * np.float32(k.fy / s) + np.float32(k.cy / s))
             inview = (zc > 1e-3) & (u >= 0) & (u < w) & (v >= 0) & (v < h)
+        # a voxel is observed free only when its whole footprint is in front of the surface:
+        # the nearest depth around its pixel, so rays grazing an object never carve it away
         dm_img = np.where(valid, d, np.float32(-np.inf))
+        if self.params.footprint_px > 1:
+            dm_img = minimum_filter(dm_img, size=self.params.footprint_px, mode='nearest')
         dm = np.full(zc.shape, -np.inf, dtype=np.float32)
         dm[inview] = dm_img[v[inview].astype(np.int64), u[inview].astype(np.int64)]
         free = zc < dm - np.float32(vs * 0.87)                     # -inf (no return) is never free

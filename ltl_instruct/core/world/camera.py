@@ -291,7 +291,8 @@ class SyntheticCamera:
         return CameraFrame(rgb.reshape(shape + (3,)).astype(np.uint8), depth.reshape(shape),
                            labels.reshape(shape), dict(self.classes), k, t_body)
 
-    def look_at(self, eye: np.ndarray, target: np.ndarray) -> np.ndarray:
+    @staticmethod
+    def look_at(eye: np.ndarray, target: np.ndarray) -> np.ndarray:
         """Return ``T_map_body`` (4, 4) of a camera at ``eye`` [m] looking at ``target`` [m] (no roll)."""
         eye = np.asarray(eye, dtype=float)
         d = np.asarray(target, dtype=float) - eye

@@ -262,3 +262,62 @@ def test_task_plan_lists_steps_with_automaton_states(graph):
     assert plan is not None
     text = json.dumps(plan)
     assert 'armchair' in text and 'plant' in text
+
+
+def test_a_changed_referent_map_triggers_a_replan_from_the_current_state(graph):
+    g, client, _ = graph
+    formula = 'F (near[bed] & F near[wardrobe])'
+    iid = client.send(formula=formula)
+    status = client.wait_terminal(iid, timeout=30.0)
+    assert status['status'] == 'planned', status
+    # a new detection: the wardrobe is elsewhere (revision 1 of this task's referent map)
+    rdata = client.received.referent_maps[iid]
+    rmap = rdata['referent_map']
+    rmap['groundings']['wardrobe']['instances'][0]['center'] = [8.5, 9.5, 1.0]
+    from ltl_instruct.nodes.common import latched_qos
+    pub = client.node.create_publisher(String, 'referent_map', latched_qos())
+    try:
+        pub.publish(conv.json_msg(conv.payload(conv.REFERENT_MAP, iid, ok=True, revision=1,
+                                               referent_map=rmap)))
+        replanned = client.wait_status(iid, 'replanned', timeout=30.0)
+    finally:
+        client.node.destroy_publisher(pub)
+    assert replanned is not None, [s['status'] for s in client.received.statuses[iid]]
+    assert replanned['phase'] == 'execution' and not replanned['terminal']
+    new_plan = client.wait_until(lambda: client.received.plans.get(replanned['plan_stamp']), 5.0)
+    assert new_plan is not None
+    moved = ReferentMap.from_dict(rmap).instances('wardrobe')[0]
+    assert moved.distance(new_plan[-1], dims=2)[0] <= NEAR + 1e-6                   # ends at the new place
+    assert [s for s in client.received.statuses[iid] if s['status'] == 'replanning']
+    assert len([s for s in client.received.statuses[iid] if s.get('terminal')]) == 1
+
+
+def test_a_failed_skill_is_reported_and_replanned_then_given_up(graph):
+    g, client, _ = graph
+    iid = client.send(formula='F pick[bed]')              # the bed is far too large to pick up
+    assert client.wait_terminal(iid, timeout=30.0)['status'] == 'planned'
+    final = client.wait_until(lambda: next((s for s in client.received.statuses.get(iid, [])
+                                            if s['status'] == 'failed' and s['phase'] == 'execution'), None),
+                              90.0)
+    statuses = [s['status'] for s in client.received.statuses[iid]]
+    assert final is not None, statuses
+    assert 'skill_failed' in statuses and 'replanning' in statuses
+    assert final['error']['code'] == 'NO_VALID_PATH' and 'replans' in final['error']['message']
+    failed = [r for r in client.received.skill_results if r['id'] == iid]
+    assert failed and all(not r['ok'] and r['error']['code'] == 'SKILL_FAILED' for r in failed)
+    _alive(g)
+
+
+def test_leaving_the_plan_into_an_avoided_region_is_reported_as_a_violation(graph):
+    g, client, _ = graph
+    iid = client.send(formula='F near[whiteboard] & G !near[front_door]')
+    assert client.wait_terminal(iid, timeout=30.0)['status'] == 'planned'
+    # odometry says the robot is at the front door (as if it had been pushed there)
+    msg = conv.odometry_msg(Pose((0.6, 5.0, 0.0), 0.0))
+    violated = None
+    deadline = time.monotonic() + TIMEOUT
+    while violated is None and time.monotonic() < deadline:
+        client.odom_pub.publish(msg)
+        violated = client.wait_status(iid, 'violated', timeout=0.2)
+    assert violated is not None, [s['status'] for s in client.received.statuses[iid]]
+    assert violated['monitor']['blamed_atoms'] == ['near[front_door]']

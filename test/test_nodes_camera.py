@@ -1,0 +1,61 @@
+"""The camera path over DDS: the simulator's RGB-D + label frames are the grounder's only source.
+
+The referent grounder starts with no known objects (``scene: ''``); everything it can
+ground comes from the synthetic camera of ``sim_world`` integrated into its semantic map.
+"""
+from __future__ import annotations
+
+import os
+import random
+import time
+
+import pytest
+
+from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file
+from ltl_instruct.core.world.builtin import resolve_scene
+
+
+@pytest.fixture(scope='module')
+def camera_graph(tmp_path_factory):
+    os.environ['ROS_DOMAIN_ID'] = str(random.Random(os.getpid() + 7).randint(120, 229))
+    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
+    os.environ.pop('ROS_LOCALHOST_ONLY', None)
+    from ltl_instruct.nodes.client import GraphClient
+    logs = tmp_path_factory.mktemp('camera_logs')
+    overrides = {'sim_world': {'camera_rate_hz': 4.0, 'time_scale': 4.0},
+                 'referent_grounder': {'scene': '', 'use_camera': True, 'camera_min_interval': 0.1}}
+    g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
+    client = GraphClient('camera_test')
+    try:
+        assert client.wait_for_graph(timeout=60.0, need_sim=True)
+        yield g, client
+    finally:
+        client.close()
+        g.stop()
+
+
+def test_an_object_seen_by_the_camera_is_grounded_and_planned_to(camera_graph):
+    g, client = camera_graph
+    pillar = resolve_scene('apartment').object_by_id('pillar')   # in view from the start pose
+    status = None
+    deadline = time.monotonic() + 20.0
+    while time.monotonic() < deadline:      # the first frames take a moment to arrive
+        iid = client.send(formula='F near[pillar]')
+        status = client.wait_terminal(iid, timeout=20.0)
+        if status['status'] != 'failed':
+            break
+        time.sleep(0.5)
+    assert status is not None and status['status'] in ('planned', 'satisfied'), status
+    groundings = client.received.referent_maps[iid]['referent_map']['groundings']
+    found = groundings['pillar']['instances']
+    assert found and all(i['id'].startswith('det_') for i in found)      # detections, not a list
+    assert min(abs(i['center'][0] - pillar.center[0]) + abs(i['center'][1] - pillar.center[1])
+               for i in found) < 0.5
+
+
+def test_an_object_never_seen_is_unknown(camera_graph):
+    g, client = camera_graph
+    iid = client.send(formula='F near[fridge]')          # behind walls, in another room
+    status = client.wait_terminal(iid, timeout=20.0)
+    assert status['status'] == 'failed' and status['error']['code'] == 'UNKNOWN_REFERENT'
+    assert not g.dead()

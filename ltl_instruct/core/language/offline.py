@@ -21,9 +21,11 @@ from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, TranslationError
 from ltl_instruct.core.language.base import Translation
-from ltl_instruct.core.language.phrases import DETERMINERS as DETS, NAME_VERBS, NounPhrase, PhraseParser
+from ltl_instruct.core.language.phrases import (
+    DETERMINERS as DETS, NAME_VERBS, NounPhrase, PhraseParser, is_name_word,
+)
 from ltl_instruct.core.language.rewrite import apply_corrections, resolve_list_references
-from ltl_instruct.core.language.text import NUMBER_WORDS, PUNCT, tokenize
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
     Always, And, Atom, Descriptor, Eventually, Formula, Not, Or, Until, WeakUntil,
 )
@@ -36,19 +38,33 @@ AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('keep', 'out', 'of'), ('do', 'not'), ('never',), ('not',), ('keep', 'your', 'distance', 'from'),
     ('stay', 'far', 'from'), ('keep', 'far', 'from'), ('without', 'going'), ('without', 'passing'),
     ('without', 'touching'), ('stay', 'away'), ('keep', 'away'), ('and', 'not'), ('but', 'not'),
-    ('avoiding',), ('while', 'avoiding'), ('no',), ('ignore',) if False else ('shun',),
+    ('avoiding',), ('while', 'avoiding'), ('no',), ('shun',), ('always', 'avoid'), ('always', 'avoiding'),
+    ('without',), ('always', 'stay', 'away', 'from'), ('while', 'staying', 'away', 'from'),
+    ('staying', 'away', 'from'), ('keeping', 'away', 'from'), ('you', 'cannot'), ('you', 'can', 'not'),
+    ('you', 'must', 'not'), ('you', 'should', 'not'), ('must', 'not'), ('cannot',), ('should', 'not'),
 ), key=lambda t: -len(t)))
 
 # After "do not"/"never": verbs and particles to skip before the avoided noun phrase.
 AVOID_FILLER = frozenset('''
 go ever drive fly walk move come get pass bump touch run head enter step visit stop cross approach land
 anywhere back near close to by into in over through past on onto around at the area of again even
-going passing touching knock hit disturb wake anywhere let yourself be into enter visiting
+going passing touching knock hit disturb wake anywhere let yourself be into enter visiting entering navigate navigating reaching reach move moving
+travel traveling travelling stepping step walking fly flying driving going ever allowed permitted to first
 '''.split()) - {'the'}
+
+# Gerunds and participles of movement, skipped between "until"/"after"/"before" and the place.
+EVENT_WORDS = frozenset('''
+reached visited arrived checked passed gone been going visiting reaching seen see got gotten made landed
+surveyed at there enter entering entered navigating navigated moving moved traveling travelling travelled
+heading headed arriving touching touched stepping stepped walking walked flying flew driving drove
+getting coming came returning returned finding found observing observe observed hitting hit after pass
+cross crossed crossing visit go enter reach get arrive
+'''.split())
 
 GOAL_VERBS = frozenset('''
 go goes head visit navigate move drive fly walk run come return check find locate reach get stop swing make
-proceed travel survey inspect do land charge stand hover approach enter circle pass explore search look patrol
+proceed travel survey inspect do continue advance going heading navigating moving travelling traveling
+flying driving walking visiting reaching land charge stand hover approach enter circle pass explore search look patrol
 wander roll arrive be need want please robot drone hey can could would you i will just also then now first
 next lastly finally and so okay kindly go ahead end up
 '''.split())
@@ -72,7 +88,25 @@ IGNORED_CLAUSES = frozenset({
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
     'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',
     'thank you', 'okay', 'in that order', 'in order', 'whichever is closer', 'it does not matter which',
-    'your choice', 'up to you', 'i do not mind which', 'start', 'start up', 'go ahead'})
+    'your choice', 'up to you', 'i do not mind which', 'start', 'start up', 'go ahead', 'stop', 'stop there',
+    'and stop', 'then stop', 'stay there', 'stop moving', 'finish', 'be done', 'done', 'and be done'})
+
+# "stay on the third floor", "do not leave the red room": the robot stays within a region.
+STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('stay', 'in'), ('stay', 'on'), ('stay', 'within'), ('stay', 'inside'), ('remain', 'in'), ('remain', 'on'),
+    ('remain', 'within'), ('remain', 'inside'), ('do', 'not', 'leave'), ('never', 'leave'), ('do', 'not', 'exit'),
+    ('do', 'not', 'navigate', 'away', 'from'), ('do', 'not', 'move', 'away', 'from'), ('never', 'move',
+                                                                                        'outside', 'of'),
+    ('never', 'go', 'outside', 'of'), ('do', 'not', 'go', 'outside', 'of'), ('without', 'leaving'),
+    ('without', 'exiting'), ('only', 'stepping', 'in'), ('by', 'only', 'stepping', 'in'), ('always', 'stay', 'in'),
+    ('always', 'stay', 'on'), ('always', 'remain', 'in'), ('always', 'remain', 'on'), ('never', 'exit'),
+    ('do', 'not', 'step', 'out', 'of'), ('never', 'step', 'out', 'of'), ('stay', 'at'), ('remain', 'at'),
+    ('do', 'not', 'leave', 'from'), ('you', 'cannot', 'leave'), ('you', 'can', 'not', 'leave'),
+    ('you', 'must', 'not', 'leave'), ('keep', 'going', 'on'), ('wait', 'at'), ('wait', 'in'), ('stay', 'put', 'at'),
+    ('are', 'not', 'allowed', 'to', 'leave'), ('do', 'not', 'move', 'outside', 'of'), ('only', 'walk', 'in'),
+    ('while', 'staying', 'in'), ('while', 'staying', 'on'), ('while', 'remaining', 'in'), ('while', 'remaining',
+                                                                                          'on'),
+), key=lambda t: -len(t)))
 
 CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
     'only', 'not', 'never', 'do', 'stay', 'keep', 'avoid', 'on', 'once', 'after', 'before', 'while',
@@ -306,6 +340,12 @@ class OfflineTranslator:
                            {'seconds': elapsed, 'tokens': ' '.join(tokens)})
 
 
+def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
+    """Whether an ordinal starts a name ("first floor") rather than an adverb ("first head to")."""
+    nxt = tokens[i + 1] if i + 1 < len(tokens) else ''
+    return is_name_word(tokens, i, False) and nxt not in GOAL_VERBS | NAME_VERBS | DELIVER_VERBS | PICK_VERBS
+
+
 def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
     return tuple(tokens[i:i + len(words)]) == tuple(words)
 
@@ -370,7 +410,14 @@ class _Reader:
                 self._read_alternatives([tokens[:k], tokens[k + 2:]])
                 return
         scope: Optional[_Scope] = None
-        for clause in self._clauses(tokens):
+        clauses = self._clauses(tokens)
+        for n, clause in enumerate(clauses):
+            later = [t for c in clauses[n:] for t in c.tokens]
+            first = self._strip_fillers(clause.tokens)
+            if self.task.chain and (self._is_permission(first) or self._is_permission(clause.tokens)) or (first[:1] in (['if'], ['once'], ['only']) and
+                                              self._is_permission(later)):
+                self._read_permission(later)
+                return
             scope = self._read_clause(clause, scope)
 
     def _read_alternatives(self, parts: list[list[str]]) -> None:
@@ -474,10 +521,31 @@ class _Reader:
         if _starts(tokens, 0, ['where', 'is']) or _starts(tokens, 0, ['there', 'is']) or _starts(
                 tokens, 0, ['there', 'are']):
             tokens = tokens[2:]
+        if self._is_permission(tokens):
+            self._read_permission(tokens)
+            return scope
+        raw = [t for t in clause.tokens if t not in PUNCT]
+        first_flag = bool(raw) and (raw[-1] == 'first' or raw[:2] == ['but', 'first'] or (
+            raw[0] == 'first' and clause.connector == 'and'))
+        if self._read_stay_within(tokens):
+            return scope
+        if tokens[0] == 'only' and len(tokens) > 1 and tokens[1] == 'if':
+            tokens = tokens[1:]
         if tokens[0] == 'if':
             self.saw_action = True
             self._read_conditional(tokens)
             return scope
+        if tokens[0] in ('travelling', 'traveling', 'going', 'passing', 'via') and self.task.chain and \
+                clause.connector == 'and':
+            first_flag = True
+        if self._avoid_start(tokens) is not None and 'first' in tokens[:4] and self.task.chain:
+            first_flag = True
+        if first_flag and self.task.chain and clause.connector == 'and':
+            if self._avoid_start(tokens) is not None:
+                self.saw_action = True
+                self._read_avoid(tokens, _Scope('onway'))
+                return scope
+            clause = _Clause('pre', clause.tokens)
         if tokens[0] == 'only' and len(tokens) > 1 and tokens[1] in GOAL_VERBS | DELIVER_VERBS:
             tokens = tokens[1:]
             self.only = True
@@ -497,8 +565,10 @@ class _Reader:
     @staticmethod
     def _strip_fillers(tokens: list[str]) -> list[str]:
         i = 0
+        while i < len(tokens) - 1 and tokens[i] == 'always' and tokens[i + 1] in GOAL_VERBS:
+            i += 1
         while i < len(tokens) and (tokens[i] in FILLERS or tokens[i] == ',') and not (
-                tokens[i] in ('first', 'just') and False):
+                tokens[i] in ORDINALS and _ordinal_name(tokens, i)):
             if tokens[i] == 'make' and not _starts(tokens, i, ['make', 'sure']):
                 break
             if tokens[i] == 'i' and i + 1 < len(tokens) and tokens[i + 1] in ('need', 'want', 'would'):
@@ -507,6 +577,8 @@ class _Reader:
             if tokens[i] == 'to' and i + 1 < len(tokens) and tokens[i + 1] == 'the':
                 break
             i += 1
+            if i < len(tokens) - 1 and tokens[i] == 'always' and tokens[i + 1] in GOAL_VERBS:
+                i += 1
         out = tokens[i:]
         while out and out[-1] in (',', 'please', 'too', 'now', 'again', 'thanks', 'first', 'instead', 'ok',
                                   'okay', 'then', 'as', 'well'):
@@ -546,6 +618,14 @@ class _Reader:
         if j >= len(tokens):
             return None, i
         w = tokens[j]
+        if w in ('going', 'navigating', 'heading', 'travelling', 'traveling', 'walking', 'flying', 'driving',
+                 'moving') and tokens[i - 1] in ('while', 'when'):
+            k = j + 1
+            while k < len(tokens) and tokens[k] in GOAL_PARTICLES:
+                k += 1
+            np = self.phrases.parse(tokens, k)
+            if np is not None:
+                return _Scope('onway', self._resolve(np, place=True), 'while'), np.end
         if w in ('carrying', 'holding', 'transporting', 'bringing', 'taking', 'moving', 'returning'):
             k = j + 1
             np = self.phrases.parse(tokens, k)
@@ -571,9 +651,7 @@ class _Reader:
                 end += 1
             return _Scope('after_release'), end
         k = j
-        while k < len(tokens) and tokens[k] in NAME_VERBS | GOAL_PARTICLES | {
-                'reached', 'visited', 'arrived', 'checked', 'passed', 'gone', 'been', 'going', 'visiting',
-                'reaching', 'seen', 'got', 'gotten', 'made', 'landed', 'surveyed', 'at', 'there'}:
+        while k < len(tokens) and tokens[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS:
             if tokens[k] == 'there':
                 step = self.task.last_step(('visit', 'deliver'))
                 return _Scope('after', self.last_place if step else None), k + 1
@@ -604,14 +682,17 @@ class _Reader:
 
     # ----------------------------------------------------------------- kinds of clause
     def _avoid_start(self, tokens: list[str]) -> Optional[int]:
+        i = 0
+        while i < len(tokens) - 1 and tokens[i] in ('while', 'and', 'but', 'always', 'also', 'please', 'by',
+                                                     'just', 'so', 'then'):
+            i += 1
         for trig in AVOID_TRIGGERS:
-            if _starts(tokens, 0, trig):
-                k = len(trig)
-                if trig in (('do', 'not'), ('never',), ('not',), ('and', 'not'), ('but', 'not'), ('no',)):
-                    if _starts(tokens, k, ['let']):
-                        return None
-                    while k < len(tokens) and tokens[k] in AVOID_FILLER:
-                        k += 1
+            if _starts(tokens, i, trig):
+                k = i + len(trig)
+                if _starts(tokens, k, ['let']):
+                    return None
+                while k < len(tokens) and tokens[k] in AVOID_FILLER:
+                    k += 1
                 return k
         return None
 
@@ -635,6 +716,8 @@ class _Reader:
         local, rest = self._trailing_scope(rest)
         if local is not None:
             scope = local
+        elif scope is None and 'without' in tokens[:k] and 'through' in tokens[:k] and self.task.chain:
+            scope = _Scope('onway')
         leftover = [t for t in rest if t not in ('at', 'all', 'times', 'the', 'whole', 'time', 'entire',
                                                    'ever', 'please', 'way', 'along', 'throughout', 'any',
                                                    'point', 'either', 'too', 'as', 'well', 'again')]
@@ -648,7 +731,8 @@ class _Reader:
             return None, rest
         if rest[0] == 'until' or _starts(rest, 0, ['before', 'you']) or _starts(rest, 0, ['unless']):
             j = 1
-            while j < len(rest) and rest[j] in ('you', 'have', 'i', 'we', 'are', 'been', 'the', 'robot', 'has'):
+            while j < len(rest) and rest[j] in ('you', 'have', 'i', 'we', 'are', 'been', 'the', 'robot', 'has',
+                                                'after', 'finally', 'first', 'successfully', 'actually'):
                 j += 1
             event = 'near'
             if j < len(rest) and rest[j] in ('got', 'gotten', 'picked', 'grabbed', 'collected', 'fetched',
@@ -657,9 +741,8 @@ class _Reader:
                         'it', 'them', 'up')):
                     return _Scope('until', self.last_object, 'pick'), []
                 event = 'pick' if rest[j] not in ('got', 'gotten', 'get') else 'near'
-            while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in NAME_VERBS | GOAL_PARTICLES | {
-                    'reached', 'visited', 'arrived', 'checked', 'been', 'got', 'gotten', 'seen', 'see',
-                    'picked', 'grabbed', 'passed', 'gone', 'made', 'up', 'at', 'visiting', 'reaching'}:
+            while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in NAME_VERBS | GOAL_PARTICLES | \
+                    EVENT_WORDS | {'picked', 'grabbed', 'up'}:
                 j += 1
             nps, _, end = self._np_list(rest, j)
             if nps:
@@ -690,12 +773,23 @@ class _Reader:
         kind = scope.kind if scope is not None else 'global'
         if kind == 'until' and scope is not None and scope.target is not None:
             d = scope.target.descriptor
+            known = self.task.find_step(d, scope.target.head)
+            if known is not None and d not in known.targets + known.dests and known.targets:
+                d = known.targets[0]  # "the landmark" names the goal already given
             if scope.event == 'pick':
                 self.task.constraints.append(_until_avoid(targets, Atom('pick', (d,))))
             else:
                 self.task.constraints.append(_until_avoid(targets, _near(d)))
                 if self.task.find_step(d) is None:
                     self.task.chain.append(Step('visit', [d]))
+            return
+        if kind == 'onway' and self.avoid_scope == 'goal' and scope is not None and scope.event == 'while' \
+                and scope.target is not None:
+            step = self.task.find_step(scope.target.descriptor)
+            if step is None:
+                step = Step('visit', [scope.target.descriptor])
+                self.task.chain.append(step)
+            step.avoid_at.extend(targets)
             return
         if kind == 'onway':
             step: Optional[Step]
@@ -747,6 +841,79 @@ class _Reader:
             return
         self.task.constraints.extend(_never(targets))
 
+    @staticmethod
+    def _is_permission(tokens: list[str]) -> bool:
+        s = ' ' + ' '.join(tokens) + ' '
+        return any(p in s for p in (' you can ', ' you may ', ' stay put ', ' be done ', ' free to ',
+                                    ' you are allowed ', ' it is okay to ', ' it is fine to ', ' or stop ',
+                                    ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ')) and ' not ' not in s
+
+    def _read_permission(self, tokens: list[str]) -> None:
+        """'...then you can go to Y': an avoidance of Y that was pending ends where the goal is reached."""
+        names = set()
+        start = next((i for i, t in enumerate(tokens) if t in ('can', 'may', 'free', 'allowed', 'or', 'then')), 0)
+        for i in range(start, len(tokens)):
+            if tokens[i] in DETS or (i > 0 and tokens[i - 1] in ('to', 'visit', 'enter', 'at')):
+                np = self.phrases.parse(tokens, i)
+                if np is not None and not np.pronoun:
+                    names.add(np.descriptor)
+        steps = [st for st in self.task.chain if st.kind == 'visit']
+        if not steps:
+            return
+        for st in steps:
+            moved = [d for d in st.avoid_at if d in names]
+            if moved:
+                st.avoid_at = [d for d in st.avoid_at if d not in names]
+                st.avoid_until.extend(moved)
+        moved = [d for d in self.pending_avoid_at if d in names]
+        if moved:
+            self.pending_avoid_at = [d for d in self.pending_avoid_at if d not in names]
+            steps[-1].avoid_until.extend(moved)
+        # "once you reach X you may go to Y": Y is not allowed before X
+        targets = {d for st in self.task.chain for d in st.targets}
+        avoided = {d for st in steps for d in st.avoid_until + st.avoid_at}
+        for d in sorted(names - targets - avoided - {c.operand.operand.args[0] for c in self.task.constraints
+                                                    if isinstance(c, Always) and isinstance(c.operand, Not)
+                                                    and isinstance(c.operand.operand, Atom)}, key=str):
+            steps[-1].avoid_until.append(d)
+        for f in list(self.task.constraints):
+            if isinstance(f, Always) and isinstance(f.operand, Not) and isinstance(f.operand.operand, Atom) and \
+                    f.operand.operand.args[0] in names:
+                self.task.constraints.remove(f)
+                steps[-1].avoid_until.append(f.operand.operand.args[0])
+
+    def _read_stay_within(self, tokens: list[str]) -> bool:
+        """'stay on the third floor [while going to X]' -> ``G near[floor]``; '... until Y' -> ``U``."""
+        if tokens and tokens[0] in ('while', 'and', 'but', 'by', 'always'):
+            tokens = tokens[1:]
+        leads = STAY_WITHIN
+        if len(tokens) > 1 and tokens[0] in ('staying', 'remaining', 'keeping', 'stay', 'remain') and tokens[1] in (
+                'in', 'on', 'within', 'inside'):
+            leads = (tuple(tokens[:2]),)
+        for lead in leads:
+            if _starts(tokens, 0, lead):
+                nps, _, end = self._np_list(tokens, len(lead))
+                if not nps:
+                    return False
+                self.saw_action = True
+                rest = [t for t in tokens[end:] if t != ',']
+                region = _and(*[_near(np.descriptor) for np in nps])
+                assert region is not None
+                if rest and rest[0] in ('until', 'till', 'before') or _starts(rest, 0, ['as', 'long', 'as']):
+                    j = 3 if rest[0] == 'as' else 1
+                    j = self._skip_event_verbs(rest, j)
+                    more, _, e2 = self._np_list(rest, j)
+                    if more:
+                        self.task.constraints.append(Until(region, _near(more[0].descriptor)))
+                        return True
+                self.task.constraints.append(Always(region))
+                while rest and rest[0] in ('while', 'and', 'to', 'as', 'when', 'but', 'then'):
+                    rest = rest[1:]
+                if rest:
+                    self._read_goal(rest, _Clause('and', rest), None)
+                return True
+        return False
+
     def _exclusive_or(self) -> None:
         """'X or Y but not both': one of them, and never the other."""
         step = self.task.last_step(('visit',))
@@ -761,8 +928,8 @@ class _Reader:
     def _read_conditional(self, tokens: list[str]) -> None:
         """ "if you go into X at all, check Y first" -> ``!near[x] W near[y]``."""
         j = 1
-        while j < len(tokens) and tokens[j] in NAME_VERBS | GOAL_PARTICLES | {'you', 'ever', 'want', 'do',
-                                                                               'choose', 'pick', 'decide'}:
+        while j < len(tokens) and tokens[j] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
+                'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already'}:
             j += 1
         np = self.phrases.parse(tokens, j)
         if np is None:
@@ -790,6 +957,10 @@ class _Reader:
             step.kind, step.targets, step.chains = 'any', [], chains
             return
         rest = self._strip_fillers(rest)
+        if self._is_permission(rest):
+            return
+        if tokens[j - 1] in ('reached', 'reach', 'arrived', 'arrive', 'are', 'get', 'got', 'been') and not rest:
+            return  # "if you reached X, (then you may ...)": a condition for a permission
         k = 0
         while k < len(rest) and rest[k] in NAME_VERBS | GOAL_PARTICLES:
             k += 1
@@ -835,10 +1006,8 @@ class _Reader:
 
     @staticmethod
     def _skip_event_verbs(s: list[str], k: int) -> int:
-        while k < len(s) and s[k] in NAME_VERBS | GOAL_PARTICLES | {
-                'you', 'have', 'been', 'visited', 'reached', 'checked', 'gone', 'got', 'gotten', 'i', 'are',
-                'both', 'the', 'robot', 'has', 'seen', 'visiting', 'going', 'reaching', 'passed', 'made',
-                'make', 'sure'} - {'the'}:
+        while k < len(s) and s[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
+                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure'}:
             k += 1
         return k
 
@@ -987,10 +1156,11 @@ class _Reader:
                 k += 1
         patrol_from = False
         while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES) and not (
+                tokens[k] in ORDINALS and _ordinal_name(tokens, k)) and not (
                 tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)) and not (
                 tokens[k] in ('back',) and k + 1 < len(tokens) and tokens[k + 1] in ('door', 'gate', 'yard',
                                                                                       'room', 'porch')):
-            if tokens[k] == 'from' and k > 0 and tokens[k - 1] in ('patrol', 'go', 'fly', 'drive'):
+            if tokens[k] in ('from', 'through', 'via') and k > 0:
                 patrol_from = True
             k += 1
         nps, joiner, end = self._np_list(tokens, k)
@@ -1048,10 +1218,18 @@ class _Reader:
 
     def _goal_trailer(self, rest: list[str], whole: list[str], targets: list[Descriptor]) -> None:
         """What may follow a goal: "before Y", "after Y", "only after Y", "through Y", an avoidance."""
-        rest = [t for t in rest if t not in (',', 'please', 'first', 'too', 'again', 'then', 'instead')]
+        drop = (',', 'please', 'first', 'too', 'again', 'then', 'instead')
+        rest = [t for t in rest if t != ',']
+        while rest and rest[-1] in drop:
+            rest = rest[:-1]
+        while rest and rest[0] in drop and not (rest[0] == 'first' and _ordinal_name(rest, 0)):
+            rest = rest[1:]
         if not rest:
             return
         only, self.only = self.only, False
+        r0 = rest[1:] if rest[0] in ('while', 'and', 'but', 'by', 'then') else rest
+        if self._read_stay_within(r0) or (r0 is not rest and self._read_stay_within(rest)):
+            return
         if rest[0] == 'only':
             only, rest = True, rest[1:]
         if rest and rest[0] in ('before', 'after', 'through', 'via', 'by', 'past') and len(rest) > 1:
@@ -1061,7 +1239,10 @@ class _Reader:
             if nps:
                 others = [np.descriptor for np in nps]
                 moved = self.task.chain.pop()
-                if word == 'before':
+                if word == 'before' and k > 1:  # "before going to Y": the route order only
+                    self.task.chain.append(moved)
+                    self.task.chain.extend(Step('visit', [d]) for d in others)
+                elif word == 'before':
                     self.task.chain.append(moved)
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                     for d in others:
@@ -1077,10 +1258,29 @@ class _Reader:
                                     self.task.constraints.append(Until(Not(_near(x)), _near(d)))
                 self._goal_trailer(rest[end:], whole, targets)
                 return
+        if rest[0] == 'by' and len(rest) > 2:
+            j = 2 if rest[1] == 'first' else 1
+            if rest[j].endswith('ing') and rest[j] not in ('avoiding', 'staying', 'remaining', 'keeping', 'only'):
+                k = self._skip_event_verbs(rest, j + 1)
+                nps, _, end = self._np_list(rest, k)
+                if nps:
+                    moved = self.task.chain.pop()
+                    self.task.chain.extend(Step('visit', [np.descriptor]) for np in nps)
+                    self.task.chain.append(moved)
+                    self._goal_trailer(rest[end:], whole, targets)
+                    return
+        for lead in (['on', 'your', 'way', 'to'], ['on', 'the', 'way', 'to'], ['and', 'then', 'to'],
+                     ['to', 'get', 'to'], ['in', 'order', 'to', 'get', 'to'], ['to', 'reach'], ['to', 'go', 'to'],
+                     ['then', 'to'], ['and', 'to'], ['to']):
+            if _starts(rest, 0, lead) and self.task.chain:
+                nps, _, end = self._np_list(rest, len(lead))
+                if nps:
+                    self.task.chain.extend(Step('visit', [np.descriptor]) for np in nps)
+                    self._goal_trailer(rest[end:], whole, [np.descriptor for np in nps])
+                    return
         if self._avoid_start(rest) is not None or rest[0] in ('while', 'avoiding', 'without'):
-            r = rest[1:] if rest[0] == 'while' else rest
-            if self._avoid_start(r) is not None:
-                self._read_avoid(r, None)
+            if self._avoid_start(rest) is not None:
+                self._read_avoid(rest, None)
                 return
         if rest[0] in ('while', 'on', 'along', 'when', 'until'):
             sc, rem = self._trailing_scope(rest)

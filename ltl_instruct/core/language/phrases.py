@@ -62,7 +62,16 @@ has have had make sure just now first lastly last next then around up down off o
 whichever whatever matter care which else other others until till avoid avoiding away stay keep clear
 while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant
 fine enough again cannot cant dont one along throughout entire whole during without except only
+always directly immediately ever never by near behind between above under below beneath beside
 '''.split()) - {'one'}
+
+# Words before "one" that make it a placeholder ("the blue one") rather than a number ("landmark one").
+PLACEHOLDER_ADJECTIVES = frozenset('''
+red blue green yellow orange purple pink brown black white grey gray silver gold golden big small large little
+tall short long round square other same left right near far front back upper lower top bottom middle new old
+wooden metal plastic glass open closed empty full clean dirty dark light first second third last closest
+nearest farthest furthest next previous main
+'''.split())
 
 LY_NOUNS = frozenset({'family', 'assembly', 'supply', 'jelly', 'belly', 'trolley', 'pulley', 'valley', 'alley',
                       'butterfly', 'dragonfly', 'lily', 'holly', 'bully', 'rally', 'gully', 'folly', 'doily'})
@@ -99,6 +108,9 @@ def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
         if tuple(tokens[i:i + n]) == words:
             if words == ('over',) and i + 1 < len(tokens) and tokens[i + 1] in ('to', 'there', 'here'):
                 continue
+            if i + n < len(tokens) and tokens[i + n].endswith('ing') and tokens[i + n] not in ('ceiling', 'building',
+                                                                                           'railing', 'painting'):
+                continue  # "by passing through X" is a manner, not a place
             return comparator, i + n
     return None
 
@@ -204,6 +216,11 @@ class PhraseParser:
                 if i + 1 < len(tokens) and tokens[i] == 'of' and words[-1] in CONTAINER_WORDS:
                     words.append('of')
                     i += 1
+        if words in (['spot'], ['somewhere'], ['place'], ['point'], ['location'], ['area']) and i + 1 < len(
+                tokens) and tokens[i] in ('in', 'on', 'inside', 'at', 'of') and depth < 8:
+            inner = self.parse(tokens, i + 1, destination_stops, depth)
+            if inner is not None:
+                return NounPhrase(inner.descriptor, start, inner.end, inner.head, inner.pronoun)
         if not words and not pronoun:
             return None
         if pronoun:
@@ -211,7 +228,7 @@ class PhraseParser:
                 return None
             ref = self.last
             return NounPhrase(ref.descriptor, start, i, ref.head, pronoun)
-        one = words[-1] == 'one'
+        one = words[-1] == 'one' and (len(words) == 1 or words[-2] in PLACEHOLDER_ADJECTIVES)
         if one:
             base = self.last.descriptor.name if self.last is not None else ''
             if len(words) == 1:

@@ -93,7 +93,7 @@ class ReferentGrounderNode(Node):
         return tuple(self._known) + self._detected
 
     def _new_detections(self, detected: tuple) -> tuple:
-        """Detections that are not a known object seen again (same label, centres close)."""
+        """Keep the detections that are not a known object seen again (same label, centres close)."""
         limit = self.params['merge_distance']
         out = []
         for d in detected:

@@ -19,7 +19,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Optional, Sequence
 
-from ltl_instruct.core.errors import ErrorCode, LimitExceededError, TranslationError
+from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
 from ltl_instruct.core.language.base import Translation
 from ltl_instruct.core.language.phrases import (
     DETERMINERS as DETS, NAME_VERBS, NounPhrase, PhraseParser, is_name_word,
@@ -27,8 +27,10 @@ from ltl_instruct.core.language.phrases import (
 from ltl_instruct.core.language.rewrite import apply_corrections, resolve_list_references
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
-    Always, And, Atom, Descriptor, Eventually, Formula, Not, Or, Until, WeakUntil,
+    Always, And, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Or, Until, WeakUntil,
 )
+
+STOP_AFTER_THE = frozenset({'next', 'very', 'same', 'moment', 'time', 'following', 'other', 'end'})
 
 MAX_INSTRUCTION_CHARS = 2000
 
@@ -75,6 +77,7 @@ there from onto me quickly straight directly
 FILLERS = frozenset('''
 please pls hey robot drone can could would you will just also then now first next lastly finally and so
 okay kindly i need want like to be sure make remember also yes alright right well oh hmm um er but
+eventually must have should ensure required that certainly definitely simply
 '''.split())
 DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
                            'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',
@@ -304,6 +307,9 @@ class OfflineTranslator:
 
     Parameters
     ----------
+    landmarks:
+        Names known in advance (a city map, a grid world: ``a``, ``b``, ``red_room``): each is a
+        whole noun phrase, even where it looks like an article ("go to a").
     avoid_scope:
         ``'global'`` (default, the development set's convention): "go to X and
         avoid Y" is ``F near[x] & G !near[y]``. ``'goal'`` reads it as the
@@ -313,11 +319,12 @@ class OfflineTranslator:
 
     name = 'offline'
 
-    def __init__(self, avoid_scope: str = 'global') -> None:
+    def __init__(self, avoid_scope: str = 'global', landmarks: Sequence[str] = ()) -> None:
         if avoid_scope not in ('global', 'goal'):
             raise TranslationError(f'avoid_scope must be global or goal, not {avoid_scope!r}',
                                    ErrorCode.INVALID_INPUT)
         self.avoid_scope = avoid_scope
+        self.landmarks = tuple(landmarks)
 
     def translate(self, instruction: str) -> Translation:
         """Translate one instruction (raises :class:`TranslationError` naming what it cannot place)."""
@@ -333,8 +340,14 @@ class OfflineTranslator:
         notes: list[str] = []
         tokens = resolve_list_references(tokens, notes)
         tokens = apply_corrections(tokens, notes)
-        reader = _Reader(self.avoid_scope, notes)
-        formula = reader.read(tokens)
+        reader = _Reader(self.avoid_scope, notes, self.landmarks)
+        try:
+            formula = reader.read(tokens)
+        except (IndexError, KeyError, ValueError, AttributeError, RecursionError, AssertionError) as e:
+            # a bug in the rules, reported as one (typed), never a crash of the caller
+            raise LtlInstructError(f'the offline translator failed on this instruction ({type(e).__name__}: '
+                                   f'{e}); please report it', ErrorCode.INTERNAL_ERROR,
+                                   {'instruction': instruction}) from e
         elapsed = time.perf_counter() - started
         return Translation(instruction, formula, self.name, tuple(notes),
                            {'seconds': elapsed, 'tokens': ' '.join(tokens)})
@@ -360,8 +373,8 @@ def _find(tokens: Sequence[str], words: Sequence[str], start: int = 0) -> int:
 class _Reader:
     """Reads the clauses of one instruction into a :class:`_Task`."""
 
-    def __init__(self, avoid_scope: str, notes: list[str]) -> None:
-        self.phrases = PhraseParser()
+    def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = ()) -> None:
+        self.phrases = PhraseParser(landmarks)
         self.task = _Task()
         self.avoid_scope = avoid_scope
         self.notes = notes
@@ -524,6 +537,14 @@ class _Reader:
         if self._is_permission(tokens):
             self._read_permission(tokens)
             return scope
+        if self._read_patrol(tokens) or self._read_reaction(tokens):
+            self.saw_action = True
+            return scope
+        for tail in (['are', 'all', 'visited'], ['are', 'visited'], ['is', 'visited'], ['are', 'reached'],
+                     ['is', 'reached'], ['get', 'visited'], ['gets', 'visited'], ['are', 'all', 'reached']):
+            if tokens[-len(tail):] == tail and len(tokens) > len(tail):
+                tokens = ['visit'] + tokens[:-len(tail)]
+                break
         raw = [t for t in clause.tokens if t not in PUNCT]
         first_flag = bool(raw) and (raw[-1] == 'first' or raw[:2] == ['but', 'first'] or (
             raw[0] == 'first' and clause.connector == 'and'))
@@ -824,6 +845,13 @@ class _Reader:
                 return
         if kind == 'after' and scope is not None and scope.target is not None:
             step = self.task.find_step(scope.target.descriptor, scope.target.head)
+            if step is None and not self.task.chain:
+                # no goal to hang it on: "once you have visited a, avoid b" holds whenever a happens
+                a = _near(scope.target.descriptor)
+                never = _and(*_never(targets))
+                assert never is not None
+                self.task.constraints.append(Always(Implies(a, Next(never))))
+                return
             if step is None:
                 step = Step('visit', [scope.target.descriptor])
                 self.task.chain.append(step)
@@ -840,6 +868,62 @@ class _Reader:
                 self.pending_avoid_at.extend(targets)
             return
         self.task.constraints.extend(_never(targets))
+
+    def _read_patrol(self, tokens: list[str]) -> bool:
+        """'keep visiting a and b without stopping', 'visit a infinitely often' -> ``G F near[a] & G F near[b]``."""
+        s = ' ' + ' '.join(tokens) + ' '
+        marks = (' infinitely', ' infinite ', ' forever', ' keep visiting ', ' keep going to ', ' not stop visiting ',
+                 ' never stop visiting ', ' without stopping', ' repeatedly', ' continuously', ' endlessly',
+                 ' over and over', ' frequent ', ' keep on visiting ', ' indefinitely', ' again and again',
+                 ' keep revisiting ', ' continually', ' constantly', ' unlimited ', ' perpetually')
+        if not any(m in s for m in marks):
+            return False
+        nps: list[NounPhrase] = []
+        i = 0
+        while i < len(tokens):
+            if tokens[i] in DETS and not self.phrases.landmarks or (self.phrases.landmarks and
+                                                                    self.phrases._landmark(tokens, i)):
+                found, _, end = self._np_list(tokens, i)
+                if found:
+                    nps.extend(found)
+                    i = end
+                    continue
+            i += 1
+        if not nps:
+            return False
+        for np in nps:
+            self.task.constraints.append(Always(Eventually(_near(np.descriptor))))
+        return True
+
+    def _read_reaction(self, tokens: list[str]) -> bool:
+        """'whenever you visit a, go to b (immediately after)' -> ``G (a -> F b)`` / ``G (a -> X b)``."""
+        s = ' '.join(tokens)
+        lead = ('whenever', 'every time', 'each time', 'anytime', 'any time')
+        if not (s.startswith(lead) or ' whenever ' in s or ' every time ' in s or 'immediately after' in s
+                or 'right after' in s or 'at the next' in s or 'the next time instant' in s):
+            return False
+        names: list[Descriptor] = []
+        order: list[int] = []
+        for i in range(len(tokens)):
+            if self.phrases.landmarks and self.phrases._landmark(tokens, i) or tokens[i] == 'the' and i + 1 < len(
+                    tokens) and tokens[i + 1] not in STOP_AFTER_THE:
+                np = self.phrases.parse(tokens, i)
+                if np is not None and np.descriptor not in names and not np.pronoun:
+                    names.append(np.descriptor)
+                    order.append(i)
+        if len(names) != 2:
+            return False
+        # the trigger is the place after whenever/after/once; the reaction is the other one
+        trig_words = ('whenever', 'time', 'after', 'once', 'if')
+        first, second = names
+        k = order[0]
+        if not any(w in tokens[max(0, k - 5):k] for w in trig_words):
+            first, second = second, first
+        immediate = any(w in s for w in ('immediately', 'right after', 'next time', 'at once', 'directly after',
+                                         'right away', 'very next'))
+        react: Formula = Next(_near(second)) if immediate else Eventually(_near(second))
+        self.task.constraints.append(Always(Implies(_near(first), react)))
+        return True
 
     @staticmethod
     def _is_permission(tokens: list[str]) -> bool:
@@ -1232,6 +1316,8 @@ class _Reader:
             return
         if rest[0] == 'only':
             only, rest = True, rest[1:]
+        if not rest:
+            return
         if rest and rest[0] in ('before', 'after', 'through', 'via', 'by', 'past') and len(rest) > 1:
             word = rest[0]
             k = self._skip_event_verbs(rest, 1)

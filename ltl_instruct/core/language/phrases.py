@@ -176,8 +176,17 @@ def name_of(words: Sequence[str]) -> str:
 class PhraseParser:
     """Parses noun phrases in a token list; remembers the last ones for pronouns and "the one"."""
 
-    def __init__(self) -> None:
+    def __init__(self, landmarks: Sequence[str] = ()) -> None:
         self.last: Optional[NounPhrase] = None
+        # known landmark names, as token tuples, longest first ("a", "red room", "landmark_1")
+        self.landmarks = sorted({tuple(name.replace('_', ' ').split()) for name in landmarks},
+                                key=lambda t: -len(t))
+
+    def _landmark(self, tokens: Sequence[str], i: int) -> Optional[tuple[str, ...]]:
+        for words in self.landmarks:
+            if tuple(tokens[i:i + len(words)]) == words:
+                return words
+        return None
 
     def parse(self, tokens: Sequence[str], i: int, destination_stops: bool = False,
               depth: int = 0) -> Optional[NounPhrase]:
@@ -198,7 +207,15 @@ class PhraseParser:
         if depth > 8:
             return None
         start = i
-        while i < len(tokens) and tokens[i] in DETERMINERS:
+        if self.landmarks:
+            j = i + 1 if i < len(tokens) and tokens[i] == 'the' else i
+            lm = self._landmark(tokens, j)
+            if lm is not None:
+                np = NounPhrase(Descriptor(name_of(list(lm))), start, j + len(lm), lm[-1])
+                if depth == 0:
+                    self.last = np
+                return np
+        while i < len(tokens) and tokens[i] in DETERMINERS and not (self.landmarks and self._landmark(tokens, i)):
             i += 1
         words: list[str] = []
         pronoun = ''
@@ -297,6 +314,8 @@ class PhraseParser:
             if j < len(tokens) and tokens[j] in ('and', 'or', 'nor'):
                 sep = 'or' if tokens[j] == 'or' else 'and'
                 j += 1
+            if not sep and self.landmarks and self._landmark(tokens, j) is not None:
+                sep = 'and'
             if not sep:
                 break
             if j < len(tokens) and tokens[j] in ('then', 'after', 'finally', 'also'):

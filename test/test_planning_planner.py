@@ -6,6 +6,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from ltl_instruct.core.automaton import compile_automaton
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, PlanningError, UnsatisfiableError
@@ -222,3 +223,21 @@ def test_a_referent_with_no_instance_is_named_in_the_error():
     with pytest.raises(PlanningError) as e:
         plan_task(aut, ReferentMap({}), world_from_scene(scene), scene.robot.start, FAST)
     assert 'near[unicorn]' in e.value.message and e.value.details['empty_regions'] == ['near[unicorn]']
+
+
+@settings(max_examples=15, derandomize=True, deadline=None)
+@given(st.floats(0.0, 20.0), st.floats(0.0, 12.0), st.sampled_from(['sofa', 'table', 'chair', 'cup']),
+       st.sampled_from(['door', 'chair', 'table']))
+def test_random_starts_give_a_verified_plan_or_a_typed_error(x, y, goal, avoid):
+    scene = scene_from_dict(dict(ROOM, robot={'kind': 'ground', 'start': [x, y, 0], 'radius': 0.3}))
+    text = f'F near[{goal}] & G !near[{avoid}]'
+    aut = compile_automaton(text)
+    world = world_from_scene(scene)
+    try:
+        plan = plan_task(aut, _rmap(scene, aut.formula), world, (x, y), FAST)
+    except (PlanningError, UnsatisfiableError) as e:
+        assert e.code in (ErrorCode.START_OCCUPIED, ErrorCode.GOAL_OCCUPIED, ErrorCode.NO_VALID_PATH,
+                          ErrorCode.UNSATISFIABLE)
+        return
+    assert plan.verification.ok
+    assert world.is_free(plan.path()).all()

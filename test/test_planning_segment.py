@@ -5,6 +5,7 @@ import json
 
 import numpy as np
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from ltl_instruct.core.automaton.guards import GUARD_TRUE, Cube, Guard
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError
@@ -160,3 +161,20 @@ def test_segment_result_from_received_waypoints():
     assert r.ok and r.length == pytest.approx(1.0) and len(r.points) == 11
     with pytest.raises(InvalidInputError):
         SegmentResult.from_waypoints('x', np.array([[np.nan, 0.0]]))
+
+
+json_values = st.recursive(
+    st.none() | st.booleans() | st.integers(-10, 10) | st.floats(allow_nan=True) | st.text(max_size=12),
+    lambda inner: st.lists(inner, max_size=4) | st.dictionaries(st.text(max_size=8), inner, max_size=4),
+    max_leaves=20)
+
+
+@settings(max_examples=200, derandomize=True, deadline=None)
+@given(st.dictionaries(st.sampled_from(['id', 'start', 'dims', 'regions', 'goal', 'allowed', 'settings',
+                                        'target', 'bounds', 'transition']), json_values))
+def test_garbage_requests_only_raise_invalid_input(d):
+    good = _request().to_dict()
+    try:
+        SegmentRequest.from_dict(dict(good, **d))
+    except InvalidInputError:
+        pass

@@ -76,3 +76,13 @@ def test_all_nodes_are_console_scripts():
     text = (REPO / 'setup.py').read_text()
     for node in ALL_NODES:
         assert f"'{node}'" in text
+
+
+def test_scene_overrides_tell_every_node_about_the_robot():
+    from ltl_instruct.commands.bringup import scene_overrides
+    ground = scene_overrides('apartment')
+    assert ground['sim_world']['scene'] == ground['referent_grounder']['scene'] == 'apartment'
+    assert ground['task_progression']['robot_kind'] == 'ground' and 'bounds' not in ground['fmt_planner']
+    drone = scene_overrides('city_block')
+    assert drone['task_progression']['robot_kind'] == 'drone'
+    assert drone['fmt_planner']['bounds'] == drone['task_progression']['bounds'] == '0.5,0.5,2,119.5,99.5,30'

@@ -24,8 +24,10 @@ REPO = Path(__file__).resolve().parent.parent
 def prefix(tmp_path_factory):
     prefix = tmp_path_factory.mktemp('prefix')
     proc = subprocess.run(
+        # --ignore-installed: never touch an installation in the running environment (pip would
+        # otherwise uninstall an editable install of the package before installing into the prefix)
         [sys.executable, '-m', 'pip', 'install', '--quiet', '--no-deps', '--no-build-isolation',
-         '--no-warn-script-location', '--prefix', str(prefix), str(REPO)],
+         '--ignore-installed', '--no-warn-script-location', '--prefix', str(prefix), str(REPO)],
         capture_output=True, text=True, timeout=300, cwd=tmp_path_factory.mktemp('cwd'))
     assert proc.returncode == 0, proc.stderr[-3000:]
     return prefix

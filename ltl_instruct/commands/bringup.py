@@ -17,6 +17,8 @@ from pathlib import Path
 from typing import IO, Mapping, Optional, Sequence
 
 from ltl_instruct.core.errors import InvalidInputError
+from ltl_instruct.core.world.builtin import resolve_scene
+from ltl_instruct.core.world.scene import Scene
 
 PIPELINE_NODES = ('ltl_translator', 'referent_grounder', 'task_progression', 'fmt_planner')
 SIM_NODE = 'sim_world'
@@ -131,6 +133,36 @@ class NodeGraph:
         self.stop()
 
 
+def flight_bounds(scene: Scene) -> str:
+    """Return ``'xmin,ymin,zmin,xmax,ymax,zmax'`` [m] a drone's centre may use (bounds and altitude band)."""
+    r = scene.robot.radius
+    lo = [scene.bounds_min[k] + r for k in range(3)]
+    hi = [scene.bounds_max[k] - r for k in range(3)]
+    if scene.altitude is not None:
+        lo[2], hi[2] = max(lo[2], scene.altitude[0]), min(hi[2], scene.altitude[1])
+    return ','.join(f'{v:g}' for v in lo + hi)
+
+
+def scene_overrides(name_or_path: str) -> dict[str, dict[str, object]]:
+    """Return the per-node parameters for a scene.
+
+    The simulator and the grounder load it; the planner side gets the robot's kind and
+    radius (and, for a drone, the flight volume that the 3D map does not carry).
+    """
+    scene = resolve_scene(name_or_path)
+    arg = str(Path(name_or_path).resolve()) if Path(name_or_path).is_file() else name_or_path
+    radius = float(scene.robot.radius)
+    out: dict[str, dict[str, object]] = {
+        SIM_NODE: {'scene': arg},
+        'referent_grounder': {'scene': arg},
+        'task_progression': {'robot_kind': scene.robot.kind, 'robot_radius': radius},
+        'fmt_planner': {'robot_radius': radius},
+    }
+    if scene.robot.kind == 'drone':
+        out['task_progression']['bounds'] = out['fmt_planner']['bounds'] = flight_bounds(scene)
+    return out
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Arguments of ``ltl-instruct bringup``."""
     parser.add_argument('--sim', action='store_true', help='also start the simulator (sim_world)')
@@ -154,8 +186,7 @@ def run(args: argparse.Namespace) -> int:
         nodes = [n.strip() for n in args.nodes.split(',') if n.strip()]
     overrides: dict[str, dict[str, object]] = {}
     if args.scene:
-        overrides = {SIM_NODE: {'scene': args.scene}, 'referent_grounder': {'scene': args.scene},
-                     'fmt_planner': {'scene': args.scene}}
+        overrides = scene_overrides(args.scene)
     graph = NodeGraph(nodes, Path(params), overrides, log_dir=args.log_dir)
     stop = {'now': False}
 

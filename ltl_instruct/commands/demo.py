@@ -20,7 +20,7 @@ from typing import Any, Optional
 
 import numpy as np
 
-from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file
+from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file, scene_overrides
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.core.world.scene import Scene
@@ -67,20 +67,10 @@ def run(args: argparse.Namespace) -> int:
     os.environ['ROS_DOMAIN_ID'] = str(random.randint(1, 101))
     os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
     os.environ.pop('ROS_LOCALHOST_ONLY', None)
-    scene_arg = str(Path(args.scene).resolve()) if Path(args.scene).is_file() else args.scene
-    kind = scene.robot.kind
-    radius = float(scene.robot.radius)
-    overrides: dict[str, dict[str, object]] = {
-        'sim_world': {'scene': scene_arg, 'time_scale': float(args.speed)},
-        'referent_grounder': {'scene': scene_arg},
-        'task_progression': {'robot_kind': kind, 'robot_radius': radius},
-        'fmt_planner': {'robot_radius': radius},
-        'ltl_translator': {'require_confirmation': bool(args.interactive)},
-    }
-    if kind == 'drone':   # the 3D map (a point cloud) does not carry the flight volume: pass it
-        bounds = _flight_bounds(scene)
-        overrides['task_progression']['bounds'] = bounds
-        overrides['fmt_planner']['bounds'] = bounds
+    overrides = scene_overrides(args.scene)
+    overrides['sim_world']['time_scale'] = float(args.speed)
+    overrides['ltl_translator'] = {'require_confirmation': bool(args.interactive)}
+    if scene.robot.kind == 'drone':
         overrides['sim_world']['max_speed'] = 4.0
     from ltl_instruct.nodes.client import GraphClient   # rclpy only when the demo runs
 
@@ -162,16 +152,6 @@ def _run_instruction(client: Any, args: argparse.Namespace, instruction: Optiona
     if done['status'] == 'violated':
         report['violation'] = (done.get('monitor') or {}).get('blamed_atoms')
     return 0 if done['status'] == 'satisfied' else 1
-
-
-def _flight_bounds(scene: Scene) -> str:
-    """``'xmin,ymin,zmin,xmax,ymax,zmax'`` [m] a drone's centre may use: the bounds and altitude band."""
-    r = scene.robot.radius
-    lo = [scene.bounds_min[0] + r, scene.bounds_min[1] + r, scene.bounds_min[2] + r]
-    hi = [scene.bounds_max[0] - r, scene.bounds_max[1] - r, scene.bounds_max[2] - r]
-    if scene.altitude is not None:
-        lo[2], hi[2] = max(lo[2], scene.altitude[0]), min(hi[2], scene.altitude[1])
-    return ','.join(f'{v:g}' for v in lo + hi)
 
 
 def _failed(client: Any, iid: str) -> Optional[dict[str, Any]]:

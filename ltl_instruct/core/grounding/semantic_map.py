@@ -24,7 +24,6 @@ from dataclasses import dataclass
 from typing import Any, Mapping, Optional, Sequence
 
 import numpy as np
-from scipy.ndimage import minimum_filter
 
 from ltl_instruct.core.errors import InvalidInputError, LimitExceededError
 from ltl_instruct.core.grounding.rsm import Instance
@@ -47,7 +46,6 @@ class SemanticMapParams:
     min_class_score: least class score for a voxel to count as that class.
     pixel_stride: integrate every n-th pixel in each direction (1: all; 2 keeps a point
         every ~1 cm at 3 m for a 640 px wide 90 degree camera, far denser than the voxels).
-    footprint_px: window [strided px] of the nearest-depth filter that decides free space.
     """
 
     voxel_size: float = 0.1
@@ -55,7 +53,6 @@ class SemanticMapParams:
     min_cluster_voxels: int = 4
     min_class_score: float = 0.5
     pixel_stride: int = 2
-    footprint_px: int = 5
 
     def __post_init__(self) -> None:
         for name in ('voxel_size', 'max_range'):
@@ -212,15 +209,17 @@ class SemanticMap:
             u = (opt[0] * inv_z * np.float32(k.fx / s) + np.float32(k.cx / s))
             v = (opt[1] * inv_z * np.float32(k.fy / s) + np.float32(k.cy / s))
             inview = (zc > 1e-3) & (u >= 0) & (u < w) & (v >= 0) & (v < h)
-        # a voxel is observed free only when its whole footprint is in front of the surface:
-        # the nearest depth around its pixel, so rays grazing an object never carve it away
         dm_img = np.where(valid, d, np.float32(-np.inf))
-        if self.params.footprint_px > 1:
-            dm_img = minimum_filter(dm_img, size=self.params.footprint_px, mode='nearest')
         dm = np.full(zc.shape, -np.inf, dtype=np.float32)
         dm[inview] = dm_img[v[inview].astype(np.int64), u[inview].astype(np.int64)]
         free = zc < dm - np.float32(vs * 0.87)                     # -inf (no return) is never free
         sub_scores = self.scores[sl]
+        # an occupied voxel is freed only when all its corners lie in front of the surface: a ray
+        # through its centre may graze past the object surface that fills the voxel's lower half
+        held = np.argwhere(free & (sub_scores.sum(axis=3) >= 0.5))
+        if held.size:
+            keep = ~self._corners_in_front(held, lo, t_opt, k, s, dm_img)
+            free[tuple(held[keep].T)] = False
         sub_scores[free] = 0.0
         self.observed[sl] |= free
         # -- occupied: label histogram of the points in each voxel of the box
@@ -235,6 +234,25 @@ class SemanticMap:
         sub_hits = self.hits[sl]
         sub_hits[occ] = np.minimum(sub_hits[occ].astype(np.int64) + 1, 65535).astype(np.uint16)
         return int(free.sum()) + int(occ.sum())
+
+    def _corners_in_front(self, cells: np.ndarray, lo: np.ndarray, t_opt: np.ndarray, k: CameraIntrinsics,
+                          stride: int, depth: np.ndarray) -> np.ndarray:
+        """Whether all 8 corners of box cells (N, 3) lie in front of the measured depth."""
+        vs = self.params.voxel_size
+        centers = (cells + lo + 0.5) * vs
+        signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
+        corners = centers[:, None, :] + signs[None] * (0.5 * vs)             # (N, 8, 3)
+        r = t_opt[:3, :3].T
+        opt = (corners - t_opt[:3, 3]) @ r.T
+        z = opt[..., 2]
+        h, w = depth.shape
+        with np.errstate(divide='ignore', invalid='ignore'):
+            u = np.floor((opt[..., 0] / z * k.fx + k.cx) / stride)
+            v = np.floor((opt[..., 1] / z * k.fy + k.cy) / stride)
+        ok = (z > 1e-3) & (u >= 0) & (u < w) & (v >= 0) & (v < h)
+        meas = np.full(z.shape, -np.inf)
+        meas[ok] = depth[v[ok].astype(np.int64), u[ok].astype(np.int64)]
+        return np.all(ok & (z < meas - 0.02), axis=1)
 
     def _rays(self, k: CameraIntrinsics, stride: int) -> np.ndarray:
         key = (k, stride)

@@ -142,8 +142,9 @@ def _describe(target: Instance, objects: Sequence[Instance], depth: int, rng: ra
             if not pairs:
                 continue
             b, c = rng.choice(pairs)
-            return Descriptor(name, (Relation(comp, (_describe(b, objects, depth - 1, rng),
-                                                     _describe(c, objects, rng.randint(0, depth - 1), rng))),))
+            first = _describe(b, objects, depth - 1, rng)
+            second = _describe(c, objects, rng.randint(0, depth - 1), rng)
+            return Descriptor(name, (Relation(comp, (first, second)),))
         anchors = [b for b in objects if b.id != target.id and _holds(comp, target.center, b.center, None)]
         if not anchors:
             continue

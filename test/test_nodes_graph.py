@@ -123,8 +123,8 @@ def test_english_instruction_is_translated_planned_and_executed(graph):
     assert fridge.box.distance(last, dims=2)[0] <= NEAR + 0.05
 
 
-@pytest.mark.parametrize('case', ['nonsense', 'unplaceable', 'bad_json', 'unknown_referent', 'unsatisfiable',
-                                  'huge_text', 'bad_formula'])
+@pytest.mark.parametrize('case', ['nonsense', 'unplaceable', 'bad_json', 'bad_instruction_json',
+                                  'unknown_referent', 'unsatisfiable', 'huge_text', 'bad_formula'])
 def test_bad_instruction_gets_a_typed_error_and_the_next_is_served(graph, case):
     g, client, _ = graph
     t0 = time.monotonic()
@@ -139,6 +139,11 @@ def test_bad_instruction_gets_a_typed_error_and_the_next_is_served(graph, case):
         iid = 'garbage-spec-1'
         client.task_spec_pub.publish(
             String(data='{"schema": "ltl_instruct/task_spec", "id": "garbage-spec-1", '))
+        expected = {'INVALID_INPUT'}
+    elif case == 'bad_instruction_json':
+        iid = 'bad-instruction-1'
+        client.send_raw('{"schema": "ltl_instruct/instruction", "version": 1, "id": "bad-instruction-1", '
+                        '"text": 5}')
         expected = {'INVALID_INPUT'}
     elif case == 'unknown_referent':
         iid = client.send(formula='F near[unicorn]')
@@ -321,3 +326,28 @@ def test_leaving_the_plan_into_an_avoided_region_is_reported_as_a_violation(grap
         violated = client.wait_status(iid, 'violated', timeout=0.2)
     assert violated is not None, [s['status'] for s in client.received.statuses[iid]]
     assert violated['monitor']['blamed_atoms'] == ['near[front_door]']
+
+
+def test_tpsm_cloud_marks_goal_and_avoid_regions(graph):
+    g, client, _ = graph
+    from sensor_msgs.msg import PointCloud2
+
+    from ltl_instruct.nodes.common import latched_qos
+    clouds = []
+    sub = client.node.create_subscription(PointCloud2, 'tpsm', clouds.append, latched_qos(1))
+    try:
+        iid = client.send(formula='F near[bookshelf] & G !near[lamp]')
+        assert client.wait_terminal(iid, timeout=30.0)['status'] == 'planned'
+        assert client.wait_until(lambda: len(clouds) > 0 or None, 10.0)
+        fields = conv.point_cloud_fields(clouds[-1])
+        assert set(fields) == {'x', 'y', 'z', 'value'}
+        values = set(np.unique(fields['value']).tolist())
+        assert values == {-1.0, 0.0, 1.0}
+        scene = resolve_scene('apartment')
+        pts = np.stack([fields['x'], fields['y']], axis=1)
+        goal = pts[fields['value'] == 1.0]
+        shelf, lamp = scene.object_by_id('bookshelf').box, scene.object_by_id('lamp').box
+        assert np.all(shelf.distance(goal, dims=2) <= NEAR + 1e-6)
+        assert np.all(lamp.distance(pts[fields['value'] == -1.0], dims=2) <= NEAR + 1e-6)
+    finally:
+        client.node.destroy_subscription(sub)

@@ -23,7 +23,8 @@ SHARED = Path(__file__).resolve().parents[1].parent / 'shared' / 'datasets'
 def test_prefix_ltl_maps_operators_and_letters() -> None:
     f = parse_prefix_ltl('& U ! b a F b')
     assert equivalent(f, parse_formula('(!near[b] U near[a]) & F near[b]'))
-    assert equivalent(parse_prefix_ltl('M a | ! a G a'), parse_formula('(!near[a] | G near[a]) U (near[a] & (!near[a] | G near[a]))'))
+    assert equivalent(parse_prefix_ltl('M a | ! a G a'),
+                      parse_formula('(!near[a] | G near[a]) U (near[a] & (!near[a] | G near[a]))'))
     assert equivalent(parse_prefix_ltl('G i a X b'), parse_formula('G (near[a] -> X near[b])'))
     assert equivalent(parse_prefix_ltl('G e a X b'), parse_formula('G (near[a] <-> X near[b])'))
     for bad in ('', '& a', 'F a b', 'F Q'):

@@ -57,7 +57,8 @@ def server() -> Iterator[tuple[str, Script]]:
             if isinstance(answer, tuple) and answer[0] == 'raw':
                 payload = answer[1].encode()
             else:
-                payload = json.dumps({'choices': [{'message': {'role': 'assistant', 'content': answer}}]}).encode()
+                message = {'role': 'assistant', 'content': answer}
+                payload = json.dumps({'choices': [{'message': message}]}).encode()
             self.send_response(200)
             self.send_header('Content-Type', 'application/json')
             self.send_header('Content-Length', str(len(payload)))

@@ -52,7 +52,8 @@ CASES = [
     ('go to the mailbox three times',
      'F (near[mailbox] & F (!near[mailbox] & F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))))'),
     # deliveries
-    ('Bring the pear to the counter.', 'F (near[pear] & F (pick[pear] & F (near[counter] & F release[pear, counter])))'),
+    ('Bring the pear to the counter.',
+     'F (near[pear] & F (pick[pear] & F (near[counter] & F release[pear, counter])))'),
     ('Throw away the paper cup.',
      'F (near[paper_cup] & F (pick[paper_cup] & F (near[trash_can] & F release[paper_cup, trash_can])))'),
     ('put the blue book on the top shelf',
@@ -73,7 +74,8 @@ CASES = [
     ('Go to the sink - no wait, I meant the tub.', 'F near[tub]'),
     ('Go to the den, then the porch. Actually, ignore the last thing, go to the yard instead.',
      'F (near[den] & F near[yard])'),
-    ('Go to the box left of the bed. Sorry, I meant the one right of the bed.', 'F near[box::isrightof(bed)]'),
+    ('Go to the box left of the bed. Sorry, I meant the one right of the bed.',
+     'F near[box::isrightof(bed)]'),
     ('Go to the shed twice - scratch that, three times is enough.',
      'F (near[shed] & F (!near[shed] & F (near[shed] & F (!near[shed] & F near[shed]))))'),
 ]
@@ -130,7 +132,8 @@ def test_goal_avoid_scope_reads_avoidance_at_the_goal() -> None:
 
 def test_count_builders_agree_with_the_conventions() -> None:
     x = near('door')
-    assert equivalent(exactly(x, 1), parse_formula('!near[door] U (near[door] & (near[door] W G !near[door]))'))
+    assert equivalent(exactly(x, 1),
+                      parse_formula('!near[door] U (near[door] & (near[door] W G !near[door]))'))
     assert equivalent(at_most(x, 1), parse_formula('!F (near[door] & F (!near[door] & F near[door]))'))
     assert equivalent(at_least(x, 2), parse_formula('F (near[door] & F (!near[door] & F near[door]))'))
     assert equivalent(exactly(x, 2), parse_formula(

@@ -21,8 +21,10 @@ HELP = 'score a translator on a dataset (WERs, temporal alignment)'
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Declare the command's arguments."""
-    parser.add_argument('--data', required=True, help='dev.jsonl, an efficient-eng-2-ltl .jsonl or lifted.csv')
-    parser.add_argument('--kind', choices=('dev', 'efficient-eng', 'lifted'), help='data set kind (default: guess)')
+    parser.add_argument('--data', required=True,
+                        help='dev.jsonl, an efficient-eng-2-ltl .jsonl or lifted.csv')
+    parser.add_argument('--kind', choices=('dev', 'efficient-eng', 'lifted'),
+                        help='data set kind (default: guess)')
     parser.add_argument('--backend', default='offline', choices=BACKENDS)
     parser.add_argument('--json', action='store_true', help='print one JSON object')
     parser.add_argument('--limit', type=int, default=0, help='score a random sample of this many (0: all)')
@@ -42,12 +44,16 @@ def run(args: argparse.Namespace) -> int:
     ds = read_dataset(args.data, args.kind)
     if args.avoid_scope is None:
         args.avoid_scope = 'goal' if 'drone-planning' in ds.name else 'global'
-    translator = make_translator(args.backend, **_options(args))
+    options = _options(args)
+    if args.backend == 'offline' and ds.landmarks:
+        options['landmarks'] = ds.landmarks   # lifted propositions are names given in advance
+    translator = make_translator(args.backend, **options)
     examples = ds.examples
     if args.limit and args.limit < len(examples):
         examples = random.Random(args.seed).sample(examples, args.limit)
     scores = evaluate(translator, examples)
-    summary = {'data': args.data, 'backend': args.backend, 'skipped_lines': len(ds.skipped), **scores.summary()}
+    summary = {'data': args.data, 'backend': args.backend, 'skipped_lines': len(ds.skipped),
+               **scores.summary()}
     if args.backend == 'offline':
         summary['avoid_scope'] = args.avoid_scope
     failures = [r.to_dict() for r in scores.results if not r.equivalent][:args.failures]

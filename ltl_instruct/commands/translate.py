@@ -52,7 +52,7 @@ def _options(args: argparse.Namespace) -> dict[str, Any]:
 
 
 def record(t: Translation) -> dict[str, Any]:
-    """The JSON record of a translation: formula, referents, avoid, subgoals."""
+    """Return the JSON record of a translation: formula, referents, avoid, subgoals."""
     out: dict[str, Any] = {'instruction': t.instruction, 'formula': str(t.formula),
                            'referents': list(t.referents), 'avoid': list(t.avoid), 'backend': t.backend}
     try:
@@ -119,7 +119,7 @@ def _batch(translator: Any, path: str, out_path: Optional[str]) -> int:
 
 
 def interactive(translator: Any, ask: Callable[[str], str], say: Callable[[str], None]) -> int:
-    """The verification dialog: translate, show, and accept a yes, a correction, or a formula.
+    """Run the verification dialog: translate, show, accept a yes, a correction, or a formula.
 
     With the LLM backend a correction is sent back with the previous answer; offline,
     the instruction and the correction are translated again together.

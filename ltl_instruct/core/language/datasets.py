@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import csv
 import json
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Iterator, Optional
@@ -61,6 +62,7 @@ class DataSet:
     name: str
     examples: list[Example] = field(default_factory=list)
     skipped: list[str] = field(default_factory=list)
+    landmarks: tuple[str, ...] = ()   # proposition names given in advance (lifted: a, b, c...)
 
 
 _BINARY = {'&': 'and', '|': 'or', 'U': 'until', 'W': 'weak', 'R': 'release', 'M': 'strong_release',
@@ -157,13 +159,16 @@ def read_efficient_eng(path: Path) -> DataSet:
 def read_lifted(path: Path) -> DataSet:
     """Read lang2ltl's ``lifted.csv`` (``pattern_type,props,utterance,ltl_formula``)."""
     ds = DataSet(path.name)
+    props: set[str] = set()
     with path.open(encoding='utf-8', newline='') as fh:
         for n, row in enumerate(csv.DictReader(fh), 2):
+            props.update(re.findall(r"'([a-z][a-z0-9_]*)'", row.get('props') or ''))
             try:
                 ds.examples.append(Example(row['utterance'], parse_prefix_ltl(row['ltl_formula']),
                                            f'{path.name}:{n}:{row.get("pattern_type", "")}'))
             except (KeyError, TypeError, AttributeError, LtlInstructError) as e:
                 ds.skipped.append(f'{path.name}:{n}: {e}')
+    ds.landmarks = tuple(sorted(props))
     return ds
 
 

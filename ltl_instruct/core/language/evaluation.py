@@ -116,7 +116,7 @@ class Scores:
     results: list[ExampleResult] = field(default_factory=list)
 
     def summary(self) -> dict[str, Any]:
-        """The metrics as a JSON-ready dict."""
+        """Return the metrics as a JSON-ready dict."""
         def rate(a: int, b: int) -> Optional[float]:
             return round(a / b, 4) if b else None
         return {

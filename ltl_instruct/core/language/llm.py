@@ -102,9 +102,9 @@ class ExamplePool:
 
     Parameters
     ----------
-    examples:
+    examples : sequence of PoolExample
         The pool.
-    embed:
+    embed : callable
         Embedding function; pool embeddings are computed once, here.
     """
 
@@ -117,7 +117,7 @@ class ExamplePool:
         self.vectors = vecs / np.maximum(np.linalg.norm(vecs, axis=1, keepdims=True), 1e-12)
 
     def nearest(self, instruction: str, k: int) -> list[PoolExample]:
-        """The ``k`` most similar examples, most similar last (nearest the question in the prompt)."""
+        """Return the ``k`` most similar examples, most similar last (nearest the question)."""
         q = np.asarray(self.embed([instruction]), dtype=np.float64).reshape(-1)
         q = q / max(float(np.linalg.norm(q)), 1e-12)
         scores = self.vectors @ q
@@ -140,7 +140,7 @@ STAGE2_SYSTEM = (
 
 
 def extract_formula_text(answer: str) -> str:
-    """The formula in a model's answer: code fences and a leading ``Formula:`` label removed."""
+    """Return the formula in a model's answer, code fences and a ``Formula:`` label removed."""
     text = answer.strip()
     fence = re.search(r'```(?:[a-zA-Z]*)\n?(.*?)```', text, re.S)
     if fence:
@@ -190,12 +190,14 @@ class LlmTranslator:
         self.api_key = api_key or env.get('LTL_INSTRUCT_LLM_API_KEY') or env.get('OPENAI_API_KEY') or ''
         if not self.base_url or not self.model:
             raise TranslationError('the llm backend needs base_url and model (parameters or '
-                                   'LTL_INSTRUCT_LLM_BASE_URL / LTL_INSTRUCT_LLM_MODEL)', ErrorCode.INVALID_INPUT)
+                                   'LTL_INSTRUCT_LLM_BASE_URL / LTL_INSTRUCT_LLM_MODEL)',
+                                   ErrorCode.INVALID_INPUT)
         if not re.match(r'^https?://', self.base_url):
             raise TranslationError(f'base_url must be http(s): {self.base_url!r}', ErrorCode.INVALID_INPUT)
         if k < 0 or retries < 0 or not timeout_s > 0:
             raise TranslationError('k and retries must be >= 0 and timeout_s > 0', ErrorCode.INVALID_INPUT)
-        self.k, self.retries, self.timeout_s, self.temperature = int(k), int(retries), float(timeout_s), temperature
+        self.k, self.retries, self.timeout_s = int(k), int(retries), float(timeout_s)
+        self.temperature = temperature
         self._pool_examples = load_pool(examples_path)
         self._embed = embed
         self._pool: Optional[ExamplePool] = None
@@ -259,7 +261,7 @@ class LlmTranslator:
 
     # ---------------------------------------------------------------- prompts
     def examples_for(self, instruction: str) -> list[PoolExample]:
-        """The K in-context examples for an instruction."""
+        """Return the K in-context examples for an instruction."""
         if self.k == 0:
             return []
         if self._pool is None:

@@ -48,36 +48,38 @@ AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
 
 # After "do not"/"never": verbs and particles to skip before the avoided noun phrase.
 AVOID_FILLER = frozenset('''
-go ever drive fly walk move come get pass bump touch run head enter step visit stop cross approach land
-anywhere back near close to by into in over through past on onto around at the area of again even
-going passing touching knock hit disturb wake anywhere let yourself be into enter visiting entering navigate navigating reaching reach move moving
-travel traveling travelling stepping step walking fly flying driving going ever allowed permitted to first
+go ever drive fly walk move come get pass bump touch run head enter step visit stop cross approach
+land anywhere back near close to by into in over through past on onto around at the area of again
+even going passing touching knock hit disturb wake anywhere let yourself be into enter visiting
+entering navigate navigating reaching reach move moving travel traveling travelling stepping step
+walking fly flying driving going ever allowed permitted to first
 '''.split()) - {'the'}
 
 # Gerunds and participles of movement, skipped between "until"/"after"/"before" and the place.
 EVENT_WORDS = frozenset('''
-reached visited arrived checked passed gone been going visiting reaching seen see got gotten made landed
-surveyed at there enter entering entered navigating navigated moving moved traveling travelling travelled
-heading headed arriving touching touched stepping stepped walking walked flying flew driving drove
-getting coming came returning returned finding found observing observe observed hitting hit after pass
-cross crossed crossing visit go enter reach get arrive
+reached visited arrived checked passed gone been going visiting reaching seen see got gotten made
+landed surveyed at there enter entering entered navigating navigated moving moved traveling
+travelling travelled heading headed arriving touching touched stepping stepped walking walked flying
+flew driving drove getting coming came returning returned finding found observing observe observed
+hitting hit after pass cross crossed crossing visit go enter reach get arrive
 '''.split())
 
 GOAL_VERBS = frozenset('''
-go goes head visit navigate move drive fly walk run come return check find locate reach get stop swing make
-proceed travel survey inspect do continue advance going heading navigating moving travelling traveling
-flying driving walking visiting reaching land charge stand hover approach enter circle pass explore search look patrol
-wander roll arrive be need want please robot drone hey can could would you i will just also then now first
-next lastly finally and so okay kindly go ahead end up
+go goes head visit navigate move drive fly walk run come return check find locate reach get stop
+swing make proceed travel survey inspect do continue advance going heading navigating moving
+travelling traveling flying driving walking visiting reaching land charge stand hover approach enter
+circle pass explore search look patrol wander roll arrive be need want please robot drone hey can
+could would you i will just also then now first next lastly finally and so okay kindly go ahead end
+up
 '''.split())
 GOAL_PARTICLES = frozenset('''
 to over by at for on out back in into through past up down your way off around toward towards inside
 there from onto me quickly straight directly
 '''.split())
 FILLERS = frozenset('''
-please pls hey robot drone can could would you will just also then now first next lastly finally and so
-okay kindly i need want like to be sure make remember also yes alright right well oh hmm um er but
-eventually must have should ensure required that certainly definitely simply
+please pls hey robot drone can could would you will just also then now first next lastly finally and
+so okay kindly i need want like to be sure make remember also yes alright right well oh hmm um er
+but eventually must have should ensure required that certainly definitely simply
 '''.split())
 DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
                            'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',
@@ -96,19 +98,20 @@ IGNORED_CLAUSES = frozenset({
 
 # "stay on the third floor", "do not leave the red room": the robot stays within a region.
 STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
-    ('stay', 'in'), ('stay', 'on'), ('stay', 'within'), ('stay', 'inside'), ('remain', 'in'), ('remain', 'on'),
-    ('remain', 'within'), ('remain', 'inside'), ('do', 'not', 'leave'), ('never', 'leave'), ('do', 'not', 'exit'),
-    ('do', 'not', 'navigate', 'away', 'from'), ('do', 'not', 'move', 'away', 'from'), ('never', 'move',
-                                                                                        'outside', 'of'),
+    ('stay', 'in'), ('stay', 'on'), ('stay', 'within'), ('stay', 'inside'), ('remain', 'in'),
+    ('remain', 'on'), ('remain', 'within'), ('remain', 'inside'), ('do', 'not', 'leave'),
+    ('never', 'leave'), ('do', 'not', 'exit'), ('do', 'not', 'navigate', 'away', 'from'),
+    ('do', 'not', 'move', 'away', 'from'), ('never', 'move', 'outside', 'of'),
     ('never', 'go', 'outside', 'of'), ('do', 'not', 'go', 'outside', 'of'), ('without', 'leaving'),
-    ('without', 'exiting'), ('only', 'stepping', 'in'), ('by', 'only', 'stepping', 'in'), ('always', 'stay', 'in'),
-    ('always', 'stay', 'on'), ('always', 'remain', 'in'), ('always', 'remain', 'on'), ('never', 'exit'),
-    ('do', 'not', 'step', 'out', 'of'), ('never', 'step', 'out', 'of'), ('stay', 'at'), ('remain', 'at'),
-    ('do', 'not', 'leave', 'from'), ('you', 'cannot', 'leave'), ('you', 'can', 'not', 'leave'),
-    ('you', 'must', 'not', 'leave'), ('keep', 'going', 'on'), ('wait', 'at'), ('wait', 'in'), ('stay', 'put', 'at'),
-    ('are', 'not', 'allowed', 'to', 'leave'), ('do', 'not', 'move', 'outside', 'of'), ('only', 'walk', 'in'),
-    ('while', 'staying', 'in'), ('while', 'staying', 'on'), ('while', 'remaining', 'in'), ('while', 'remaining',
-                                                                                          'on'),
+    ('without', 'exiting'), ('only', 'stepping', 'in'), ('by', 'only', 'stepping', 'in'),
+    ('always', 'stay', 'in'), ('always', 'stay', 'on'), ('always', 'remain', 'in'),
+    ('always', 'remain', 'on'), ('never', 'exit'), ('do', 'not', 'step', 'out', 'of'),
+    ('never', 'step', 'out', 'of'), ('stay', 'at'), ('remain', 'at'), ('do', 'not', 'leave', 'from'),
+    ('you', 'cannot', 'leave'), ('you', 'can', 'not', 'leave'), ('you', 'must', 'not', 'leave'),
+    ('keep', 'going', 'on'), ('wait', 'at'), ('wait', 'in'), ('stay', 'put', 'at'),
+    ('are', 'not', 'allowed', 'to', 'leave'), ('do', 'not', 'move', 'outside', 'of'),
+    ('only', 'walk', 'in'), ('while', 'staying', 'in'), ('while', 'staying', 'on'),
+    ('while', 'remaining', 'in'), ('while', 'remaining', 'on'),
 ), key=lambda t: -len(t)))
 
 CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
@@ -197,7 +200,7 @@ class Step:
 
 
 def render(steps: Sequence[Step]) -> Optional[Formula]:
-    """The formula of a chain of steps: each step eventually, the rest after it."""
+    """Return the formula of a chain of steps: each step eventually, the rest after it."""
     if not steps:
         return None
     s, rest = steps[0], list(steps[1:])
@@ -230,8 +233,8 @@ def render(steps: Sequence[Step]) -> Optional[Formula]:
                 arrivals.append(_until_avoid(s.carry_avoid, arrive))
             else:
                 arrivals.append(Eventually(arrive))
-        body = _and(_near(obj), Eventually(_and(Atom('pick', (obj,)), *_never(s.after_pick_avoid),
-                                                 _or(arrivals))))
+        picked = _and(Atom('pick', (obj,)), *_never(s.after_pick_avoid), _or(arrivals))
+        body = _and(_near(obj), Eventually(picked) if picked is not None else None)
     assert body is not None
     if s.avoid_until:
         if s.kind == 'visit':
@@ -427,8 +430,9 @@ class _Reader:
         for n, clause in enumerate(clauses):
             later = [t for c in clauses[n:] for t in c.tokens]
             first = self._strip_fillers(clause.tokens)
-            if self.task.chain and (self._is_permission(first) or self._is_permission(clause.tokens)) or (first[:1] in (['if'], ['once'], ['only']) and
-                                              self._is_permission(later)):
+            permits = self._is_permission(first) or self._is_permission(clause.tokens)
+            opens = first[:1] in (['if'], ['once'], ['only'])
+            if (self.task.chain and permits) or (opens and self._is_permission(later)):
                 self._read_permission(later)
                 return
             scope = self._read_clause(clause, scope)
@@ -463,7 +467,8 @@ class _Reader:
                 boundary = 'seq'
             elif _starts(tokens, i, ['after', 'that']) or _starts(tokens, i, ['and', 'after', 'that']):
                 boundary, skip = 'seq', 2 if t == 'after' else 3
-            elif t in ('finally', 'afterwards', 'afterward', 'lastly') or _starts(tokens, i, ['and', 'finally']):
+            elif t in ('finally', 'afterwards', 'afterward', 'lastly') or _starts(
+                    tokens, i, ['and', 'finally']):
                 boundary, skip = 'seq', 1 if t != 'and' else 2
             elif _starts(tokens, i, ['once', 'you', 'are', 'there']) or _starts(
                     tokens, i, ['once', 'there']) or _starts(tokens, i, ['when', 'you', 'are', 'there']) or \
@@ -611,7 +616,8 @@ class _Reader:
 
     def _leading_scope(self, tokens: list[str]) -> tuple[Optional[_Scope], list[str]]:
         """Scope phrases that open a clause: "on the way to X,", "once you've reached X,", "after ..."."""
-        for lead in (['on', 'the', 'way'], ['on', 'your', 'way'], ['along', 'the', 'way'], ['on', 'its', 'way']):
+        for lead in (['on', 'the', 'way'], ['on', 'your', 'way'], ['along', 'the', 'way'],
+                     ['on', 'its', 'way']):
             if _starts(tokens, 0, lead):
                 rest = tokens[len(lead):]
                 if _starts(rest, 0, ['from', 'there']):
@@ -634,7 +640,8 @@ class _Reader:
     def _event_phrase(self, tokens: list[str], i: int) -> tuple[Optional[_Scope], int]:
         """After "once/after/while": the event (reaching X, picking it up, dropping it off, carrying it)."""
         j = i
-        while j < len(tokens) and tokens[j] in ('you', 'have', 'are', 'i', 'it', 'is', 'been', 'the', 'robot'):
+        while j < len(tokens) and tokens[j] in ('you', 'have', 'are', 'i', 'it', 'is', 'been', 'the',
+                                                'robot'):
             j += 1
         if j >= len(tokens):
             return None, i
@@ -704,8 +711,8 @@ class _Reader:
     # ----------------------------------------------------------------- kinds of clause
     def _avoid_start(self, tokens: list[str]) -> Optional[int]:
         i = 0
-        while i < len(tokens) - 1 and tokens[i] in ('while', 'and', 'but', 'always', 'also', 'please', 'by',
-                                                     'just', 'so', 'then'):
+        softeners = ('while', 'and', 'but', 'always', 'also', 'please', 'by', 'just', 'so', 'then')
+        while i < len(tokens) - 1 and tokens[i] in softeners:
             i += 1
         for trig in AVOID_TRIGGERS:
             if _starts(tokens, i, trig):
@@ -739,9 +746,9 @@ class _Reader:
             scope = local
         elif scope is None and 'without' in tokens[:k] and 'through' in tokens[:k] and self.task.chain:
             scope = _Scope('onway')
-        leftover = [t for t in rest if t not in ('at', 'all', 'times', 'the', 'whole', 'time', 'entire',
-                                                   'ever', 'please', 'way', 'along', 'throughout', 'any',
-                                                   'point', 'either', 'too', 'as', 'well', 'again')]
+        harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
+                    'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again')
+        leftover = [t for t in rest if t not in harmless]
         if leftover and leftover[0] not in ('when', 'while'):
             raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(leftover)})
@@ -752,8 +759,8 @@ class _Reader:
             return None, rest
         if rest[0] == 'until' or _starts(rest, 0, ['before', 'you']) or _starts(rest, 0, ['unless']):
             j = 1
-            while j < len(rest) and rest[j] in ('you', 'have', 'i', 'we', 'are', 'been', 'the', 'robot', 'has',
-                                                'after', 'finally', 'first', 'successfully', 'actually'):
+            while j < len(rest) and rest[j] in ('you', 'have', 'i', 'we', 'are', 'been', 'the', 'robot',
+                                                'has', 'after', 'finally', 'first', 'successfully'):
                 j += 1
             event = 'near'
             if j < len(rest) and rest[j] in ('got', 'gotten', 'picked', 'grabbed', 'collected', 'fetched',
@@ -762,8 +769,8 @@ class _Reader:
                         'it', 'them', 'up')):
                     return _Scope('until', self.last_object, 'pick'), []
                 event = 'pick' if rest[j] not in ('got', 'gotten', 'get') else 'near'
-            while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in NAME_VERBS | GOAL_PARTICLES | \
-                    EVENT_WORDS | {'picked', 'grabbed', 'up'}:
+            skippable = NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {'picked', 'grabbed', 'up'}
+            while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in skippable:
                 j += 1
             nps, _, end = self._np_list(rest, j)
             if nps:
@@ -870,9 +877,10 @@ class _Reader:
         self.task.constraints.extend(_never(targets))
 
     def _read_patrol(self, tokens: list[str]) -> bool:
-        """'keep visiting a and b without stopping', 'visit a infinitely often' -> ``G F near[a] & G F near[b]``."""
+        """'keep visiting a and b without stopping', 'visit a infinitely often' -> ``G F near[a] & ...``."""
         s = ' ' + ' '.join(tokens) + ' '
-        marks = (' infinitely', ' infinite ', ' forever', ' keep visiting ', ' keep going to ', ' not stop visiting ',
+        marks = (' infinitely', ' infinite ', ' forever', ' keep visiting ', ' keep going to ',
+                 ' not stop visiting ',
                  ' never stop visiting ', ' without stopping', ' repeatedly', ' continuously', ' endlessly',
                  ' over and over', ' frequent ', ' keep on visiting ', ' indefinitely', ' again and again',
                  ' keep revisiting ', ' continually', ' constantly', ' unlimited ', ' perpetually')
@@ -905,8 +913,9 @@ class _Reader:
         names: list[Descriptor] = []
         order: list[int] = []
         for i in range(len(tokens)):
-            if self.phrases.landmarks and self.phrases._landmark(tokens, i) or tokens[i] == 'the' and i + 1 < len(
-                    tokens) and tokens[i + 1] not in STOP_AFTER_THE:
+            is_landmark = bool(self.phrases.landmarks) and self.phrases._landmark(tokens, i) is not None
+            is_the = tokens[i] == 'the' and i + 1 < len(tokens) and tokens[i + 1] not in STOP_AFTER_THE
+            if is_landmark or is_the:
                 np = self.phrases.parse(tokens, i)
                 if np is not None and np.descriptor not in names and not np.pronoun:
                     names.append(np.descriptor)
@@ -919,8 +928,8 @@ class _Reader:
         k = order[0]
         if not any(w in tokens[max(0, k - 5):k] for w in trig_words):
             first, second = second, first
-        immediate = any(w in s for w in ('immediately', 'right after', 'next time', 'at once', 'directly after',
-                                         'right away', 'very next'))
+        immediate = any(w in s for w in ('immediately', 'right after', 'next time', 'at once',
+                                         'directly after', 'right away', 'very next'))
         react: Formula = Next(_near(second)) if immediate else Eventually(_near(second))
         self.task.constraints.append(Always(Implies(_near(first), react)))
         return True
@@ -930,12 +939,14 @@ class _Reader:
         s = ' ' + ' '.join(tokens) + ' '
         return any(p in s for p in (' you can ', ' you may ', ' stay put ', ' be done ', ' free to ',
                                     ' you are allowed ', ' it is okay to ', ' it is fine to ', ' or stop ',
-                                    ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ')) and ' not ' not in s
+                                    ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ')
+                   ) and ' not ' not in s
 
     def _read_permission(self, tokens: list[str]) -> None:
         """'...then you can go to Y': an avoidance of Y that was pending ends where the goal is reached."""
         names = set()
-        start = next((i for i, t in enumerate(tokens) if t in ('can', 'may', 'free', 'allowed', 'or', 'then')), 0)
+        start = next((i for i, t in enumerate(tokens)
+                      if t in ('can', 'may', 'free', 'allowed', 'or', 'then')), 0)
         for i in range(start, len(tokens)):
             if tokens[i] in DETS or (i > 0 and tokens[i - 1] in ('to', 'visit', 'enter', 'at')):
                 np = self.phrases.parse(tokens, i)
@@ -956,13 +967,14 @@ class _Reader:
         # "once you reach X you may go to Y": Y is not allowed before X
         targets = {d for st in self.task.chain for d in st.targets}
         avoided = {d for st in steps for d in st.avoid_until + st.avoid_at}
-        for d in sorted(names - targets - avoided - {c.operand.operand.args[0] for c in self.task.constraints
-                                                    if isinstance(c, Always) and isinstance(c.operand, Not)
-                                                    and isinstance(c.operand.operand, Atom)}, key=str):
+        never = {c.operand.operand.args[0] for c in self.task.constraints
+                 if isinstance(c, Always) and isinstance(c.operand, Not)
+                 and isinstance(c.operand.operand, Atom)}
+        for d in sorted(names - targets - avoided - never, key=str):
             steps[-1].avoid_until.append(d)
         for f in list(self.task.constraints):
-            if isinstance(f, Always) and isinstance(f.operand, Not) and isinstance(f.operand.operand, Atom) and \
-                    f.operand.operand.args[0] in names:
+            if isinstance(f, Always) and isinstance(f.operand, Not) and \
+                    isinstance(f.operand.operand, Atom) and f.operand.operand.args[0] in names:
                 self.task.constraints.remove(f)
                 steps[-1].avoid_until.append(f.operand.operand.args[0])
 
@@ -971,8 +983,8 @@ class _Reader:
         if tokens and tokens[0] in ('while', 'and', 'but', 'by', 'always'):
             tokens = tokens[1:]
         leads = STAY_WITHIN
-        if len(tokens) > 1 and tokens[0] in ('staying', 'remaining', 'keeping', 'stay', 'remain') and tokens[1] in (
-                'in', 'on', 'within', 'inside'):
+        if len(tokens) > 1 and tokens[0] in ('staying', 'remaining', 'keeping', 'stay', 'remain') and \
+                tokens[1] in ('in', 'on', 'within', 'inside'):
             leads = (tuple(tokens[:2]),)
         for lead in leads:
             if _starts(tokens, 0, lead):
@@ -1002,7 +1014,8 @@ class _Reader:
         """'X or Y but not both': one of them, and never the other."""
         step = self.task.last_step(('visit',))
         if step is None or len(step.targets) < 2:
-            raise TranslationError('"not both" needs two alternatives before it', details={'part': 'not both'})
+            raise TranslationError('"not both" needs two alternatives before it',
+                                   details={'part': 'not both'})
         chains = []
         for d in step.targets:
             others = [o for o in step.targets if o != d]
@@ -1010,7 +1023,7 @@ class _Reader:
         step.kind, step.targets, step.chains = 'any', [], chains
 
     def _read_conditional(self, tokens: list[str]) -> None:
-        """ "if you go into X at all, check Y first" -> ``!near[x] W near[y]``."""
+        """Read 'if you go into X at all, check Y first' as ``!near[x] W near[y]``."""
         j = 1
         while j < len(tokens) and tokens[j] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
                 'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already'}:
@@ -1043,7 +1056,8 @@ class _Reader:
         rest = self._strip_fillers(rest)
         if self._is_permission(rest):
             return
-        if tokens[j - 1] in ('reached', 'reach', 'arrived', 'arrive', 'are', 'get', 'got', 'been') and not rest:
+        if not rest and tokens[j - 1] in ('reached', 'reach', 'arrived', 'arrive', 'are', 'get', 'got',
+                                          'been'):
             return  # "if you reached X, (then you may ...)": a condition for a permission
         k = 0
         while k < len(rest) and rest[k] in NAME_VERBS | GOAL_PARTICLES:
@@ -1055,7 +1069,7 @@ class _Reader:
         self.task.constraints.append(WeakUntil(Not(_near(np.descriptor)), _near(first.descriptor)))
 
     def _read_ordering(self, tokens: list[str], clause: _Clause) -> bool:
-        """ "only after X", "not before X", "not until you've been to both X and Y", "X before that"."""
+        """Read 'only after X', 'not before X', 'not until you've been to X and Y', 'X before that'."""
         s = tokens
         k = -1
         for lead in (['only', 'after'], ['not', 'before'], ['not', 'until'], ['but', 'only', 'after'],
@@ -1102,7 +1116,7 @@ class _Reader:
                                    details={'part': ' '.join(rest)})
 
     def _count_word(self, tokens: list[str], i: int) -> Optional[tuple[int, int]]:
-        """A count at ``tokens[i]``: ``once``, ``twice``, ``three times``, ``3 times``; (n, end)."""
+        """Return the count at ``tokens[i]`` (once, twice, three times) and where it ends."""
         if i >= len(tokens):
             return None
         w = tokens[i]
@@ -1123,7 +1137,7 @@ class _Reader:
         return None
 
     def _read_count(self, rest: list[str], targets: list[Descriptor]) -> tuple[bool, list[str]]:
-        """Counting phrases after a goal: at least / at most / exactly / N times / twice in a row."""
+        """Read counting phrases after a goal: at least / at most / exactly / N times / in a row."""
         mode = 'at_least'
         i = 0
         if _starts(rest, 0, ['exactly']) or _starts(rest, 0, ['only']) or _starts(rest, 0, ['just']):
@@ -1162,7 +1176,8 @@ class _Reader:
         verb = tokens[0]
         k = 1
         implicit_dest: Optional[Descriptor] = None
-        if verb == 'throw' and 'away' in tokens[:4] or verb in ('bin', 'dump', 'chuck') and 'in' not in tokens:
+        binned = verb in ('bin', 'dump', 'chuck') and 'in' not in tokens
+        if verb == 'throw' and 'away' in tokens[:4] or binned:
             implicit_dest = TRASH
         if _starts(tokens, 0, ['pick', 'up']) or _starts(tokens, 0, ['throw', 'away']) or _starts(
                 tokens, 0, ['throw', 'out']):
@@ -1190,8 +1205,8 @@ class _Reader:
         dests: list[NounPhrase] = []
         if rest and rest[0] in ('there', 'here') and self.last_place is not None:
             dests, rest = [self.last_place], rest[1:]
-        elif rest and rest[0] in ('to', 'into', 'in', 'on', 'onto', 'at', 'inside', 'by', 'next', 'under',
-                                'near', 'beside', 'over', 'with'):
+        elif rest and rest[0] in ('to', 'into', 'in', 'on', 'onto', 'at', 'inside', 'by', 'next',
+                                  'under', 'near', 'beside', 'over', 'with'):
             j = 1
             if _starts(rest, 0, ['next', 'to']):
                 j = 2
@@ -1241,15 +1256,16 @@ class _Reader:
         patrol_from = False
         while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES) and not (
                 tokens[k] in ORDINALS and _ordinal_name(tokens, k)) and not (
-                tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)) and not (
-                tokens[k] in ('back',) and k + 1 < len(tokens) and tokens[k + 1] in ('door', 'gate', 'yard',
-                                                                                      'room', 'porch')):
+                tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)
+        ) and not (tokens[k] == 'back' and k + 1 < len(tokens)
+                   and tokens[k + 1] in ('door', 'gate', 'yard', 'room', 'porch')):
             if tokens[k] in ('from', 'through', 'via') and k > 0:
                 patrol_from = True
             k += 1
         nps, joiner, end = self._np_list(tokens, k)
         if not nps:
-            raise TranslationError(f'could not place "{" ".join(tokens)}"', details={'part': ' '.join(tokens)})
+            raise TranslationError(f'could not place "{" ".join(tokens)}"',
+                                   details={'part': ' '.join(tokens)})
         if k > 0 or clause.connector in ('seq', 'pre', 'or'):
             self.saw_action = True
         rest = [t for t in tokens[end:] if t != ',']
@@ -1261,11 +1277,12 @@ class _Reader:
             rest = rest[e2:]
         # "X in that order" / "in any order"
         ordered = False
-        for phrase in (['in', 'that', 'order'], ['in', 'order'], ['in', 'this', 'order'], ['one', 'after',
-                                                                                            'the', 'other']):
+        for phrase in (['in', 'that', 'order'], ['in', 'order'], ['in', 'this', 'order'],
+                       ['one', 'after', 'the', 'other']):
             if _starts(rest, 0, phrase):
                 ordered, rest = True, rest[len(phrase):]
-        for phrase in (['in', 'any', 'order'], ['order', 'does', 'not', 'matter'], ['in', 'whatever', 'order'],
+        for phrase in (['in', 'any', 'order'], ['order', 'does', 'not', 'matter'],
+                       ['in', 'whatever', 'order'],
                        ['in', 'either', 'order'], ['whichever'], ['i', 'do', 'not', 'care', 'which'],
                        ['in', 'arbitrary', 'order'], ['in', 'no', 'particular', 'order']):
             if _starts(rest, 0, phrase):
@@ -1301,7 +1318,7 @@ class _Reader:
             self.task.chain.append(Step('all', chains=[[Step('visit', [t])] for t in targets]))
 
     def _goal_trailer(self, rest: list[str], whole: list[str], targets: list[Descriptor]) -> None:
-        """What may follow a goal: "before Y", "after Y", "only after Y", "through Y", an avoidance."""
+        """Read what may follow a goal: "before Y", "after Y", "through Y", an avoidance."""
         drop = (',', 'please', 'first', 'too', 'again', 'then', 'instead')
         rest = [t for t in rest if t != ',']
         while rest and rest[-1] in drop:
@@ -1346,7 +1363,7 @@ class _Reader:
                 return
         if rest[0] == 'by' and len(rest) > 2:
             j = 2 if rest[1] == 'first' else 1
-            if rest[j].endswith('ing') and rest[j] not in ('avoiding', 'staying', 'remaining', 'keeping', 'only'):
+            if rest[j].endswith('ing') and rest[j] not in ('avoiding', 'staying', 'remaining', 'keeping'):
                 k = self._skip_event_verbs(rest, j + 1)
                 nps, _, end = self._np_list(rest, k)
                 if nps:
@@ -1356,7 +1373,8 @@ class _Reader:
                     self._goal_trailer(rest[end:], whole, targets)
                     return
         for lead in (['on', 'your', 'way', 'to'], ['on', 'the', 'way', 'to'], ['and', 'then', 'to'],
-                     ['to', 'get', 'to'], ['in', 'order', 'to', 'get', 'to'], ['to', 'reach'], ['to', 'go', 'to'],
+                     ['to', 'get', 'to'], ['in', 'order', 'to', 'get', 'to'], ['to', 'reach'],
+                     ['to', 'go', 'to'],
                      ['then', 'to'], ['and', 'to'], ['to']):
             if _starts(rest, 0, lead) and self.task.chain:
                 nps, _, end = self._np_list(rest, len(lead))

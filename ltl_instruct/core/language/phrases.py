@@ -41,8 +41,9 @@ RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
 DESTINATION_PREPS = frozenset({'on', 'onto', 'in', 'into', 'at', 'to', 'over', 'inside', 'by'})
 
 # "a pair of boots", "a bag of chips": 'of' stays inside the name after these.
-CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piece', 'set', 'bunch', 'stack',
-                             'glass', 'jar', 'pile', 'bowl', 'plate', 'pack', 'packet', 'roll', 'sheet', 'slice'})
+CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piece', 'set', 'bunch',
+                             'stack', 'glass', 'jar', 'pile', 'bowl', 'plate', 'pack', 'packet', 'roll',
+                             'sheet', 'slice'})
 
 # Words that introduce a relative clause before a relation ("that's on", "which is behind").
 RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
@@ -73,7 +74,8 @@ wooden metal plastic glass open closed empty full clean dirty dark light first s
 nearest farthest furthest next previous main
 '''.split())
 
-LY_NOUNS = frozenset({'family', 'assembly', 'supply', 'jelly', 'belly', 'trolley', 'pulley', 'valley', 'alley',
+LY_NOUNS = frozenset({'family', 'assembly', 'supply', 'jelly', 'belly', 'trolley', 'pulley', 'valley',
+                      'alley',
                       'butterfly', 'dragonfly', 'lily', 'holly', 'bully', 'rally', 'gully', 'folly', 'doily'})
 
 NAME_VERBS = frozenset('''
@@ -102,14 +104,14 @@ class NounPhrase:
 
 
 def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
-    """The comparator a relation phrase at ``tokens[i]`` introduces, and the index after it."""
+    """Return the comparator a relation phrase at ``tokens[i]`` introduces, and the index after it."""
     for words, comparator in RELATION_PHRASES:
         n = len(words)
         if tuple(tokens[i:i + n]) == words:
             if words == ('over',) and i + 1 < len(tokens) and tokens[i + 1] in ('to', 'there', 'here'):
                 continue
-            if i + n < len(tokens) and tokens[i + n].endswith('ing') and tokens[i + n] not in ('ceiling', 'building',
-                                                                                           'railing', 'painting'):
+            nxt = tokens[i + n] if i + n < len(tokens) else ''
+            if nxt.endswith('ing') and nxt not in ('ceiling', 'building', 'railing', 'painting'):
                 continue  # "by passing through X" is a manner, not a place
             return comparator, i + n
     return None
@@ -215,7 +217,8 @@ class PhraseParser:
                 if depth == 0:
                     self.last = np
                 return np
-        while i < len(tokens) and tokens[i] in DETERMINERS and not (self.landmarks and self._landmark(tokens, i)):
+        while i < len(tokens) and tokens[i] in DETERMINERS and not (
+                self.landmarks and self._landmark(tokens, i)):
             i += 1
         words: list[str] = []
         pronoun = ''

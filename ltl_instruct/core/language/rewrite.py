@@ -24,8 +24,8 @@ _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 
                           'notice'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-'})
-_REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'reverse', 'before', 'after', 'former',
-                                     'latter', 'them', 'all'}
+_REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'reverse', 'before', 'after',
+                                    'former', 'latter', 'them', 'all'}
 
 
 def _np_text(tokens: list[str], np: NounPhrase) -> list[str]:
@@ -36,7 +36,7 @@ def _np_text(tokens: list[str], np: NounPhrase) -> list[str]:
 
 
 def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], str]]:
-    """The first enumeration of at least three (or two, with "and") noun phrases, and its category."""
+    """Find the first enumeration of three (or two, with "and") noun phrases, and its category."""
     parser = PhraseParser()
     starts = [0] + [i + 1 for i, t in enumerate(tokens) if t in _LIST_INTROS]
     for s in starts:
@@ -96,7 +96,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
         if t == 'the' and nxt:
             w = tail[i + 2] if i + 2 < len(tail) else ''
             one = 1 if w in ('one', 'item', 'thing') else 0
-            if nxt in ORDINALS and (not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or')):
+            ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or')
+            if nxt in ORDINALS and ends:
                 idx = ORDINALS[nxt] - 1
                 if idx >= n:
                     raise TranslationError(f'"the {nxt}" points past the end of a list of {n}',
@@ -252,12 +253,12 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
         k = new.index('one')
         name = []
         for w in old_head:
-            if w in ('left', 'right', 'behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below', 'by',
-                     'near', 'beside', 'to', 'that', 'which'):
+            if w in ('left', 'right', 'behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below',
+                     'by', 'near', 'beside', 'to', 'that', 'which'):
                 break
             name.append(w)
-        new_words = new[:k] + (name[-1:] if k > 0 and any(w not in DETERMINERS for w in new[:k]) else name) + \
-            new[k + 1:]
+        adjectives = k > 0 and any(w not in DETERMINERS for w in new[:k])
+        new_words = new[:k] + (name[-1:] if adjectives else name) + new[k + 1:]
     start, end = target.start, target.end
     # an either-or group is corrected as a whole ("the sofa or the armchair ... just the sofa")
     for sp in spans:
@@ -358,7 +359,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         tnp = parser.parse(target, 0)
         if tnp is None:
             return None
-        hit = next((sp for sp in reversed(spans) if sp.descriptor == tnp.descriptor or sp.head == tnp.head), None)
+        hit = next((sp for sp in reversed(spans)
+                    if sp.descriptor == tnp.descriptor or sp.head == tnp.head), None)
         if hit is None:
             return None
         if new:

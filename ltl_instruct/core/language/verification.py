@@ -56,7 +56,7 @@ class Verification:
 
 
 def verification_for(translation: Translation | Formula) -> Verification:
-    """Referents and English subgoals of a translation (via the automaton's English description)."""
+    """Build the referents and English subgoals of a translation (the automaton's English)."""
     from ltl_instruct.core.automaton.english import describe_task
     formula = translation.formula if isinstance(translation, Translation) else translation
     desc = describe_task(formula)

@@ -118,11 +118,13 @@ def test_unknown_class_ids_and_empty_frames():
                           f.intrinsics, np.eye(4)) == 0
 
 
+K80 = (80, 60, 40.0, 40.0, 40.0, 30.0)
+
+
 @pytest.mark.parametrize('depth, labels, intrinsics, pose', [
-    (np.zeros((60, 80), np.float32), np.zeros((60, 79), np.int32), (80, 60, 40.0, 40.0, 40.0, 30.0), np.eye(4)),
-    (np.zeros((60, 80), np.float32), np.zeros((60, 80), np.float32), (80, 60, 40.0, 40.0, 40.0, 30.0), np.eye(4)),
-    (np.zeros((60, 80), np.float32), np.zeros((60, 80), np.int32), (80, 60, 40.0, 40.0, 40.0, 30.0),
-     Pose((np.nan, 0.0, 0.0), 0.0)),
+    (np.zeros((60, 80), np.float32), np.zeros((60, 79), np.int32), K80, np.eye(4)),
+    (np.zeros((60, 80), np.float32), np.zeros((60, 80), np.float32), K80, np.eye(4)),
+    (np.zeros((60, 80), np.float32), np.zeros((60, 80), np.int32), K80, Pose((np.nan, 0.0, 0.0), 0.0)),
     (np.zeros((60, 80), np.float32), np.zeros((60, 80), np.int32), 'garbage', np.eye(4)),
 ])
 def test_bad_frames_are_typed_errors(depth, labels, intrinsics, pose):

@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ltl_instruct.core.automaton import equivalent
 from ltl_instruct.core.errors import ErrorCode, LtlInstructError, TranslationError
@@ -154,3 +156,20 @@ def test_make_translator_backends() -> None:
     assert e.value.code == ErrorCode.INVALID_INPUT
     with pytest.raises(TranslationError):
         make_translator('offline', colour='blue')
+
+
+VOCAB = ['go', 'to', 'the', 'sofa', 'then', 'never', 'avoid', 'bring', 'cup', 'table', ',', '.', 'and', 'or',
+         'between', 'left', 'of', 'once', 'twice', 'exactly', 'at', 'least', 'until', 'after', 'before', 'it',
+         'there', 'sorry', 'no', 'wait', 'i', 'meant', 'first', 'second', 'one', 'a', 'put', 'on', 'in',
+         'if', 'you', 'can', 'stay', 'forget', 'instead', 'only', 'not', 'do', 'while', 'carrying', 'twice']
+
+
+@settings(max_examples=300, derandomize=True, deadline=None)
+@given(st.lists(st.sampled_from(VOCAB), min_size=1, max_size=25))
+def test_word_salad_gives_a_formula_or_a_typed_error_never_a_crash(words: list[str]) -> None:
+    try:
+        t = T.translate(' '.join(words))
+    except LtlInstructError as e:
+        assert e.code != ErrorCode.INTERNAL_ERROR, e.message
+        return
+    assert t.formula is not None and str(t.formula)

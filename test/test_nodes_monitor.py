@@ -103,3 +103,17 @@ def test_monitor_agrees_with_the_automaton_on_the_same_trace(xy):
         report = m.update([x, y, 0.0])
     assert (report.verdict is Verdict.SATISFIED) == m.automaton.accepts(trace)
     assert report.state == m.automaton.run(trace)[-1]
+
+
+def test_update_along_sees_a_region_between_two_far_apart_poses():
+    m = _monitor('F near[computer] & G !near[door]')
+    m.update([4.0, 5.0, 0.0])
+    # one jump from above the door to below it: the door region lies in between
+    report = m.update_along([4.0, 5.0, 0.0], [4.0, 1.0, 0.0])
+    assert report.verdict is Verdict.VIOLATED and report.blamed_atoms == ('near[door]',)
+    fast = _monitor('F near[sofa]')
+    fast.update([0.0, -2.0, 0.0])
+    # passing the sofa between two poses still counts
+    assert fast.update_along([0.0, -2.0, 0.0], [4.0, 2.0, 0.0]).verdict is Verdict.SATISFIED
+    with pytest.raises(InvalidInputError):
+        fast.update_along([0, 0, 0], [np.nan, 0, 0])

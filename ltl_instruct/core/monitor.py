@@ -170,6 +170,40 @@ class ExecutionMonitor:
         letter = self.letters.letter(position, events)
         return self.read(letter)
 
+    def update_along(self, start: Sequence[float], end: Sequence[float], events: Iterable[Atom] = (),
+                     spacing: float = 0.05) -> MonitorReport:
+        """Read the letters along the straight move ``start`` -> ``end`` [m], every ``spacing`` [m].
+
+        Poses come at a finite rate; a fast robot would otherwise step over a thin region
+        between two of them. ``start`` was read already; ``events`` belong to the last
+        letter. Reading stops at the first letter that satisfies or violates the task;
+        the report says whether the state changed anywhere along the move.
+
+        Raises
+        ------
+        InvalidInputError
+            On non-finite positions or ``spacing`` <= 0.
+        """
+        a = np.asarray(start, dtype=float)
+        b = np.asarray(end, dtype=float)
+        if a.shape != (3,) or b.shape != (3,) or not (np.all(np.isfinite(a)) and np.all(np.isfinite(b))):
+            raise InvalidInputError('positions must be 3 finite numbers')
+        if not spacing > 0:
+            raise InvalidInputError(f'spacing must be positive, got {spacing}')
+        n = max(1, int(np.ceil(float(np.linalg.norm(b - a)) / spacing)))
+        events = list(events)
+        first_state = self.state
+        report: Optional[MonitorReport] = None
+        for k in range(1, n + 1):
+            report = self.update(a + (b - a) * (k / n), events if k == n else ())
+            if report.verdict is not Verdict.PROGRESSING:
+                break
+        assert report is not None
+        if report.previous_state != first_state:   # say what the whole move did
+            report = MonitorReport(report.step, report.state, first_state, report.verdict, report.letter,
+                                   report.blamed_atoms)
+        return report
+
     def read(self, letter: AbstractSet[Atom]) -> MonitorReport:
         """Read an already-built letter; return the report."""
         before = self.state

@@ -93,6 +93,7 @@ class _Active:
     replans: int = 0
     finished: bool = False
     events: list = field(default_factory=list)
+    last_position: Optional[np.ndarray] = None
 
 
 class TaskProgressionNode(Node):
@@ -270,7 +271,12 @@ class TaskProgressionNode(Node):
                 return
             event = active.events.pop(0) if active.events else None
             try:
-                report = active.monitor.update(self._pose, [event] if event is not None else [])
+                if active.last_position is None:
+                    report = active.monitor.update(self._pose, [event] if event is not None else [])
+                else:   # every 5 cm of the move since the last pose: no region is stepped over
+                    report = active.monitor.update_along(active.last_position, self._pose,
+                                                         [event] if event is not None else [])
+                active.last_position = self._pose
             except LtlInstructError as e:
                 self._input_warning(active.iid, e)
                 return

@@ -335,13 +335,20 @@ class TaskProgressionNode(Node):
         self._jobs.put(('replan', data['id'], None, f'{skill} failed: {err.message}'))
 
     def on_timer(self) -> None:
-        """Fail instructions whose referent map never came."""
+        """Fail instructions whose referent map never came; forget stale replies."""
         now = time.monotonic()
         late = []
         with self._lock:
-            for p in self._pending.values():
+            for p in list(self._pending.values()):
                 if not p.queued and p.spec is not None and now - p.since > self.params['grounding_timeout']:
                     late.append(p.iid)
+                elif p.spec is None and now - p.since > 10 * self.params['grounding_timeout']:
+                    del self._pending[p.iid]   # a referent map whose task spec never came
+            # replies that came after their request timed out
+            while len(self._segments) > 1000:
+                self._segments.pop(next(iter(self._segments)))
+            while len(self._paths) > 1000:
+                self._paths.pop(next(iter(self._paths)))
         for iid in late:
             self._fail(iid, LtlInstructError('no referent map came for this instruction in time',
                                              ErrorCode.TIMEOUT), stage='grounding')

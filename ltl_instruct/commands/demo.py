@@ -179,6 +179,10 @@ def _print_report(report: dict[str, Any]) -> None:
             length = float(np.sum(np.linalg.norm(np.diff(plan, axis=0), axis=1)))
             skills = term.get('num_skills', 0)
             print(f'Plan:         {len(plan)} poses, {length:.1f} m, {skills} skill step(s)')
+        for r in report.get('skills', []):
+            what = f'{r["skill"]}[{", ".join(r.get("args", []))}]'
+            outcome = 'done' if r.get('ok') else f'FAILED ({(r.get("error") or {}).get("message")})'
+            print(f'Skill:        {what}: {outcome}')
         print(f'Execution:    {report.get("execution")}'
               + (f' (blamed: {report["violation"]})' if report.get('violation') else '')
               + (f' in {report["execution_s"]} s' if 'execution_s' in report else ''))

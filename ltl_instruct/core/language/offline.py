@@ -41,7 +41,8 @@ AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('stay', 'far', 'from'), ('keep', 'far', 'from'), ('without', 'going'), ('without', 'passing'),
     ('without', 'touching'), ('stay', 'away'), ('keep', 'away'), ('and', 'not'), ('but', 'not'),
     ('avoiding',), ('while', 'avoiding'), ('no',), ('shun',), ('always', 'avoid'), ('always', 'avoiding'),
-    ('without',), ('always', 'stay', 'away', 'from'), ('while', 'staying', 'away', 'from'),
+    ('without',), ('always', 'stay', 'away', 'from'), ('go', 'anywhere', 'but'), ('go', 'anywhere', 'except'),
+    ('anywhere', 'but'), ('anywhere', 'except'), ('go', 'anywhere', 'other', 'than'), ('while', 'staying', 'away', 'from'),
     ('staying', 'away', 'from'), ('keeping', 'away', 'from'), ('you', 'cannot'), ('you', 'can', 'not'),
     ('you', 'must', 'not'), ('you', 'should', 'not'), ('must', 'not'), ('cannot',), ('should', 'not'),
 ), key=lambda t: -len(t)))
@@ -64,6 +65,8 @@ flew driving drove getting coming came returning returned finding found observin
 hitting hit after pass cross crossed crossing visit go enter reach get arrive
 '''.split())
 
+GOAL_VERBS_SEED = frozenset({'go', 'do', 'make', 'let', 'come', 'get', 'stop'})
+
 GOAL_VERBS = frozenset('''
 go goes head visit navigate move drive fly walk run come return check find locate reach get stop
 swing make proceed travel survey inspect do continue advance going heading navigating moving
@@ -77,6 +80,7 @@ to over by at for on out back in into through past up down your way off around t
 there from onto me quickly straight directly
 '''.split())
 FILLERS = frozenset('''
+sometime sometimes
 please pls hey robot drone can could would you will just also then now first next lastly finally and
 so okay kindly i need want like to be sure make remember also yes alright right well oh hmm um er
 but eventually must have should ensure required that certainly definitely simply
@@ -88,6 +92,31 @@ PUT_VERBS = frozenset({'put', 'place', 'leave', 'drop', 'set', 'toss', 'throw', 
                        'dump', 'chuck'})
 PICK_VERBS = frozenset({'pick', 'grab', 'fetch', 'collect', 'get', 'retrieve', 'lift'})
 TRASH = Descriptor('trash_can')
+
+NOT_BEFORE_VERB = frozenset({'you', 'i', 'we', 'to', 'must', 'should', 'please', 'and', 'then', 'or', ',',
+                             'can', 'will', 'would', 'could', 'not', 'also', 'just', 'first', 'never', 'always',
+                             'finally', 'lastly', 'next', 'once', 'let', 'robot', 'drone', 'hey', 'sometime',
+                             'eventually', 'but', 'so', 'afterwards', 'need', 'want', 'only', 'cannot',
+                             'may', 'might', 'shall', 'do', 'does', 'did', 'allowed', 'able', 'have', 'has',
+                             'had', 'ever', 'dont', 'permitted', 'supposed', 'required', 'free', 'ok', 'okay',
+                             'good', 'instead', 'rather', 'ahead', 'directly', 'straight', 'immediately'}) | \
+    GOAL_VERBS_SEED
+
+STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})
+
+# Trailing phrases that add nothing to the task ("at all costs", "on your travels").
+NOISE_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('at', 'all', 'costs'), ('on', 'your', 'travels'), ('the', 'order', 'is', 'not', 'important'),
+    ('there', 'can', 'be', 'other', 'locations', 'in', 'between'), ('sometime',), ('at', 'some', 'point'),
+    ('order', 'is', 'not', 'important'), ('in', 'any', 'order', 'required'), ('required',),
+    ('the', 'order', 'does', 'not', 'matter'), ('in', 'no', 'particular', 'order'), ('eventually',),
+    ('at', 'least', 'once'), ('at', 'any', 'time'), ('at', 'any', 'instant'), ('ever',),
+), key=lambda t: -len(t)))
+ORDER_TAILS: tuple[tuple[str, ...], ...] = (
+    ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),
+    ('in', 'the', 'given', 'order'), ('in', 'the', 'same', 'order'), ('in', 'this', 'order'),
+    ('in', 'that', 'order'), ('in', 'order'), ('one', 'after', 'the', 'other'), ('in', 'the', 'order', 'given'),
+)
 
 IGNORED_CLAUSES = frozenset({
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
@@ -362,6 +391,25 @@ def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
     return is_name_word(tokens, i, False) and nxt not in GOAL_VERBS | NAME_VERBS | DELIVER_VERBS | PICK_VERBS
 
 
+def _strip_tails(rest: list[str]) -> tuple[list[str], bool]:
+    """Remove phrases that add nothing ("at all costs") and say whether an order phrase was there."""
+    ordered = False
+    changed = True
+    while changed and rest:
+        changed = False
+        for tail in NOISE_TAILS + ORDER_TAILS:
+            n = len(tail)
+            for i in range(len(rest) - n + 1):
+                if tuple(rest[i:i + n]) == tail and (i == 0 or i + n == len(rest)):
+                    ordered = ordered or tail in ORDER_TAILS
+                    rest = rest[:i] + rest[i + n:]
+                    changed = True
+                    break
+            if changed:
+                break
+    return rest, ordered
+
+
 def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
     return tuple(tokens[i:i + len(words)]) == tuple(words)
 
@@ -480,6 +528,14 @@ class _Reader:
                   ) and any(c.tokens for c in clauses) and 'make' not in clauses[-1].tokens and \
                     'visited' not in tokens[i:]:
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
+            elif t in STRONG_VERBS and 0 < i < n - 1 and tokens[i - 1] not in NOT_BEFORE_VERB and (
+                    tokens[i + 1] in GOAL_PARTICLES or tokens[i + 1] in DETS or (
+                        self.phrases.landmarks and self.phrases._landmark(tokens, i + 1) is not None)):
+                if clauses[-1].tokens:
+                    clauses.append(_Clause('seq', []))
+                clauses[-1].tokens.append(t)
+                i += 1
+                continue
             elif t in (',', 'and', 'but', 'so', 'while', 'or') and i > 0:
                 j = i + 1
                 while j < n and tokens[j] in (',', 'and', 'but', 'so'):
@@ -732,14 +788,22 @@ class _Reader:
             raise TranslationError(f'could not place what to avoid in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
         targets = [np.descriptor for np in nps]
-        rest = tokens[end:]
-        rest = [t for t in rest if t != ',']
+        rest, _ = _strip_tails([t for t in tokens[end:] if t != ','])
         # "more than once / more than N times" is a count, not an avoidance.
-        if _starts(rest, 0, ['more', 'than']) or _starts(rest, 0, ['any', 'more', 'than']):
-            j = 2 if rest[0] == 'more' else 3
+        for lead in (['on', 'any', 'more', 'than'], ['on', 'more', 'than'], ['any', 'more', 'than'],
+                     ['more', 'than']):
+            if _starts(rest, 0, lead):
+                rest = ['more', 'than'] + rest[len(lead):]
+                break
+        if _starts(rest, 0, ['more', 'than']):
+            j = 2
             n = self._count_word(rest, j)
+            if n is None:
+                raise TranslationError(f'could not read the count in "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(rest)})
             for d in targets:
-                self.task.constraints.append(at_most(_near(d), n[0] if n else 1))
+                self.task.constraints.append(at_most(_near(d), n[0]))
+            self._check_leftover(rest[n[1]:], tokens)
             return
         local, rest = self._trailing_scope(rest)
         if local is not None:
@@ -878,6 +942,8 @@ class _Reader:
 
     def _read_patrol(self, tokens: list[str]) -> bool:
         """'keep visiting a and b without stopping', 'visit a infinitely often' -> ``G F near[a] & ...``."""
+        if self._avoid_start(tokens) is not None and not {'stop', 'stopping', 'cease', 'quit'} & set(tokens):
+            return False
         s = ' ' + ' '.join(tokens) + ' '
         marks = (' infinitely', ' infinite ', ' forever', ' keep visiting ', ' keep going to ',
                  ' not stop visiting ',
@@ -1122,8 +1188,12 @@ class _Reader:
         w = tokens[i]
         if w in ('once', 'twice', 'thrice'):
             return NUMBER_WORDS[w], i + 1
-        if (w in NUMBER_WORDS or w.isdigit()) and i + 1 < len(tokens) and tokens[i + 1] in ('times', 'time'):
-            return (int(w) if w.isdigit() else NUMBER_WORDS[w]), i + 2
+        units = ('times', 'time', 'occasions', 'visits', 'instances', 'separate', 'different', 'distinct')
+        if (w in NUMBER_WORDS or w.isdigit()) and i + 1 < len(tokens) and tokens[i + 1] in units:
+            k = i + 1
+            while k < len(tokens) and tokens[k] in units:
+                k += 1
+            return (int(w) if w.isdigit() else NUMBER_WORDS[w]), k
         if w in ('on', 'in') and i + 1 < len(tokens):
             j = i + 1
             if tokens[j] in NUMBER_WORDS or tokens[j].isdigit():
@@ -1268,7 +1338,7 @@ class _Reader:
                                    details={'part': ' '.join(tokens)})
         if k > 0 or clause.connector in ('seq', 'pre', 'or'):
             self.saw_action = True
-        rest = [t for t in tokens[end:] if t != ',']
+        rest, ordered_tail = _strip_tails([t for t in tokens[end:] if t != ','])
         targets = [np.descriptor for np in nps]
         if patrol_from and rest and rest[0] == 'to':
             more, _, e2 = self._np_list(rest, 1)
@@ -1276,7 +1346,7 @@ class _Reader:
             joiner = 'then'
             rest = rest[e2:]
         # "X in that order" / "in any order"
-        ordered = False
+        ordered = ordered_tail
         for phrase in (['in', 'that', 'order'], ['in', 'order'], ['in', 'this', 'order'],
                        ['one', 'after', 'the', 'other']):
             if _starts(rest, 0, phrase):
@@ -1335,6 +1405,8 @@ class _Reader:
             only, rest = True, rest[1:]
         if not rest:
             return
+        if rest and rest[0] in ('once', 'when') and len(rest) > 1:
+            rest = ['after'] + rest[1:]
         if rest and rest[0] in ('before', 'after', 'through', 'via', 'by', 'past') and len(rest) > 1:
             word = rest[0]
             k = self._skip_event_verbs(rest, 1)
@@ -1373,6 +1445,7 @@ class _Reader:
                     self._goal_trailer(rest[end:], whole, targets)
                     return
         for lead in (['on', 'your', 'way', 'to'], ['on', 'the', 'way', 'to'], ['and', 'then', 'to'],
+                     ['followed', 'by'], ['and', 'then'],
                      ['to', 'get', 'to'], ['in', 'order', 'to', 'get', 'to'], ['to', 'reach'],
                      ['to', 'go', 'to'],
                      ['then', 'to'], ['and', 'to'], ['to']):

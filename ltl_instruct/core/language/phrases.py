@@ -45,6 +45,14 @@ CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piec
                              'stack', 'glass', 'jar', 'pile', 'bowl', 'plate', 'pack', 'packet', 'roll',
                              'sheet', 'slice'})
 
+# "each of a, b and c", "the following locations a, b": words before the names themselves.
+LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('each', 'of'), ('all', 'of'), ('both', 'of'), ('any', 'of'), ('all', 'the', 'following', 'locations'),
+    ('the', 'following', 'locations'), ('the', 'following', 'places'), ('all', 'locations'),
+    ('the', 'locations'), ('locations',), ('all', 'the', 'locations'), ('the', 'following'),
+    ('any', 'locations', 'among'), ('any', 'of', 'the', 'locations'), ('none', 'among'), ('none', 'of'),
+), key=lambda t: -len(t)))
+
 # Words that introduce a relative clause before a relation ("that's on", "which is behind").
 RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
     ('that', 'is', 'right'), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
@@ -209,6 +217,10 @@ class PhraseParser:
         if depth > 8:
             return None
         start = i
+        for head in LIST_HEADS:
+            if tuple(tokens[i:i + len(head)]) == head and i + len(head) < len(tokens):
+                i += len(head)
+                break
         if self.landmarks:
             j = i + 1 if i < len(tokens) and tokens[i] == 'the' else i
             lm = self._landmark(tokens, j)

@@ -42,7 +42,8 @@ AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('without', 'touching'), ('stay', 'away'), ('keep', 'away'), ('and', 'not'), ('but', 'not'),
     ('avoiding',), ('while', 'avoiding'), ('no',), ('shun',), ('always', 'avoid'), ('always', 'avoiding'),
     ('without',), ('always', 'stay', 'away', 'from'), ('go', 'anywhere', 'but'), ('go', 'anywhere', 'except'),
-    ('anywhere', 'but'), ('anywhere', 'except'), ('go', 'anywhere', 'other', 'than'), ('while', 'staying', 'away', 'from'),
+    ('anywhere', 'but'), ('anywhere', 'except'), ('go', 'anywhere', 'other', 'than'),
+    ('while', 'staying', 'away', 'from'),
     ('staying', 'away', 'from'), ('keeping', 'away', 'from'), ('you', 'cannot'), ('you', 'can', 'not'),
     ('you', 'must', 'not'), ('you', 'should', 'not'), ('must', 'not'), ('cannot',), ('should', 'not'),
 ), key=lambda t: -len(t)))
@@ -94,7 +95,8 @@ PICK_VERBS = frozenset({'pick', 'grab', 'fetch', 'collect', 'get', 'retrieve', '
 TRASH = Descriptor('trash_can')
 
 NOT_BEFORE_VERB = frozenset({'you', 'i', 'we', 'to', 'must', 'should', 'please', 'and', 'then', 'or', ',',
-                             'can', 'will', 'would', 'could', 'not', 'also', 'just', 'first', 'never', 'always',
+                             'can', 'will', 'would', 'could', 'not', 'also', 'just', 'first', 'never',
+                             'always',
                              'finally', 'lastly', 'next', 'once', 'let', 'robot', 'drone', 'hey', 'sometime',
                              'eventually', 'but', 'so', 'afterwards', 'need', 'want', 'only', 'cannot',
                              'may', 'might', 'shall', 'do', 'does', 'did', 'allowed', 'able', 'have', 'has',
@@ -115,7 +117,8 @@ NOISE_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
 ORDER_TAILS: tuple[tuple[str, ...], ...] = (
     ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),
     ('in', 'the', 'given', 'order'), ('in', 'the', 'same', 'order'), ('in', 'this', 'order'),
-    ('in', 'that', 'order'), ('in', 'order'), ('one', 'after', 'the', 'other'), ('in', 'the', 'order', 'given'),
+    ('in', 'that', 'order'), ('in', 'order'), ('one', 'after', 'the', 'other'),
+    ('in', 'the', 'order', 'given'),
 )
 
 IGNORED_CLAUSES = frozenset({

@@ -90,6 +90,35 @@ def test_kinds_of_language_translate_to_equivalent_formulas(instruction: str, go
     assert got.backend == 'offline'
 
 
+LANDMARK_CASES = [
+    ('go to a while avoiding b then move to b', '(!near[b] U near[a]) & F near[b]'),
+    ('visit a b and c in any order', 'F near[a] & F near[b] & F near[c]'),
+    ('keep visiting a and b without stopping', 'G F near[a] & G F near[b]'),
+    ('whenever you visit a you must go to b immediately after', 'G (near[a] -> X near[b])'),
+    ('once you visit a you have to visit b too', 'G (near[a] -> F near[b])'),
+    ('do not go to b once you have visited a', 'G (near[a] -> X G !near[b])'),
+    ('you cannot leave a until you visit b', 'near[a] U near[b]'),
+    ('do not visit a more than two times',
+     '!F (near[a] & F (!near[a] & F (near[a] & F (!near[a] & F near[a]))))'),
+    ('go to a go to b go to c', 'F (near[a] & F (near[b] & F near[c]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', LANDMARK_CASES, ids=[c[0][:40] for c in LANDMARK_CASES])
+def test_known_landmark_names(instruction: str, gold: str) -> None:
+    got = OfflineTranslator(landmarks=('a', 'b', 'c')).translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+def test_staying_within_and_permissions() -> None:
+    t = OfflineTranslator()
+    assert equivalent(t.translate('stay on the third floor while going to the red room').formula,
+                      parse_formula('F near[red_room] & G near[third_floor]'))
+    got = OfflineTranslator(avoid_scope='goal').translate(
+        'go to the garage avoiding the shed. if you reached the garage you can go to the shed.')
+    assert equivalent(got.formula, parse_formula('!near[shed] U near[garage]'))
+
+
 def test_referents_and_avoid_follow_the_formula() -> None:
     t = T.translate('Go to the printer, but keep away from the chair between the cabinet and the bag.')
     assert t.referents == ('printer', 'chair::isbetween(cabinet, bag)')

@@ -118,7 +118,8 @@ ORDER_TAILS: tuple[tuple[str, ...], ...] = (
     ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),
     ('in', 'the', 'given', 'order'), ('in', 'the', 'same', 'order'), ('in', 'this', 'order'),
     ('in', 'that', 'order'), ('in', 'order'), ('one', 'after', 'the', 'other'),
-    ('in', 'the', 'order', 'given'),
+    ('in', 'the', 'order', 'given'), ('in', 'that', 'specific', 'order'), ('in', 'this', 'strict', 'order'),
+    ('in', 'that', 'strict', 'order'), ('in', 'this', 'specific', 'order'), ('in', 'strict', 'order'),
 )
 
 IGNORED_CLAUSES = frozenset({
@@ -130,6 +131,7 @@ IGNORED_CLAUSES = frozenset({
 
 # "stay on the third floor", "do not leave the red room": the robot stays within a region.
 STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('cannot', 'leave'), ('must', 'not', 'leave'), ('not', 'leave'), ('should', 'not', 'leave'),
     ('stay', 'in'), ('stay', 'on'), ('stay', 'within'), ('stay', 'inside'), ('remain', 'in'),
     ('remain', 'on'), ('remain', 'within'), ('remain', 'inside'), ('do', 'not', 'leave'),
     ('never', 'leave'), ('do', 'not', 'exit'), ('do', 'not', 'navigate', 'away', 'from'),
@@ -439,6 +441,8 @@ class _Reader:
         self.choice: Optional[Descriptor] = None
         self.only = False
         self.saw_action = False
+        # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
+        self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
     # ----------------------------------------------------------------- structure
     def read(self, tokens: list[str]) -> Formula:
@@ -447,6 +451,7 @@ class _Reader:
         if not self.saw_action:
             raise TranslationError(f'found no action (go, bring, avoid...) in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
+        self._repair_avoid_then_visit()
         if self.pending_avoid_at:
             step = self.task.last_step(('visit',))
             if step is not None:
@@ -454,6 +459,25 @@ class _Reader:
             else:
                 self.task.constraints.extend(_never(self.pending_avoid_at))
         return self.task.formula()
+
+    def _repair_avoid_then_visit(self) -> None:
+        """An avoided place that is also a later goal is avoided only on the way there.
+
+        "go to a while avoiding b, then move to b": ``G !near[b]`` would contradict the goal,
+        so the avoidance ends where the next goal is reached: ``(!near[b] U near[a]) & ...``.
+        """
+        goals = {d for st in self.task.chain if st.kind in ('visit', 'deliver') for d in st.targets}
+        for d, after, g in self.global_avoids:
+            if d not in goals or g not in self.task.constraints:
+                continue
+            if after is not None and after.kind == 'visit' and d not in after.targets:
+                nxt: Optional[Step] = after   # read with this goal: avoided on the way to it
+            else:
+                nxt = next((st for st in self.task.chain if st.kind == 'visit' and d not in st.targets), None)
+            if nxt is None:
+                continue
+            self.task.constraints.remove(g)
+            nxt.avoid_until.append(d)
 
     @staticmethod
     def _sentences(tokens: list[str]) -> list[list[str]]:
@@ -824,6 +848,8 @@ class _Reader:
     def _trailing_scope(self, rest: list[str]) -> tuple[Optional[_Scope], list[str]]:
         if not rest:
             return None, rest
+        if rest[0] == 'without' and len(rest) > 2 and rest[1] in ('visiting', 'reaching', 'going', 'first'):
+            rest = ['until'] + rest[1:]
         if rest[0] == 'until' or _starts(rest, 0, ['before', 'you']) or _starts(rest, 0, ['unless']):
             j = 1
             while j < len(rest) and rest[j] in ('you', 'have', 'i', 'we', 'are', 'been', 'the', 'robot',
@@ -934,6 +960,10 @@ class _Reader:
             else:
                 step.avoid_after.extend(targets)
             return
+        if self.avoid_scope == 'global':
+            for d in targets:
+                g = Always(Not(_near(d)))
+                self.global_avoids.append((d, self.task.last_step(('visit', 'deliver')), g))
         if self.avoid_scope == 'goal':
             step = self.task.last_step(('visit',))
             if step is not None and step is self.task.chain[-1]:
@@ -1365,6 +1395,12 @@ class _Reader:
         if c is not None and _starts(rest, c[1], ['in', 'a', 'row']):
             self.task.repeat = c[0]
             rest = rest[c[1] + 3:]
+        if scope is not None and scope.kind == 'after' and scope.target is not None and not self.task.chain \
+                and self.task.find_step(scope.target.descriptor) is None and not rest:
+            # "once you visit a, you have to visit b": whenever a happens, b follows
+            react = _or([_near(d) for d in targets])
+            self.task.constraints.append(Always(Implies(_near(scope.target.descriptor), Eventually(react))))
+            return
         counted, rest = self._read_count(rest, targets)
         if counted:
             self._goal_trailer(rest, tokens, targets)

@@ -99,12 +99,14 @@ def _holds(comparator: str, a: Sequence[float], b: Sequence[float], c: Optional[
 def reference_resolve(d: Descriptor, objects: Sequence[Instance]) -> frozenset[str]:
     """Ids of the objects ``d`` denotes: names, then every relation with some anchor (never itself)."""
     out = set()
+    rel_anchors = [[[x for x in objects if x.id in ids]
+                    for ids in (reference_resolve(arg, objects) for arg in rel.args)]
+                   for rel in d.relations]
     for o in objects:
         if not _named(d.name, o):
             continue
         ok = True
-        for rel in d.relations:
-            anchors = [[x for x in objects if x.id in reference_resolve(arg, objects)] for arg in rel.args]
+        for rel, anchors in zip(d.relations, rel_anchors):
             if rel.comparator == 'isbetween':
                 found = any(_holds('isbetween', o.center, b.center, c.center)
                             for b in anchors[0] for c in anchors[1]

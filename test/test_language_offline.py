@@ -78,6 +78,12 @@ CASES = [
      'F (near[den] & F near[yard])'),
     ('Go to the box left of the bed. Sorry, I meant the one right of the bed.',
      'F near[box::isrightof(bed)]'),
+    ('Go to the sink, then the stove, then the fridge. Wait, skip the stove.',
+     'F (near[sink] & F near[fridge])'),
+    ("There's a mug, a bowl and a spoon on the table. Put the bowl in the sink.",
+     'F (near[bowl] & F (pick[bowl] & F (near[sink] & F release[bowl, sink])))'),
+    ('Drop off the parcel at the front desk.',
+     'F (near[parcel] & F (pick[parcel] & F (near[front_desk] & F release[parcel, front_desk])))'),
     ('Go to the shed twice - scratch that, three times is enough.',
      'F (near[shed] & F (!near[shed] & F (near[shed] & F (!near[shed] & F near[shed]))))'),
 ]

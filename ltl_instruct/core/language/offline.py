@@ -70,7 +70,7 @@ GOAL_VERBS_SEED = frozenset({'go', 'do', 'make', 'let', 'come', 'get', 'stop'})
 
 GOAL_VERBS = frozenset('''
 go goes head visit navigate move drive fly walk run come return check find locate reach get stop
-swing make proceed travel survey inspect do continue advance going heading navigating moving
+swing make proceed travel survey inspect do continue advance report going heading navigating moving
 travelling traveling flying driving walking visiting reaching land charge stand hover approach enter
 circle pass explore search look patrol wander roll arrive be need want please robot drone hey can
 could would you i will just also then now first next lastly finally and so okay kindly go ahead end
@@ -441,6 +441,7 @@ class _Reader:
         self.choice: Optional[Descriptor] = None
         self.only = False
         self.saw_action = False
+        self.mentions: list[Descriptor] = []
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -448,6 +449,10 @@ class _Reader:
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
             self._read_sentence(sentence)
+        if not self.saw_action and self.mentions and not self.task.chain:
+            # "there's a box behind the couch." alone: nothing to do
+            raise TranslationError(f'found no action (go, bring, avoid...) in "{" ".join(tokens)}"',
+                                   details={'part': ' '.join(tokens)})
         if not self.saw_action:
             raise TranslationError(f'found no action (go, bring, avoid...) in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
@@ -619,9 +624,16 @@ class _Reader:
                 if ok and not rest:
                     return scope
                 self.task.chain.append(step)
-        if _starts(tokens, 0, ['where', 'is']) or _starts(tokens, 0, ['there', 'is']) or _starts(
-                tokens, 0, ['there', 'are']):
-            tokens = tokens[2:]
+        for lead in (['there', 'is'], ['there', 'are'], ['i', 'see'], ['i', 'can', 'see'], ['we', 'have'],
+                     ['here', 'is'], ['where', 'is'], ['you', 'will', 'see'], ['you', 'can', 'see']):
+            if _starts(clause.tokens, 0, lead) or _starts(tokens, 0, lead):
+                # sets the scene: the things named are remembered for "it" / "there", not goals
+                body = tokens[len(lead):] if _starts(tokens, 0, lead) else tokens
+                nps, _, _ = self._np_list(body, 0)
+                if nps:
+                    self.last_object = nps[-1]
+                    self.mentions.extend(np.descriptor for np in nps)
+                    return scope
         if self._is_permission(tokens):
             self._read_permission(tokens)
             return scope
@@ -1287,7 +1299,7 @@ class _Reader:
             k = 2
         elif tokens[0] == 'get' and _starts(tokens, 1, ['rid', 'of']):
             k, implicit_dest = 3, TRASH
-        while k < len(tokens) and tokens[k] in ('me', 'up', 'back'):
+        while k < len(tokens) and tokens[k] in ('me', 'up', 'back', 'off', 'down', 'us'):
             k += 1
         objs, joiner, end = self._np_list(tokens, k, place=False, destination_stops=verb in PUT_VERBS)
         if not objs:
@@ -1326,6 +1338,7 @@ class _Reader:
         if implicit_dest is not None and not dests:
             self.notes.append('"throw away" releases the object at the implicit trash_can')
         if not dest_ds:
+            self._check_leftover(rest, tokens)
             for o in objs:
                 self.task.chain.append(Step('pick', [o.descriptor]))
             return True

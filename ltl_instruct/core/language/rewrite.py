@@ -271,15 +271,19 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     return prev[:start] + new_words + prev[end:]
 
 
-def _remove_clause(prev: list[str], pos: int) -> list[str]:
-    """Remove the clause around token ``pos`` (from the connective before it to the next stop)."""
+def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]:
+    """Remove the clause around token ``pos`` (from the connective before it to the next stop).
+
+    With ``narrow``, the next connective (``,``, ``then``, ``and``) also ends it: one goal of a list.
+    """
     a = pos
     while a > 0 and prev[a - 1] not in PUNCT and prev[a - 1] not in ('and', 'but', 'then'):
         a -= 1
     while a > 0 and prev[a - 1] in ('and', 'but', 'then', ','):
         a -= 1
     b = pos
-    while b < len(prev) and prev[b] not in '.;!?':
+    while b < len(prev) and prev[b] not in '.;!?' and not (
+            narrow and b > pos and prev[b] in (',', 'then', 'and')):
         b += 1
     return prev[:a] + prev[b:]
 
@@ -322,11 +326,15 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     while seg and seg[0] in (',', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh'):
         seg = seg[1:]
+    if seg and seg[0] in _CANCEL and marker not in _CANCEL and marker != 'never':
+        marker, seg = seg[0], seg[1:]
     s = ' '.join(seg)
     if marker in _CANCEL or marker == 'never':
         # "forget the garage, do the laundry room instead" / "ignore the last thing, go to X instead"
         if seg and seg[0] == 'mind':
             seg = seg[1:]
+        if marker in ('skip', 'drop', 'cancel') and seg and ',' not in seg:
+            seg = seg + [',']
         if seg and seg[0] == 'that' or marker == 'scratch':
             seg = seg[1:] if seg and seg[0] == 'that' else seg
         k = seg.index(',') if ',' in seg else len(seg)
@@ -367,7 +375,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{tgt}" was replaced')
             return prev[:hit.start] + new + prev[hit.end:]
         notes.append(f'"{tgt}" was dropped')
-        return _remove_clause(prev, hit.start)
+        return _remove_clause(prev, hit.start, narrow=True)
     # "the couch is fine, just avoid the rug"
     if ' is fine' in s or ' is okay' in s or ' is ok' in s or ' are fine' in s:
         k = next(p for p in range(len(seg)) if seg[p] in ('is', 'are'))

@@ -63,7 +63,8 @@ def bench_localisation(seeds: int, views: int, width: int, height: int) -> tuple
         found = map_from_views(scene, views, width, height).instances()
         for o in truth:
             same = [d for d in found if d.label == o.label]
-            err = min((float(np.linalg.norm(np.subtract(d.center, o.center))) for d in same), default=np.inf)
+            err = min((float(np.linalg.norm(np.subtract(d.center, o.center))) for d in same),
+                      default=np.inf)
             total += 1
             if not np.isfinite(err):
                 missed += 1
@@ -103,7 +104,8 @@ def bench_suite(seeds: int, per_scene: int, views: int, width: int, height: int)
                     comparators.add(r.comparator)
                     stack.extend(r.args)
             known_ok += frozenset(i.id for i in known.resolve(case.descriptor).instances) == case.expected
-            camera_ok += frozenset(true_id(i) for i in seen.resolve(case.descriptor).instances) == case.expected
+            got = frozenset(true_id(i) for i in seen.resolve(case.descriptor).instances)
+            camera_ok += got == case.expected
     return {'n': n, 'known': known_ok / n, 'camera': camera_ok / n, 'comparators': len(comparators),
             'depths': depth_counts, 'nonempty': nonempty}
 
@@ -160,7 +162,8 @@ def bench_names(embeddings: bool) -> list[tuple[str, float, float]]:
         for threshold in (0.5, 0.6, 0.7, 0.8):
             ok = sum((embedding_similarity(n.replace('_', ' '), label) >= threshold) == want
                      for n, label, want in NAME_PAIRS)
-            rows.append((f'embeddings only, whole phrases, threshold {threshold}', ok / len(NAME_PAIRS), 0.0))
+            rows.append((f'embeddings only, whole phrases, threshold {threshold}',
+                         ok / len(NAME_PAIRS), 0.0))
     return rows
 
 

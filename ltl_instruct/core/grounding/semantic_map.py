@@ -1,17 +1,21 @@
 """A persistent 3D voxel semantic map built from RGB-D + label frames (after HLSM).
 
-Per voxel the map keeps a score vector over classes (column 0: occupied by something
-that is no object: floor, walls; columns 1..K: object classes; all zeros: free) and
-whether it has ever been observed. Each frame observes the voxels its rays reach: the
-voxels that hold back-projected points get the frame's label histogram, the voxels
-clearly in front of the measured surface become free, and the update rule of HLSM
-(Blukis et al.) keeps everything else:
+Per voxel the map keeps whether it is occupied, its class distribution and whether it
+has ever been observed. Each frame observes the voxels its rays reach: the voxels that
+hold back-projected points get the frame's label distribution, the voxels clearly in
+front of the measured surface become free, and the update rule of HLSM (Blukis et al.)
+keeps everything else:
 
     V_t = V^_t * O^_t + V_{t-1} * (1 - O^_t),      O_t = max(O_{t-1}, O^_t)
 
+The class distribution of a voxel is stored compactly as its mode and the mode's
+probability (class 0: occupied by something that is no object: floor, walls), which is
+all that instance extraction reads; this keeps a voxel at 8 bytes whatever the number
+of classes, and a frame's update independent of it.
+
 Instances are extracted per class by density clustering of the object voxels (open3d
 DBSCAN); each has a centre and extent (the box of its voxels), a confidence (the mean
-class score of its voxels) and a number of observations (frames that saw it).
+class probability of its voxels) and a number of observations (frames that saw it).
 Frontier voxels are observed free voxels next to unobserved space.
 
 The grid grows as frames reach new space, so a map needs no bounds up front. Units are
@@ -31,7 +35,7 @@ from ltl_instruct.core.world.camera import CameraIntrinsics, CameraMount, camera
 from ltl_instruct.core.world.scene import slug
 
 MAX_VOXELS = 60_000_000
-_CHUNK = 16   # the grid grows in chunks of this many voxels per axis
+_CHUNK = 32   # the grid grows in chunks of this many voxels per axis
 
 
 @dataclass(frozen=True)
@@ -64,7 +68,7 @@ class SemanticMapParams:
 
 
 class SemanticMap:
-    """Persistent voxel map of class scores and observedness.
+    """Persistent voxel map of occupancy, class distributions (mode and probability) and observedness.
 
     Parameters
     ----------
@@ -81,7 +85,9 @@ class SemanticMap:
         self._column: dict[int, int] = {}           # class id -> score column (>= 1)
         self._column_names: list[str] = ['']        # column -> label text (0: not an object)
         self.origin = np.zeros(3, dtype=np.int64)   # voxel index of grid cell [0, 0, 0]
-        self.scores = np.zeros((0, 0, 0, 1), dtype=np.float32)
+        self.occupied = np.zeros((0, 0, 0), dtype=bool)        # last observation saw a surface
+        self.label = np.zeros((0, 0, 0), dtype=np.int16)        # mode of the class distribution (column)
+        self.label_prob = np.zeros((0, 0, 0), dtype=np.float16)  # probability of the mode
         self.observed = np.zeros((0, 0, 0), dtype=bool)
         self.hits = np.zeros((0, 0, 0), dtype=np.uint16)
         self.frames = 0
@@ -110,16 +116,16 @@ class SemanticMap:
         shape = tuple(int(v) for v in new_hi - new_lo + 1)
         if shape[0] * shape[1] * shape[2] > MAX_VOXELS:
             raise LimitExceededError(f'the semantic map would grow to {shape} voxels (limit {MAX_VOXELS})')
-        scores = np.zeros(shape + (self.scores.shape[3],), dtype=np.float32)
-        observed = np.zeros(shape, dtype=bool)
-        hits = np.zeros(shape, dtype=np.uint16)
+        names = ('occupied', 'label', 'label_prob', 'observed', 'hits')
+        grown = {n: np.zeros(shape, dtype=getattr(self, n).dtype) for n in names}
         if self.observed.size:
             o = self.origin - new_lo
             sl = tuple(slice(int(o[i]), int(o[i]) + self.shape[i]) for i in range(3))
-            scores[sl] = self.scores
-            observed[sl] = self.observed
-            hits[sl] = self.hits
-        self.scores, self.observed, self.hits, self.origin = scores, observed, hits, new_lo
+            for n in names:
+                grown[n][sl] = getattr(self, n)
+        for n in names:
+            setattr(self, n, grown[n])
+        self.origin = new_lo
 
     def _columns_for(self, class_ids: np.ndarray) -> np.ndarray:
         """Score columns of label ids (<= 0 -> column 0), adding columns for new classes."""
@@ -139,8 +145,6 @@ class SemanticMap:
                 col = len(self._column_names)
                 self._column[cid] = col
                 self._column_names.append(self.class_names.get(cid, f'class_{cid}'))
-                pad = np.zeros(self.shape + (1,), dtype=np.float32)
-                self.scores = np.concatenate([self.scores, pad], axis=3)
             lut[cid] = col
         return lut[ids]
 
@@ -191,7 +195,7 @@ class SemanticMap:
         hi = np.maximum(vox.max(axis=0), cam_vox)
         self._ensure(lo, hi)
         cols = self._columns_for(np.asarray(lab[valid], dtype=np.int64))
-        ncol = self.scores.shape[3]
+        ncol = len(self._column_names)
         sub_lo = lo - self.origin
         box = hi - lo + 1
         sl = tuple(slice(int(sub_lo[i]), int(sub_lo[i] + box[i])) for i in range(3))
@@ -213,27 +217,30 @@ class SemanticMap:
         dm = np.full(zc.shape, -np.inf, dtype=np.float32)
         dm[inview] = dm_img[v[inview].astype(np.int64), u[inview].astype(np.int64)]
         free = zc < dm - np.float32(vs * 0.87)                     # -inf (no return) is never free
-        sub_scores = self.scores[sl]
+        sub_occ = self.occupied[sl]
         # an occupied voxel is freed only when all its corners lie in front of the surface: a ray
         # through its centre may graze past the object surface that fills the voxel's lower half
-        held = np.argwhere(free & (sub_scores.sum(axis=3) >= 0.5))
+        held = np.argwhere(free & sub_occ)
         if held.size:
             keep = ~self._corners_in_front(held, lo, t_opt, k, s, dm_img)
             free[tuple(held[keep].T)] = False
-        sub_scores[free] = 0.0
+        sub_occ[free] = False
         self.observed[sl] |= free
-        # -- occupied: label histogram of the points in each voxel of the box
+        # -- occupied: label distribution of the points in each voxel of the box
         local = vox - lo
         flat = (local[:, 0] * box[1] + local[:, 1]) * box[2] + local[:, 2]
-        counts = np.bincount(flat * ncol + cols, minlength=int(box.prod()) * ncol)
-        counts = counts.reshape(tuple(int(b) for b in box) + (ncol,))
-        total = counts.sum(axis=3)
-        occ = total > 0
-        sub_scores[occ] = counts[occ] / total[occ][:, None].astype(np.float32)
-        self.observed[sl] |= occ
+        cells, inv = np.unique(flat, return_inverse=True)
+        counts = np.bincount(inv * ncol + cols, minlength=cells.size * ncol).reshape(cells.size, ncol)
+        mode = np.argmax(counts, axis=1)
+        prob = counts[np.arange(cells.size), mode] / counts.sum(axis=1)
+        ix = np.unravel_index(cells, tuple(int(b) for b in box))
+        sub_occ[ix] = True
+        self.label[sl][ix] = mode.astype(np.int16)
+        self.label_prob[sl][ix] = prob.astype(np.float16)
+        self.observed[sl][ix] = True
         sub_hits = self.hits[sl]
-        sub_hits[occ] = np.minimum(sub_hits[occ].astype(np.int64) + 1, 65535).astype(np.uint16)
-        return int(free.sum()) + int(occ.sum())
+        sub_hits[ix] = np.minimum(sub_hits[ix].astype(np.int64) + 1, 65535).astype(np.uint16)
+        return int(free.sum()) + int(cells.size)
 
     def _corners_in_front(self, cells: np.ndarray, lo: np.ndarray, t_opt: np.ndarray, k: CameraIntrinsics,
                           stride: int, depth: np.ndarray) -> np.ndarray:
@@ -263,25 +270,21 @@ class SemanticMap:
     # ------------------------------------------------------------------ queries
     @property
     def column_labels(self) -> tuple[str, ...]:
-        """Label text of every score column (column 0: not an object)."""
+        """Label text of every class column (column 0: not an object)."""
         return tuple(self._column_names)
-
-    def occupied(self) -> np.ndarray:
-        """Boolean (nx, ny, nz): voxels that hold something (score mass >= 0.5)."""
-        return self.scores.sum(axis=3) >= 0.5
 
     def instances(self) -> tuple[Instance, ...]:
         """Object instances, clustered per class; ids ``det_<label>_<n>``, ordered by position."""
         import open3d as o3d
-        if self.scores.shape[3] <= 1 or not self.observed.size:
+        if len(self._column_names) <= 1 or not self.observed.size:
             return ()
         vs = self.params.voxel_size
-        best = np.argmax(self.scores, axis=3)
-        best_score = np.take_along_axis(self.scores, best[..., None], axis=3)[..., 0]
+        objects = self.occupied & (self.label > 0) & (self.label_prob >= self.params.min_class_score)
+        cand = np.argwhere(objects)
+        cand_label = self.label[tuple(cand.T)]
         out: list[Instance] = []
-        for col in range(1, self.scores.shape[3]):
-            mask = (best == col) & (best_score >= self.params.min_class_score)
-            idx = np.argwhere(mask)
+        for col in range(1, len(self._column_names)):
+            idx = cand[cand_label == col]
             if idx.shape[0] < self.params.min_cluster_voxels:
                 continue
             centers = self.voxel_centers(idx)
@@ -296,7 +299,7 @@ class SemanticMap:
                 cidx = idx[members]
                 pts = centers[members]
                 lo, hi = pts.min(axis=0) - vs / 2, pts.max(axis=0) + vs / 2
-                conf = float(best_score[tuple(cidx.T)].mean())
+                conf = float(self.label_prob[tuple(cidx.T)].astype(np.float64).mean())
                 obs = int(self.hits[tuple(cidx.T)].max())
                 found.append(((lo + hi) / 2, hi - lo, conf, obs))
             found.sort(key=lambda f: (round(float(f[0][0]), 3), round(float(f[0][1]), 3)))
@@ -315,7 +318,7 @@ class SemanticMap:
         """
         if not self.observed.size:
             return np.zeros((0, 3))
-        free = self.observed & (self.scores.sum(axis=3) < 0.5)
+        free = self.observed & ~self.occupied
         unobs = np.pad(~self.observed, 1, constant_values=True)
         near_unobs = np.zeros_like(free)
         for axis in range(3):

@@ -127,7 +127,9 @@ IGNORED_CLAUSES = frozenset({
     'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',
     'thank you', 'okay', 'in that order', 'in order', 'whichever is closer', 'it does not matter which',
     'your choice', 'up to you', 'i do not mind which', 'start', 'start up', 'go ahead', 'stop', 'stop there',
-    'and stop', 'then stop', 'stay there', 'stop moving', 'finish', 'be done', 'done', 'and be done'})
+    'and stop', 'then stop', 'stay there', 'stop moving', 'finish', 'be done', 'done', 'and be done',
+    'first', 'second', 'third', 'fourth', 'fifth', 'secondly', 'thirdly', 'firstly', 'next', 'lastly',
+    'finally', 'then', 'after that', 'afterwards'})
 
 # "stay on the third floor", "do not leave the red room": the robot stays within a region.
 STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -239,7 +241,8 @@ def render(steps: Sequence[Step]) -> Optional[Formula]:
         return None
     s, rest = steps[0], list(steps[1:])
     if s.kind == 'all':
-        parts = [render(c) for c in s.chains[:-1]] + [render(list(s.chains[-1]) + rest)]
+        # "A and B, then C": C after both
+        parts = [render(list(c) + rest) for c in s.chains]
         return _and(*parts)
     if s.kind == 'any':
         alts = [render(list(c) + rest) for c in s.chains]
@@ -442,6 +445,7 @@ class _Reader:
         self.only = False
         self.saw_action = False
         self.mentions: list[Descriptor] = []
+        self.before_target: Optional[Descriptor] = None
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -504,6 +508,11 @@ class _Reader:
             k = _find(tokens, [',', 'or'])
             if k > 0:
                 self._read_alternatives([tokens[:k], tokens[k + 2:]])
+                return
+            k = next((j for j in range(1, len(tokens) - 1) if tokens[j] == 'or' and tokens[j + 1] in
+                      GOAL_VERBS | DELIVER_VERBS | PICK_VERBS), -1)
+            if k > 0:
+                self._read_alternatives([tokens[:k], tokens[k + 1:]])
                 return
         scope: Optional[_Scope] = None
         clauses = self._clauses(tokens)
@@ -670,6 +679,12 @@ class _Reader:
         if tokens[0] == 'only' and len(tokens) > 1 and tokens[1] in GOAL_VERBS | DELIVER_VERBS:
             tokens = tokens[1:]
             self.only = True
+        if tokens[0] == 'before' and len(tokens) > 2:
+            k = self._skip_event_verbs(tokens, 1)
+            np = self.phrases.parse(tokens, k)
+            if np is not None and np.end == len(tokens) and k > 1:
+                self.before_target = np.descriptor   # the next goal comes first, then this
+                return scope
         if self._read_ordering(tokens, clause):
             return scope
         if self._avoid_start(tokens) is not None:
@@ -686,8 +701,10 @@ class _Reader:
     @staticmethod
     def _strip_fillers(tokens: list[str]) -> list[str]:
         i = 0
-        while i < len(tokens) - 1 and tokens[i] == 'always' and tokens[i + 1] in GOAL_VERBS:
-            i += 1
+        adverbs = ('secondly', 'thirdly', 'firstly')
+        while i < len(tokens) - 1 and (tokens[i] == 'always' and tokens[i + 1] in GOAL_VERBS or (
+                tokens[i] in ORDINALS or tokens[i] in adverbs) and tokens[i + 1] == ','):
+            i += 2 if tokens[i + 1] == ',' else 1
         while i < len(tokens) and (tokens[i] in FILLERS or tokens[i] == ',') and not (
                 tokens[i] in ORDINALS and _ordinal_name(tokens, i)):
             if tokens[i] == 'make' and not _starts(tokens, i, ['make', 'sure']):
@@ -1192,7 +1209,20 @@ class _Reader:
             prev = self.task.last_step(('visit', 'deliver'))
             if prev is None:
                 return False
+            picked = any(w in s[k:k + 4] for w in ('picked', 'grabbed', 'collected', 'fetched'))
             k = self._skip_event_verbs(s, k)
+            if picked:
+                while k < len(s) and s[k] in ('up', 'picked', 'grabbed', 'collected', 'fetched'):
+                    k += 1
+                obj = self.phrases.parse(s, k)
+                if obj is None:
+                    return False
+                obj = self._resolve(obj)
+                for x in prev.targets:
+                    self.task.constraints.append(Until(Not(_near(x)), Atom('pick', (obj.descriptor,))))
+                self.task.chain.insert(self.task.chain.index(prev), Step('pick', [obj.descriptor]))
+                self._check_leftover(s[obj.end:], s)
+                return True
             nps, _, end = self._np_list(s, k)
             if not nps:
                 return False
@@ -1424,6 +1454,10 @@ class _Reader:
             self.task.chain.append(last)
         else:
             self._add_targets(targets, joiner, ordered)
+        if self.before_target is not None:
+            self.task.chain.append(Step('visit', [self.before_target]))
+            self.before_target = None
+            targets = [self.task.chain[-1].targets[0]]
         self._goal_trailer(rest, tokens, targets)
         if self.conditional is not None:
             self.task.constraints.append(WeakUntil(Not(_near(self.conditional.descriptor)),

@@ -72,7 +72,14 @@ whichever whatever matter care which else other others until till avoid avoiding
 while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside
+unless except whenever since because though although otherwise
 '''.split()) - {'one'}
+
+# "the roof of the library" -> library_roof: parts named before their whole.
+PART_WORDS = frozenset('''
+roof top side front back door entrance exit corner end edge middle center centre bottom base foot gate
+window wall floor lobby steps stairs porch yard garden balcony
+'''.split())
 
 # Words before "one" that make it a placeholder ("the blue one") rather than a number ("landmark one").
 PLACEHOLDER_ADJECTIVES = frozenset('''
@@ -248,6 +255,11 @@ class PhraseParser:
                 if i + 1 < len(tokens) and tokens[i] == 'of' and words[-1] in CONTAINER_WORDS:
                     words.append('of')
                     i += 1
+            if words and words[-1] in PART_WORDS and i + 1 < len(tokens) and tokens[i] == 'of' and depth < 8:
+                whole = self.parse(tokens, i + 1, destination_stops, depth + 1)
+                if whole is not None and not whole.descriptor.relations and not whole.pronoun:
+                    words = whole.descriptor.name.split('_') + words
+                    i = whole.end
         if words in (['spot'], ['somewhere'], ['place'], ['point'], ['location'], ['area']) and i + 1 < len(
                 tokens) and tokens[i] in ('in', 'on', 'inside', 'at', 'of') and depth < 8:
             inner = self.parse(tokens, i + 1, destination_stops, depth)

@@ -53,8 +53,10 @@ def _options(args: argparse.Namespace) -> dict[str, Any]:
 
 def record(t: Translation) -> dict[str, Any]:
     """Return the JSON record of a translation: formula, referents, avoid, subgoals."""
+    # descriptors are written without spaces, as in the data sets' referent lists
     out: dict[str, Any] = {'instruction': t.instruction, 'formula': str(t.formula),
-                           'referents': list(t.referents), 'avoid': list(t.avoid), 'backend': t.backend}
+                           'referents': [r.replace(' ', '') for r in t.referents],
+                           'avoid': [r.replace(' ', '') for r in t.avoid], 'backend': t.backend}
     try:
         v = verification_for(t)
         out['subgoals'] = list(v.subgoals)

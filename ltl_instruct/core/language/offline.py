@@ -250,7 +250,7 @@ def render(steps: Sequence[Step]) -> Optional[Formula]:
     tail = render(rest)
     if s.kind == 'formula':
         assert s.formula is not None
-        return _and(s.formula, tail)
+        return _and(tail, s.formula)   # the goals print first; the meaning is the same
     if s.kind == 'leave':
         return Eventually(_and(Not(_near(s.targets[0])), tail))
     if s.kind == 'visit':
@@ -307,6 +307,7 @@ class _Task:
         self.chain: list[Step] = []
         self.constraints: list[Formula] = []
         self.repeat = 1
+        self.chain_at: Optional[int] = None   # constraints printed before the goals (an until read with them)
 
     def find_step(self, d: Descriptor, head: str = '') -> Optional[Step]:
         for s in reversed(self._all_steps()):
@@ -336,7 +337,8 @@ class _Task:
 
     def formula(self) -> Formula:
         chain = self.chain * self.repeat
-        f = _and(render(chain), *self.constraints)
+        at = len(self.constraints) if self.chain_at is None else self.chain_at
+        f = _and(*self.constraints[:at], render(chain), *self.constraints[at:])
         if f is None:
             raise TranslationError('the instruction names nothing to do and nothing to avoid')
         return f
@@ -604,6 +606,21 @@ class _Reader:
     # ----------------------------------------------------------------- clauses
     def _read_clause(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
         """Read one clause; returns the scope that carries to the next clause of the sentence."""
+        had_chain, n_constraints = bool(self.task.chain), len(self.task.constraints)
+        try:
+            return self._read_clause_body(clause, scope)
+        finally:
+            if not had_chain and self.task.chain and self.task.chain_at is None:
+                # an until-constraint read in the same clause as its goal comes first
+                self.task.chain_at = len(self.task.constraints) if self._until_first(n_constraints) else 0
+
+    def _until_first(self, n: int) -> bool:
+        new = self.task.constraints[n:]
+        return bool(new) and all(isinstance(c, Until) for c in new) and len(self.task.chain) == 1 and \
+            self.task.chain[0].kind == 'visit' and all(
+                isinstance(c.right, Atom) and c.right.args[0] in self.task.chain[0].targets for c in new)
+
+    def _read_clause_body(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
         tokens = self._strip_fillers(clause.tokens)
         if not tokens:
             return scope
@@ -1504,19 +1521,19 @@ class _Reader:
                     self.task.chain.append(moved)
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                 elif word == 'before':
-                    self.task.chain.append(moved)
+                    # "A before B" is "B only after A": F b & (!b U a) (the U makes a required)
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                     for d in others:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(d)), _near(x)))
+                elif only and word == 'after':
+                    self.task.chain.append(moved)   # "X only after Y": F x & (!x U y)
+                    for d in others:
+                        for x in targets:
+                            self.task.constraints.append(Until(Not(_near(x)), _near(d)))
                 else:
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                     self.task.chain.append(moved)
-                    if only or word == 'after':
-                        if only:
-                            for d in others:
-                                for x in targets:
-                                    self.task.constraints.append(Until(Not(_near(x)), _near(d)))
                 self._goal_trailer(rest[end:], whole, targets)
                 return
         if rest[0] == 'by' and len(rest) > 2:

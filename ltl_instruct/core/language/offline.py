@@ -796,6 +796,8 @@ class _Reader:
                 k += 1
             np = self.phrases.parse(tokens, k)
             end = np.end if np is not None else k
+            if np is not None and not np.pronoun:
+                self.last_object = np
             if end < len(tokens) and tokens[end] == 'up':
                 end += 1
             return _Scope('after_pick'), end
@@ -807,6 +809,15 @@ class _Reader:
             while end < len(tokens) and tokens[end] in ('off', 'down'):
                 end += 1
             return _Scope('after_release'), end
+        if tokens[i - 1] == 'while' and w in ('go', 'walk', 'drive', 'fly', 'head', 'move', 'travel', 'get'):
+            k = j + 1
+            while k < len(tokens) and tokens[k] in GOAL_PARTICLES - {'there', 'here'}:
+                k += 1
+            if k < len(tokens) and tokens[k] in ('there', 'here'):
+                return _Scope('onway'), k + 1
+            np = self.phrases.parse(tokens, k)
+            if np is not None:
+                return _Scope('onway', self._resolve(np, place=True)), np.end
         k = j
         while k < len(tokens) and tokens[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS:
             if tokens[k] == 'there':
@@ -947,8 +958,8 @@ class _Reader:
                 self.task.constraints.append(_until_avoid(targets, Atom('pick', (d,))))
             else:
                 self.task.constraints.append(_until_avoid(targets, _near(d)))
-                if self.task.find_step(d) is None:
-                    self.task.chain.append(Step('visit', [d]))
+                if self.task.find_step(d) is None and not self.task.chain:
+                    self.task.chain.append(Step('visit', [d]))  # so that "then ..." comes after it
             return
         if kind == 'onway' and self.avoid_scope == 'goal' and scope is not None and scope.event == 'while' \
                 and scope.target is not None:
@@ -1390,6 +1401,9 @@ class _Reader:
                 self.task.chain.append(Step('pick', [o.descriptor]))
             return True
         ok, rest = self._read_count(rest, dest_ds)
+        without = []
+        if rest and rest[0] == 'without':
+            without, rest = rest, []
         rest = [t for t in rest if t not in (',', 'too', 'please', 'instead', 'as', 'well', 'again')]
         if rest and rest[0] in ('while', 'when', 'on', 'along', 'and', 'without'):
             sc, rem = self._trailing_scope(rest)
@@ -1402,12 +1416,16 @@ class _Reader:
         last = self.task.chain[-1] if self.task.chain else None
         if last is not None and last.kind == 'pick' and last.targets[0] in obj_ds and len(obj_ds) == 1:
             last.kind, last.dests = 'deliver', list(dest_ds)
+            if without:
+                self._read_avoid(without, _Scope('carry'))
             return True
         steps = [Step('deliver', [o], list(dest_ds)) for o in obj_ds]
         if len(steps) == 1:
             self.task.chain.append(steps[0])
         else:
             self.task.chain.append(Step('any' if joiner == 'or' else 'all', chains=[[s] for s in steps]))
+        if without:   # "take it to X without passing Y": while carrying it
+            self._read_avoid(without, _Scope('carry'))
         return True
 
     def _read_goal(self, tokens: list[str], clause: _Clause, scope: Optional[_Scope]) -> None:

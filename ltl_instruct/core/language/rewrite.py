@@ -403,6 +403,18 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     if count_fix is not None:
         notes.append('the count was corrected')
         return count_fix
+    if 'not' in seg:
+        # "the freezer, not the fridge"
+        k = seg.index('not')
+        new, old = _strip_corr(seg[:k]), seg[k + 1:]
+        parser = PhraseParser()
+        onp, nnp = parser.parse(old, 0), parser.parse(new, 0) if new else None
+        if onp is not None and nnp is not None and nnp.end == len(new):
+            hit = next((sp for sp in reversed(_np_spans(prev))
+                        if sp.descriptor == onp.descriptor or sp.head == onp.head), None)
+            if hit is not None:
+                notes.append(f'corrected to "{" ".join(new)}"')
+                return prev[:hit.start] + new + prev[hit.end:]
     new = _strip_corr(seg)
     if not new:
         return prev

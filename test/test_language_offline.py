@@ -95,7 +95,8 @@ CASES = [
     ('go to the fridge then the sink. actually the freezer, not the fridge',
      'F (near[freezer] & F near[sink])'),
     ('Pick up the leash and take it to the front door without passing the cat tree.',
-     'F (near[leash] & F (pick[leash] & (!near[cat_tree] U (near[front_door] & F release[leash, front_door]))))'),
+     'F (near[leash] & F (pick[leash] & (!near[cat_tree] U '
+     '(near[front_door] & F release[leash, front_door]))))'),
     ('Visit the kitchen. Then go to the office, avoiding the hallway while you go there.',
      'F (near[kitchen] & (!near[hallway] U near[office]))'),
     ('Walk to the front door, but avoid the rug until you have reached the hallway.',

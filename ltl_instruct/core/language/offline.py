@@ -129,7 +129,7 @@ IGNORED_CLAUSES = frozenset({
     'your choice', 'up to you', 'i do not mind which', 'start', 'start up', 'go ahead', 'stop', 'stop there',
     'and stop', 'then stop', 'stay there', 'stop moving', 'finish', 'be done', 'done', 'and be done',
     'first', 'second', 'third', 'fourth', 'fifth', 'secondly', 'thirdly', 'firstly', 'next', 'lastly',
-    'finally', 'then', 'after that', 'afterwards'})
+    'finally', 'then', 'after that', 'afterwards', 'land', 'land there', 'and land', 'then land'})
 
 # "stay on the third floor", "do not leave the red room": the robot stays within a region.
 STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -565,7 +565,7 @@ class _Reader:
                     tokens, i, ['once', 'there']) or _starts(tokens, i, ['when', 'you', 'are', 'there']) or \
                     _starts(tokens, i, ['once', 'you', 'get', 'there']) or _starts(
                         tokens, i, ['once', 'you', 'reach', 'it']):
-                boundary = 'seq'
+                boundary = 'there'
                 skip = 2 if tokens[i + 1] == 'there' else 4
             elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
                   ) and any(c.tokens for c in clauses) and 'make' not in clauses[-1].tokens and \
@@ -597,6 +597,9 @@ class _Reader:
                     clauses.append(_Clause(boundary, []))
                 elif boundary != 'and':
                     clauses[-1].connector = boundary
+                if boundary == 'there':
+                    while i + skip < n and tokens[i + skip] == ',':
+                        skip += 1
                 i += skip
                 continue
             clauses[-1].tokens.append(t)
@@ -687,7 +690,7 @@ class _Reader:
             first_flag = True
         if self._avoid_start(tokens) is not None and 'first' in tokens[:4] and self.task.chain:
             first_flag = True
-        if first_flag and self.task.chain and clause.connector == 'and':
+        if first_flag and self.task.chain and clause.connector == 'and' and self.conditional is None:
             if self._avoid_start(tokens) is not None:
                 self.saw_action = True
                 self._read_avoid(tokens, _Scope('onway'))
@@ -706,6 +709,8 @@ class _Reader:
             return scope
         if self._avoid_start(tokens) is not None:
             self.saw_action = True
+            if clause.connector == 'there' and scope is None and self.last_place is not None:
+                scope = _Scope('after', self.last_place)   # "once you're there, never go back to Y"
             self._read_avoid(tokens, scope)
             return scope
         if tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS or _starts(tokens, 0, ['throw', 'away']):
@@ -1385,6 +1390,10 @@ class _Reader:
                 j = 2
             while j < len(rest) and rest[j] in ('the', 'top', 'of') and _starts(rest, j, ['top', 'of']):
                 j += 2
+            if j < len(rest) and rest[j] in ('me', 'us'):
+                j += 1
+                if j < len(rest) and rest[j] in ('at', 'by', 'in', 'near', 'next'):
+                    j += 2 if _starts(rest, j, ['next', 'to']) else 1
             dests, _, dend = self._np_list(rest, j)
             rest = rest[dend:]
         elif implicit_dest is None:

@@ -284,7 +284,7 @@ class PhraseParser:
         while i < len(tokens):
             j = i
             lead = _relative_lead(tokens, j)
-            if not lead and relations and tokens[j] == 'and':
+            if not lead and relations and tokens[j] in ('and', 'but'):
                 lead = 1 + _relative_lead(tokens, j + 1) if match_relation(tokens, j + 1 + _relative_lead(
                     tokens, j + 1)) else 0
             j += lead

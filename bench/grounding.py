@@ -111,8 +111,8 @@ def bench_suite(seeds: int, per_scene: int, views: int, width: int, height: int)
             'depths': depth_counts, 'nonempty': nonempty}
 
 
-def bench_integrate(frames: int, stride: int) -> float:
-    """Median time [ms] to integrate one 640x480 frame (label + depth) into a growing map."""
+def bench_integrate(frames: int, stride: int) -> tuple[float, float]:
+    """Median and worst time [ms] to integrate one 640x480 frame (label + depth) into a growing map."""
     scene = random_scene(random.Random(3), n_objects=24)
     cam = SyntheticCamera(scene, 640, 480)
     renders = [cam.render(p) for p in survey_poses(scene, frames)]
@@ -122,7 +122,7 @@ def bench_integrate(frames: int, stride: int) -> float:
         t0 = time.perf_counter()
         smap.integrate(f.depth, f.labels, f.intrinsics, f.t_map_body)
         times.append(time.perf_counter() - t0)
-    return median_ms(times[1:])   # the first frame allocates the grid
+    return median_ms(times[1:]), max(times[1:]) * 1000.0   # the first frame allocates the grid
 
 
 def bench_resolve(n_objects: int, count: int) -> tuple[float, float]:
@@ -198,10 +198,10 @@ def main(argv: list[str]) -> int:
 
     frames = 10 if args.quick else 24
     for stride in (2, 1):
-        ms = bench_integrate(frames, stride)
+        ms, worst_frame = bench_integrate(frames, stride)
         tag = ' (default)' if stride == 2 else ''
-        print(f'integrate one 640x480 frame, pixel stride {stride}{tag}: median {ms:.1f} ms '
-              f'over {frames - 1} frames (target < 30 ms)')
+        print(f'integrate one 640x480 frame, pixel stride {stride}{tag}: median {ms:.1f} ms, '
+              f'worst {worst_frame:.1f} ms over {frames - 1} frames (target < 30 ms median)')
         if stride == 2 and ms >= 30.0:
             missed_target.append('integrate')
 

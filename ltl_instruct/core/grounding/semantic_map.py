@@ -109,8 +109,15 @@ class SemanticMap:
         cur_hi = self.origin + np.array(self.shape) - 1
         if self.observed.size and np.all(lo >= cur_lo) and np.all(hi <= cur_hi):
             return
-        new_lo = np.minimum(lo, cur_lo) if self.observed.size else lo.copy()
-        new_hi = np.maximum(hi, cur_hi) if self.observed.size else hi.copy()
+        # grow a side by at least the camera's range (1 m vertically), so that a robot moving
+        # about re-allocates the grid rarely: growth copies the whole grid
+        vs = self.params.voxel_size
+        pad = np.array([math.ceil(self.params.max_range / vs)] * 2 + [math.ceil(1.0 / vs)])
+        if self.observed.size:
+            new_lo = np.where(lo < cur_lo, np.minimum(lo, cur_lo - pad), cur_lo)
+            new_hi = np.where(hi > cur_hi, np.maximum(hi, cur_hi + pad), cur_hi)
+        else:
+            new_lo, new_hi = lo - pad, hi + pad
         new_lo = (np.floor_divide(new_lo, _CHUNK)) * _CHUNK
         new_hi = (np.floor_divide(new_hi, _CHUNK) + 1) * _CHUNK - 1
         shape = tuple(int(v) for v in new_hi - new_lo + 1)

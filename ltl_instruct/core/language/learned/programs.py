@@ -91,17 +91,13 @@ def allowed_mask(vocab: OutputVocabulary, stack: np.ndarray, length: np.ndarray,
     can still be closed within ``max_len``; a unary operator needs one operand
     and may not repeat itself (``F F``, ``G G``, ``! !`` say nothing new); a
     binary operator needs two; END needs exactly one formula on the stack; ``F`` and
-    ``G`` may not apply directly to ``F`` or ``G``; ``!`` applies to landmarks only
-    (negation normal form: ``G ! a``, ``! a U b``; no ``! G ! a`` for ``F a``).
+    ``G`` may not apply directly to ``F`` or ``G``.
     """
     kinds = vocab.kinds()[None, :]
     s = stack[:, None]
     remaining = (max_len - length)[:, None]  # tokens still allowed, this one included
     ok_landmark = (kinds == KIND_LANDMARK) & (s <= remaining - 1) & (remaining >= 1)
     ok_unary = (kinds == KIND_UNARY) & (s >= 1) & (s <= remaining)
-    # negation normal form: '!' only on a landmark, so that '! G !' cannot spell F (and so on)
-    after_landmark = (last >= 0) & (last < len(vocab.props))
-    ok_unary &= ~((np.arange(vocab.size) == vocab.op_id('!'))[None, :] & ~after_landmark[:, None])
     ok_binary = (kinds == KIND_BINARY) & (s >= 2) & (remaining >= 1)
     ok_end = (kinds == KIND_END) & (s == 1)
     mask = ok_landmark | ok_unary | ok_binary | ok_end

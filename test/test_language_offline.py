@@ -107,6 +107,11 @@ CASES = [
      'F near[shelf::isabove(sink)::isbelow(cabinet)]'),
     ('Go to the fridge, then the pantry; if you go to the basement at all, visit the laundry first.',
      'F (near[fridge] & F near[pantry]) & (!near[basement] W near[laundry])'),
+    ('Go to the north gate, and on the way avoid the pond and the fence.',
+     '(!near[pond] & !near[fence]) U near[north_gate]'),
+    ('Move the vase from the table to the windowsill.',
+     'F (near[vase::isnextto(table)] & F (pick[vase::isnextto(table)] & F (near[windowsill] & '
+     'F release[vase::isnextto(table), windowsill])))'),
     ('Go to the shed twice - scratch that, three times is enough.',
      'F (near[shed] & F (!near[shed] & F (near[shed] & F (!near[shed] & F near[shed]))))'),
 ]

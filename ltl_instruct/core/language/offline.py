@@ -27,7 +27,7 @@ from ltl_instruct.core.language.phrases import (
 from ltl_instruct.core.language.rewrite import apply_corrections, resolve_list_references
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
-    Always, And, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Or, Until, WeakUntil,
+    Always, And, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Or, Relation, Until, WeakUntil,
 )
 
 STOP_AFTER_THE = frozenset({'next', 'very', 'same', 'moment', 'time', 'following', 'other', 'end'})
@@ -764,6 +764,8 @@ class _Reader:
                     return _Scope('onway'), rest[1:]
                 if rest and rest[0] == 'back':
                     return _Scope('onway'), rest[1:]
+                if lead[0] == 'on' and self.task.chain:
+                    return _Scope('onway'), rest   # "go to X, and on the way avoid Y"
                 return _Scope('global'), rest
         if tokens[0] in ('once', 'after', 'when', 'while') and len(tokens) > 1:
             sc, end = self._event_phrase(tokens, 1)
@@ -1367,9 +1369,19 @@ class _Reader:
         objs, joiner, end = self._np_list(tokens, k, place=False, destination_stops=verb in PUT_VERBS)
         if not objs:
             return False
+        rest = tokens[end:]
+        if rest and rest[0] == 'from' and len(objs) == 1:
+            # "the blanket from the closet": where the object is, as a nearness relation
+            src = self.phrases.parse(rest, 1, destination_stops=True)
+            if src is not None and not src.pronoun:
+                o = objs[0]
+                d = Descriptor(o.descriptor.name, o.descriptor.relations + (
+                    Relation('isnextto', (src.descriptor,)),))
+                objs = [NounPhrase(d, o.start, o.end, o.head)]
+                self.notes.append(f'"from {src.descriptor}" read as {d}')
+                rest = rest[src.end:]
         for o in objs:
             self.last_object = o
-        rest = tokens[end:]
         while rest and rest[0] in ('up', 'back', 'over', 'away', 'out', 'down', 'off', 'along'):
             if rest[0] == 'away' and verb in ('throw', 'toss', 'put'):
                 implicit_dest = TRASH
@@ -1490,6 +1502,9 @@ class _Reader:
             return
         counted, rest = self._read_count(rest, targets)
         if counted:
+            if len(rest) > 1 and rest[0] == 'and' and rest[1] in DETS:
+                self._read_goal(['visit'] + rest[1:], _Clause('seq', rest[1:]), None)
+                return
             self._goal_trailer(rest, tokens, targets)
             return
         if clause.connector == 'pre' and self.task.chain:

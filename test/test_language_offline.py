@@ -135,6 +135,11 @@ LANDMARK_CASES = [
     ('do not visit a more than two times',
      '!F (near[a] & F (!near[a] & F (near[a] & F (!near[a] & F near[a]))))'),
     ('go to a go to b go to c', 'F (near[a] & F (near[b] & F near[c]))'),
+    ('you have to go to a two or more times', 'F (near[a] & F (!near[a] & F near[a]))'),
+    ('visit a twice and never revisit it again',
+     '!near[a] U (near[a] & (near[a] U (!near[a] & (!near[a] U (near[a] & (near[a] W G !near[a]))))))'),
+    ('do not visit a any more or any fewer than one time',
+     '!near[a] U (near[a] & (near[a] W G !near[a]))'),
 ]
 
 

@@ -15,6 +15,7 @@ left over; nothing is dropped silently.
 """
 from __future__ import annotations
 
+import re
 import time
 from dataclasses import dataclass, field
 from typing import Optional, Sequence
@@ -55,7 +56,7 @@ land anywhere back near close to by into in over through past on onto around at 
 even going passing touching knock hit disturb wake anywhere let yourself be into enter visiting
 entering navigate navigating reaching reach move moving travel traveling travelling stepping step
 walking fly flying driving going ever allowed permitted to first
-'''.split()) - {'the'}
+'''.split()) - {'the'} | {'revisit', 'revisiting', 'reenter'}
 
 # Gerunds and participles of movement, skipped between "until"/"after"/"before" and the place.
 EVENT_WORDS = frozenset('''
@@ -399,6 +400,19 @@ def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
     """Whether an ordinal starts a name ("first floor") rather than an adverb ("first head to")."""
     nxt = tokens[i + 1] if i + 1 < len(tokens) else ''
     return is_name_word(tokens, i, False) and nxt not in GOAL_VERBS | NAME_VERBS | DELIVER_VERBS | PICK_VERBS
+
+
+def normalize_counts(rest: list[str]) -> list[str]:
+    """Rewrite count idioms to one form: "five or more times" -> "at least five times"."""
+    text = ' ' + ' '.join(rest) + ' '
+    num = r'(one|two|three|four|five|six|seven|eight|nine|ten|\d+)'
+    kinds = '(separate |different |distinct )?'
+    text = re.sub(rf' {num} or more than \1 {kinds}times ', r' at least \1 times ', text)
+    text = re.sub(rf' {num} or more (separate |different |distinct )?times ', r' at least \1 times ', text)
+    text = re.sub(r' at least ((?:\w+ )?(?:times|twice|once|thrice)) or more ', r' at least \1 ', text)
+    text = re.sub(rf' ({num} times|twice|once|thrice) or more ', r' at least \1 ', text)
+    text = re.sub(r' (?:any )?more or (?:any )?(?:fewer|less) than ', ' exactly ', text)
+    return text.split()
 
 
 def _strip_tails(rest: list[str]) -> tuple[list[str], bool]:
@@ -881,6 +895,34 @@ class _Reader:
         targets = [np.descriptor for np in nps]
         rest, _ = _strip_tails([t for t in tokens[end:] if t != ','])
         # "more than once / more than N times" is a count, not an avoidance.
+        rest = normalize_counts(rest)
+        if rest and rest[0] == 'exactly' or _starts(rest, 0, ['any', 'fewer', 'than']) or _starts(
+                rest, 0, ['fewer', 'than']) or _starts(rest, 0, ['less', 'than']) or _starts(
+                rest, 0, ['any', 'less', 'than']):
+            # "do not visit a more or fewer than N times" / "never go to a less than N times"
+            exact = rest[0] == 'exactly'
+            j = 1 if exact else (3 if rest[0] == 'any' else 2)
+            n = self._count_word(rest, j)
+            if n is None:
+                raise TranslationError(f'could not read the count in "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(rest)})
+            for d in targets:
+                if exact:
+                    self.task.constraints.append(exactly(_near(d), n[0]))
+                else:
+                    self.task.chain.extend(
+                        [Step('visit', [d]), Step('leave', [d])] * (n[0] - 1) + [Step('visit', [d])])
+            self._check_leftover(rest[n[1]:], tokens)
+            return
+        again = bool({'revisit', 'revisiting', 'reenter'} & set(tokens[:k]))
+        if again or rest and rest[0] in ('anymore', 'again') or (
+                _starts(rest, 0, ['any', 'more']) and len(rest) == 2):
+            visits = {d: sum(1 for st in self.task.chain if st.kind == 'visit' and st.targets == [d])
+                      for d in targets}
+            if all(visits.values()):
+                for d, n_visits in visits.items():   # "visit a twice and never again": exactly that many
+                    self.task.constraints.append(at_most(_near(d), n_visits))
+                return
         for lead in (['on', 'any', 'more', 'than'], ['on', 'more', 'than'], ['any', 'more', 'than'],
                      ['more', 'than']):
             if _starts(rest, 0, lead):
@@ -1318,6 +1360,7 @@ class _Reader:
 
     def _read_count(self, rest: list[str], targets: list[Descriptor]) -> tuple[bool, list[str]]:
         """Read counting phrases after a goal: at least / at most / exactly / N times / in a row."""
+        rest = normalize_counts(rest)
         mode = 'at_least'
         i = 0
         if _starts(rest, 0, ['exactly']) or _starts(rest, 0, ['only']) or _starts(rest, 0, ['just']):

@@ -135,6 +135,8 @@ LANDMARK_CASES = [
     ('do not visit a more than two times',
      '!F (near[a] & F (!near[a] & F (near[a] & F (!near[a] & F near[a]))))'),
     ('go to a go to b go to c', 'F (near[a] & F (near[b] & F near[c]))'),
+    ('a and b cannot be visited at any time', 'G !near[a] & G !near[b]'),
+    ('continuously move to c b and a', 'G F near[a] & G F near[b] & G F near[c]'),
     ('you have to go to a two or more times', 'F (near[a] & F (!near[a] & F near[a]))'),
     ('visit a twice and never revisit it again',
      '!near[a] U (near[a] & (near[a] U (!near[a] & (!near[a] U (near[a] & (near[a] W G !near[a]))))))'),

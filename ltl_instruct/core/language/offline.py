@@ -102,7 +102,8 @@ NOT_BEFORE_VERB = frozenset({'you', 'i', 'we', 'to', 'must', 'should', 'please',
                              'eventually', 'but', 'so', 'afterwards', 'need', 'want', 'only', 'cannot',
                              'may', 'might', 'shall', 'do', 'does', 'did', 'allowed', 'able', 'have', 'has',
                              'had', 'ever', 'dont', 'permitted', 'supposed', 'required', 'free', 'ok', 'okay',
-                             'good', 'instead', 'rather', 'ahead', 'directly', 'straight', 'immediately'}) | \
+                             'good', 'instead', 'rather', 'ahead', 'directly', 'straight', 'immediately',
+                             'single', 'any', 'every', 'each', 'no'}) | \
     GOAL_VERBS_SEED
 
 STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})
@@ -585,7 +586,8 @@ class _Reader:
                   ) and any(c.tokens for c in clauses) and 'make' not in clauses[-1].tokens and \
                     'visited' not in tokens[i:]:
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
-            elif t in STRONG_VERBS and 0 < i < n - 1 and tokens[i - 1] not in NOT_BEFORE_VERB and (
+            elif t in STRONG_VERBS and 0 < i < n - 1 and tokens[i - 1] not in NOT_BEFORE_VERB and not \
+                    tokens[i - 1].endswith('ly') and (
                     tokens[i + 1] in GOAL_PARTICLES or tokens[i + 1] in DETS or (
                         self.phrases.landmarks and self.phrases._landmark(tokens, i + 1) is not None)):
                 if clauses[-1].tokens:
@@ -681,6 +683,9 @@ class _Reader:
             self._read_permission(tokens)
             return scope
         if self._read_patrol(tokens) or self._read_reaction(tokens):
+            self.saw_action = True
+            return scope
+        if self._read_passive_avoid(tokens):
             self.saw_action = True
             return scope
         for tail in (['are', 'all', 'visited'], ['are', 'visited'], ['is', 'visited'], ['are', 'reached'],
@@ -944,7 +949,8 @@ class _Reader:
         elif scope is None and 'without' in tokens[:k] and 'through' in tokens[:k] and self.task.chain:
             scope = _Scope('onway')
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
-                    'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again')
+                    'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
+                    'anymore', 'costs', 'instant', 'moment')
         leftover = [t for t in rest if t not in harmless]
         if leftover and leftover[0] not in ('when', 'while'):
             raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
@@ -1079,6 +1085,24 @@ class _Reader:
             return
         self.task.constraints.extend(_never(targets))
 
+    def _read_passive_avoid(self, tokens: list[str]) -> bool:
+        """'a and b cannot be visited', 'a should never be reached', 'none of a, b are visited'."""
+        none = tokens[:1] == ['none']
+        nps, _, end = self._np_list(tokens, 0, place=False)
+        if not nps:
+            return False
+        rest = tokens[end:]
+        neg = ('cannot', 'never', 'not')
+        if not (none and rest[:1] in (['are'], ['is'], ['can'], ['should'], ['must']) or
+                any(w in rest[:3] for w in neg) and rest[:1] != ['is'] and rest and rest[0] in (
+                    'cannot', 'can', 'should', 'must', 'may', 'are', 'is', 'will', 'shall')):
+            return False
+        if not any(w in rest for w in ('visited', 'reached', 'true', 'entered', 'approached', 'seen', 'hold',
+                                       'occur', 'happen', 'touched', 'gone', 'passed')):
+            return False
+        self.task.constraints.extend(_never([np.descriptor for np in nps]))
+        return True
+
     def _read_patrol(self, tokens: list[str]) -> bool:
         """'keep visiting a and b without stopping', 'visit a infinitely often' -> ``G F near[a] & ...``."""
         if self._avoid_start(tokens) is not None and not {'stop', 'stopping', 'cease', 'quit'} & set(tokens):
@@ -1088,7 +1112,9 @@ class _Reader:
                  ' not stop visiting ',
                  ' never stop visiting ', ' without stopping', ' repeatedly', ' continuously', ' endlessly',
                  ' over and over', ' frequent ', ' keep on visiting ', ' indefinitely', ' again and again',
-                 ' keep revisiting ', ' continually', ' constantly', ' unlimited ', ' perpetually')
+                 ' keep revisiting ', ' continually', ' constantly', ' unlimited ', ' perpetually',
+                 ' continue to stop ', ' continue visiting ', ' continue going ', ' not stop ',
+                 ' cannot stop ', ' never stop ', ' keep on ')
         if not any(m in s for m in marks):
             return False
         nps: list[NounPhrase] = []

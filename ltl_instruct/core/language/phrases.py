@@ -51,6 +51,7 @@ LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('the', 'following', 'locations'), ('the', 'following', 'places'), ('all', 'locations'),
     ('the', 'locations'), ('locations',), ('all', 'the', 'locations'), ('the', 'following'),
     ('any', 'locations', 'among'), ('any', 'of', 'the', 'locations'), ('none', 'among'), ('none', 'of'),
+    ('either', 'one', 'among'), ('one', 'among'), ('any', 'one', 'among'), ('either', 'of'), ('any', 'of'),
 ), key=lambda t: -len(t)))
 
 # Words that introduce a relative clause before a relation ("that's on", "which is behind").

@@ -158,6 +158,9 @@ def test_staying_within_and_permissions() -> None:
     got = OfflineTranslator(avoid_scope='goal').translate(
         'go to the garage avoiding the shed. if you reached the garage you can go to the shed.')
     assert equivalent(got.formula, parse_formula('!near[shed] U near[garage]'))
+    got = OfflineTranslator(avoid_scope='goal').translate(
+        'go to the garage by avoiding the shed and then stay in the garage or continue to the shed')
+    assert equivalent(got.formula, parse_formula('!near[shed] U near[garage]'))
 
 
 def test_referents_and_avoid_follow_the_formula() -> None:

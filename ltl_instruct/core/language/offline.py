@@ -487,7 +487,7 @@ class _Reader:
         return self.task.formula()
 
     def _repair_avoid_then_visit(self) -> None:
-        """An avoided place that is also a later goal is avoided only on the way there.
+        """Avoid a place that is also a later goal only on the way there.
 
         "go to a while avoiding b, then move to b": ``G !near[b]`` would contradict the goal,
         so the avoidance ends where the next goal is reached: ``(!near[b] U near[a]) & ...``.
@@ -530,6 +530,18 @@ class _Reader:
                       GOAL_VERBS | DELIVER_VERBS | PICK_VERBS), -1)
             if k > 0:
                 self._read_alternatives([tokens[:k], tokens[k + 1:]])
+                return
+        # "..., then stay in X or continue to Y": a permission tail, after the goal it follows
+        for p in range(len(tokens)):
+            tail = ' '.join(tokens[p:]) + ' '
+            if (tokens[p] in ('then', 'if', 'once') or p == 0) and self._is_permission(tokens[p:]) and (
+                    ' or stay ' in tail or ' or continue ' in tail) and (p > 0 or self.task.chain):
+                if p > 0:
+                    head = tokens[:p]
+                    while head and head[-1] in (',', 'and'):
+                        head = head[:-1]
+                    self._read_sentence(head)
+                self._read_permission(tokens[p:])
                 return
         scope: Optional[_Scope] = None
         clauses = self._clauses(tokens)
@@ -1086,7 +1098,7 @@ class _Reader:
         self.task.constraints.extend(_never(targets))
 
     def _read_passive_avoid(self, tokens: list[str]) -> bool:
-        """'a and b cannot be visited', 'a should never be reached', 'none of a, b are visited'."""
+        """Read passive avoidance: 'a and b cannot be visited', 'none of a, b are visited'."""
         none = tokens[:1] == ['none']
         nps, _, end = self._np_list(tokens, 0, place=False)
         if not nps:
@@ -1170,7 +1182,8 @@ class _Reader:
         s = ' ' + ' '.join(tokens) + ' '
         return any(p in s for p in (' you can ', ' you may ', ' stay put ', ' be done ', ' free to ',
                                     ' you are allowed ', ' it is okay to ', ' it is fine to ', ' or stop ',
-                                    ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ')
+                                    ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ',
+                                    ' or continue ')
                    ) and ' not ' not in s
 
     def _read_permission(self, tokens: list[str]) -> None:
@@ -1525,6 +1538,8 @@ class _Reader:
             while k < len(tokens) and tokens[k] in ('and', ','):
                 k += 1
         patrol_from = False
+        if _starts(tokens, 0, ['go', 'to', 'or', 'through']):
+            k = 4
         while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES) and not (
                 tokens[k] in ORDINALS and _ordinal_name(tokens, k)) and not (
                 tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)

@@ -112,6 +112,7 @@ CASES = [
     ('Move the vase from the table to the windowsill.',
      'F (near[vase::isnextto(table)] & F (pick[vase::isnextto(table)] & F (near[windowsill] & '
      'F release[vase::isnextto(table), windowsill])))'),
+    ('Always avoid going to the attic through the nursery.', '!near[nursery] U near[attic]'),
     ('Go to the shed twice - scratch that, three times is enough.',
      'F (near[shed] & F (!near[shed] & F (near[shed] & F (!near[shed] & F near[shed]))))'),
 ]

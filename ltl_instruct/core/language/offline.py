@@ -598,6 +598,14 @@ class _Reader:
                   ) and any(c.tokens for c in clauses) and 'make' not in clauses[-1].tokens and \
                     'visited' not in tokens[i:]:
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
+            elif t == 'always' and 0 < i < n - 1 and tokens[i + 1] in ('avoid', 'stay', 'keep') and \
+                    tokens[i - 1] not in (',', 'and', 'but', 'while'):
+                boundary, skip = 'and', 0
+                if clauses[-1].tokens:
+                    clauses.append(_Clause('and', []))
+                clauses[-1].tokens.append(t)
+                i += 1
+                continue
             elif t in STRONG_VERBS and 0 < i < n - 1 and tokens[i - 1] not in NOT_BEFORE_VERB and not \
                     tokens[i - 1].endswith('ly') and (
                     tokens[i + 1] in GOAL_PARTICLES or tokens[i + 1] in DETS or (
@@ -955,6 +963,18 @@ class _Reader:
                 self.task.constraints.append(at_most(_near(d), n[0]))
             self._check_leftover(rest[n[1]:], tokens)
             return
+        if rest and rest[0] in ('through', 'via') and len(nps) == 1:
+            # "avoid going to X through Y": Y is avoided on the way to X
+            via, _, vend = self._np_list(rest, 1, place=False)
+            if via:
+                goal = nps[0].descriptor
+                step = self.task.find_step(goal)
+                if step is None:
+                    step = Step('visit', [goal])
+                    self.task.chain.append(step)
+                step.avoid_until.extend(v.descriptor for v in via)
+                self._check_leftover(rest[vend:], tokens)
+                return
         local, rest = self._trailing_scope(rest)
         if local is not None:
             scope = local

@@ -113,6 +113,8 @@ CASES = [
      'F (near[vase::isnextto(table)] & F (pick[vase::isnextto(table)] & F (near[windowsill] & '
      'F release[vase::isnextto(table), windowsill])))'),
     ('Always avoid going to the attic through the nursery.', '!near[nursery] U near[attic]'),
+    ('Always go through the hall to get to the den.', 'F (near[hall] & F near[den])'),
+    ('Move to anywhere on the third floor, then to the roof.', 'F (near[third_floor] & F near[roof])'),
     ('Go to the shed twice - scratch that, three times is enough.',
      'F (near[shed] & F (!near[shed] & F (near[shed] & F (!near[shed] & F near[shed]))))'),
 ]

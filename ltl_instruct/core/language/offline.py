@@ -64,7 +64,8 @@ reached visited arrived checked passed gone been going visiting reaching seen se
 landed surveyed at there enter entering entered navigating navigated moving moved traveling
 travelling travelled heading headed arriving touching touched stepping stepped walking walked flying
 flew driving drove getting coming came returning returned finding found observing observe observed
-hitting hit after pass cross crossed crossing visit go enter reach get arrive
+hitting hit after pass cross crossed crossing visit go enter reach get arrive passing going travelling traveling
+moving
 '''.split())
 
 GOAL_VERBS_SEED = frozenset({'go', 'do', 'make', 'let', 'come', 'get', 'stop'})
@@ -1578,9 +1579,10 @@ class _Reader:
         targets = [np.descriptor for np in nps]
         if patrol_from and rest and rest[0] == 'to':
             more, _, e2 = self._np_list(rest, 1)
-            targets += [np.descriptor for np in more]
-            joiner = 'then'
-            rest = rest[e2:]
+            if more:
+                targets += [np.descriptor for np in more]
+                joiner = 'then'
+                rest = rest[e2:]
         # "X in that order" / "in any order"
         ordered = ordered_tail
         for phrase in (['in', 'that', 'order'], ['in', 'order'], ['in', 'this', 'order'],

@@ -261,7 +261,8 @@ class PhraseParser:
                 if whole is not None and not whole.descriptor.relations and not whole.pronoun:
                     words = whole.descriptor.name.split('_') + words
                     i = whole.end
-        if words in (['spot'], ['somewhere'], ['place'], ['point'], ['location'], ['area']) and i + 1 < len(
+        if words in (['spot'], ['somewhere'], ['place'], ['point'], ['location'], ['area'], ['anywhere'],
+                     ['anyplace']) and i + 1 < len(
                 tokens) and tokens[i] in ('in', 'on', 'inside', 'at', 'of') and depth < 8:
             inner = self.parse(tokens, i + 1, destination_stops, depth)
             if inner is not None:

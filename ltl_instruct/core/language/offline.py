@@ -64,8 +64,8 @@ reached visited arrived checked passed gone been going visiting reaching seen se
 landed surveyed at there enter entering entered navigating navigated moving moved traveling
 travelling travelled heading headed arriving touching touched stepping stepped walking walked flying
 flew driving drove getting coming came returning returned finding found observing observe observed
-hitting hit after pass cross crossed crossing visit go enter reach get arrive passing going travelling traveling
-moving
+hitting hit after pass cross crossed crossing visit go enter reach get arrive passing going travelling
+traveling moving
 '''.split())
 
 GOAL_VERBS_SEED = frozenset({'go', 'do', 'make', 'let', 'come', 'get', 'stop'})

@@ -193,6 +193,14 @@ def test_cli_train_eval(tmp_path, capsys):
     assert result['city'] == 'testville' and result['model']['n'] == result['test_instructions'] > 0
     assert cli_main(['parser', 'eval', '--city', 'testville', '--data', str(tmp_path), '--model', model]) == 0
     assert 'baseline' in capsys.readouterr().out
+    # restarts: the kept run is the one with the best training reward
+    assert cli_main(['parser', 'train', '--city', 'testville', '--data', str(tmp_path), '--out', model,
+                     '--epochs', '1', '--threads', '1', '--quiet', '--restarts', '2']) == 0
+    info = ParserBundle.load(model).info
+    rewards = info['final_reward_per_restart']
+    assert len(rewards) == 2 and info['chosen_seed'] == int(rewards[1] > rewards[0])
+    assert cli_main(['parser', 'train', '--city', 'testville', '--data', str(tmp_path), '--out', model,
+                     '--restarts', '0']) == 2
     # bad input: exit status 2 with a typed error
     assert cli_main(['parser', 'eval', '--city', 'nowhere', '--data', str(tmp_path), '--model', model]) == 2
     assert cli_main(['parser', 'eval', '--city', 'testville', '--data', str(tmp_path),

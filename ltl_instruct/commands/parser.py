@@ -34,6 +34,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     train.add_argument('--time-limit', type=float, default=None,
                        help='seconds after which no new epoch starts (default 1080)')
     train.add_argument('--seed', type=int, default=0, help='random seed (default 0)')
+    train.add_argument('--restarts', type=int, default=1,
+                       help='train from this many seeds, keep the best by training reward (default 1)')
     train.add_argument('--quiet', action='store_true', help='no per-epoch progress')
     eval_.add_argument('--model', required=True, help='model file written by "parser train"')
     eval_.add_argument('--json', action='store_true', help='print one JSON object')
@@ -53,7 +55,8 @@ def _train(args: argparse.Namespace) -> int:
         overrides['time_limit_s'] = args.time_limit
     config = TrainingConfig(**overrides)
     progress = None if args.quiet else (lambda line: print(line, file=sys.stderr, flush=True))
-    bundle = train_city(args.data, args.city, config, threads=args.threads, progress=progress)
+    bundle = train_city(args.data, args.city, config, threads=args.threads, progress=progress,
+                        restarts=args.restarts)
     bundle.save(args.out)
     info = bundle.info
     print(f"trained {args.city}: {info['train_instructions']} instructions "

@@ -503,8 +503,9 @@ class _Reader:
                 nxt = next((st for st in self.task.chain if st.kind == 'visit' and d not in st.targets), None)
             if nxt is None:
                 continue
-            self.task.constraints.remove(g)
-            nxt.avoid_until.append(d)
+            # from the start until that goal: "b not before a" (as the ordered-visit patterns read it)
+            k = self.task.constraints.index(g)
+            self.task.constraints[k] = Until(Not(_near(d)), _or([_near(t) for t in nxt.targets]))
 
     @staticmethod
     def _sentences(tokens: list[str]) -> list[list[str]]:
@@ -995,7 +996,7 @@ class _Reader:
             return None, rest
         if rest[0] == 'without' and len(rest) > 2 and rest[1] in ('visiting', 'reaching', 'going', 'first'):
             rest = ['until'] + rest[1:]
-        if rest[0] == 'until' or _starts(rest, 0, ['before', 'you']) or _starts(rest, 0, ['unless']):
+        if rest[0] == 'until' or rest[0] == 'before' or _starts(rest, 0, ['unless']):
             j = 1
             while j < len(rest) and rest[j] in ('you', 'have', 'i', 'we', 'are', 'been', 'the', 'robot',
                                                 'has', 'after', 'finally', 'first', 'successfully'):

@@ -34,8 +34,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     train.add_argument('--time-limit', type=float, default=None,
                        help='seconds after which no new epoch starts (default 1080)')
     train.add_argument('--seed', type=int, default=0, help='random seed (default 0)')
-    train.add_argument('--restarts', type=int, default=1,
-                       help='train from this many seeds, keep the best by training reward (default 1)')
+    train.add_argument('--restarts', type=int, default=2,
+                       help='train from this many seeds, keep the best by training reward (default 2)')
     train.add_argument('--quiet', action='store_true', help='no per-epoch progress')
     eval_.add_argument('--model', required=True, help='model file written by "parser train"')
     eval_.add_argument('--json', action='store_true', help='print one JSON object')

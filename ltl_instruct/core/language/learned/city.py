@@ -20,7 +20,7 @@ from ltl_instruct.core.language.learned.training import (
 
 def train_city(data_dir: str, city: str, config: TrainingConfig = TrainingConfig(),
                parser_config: ParserConfig = ParserConfig(), threads: int = 2,
-               progress: Optional[Callable[[str], None]] = None, restarts: int = 1) -> ParserBundle:
+               progress: Optional[Callable[[str], None]] = None, restarts: int = 2) -> ParserBundle:
     """Train the parser and the baseline on the city's training split; returns the bundle.
 
     With ``restarts`` > 1, the parser is trained from seeds ``seed, seed + 1, ...``

@@ -119,8 +119,12 @@ def test_english_instruction_is_translated_planned_and_executed(graph):
     done = client.wait_status(iid, 'satisfied', timeout=60.0)
     assert done is not None and done['phase'] == 'execution'
     fridge = resolve_scene('apartment').object_by_id('fridge')
-    last = client.received.odom[-1][1]
-    assert fridge.box.distance(last, dims=2)[0] <= NEAR + 0.05
+
+    def stopped_near_fridge():
+        # the status can overtake the last odometry messages on their way to this client
+        return fridge.box.distance(client.received.odom[-1][1], dims=2)[0] <= NEAR + 0.05 or None
+
+    assert client.wait_until(stopped_near_fridge, 5.0), client.received.odom[-1]
 
 
 @pytest.mark.parametrize('case', ['nonsense', 'unplaceable', 'bad_json', 'bad_instruction_json',
@@ -163,7 +167,9 @@ def test_bad_instruction_gets_a_typed_error_and_the_next_is_served(graph, case):
     assert status['error']['message']
     _alive(g)
     good = client.send(formula='F near[tv]')
-    assert client.wait_terminal(good, timeout=30.0)['status'] == 'planned'
+    # served: planned, or satisfied at once where the previous case already drove the robot to the tv
+    served = client.wait_terminal(good, timeout=30.0)
+    assert served['status'] in ('planned', 'satisfied'), served
 
 
 def test_garbage_without_an_id_still_gets_a_status(graph):

@@ -19,7 +19,7 @@ from typing import AbstractSet, Any, Iterable, Optional, Sequence
 
 from ltl_instruct.core.automaton.guards import GUARD_FALSE, GUARD_TRUE, Cube, Guard
 from ltl_instruct.core.automaton.progression import (
-    accepts_empty, assign, canonical_state, resolve_later, step_formula, to_nnf,
+    accepts_empty, assign_atoms, canonical_state, resolve_later, step_atoms, step_formula, to_nnf,
 )
 from ltl_instruct.core.errors import LimitExceededError, UnsatisfiableError
 from ltl_instruct.core.spec.ast import FALSE, Atom, Formula, Not, atoms_of, iter_subformulas
@@ -54,49 +54,51 @@ def _current_atoms(f: Formula) -> list[Atom]:
     sequences linear: in ``a & (b & (c | @..) | @..) | @..`` a false ``a`` settles
     the whole step at once.
     """
-    from ltl_instruct.core.automaton.progression import Later
     order: dict[Atom, None] = {}
     frontier = [f]
     while frontier:  # breadth-first
         nxt: list[Formula] = []
         for node in frontier:
-            if isinstance(node, Later):
-                continue
             if isinstance(node, Atom):
                 order.setdefault(node, None)
             elif isinstance(node, Not):
                 order.setdefault(node.operand, None)  # type: ignore[arg-type]
-            else:
+            elif step_atoms(node):   # Later and constants hold no current atoms
                 nxt.extend(node.children())
         frontier = nxt
     return list(order)
 
 
-def _expand(state: Formula, step_cache: dict) -> dict[Formula, list[Cube]]:
-    """Successor formula -> cubes of letters leading there from ``state``."""
+def _expand(state: Formula, step_cache: dict, next_cache: dict) -> dict[Formula, list[Cube]]:
+    """Successor formula -> cubes of letters leading there from ``state``.
+
+    A Shannon expansion of the state's step formula: each branch fixes one atom and
+    substitutes only that atom into its parent's residual (untouched sub-formulas are
+    shared, not rebuilt); a residual without current atoms is resolved to its
+    canonical successor once per compilation (``next_cache``).
+    """
     out: dict[Formula, list[Cube]] = {}
     events_in_play = [a for a in atoms_of(state) if a.is_event]
 
     def rec(f: Formula, values: dict[Atom, bool], forced_false: frozenset[Atom]) -> None:
-        pending = [a for a in _current_atoms(f)]
-        if not pending:
-            nxt = canonical_state(resolve_later(f))
+        if not step_atoms(f):
+            nxt = next_cache.get(f)
+            if nxt is None:
+                nxt = next_cache[f] = canonical_state(resolve_later(f))
             out.setdefault(nxt, []).append(
                 Cube(frozenset(a for a, v in values.items() if v),
                      frozenset(a for a, v in values.items() if not v and a not in forced_false)))
             return
-        a = pending[0]
+        a = _current_atoms(f)[0]
         for v in (True, False):
-            vals = dict(values)
-            vals[a] = v
+            new = {a: v}
             forced = forced_false
             if v and a.is_event:  # one event per letter: every other event is false
-                others = [e for e in events_in_play if e != a and e not in vals]
+                others = [e for e in events_in_play if e != a and e not in values]
                 for e in others:
-                    vals[e] = False
+                    new[e] = False
                 forced = forced | frozenset(others)
-            g = assign(f, lambda x: vals.get(x))
-            rec(g, vals, forced)
+            rec(assign_atoms(f, new), {**values, **new}, forced)
 
     rec(step_formula(state, step_cache), {}, frozenset())
     return out
@@ -258,9 +260,10 @@ def compile_automaton(formula: Formula | str, max_states: int = DEFAULT_MAX_STAT
     states: list[Formula] = [init]
     raw: list[dict[int, list[Cube]]] = []
     step_cache: dict = {}
+    next_cache: dict = {}
     i = 0
     while i < len(states):
-        succ = _expand(states[i], step_cache)
+        succ = _expand(states[i], step_cache, next_cache)
         row: dict[int, list[Cube]] = {}
         for nxt, cubes in succ.items():
             j = index.get(nxt)

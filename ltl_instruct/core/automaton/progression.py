@@ -151,7 +151,8 @@ def step_formula(f: Formula, cache: dict[Formula, Formula] | None = None) -> For
 def assign(f: Formula, value_of: Callable[[Atom], bool | None]) -> Formula:
     """Substitute known atom values in a step formula (``Later`` nodes untouched).
 
-    ``value_of(atom)`` returns True, False, or None for "still unknown".
+    ``value_of(atom)`` returns True, False, or None for "still unknown". A sub-formula
+    in which nothing changes is returned as it is (no rebuilding, no re-sorting).
     """
     if isinstance(f, Atom):
         v = value_of(f)
@@ -161,21 +162,59 @@ def assign(f: Formula, value_of: Callable[[Atom], bool | None]) -> Formula:
         return f if v is None else (FALSE if v else TRUE)
     if isinstance(f, And):
         out = []
+        changed = False
         for o in f.operands:
             r = assign(o, value_of)
             if r == FALSE:
                 return FALSE
+            changed = changed or r is not o
             out.append(r)
-        return conj(*out)
+        return conj(*out) if changed else f
     if isinstance(f, Or):
         out = []
+        changed = False
         for o in f.operands:
             r = assign(o, value_of)
             if r == TRUE:
                 return TRUE
+            changed = changed or r is not o
             out.append(r)
-        return disj(*out)
+        return disj(*out) if changed else f
     return f  # Const, Later
+
+
+def step_atoms(f: Formula) -> frozenset[Atom]:
+    """Atoms of a step formula outside ``Later`` obligations (cached on the node)."""
+    got = f.__dict__.get('_step_atoms')
+    if got is None:
+        if isinstance(f, Atom):
+            got = frozenset((f,))
+        elif isinstance(f, Not):
+            got = frozenset((f.operand,))  # type: ignore[arg-type]
+        elif isinstance(f, (And, Or)):
+            got = frozenset().union(*(step_atoms(o) for o in f.operands))
+        else:
+            got = frozenset()  # Const, Later
+        object.__setattr__(f, '_step_atoms', got)
+    return got
+
+
+def assign_atoms(f: Formula, values: dict[Atom, bool]) -> Formula:
+    """:func:`assign` with a dict of values, skipping sub-formulas that hold none of its atoms."""
+    if not values or not (step_atoms(f) & values.keys()):
+        return f
+    if isinstance(f, Atom):
+        return TRUE if values[f] else FALSE
+    if isinstance(f, Not):
+        return FALSE if values[f.operand] else TRUE  # type: ignore[index]
+    out = []
+    absorbing = FALSE if isinstance(f, And) else TRUE
+    for o in f.operands:  # type: ignore[attr-defined]
+        r = assign_atoms(o, values)
+        if r == absorbing:
+            return absorbing
+        out.append(r)
+    return conj(*out) if isinstance(f, And) else disj(*out)
 
 
 def resolve_later(f: Formula) -> Formula:

@@ -86,3 +86,35 @@ def test_scene_overrides_tell_every_node_about_the_robot():
     drone = scene_overrides('city_block')
     assert drone['task_progression']['robot_kind'] == 'drone'
     assert drone['fmt_planner']['bounds'] == drone['task_progression']['bounds'] == '0.5,0.5,2,119.5,99.5,30'
+
+
+def test_a_translator_backend_that_cannot_start_fails_each_instruction_not_the_node(tmp_path):
+    """A learned backend with no model: typed MODEL_ERROR on task_spec per instruction, node alive."""
+    domain = str(random.randint(120, 229))
+    env = {'ROS_DOMAIN_ID': domain, 'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST'}
+    overrides = {'ltl_translator': {'backend': 'learned', 'model_path': str(tmp_path / 'no_such_model.pt')}}
+    g = NodeGraph(['ltl_translator'], default_params_file(), overrides, env=env, log_dir=tmp_path).start()
+    old = {k: os.environ.get(k) for k in env}
+    os.environ.update(env)
+    try:
+        from ltl_instruct.nodes.client import GraphClient
+        with GraphClient('broken_backend_client') as client:
+            deadline = time.monotonic() + 30
+            while time.monotonic() < deadline and client.instruction_pub.get_subscription_count() < 1:
+                time.sleep(0.05)
+            specs = []
+            for text in ('go to the sofa', 'then the fridge'):
+                iid = client.send(text=text)
+                specs.append(client.wait_until(lambda: client.received.specs.get(iid), 20.0))
+            assert not g.dead(), (tmp_path / 'ltl_translator.log').read_text()
+    finally:
+        for k, v in old.items():
+            if v is None:
+                os.environ.pop(k, None)
+            else:
+                os.environ[k] = v
+        codes = g.stop()
+    for spec in specs:
+        assert spec is not None and spec['ok'] is False, spec
+        assert spec['error']['code'] == 'MODEL_ERROR' and spec['error']['message'], spec
+    assert codes == {'ltl_translator': 0}

@@ -89,6 +89,9 @@ class LtlTranslatorNode(Node):
         self._jobs.put(None)
 
     def _work(self) -> None:
+        # build the translator before the first instruction comes (imports, tables, models),
+        # so that its set-up does not count against that instruction
+        self._load_translator()
         while not self._closing.is_set():
             job = self._jobs.get()
             if job is None:
@@ -167,7 +170,7 @@ class LtlTranslatorNode(Node):
                 return
         self._publish_spec(iid, body, received, spec=spec, translate_s=elapsed)
 
-    def _translate(self, text: str) -> Any:
+    def _load_translator(self) -> None:
         if self._translator is None and self._translator_error is None:
             try:
                 from ltl_instruct.core.language import make_translator
@@ -178,6 +181,14 @@ class LtlTranslatorNode(Node):
                                                           ErrorCode.MODEL_ERROR)
             except LtlInstructError as e:
                 self._translator_error = e
+            except Exception as e:  # noqa: BLE001 - a broken backend fails each instruction, never the worker
+                self._translator_error = TranslationError(f'translator backend failed to start: {e!r}',
+                                                          ErrorCode.MODEL_ERROR)
+            if self._translator_error is not None:
+                self.get_logger().error(f'translator: {self._translator_error.message}')
+
+    def _translate(self, text: str) -> Any:
+        self._load_translator()
         if self._translator_error is not None:
             raise self._translator_error
         return self._translator.translate(text)

@@ -63,6 +63,47 @@ def test_clearance_certifies_a_free_ball(x, y, angle, frac):
         assert w.is_free(q)[0]
 
 
+@settings(max_examples=60, derandomize=True, deadline=None)
+@given(st.integers(0, 10_000), st.sampled_from([2, 3]), st.integers(0, 120))
+def test_cell_index_answers_as_the_test_against_every_box(seed, dims, n_boxes):
+    """point_free and segment_hits_box use a cell index; brute force over all boxes must agree."""
+    from ltl_instruct.core.planning.occupancy import PlanningWorld
+    from ltl_instruct.core.world.scene import Box
+    rng = np.random.default_rng(seed)
+    size = np.array([30.0, 20.0, 10.0])
+    boxes = tuple(Box(tuple(rng.uniform(-2, size + 2)), tuple(rng.uniform(0.01, 4.0, 3)))
+                  for _ in range(n_boxes))
+    w = PlanningWorld(dims, (0.0,) * dims, tuple(size[:dims]), float(rng.uniform(0, 0.5)), boxes)
+    lo, hi = w.inflated_boxes
+    pts = rng.uniform(-1, size[:dims] + 1, (300, dims))
+    # points exactly on inflated box faces and on cell boundaries are the edge cases
+    if n_boxes:
+        pts[:40] = lo[rng.integers(0, n_boxes, 40)]
+        pts[40:80] = hi[rng.integers(0, n_boxes, 40)]
+    for p in pts:
+        inside_any = bool(np.any(np.all((p >= lo) & (p <= hi), axis=1))) if n_boxes else False
+        in_bounds = bool(np.all(p >= 0) and np.all(p <= size[:dims]))
+        assert w.point_free(tuple(p)) == (in_bounds and not inside_any) == (w.clearance(tuple(p)) >= 0)
+    for a, b in zip(pts[::2], pts[1::2]):   # the index only narrows which boxes get the exact slab test
+        exact = any(_slab_hits(a, b, bl, bh) for bl, bh in zip(lo, hi))
+        assert w.segment_hits_box(tuple(a), tuple(b)) == exact
+
+
+def _slab_hits(a, b, lo, hi) -> bool:
+    t0, t1 = 0.0, 1.0
+    for k in range(len(a)):
+        delta = b[k] - a[k]
+        if delta == 0.0:
+            if a[k] < lo[k] or a[k] > hi[k]:
+                return False
+            continue
+        u, v = sorted(((lo[k] - a[k]) / delta, (hi[k] - a[k]) / delta))
+        t0, t1 = max(t0, u), min(t1, v)
+        if t0 > t1:
+            return False
+    return True
+
+
 def test_occupancy_grid_world_blocks_occupied_unknown_and_inflated_cells():
     cells = np.zeros((20, 30), dtype=np.int8)   # 3 m x 2 m at 0.1 m
     cells[:, 15] = 100                           # a wall at x in [1.5, 1.6)

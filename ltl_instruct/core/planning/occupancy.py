@@ -77,6 +77,8 @@ class PlanningWorld:
     _lo: np.ndarray = field(init=False, repr=False)
     _hi: np.ndarray = field(init=False, repr=False)
     _boxes: tuple = field(init=False, repr=False)
+    _cell: tuple = field(init=False, repr=False)       # (cell size [m], nx, ny) of the box index
+    _buckets: tuple = field(init=False, repr=False)    # per (x, y) cell: indices of the boxes over it
 
     def __post_init__(self) -> None:
         if self.dims not in (2, 3):
@@ -99,6 +101,32 @@ class PlanningWorld:
         object.__setattr__(self, '_hi', hi)
         boxes = tuple((tuple(a), tuple(b)) for a, b in zip(lo.tolist(), hi.tolist()))
         object.__setattr__(self, '_boxes', boxes)
+        self._build_cell_index()
+
+    def _build_cell_index(self) -> None:
+        """Bucket the inflated boxes by the (x, y) cells they overlap, for point queries.
+
+        About 4,000 cells over the bounds (at least 0.25 m each); a point is tested only
+        against the boxes of its cell, so a validity check costs a few box tests, not one
+        per obstacle.
+        """
+        span = [max(self.bounds_max[k] - self.bounds_min[k], 1e-6) for k in range(2)]
+        cell = max(0.25, math.sqrt(span[0] * span[1] / 4096.0))
+        nx, ny = (int(math.ceil(span[k] / cell)) + 1 for k in range(2))
+        buckets: list[list[int]] = [[] for _ in range(nx * ny)]
+        for i, (lo, hi) in enumerate(self._boxes):
+            x0, y0 = self._cell_of(lo[0], lo[1], cell, nx, ny)
+            x1, y1 = self._cell_of(hi[0], hi[1], cell, nx, ny)
+            for cx in range(x0, x1 + 1):
+                for cy in range(y0, y1 + 1):
+                    buckets[cx * ny + cy].append(i)
+        object.__setattr__(self, '_cell', (cell, nx, ny))
+        object.__setattr__(self, '_buckets', tuple(tuple(b) for b in buckets))
+
+    def _cell_of(self, x: float, y: float, cell: float, nx: int, ny: int) -> tuple[int, int]:
+        cx = min(nx - 1, max(0, int((x - self.bounds_min[0]) // cell)))
+        cy = min(ny - 1, max(0, int((y - self.bounds_min[1]) // cell)))
+        return cx, cy
 
     # ------------------------------------------------------------------ vectorised
     @property
@@ -124,6 +152,26 @@ class PlanningWorld:
         return ok
 
     # ------------------------------------------------------------------ scalar (planner callbacks)
+    def point_free(self, p: Sequence[float]) -> bool:
+        """Whether the robot centre may be at ``p``: in bounds and in no inflated obstacle.
+
+        The same answer as ``clearance(p) >= 0``, from the boxes of ``p``'s cell only.
+        """
+        d = self.dims
+        for k in range(d):
+            if not (self.bounds_min[k] <= p[k] <= self.bounds_max[k]):
+                return False
+        cell, nx, ny = self._cell
+        cx, cy = self._cell_of(p[0], p[1], cell, nx, ny)
+        boxes = self._boxes
+        for i in self._buckets[cx * ny + cy]:
+            lo, hi = boxes[i]
+            if all(lo[k] <= p[k] <= hi[k] for k in range(d)):
+                return False
+        if self.lookup is not None and self.lookup.is_blocked(np.asarray(p[:d], dtype=float)[None])[0]:
+            return False
+        return True
+
     def clearance(self, p: Sequence[float]) -> float:
         """Return a radius [m] around ``p`` in which every point is free; -1 if ``p`` is not free.
 
@@ -155,12 +203,28 @@ class PlanningWorld:
             best = 0.0  # free, but no certified radius: the caller samples finely
         return best
 
+    def _boxes_over(self, lo: Sequence[float], hi: Sequence[float]) -> Sequence[int]:
+        """Indices of the boxes that may overlap the (x, y) rectangle lo..hi (a superset)."""
+        cell, nx, ny = self._cell
+        x0, y0 = self._cell_of(lo[0], lo[1], cell, nx, ny)
+        x1, y1 = self._cell_of(hi[0], hi[1], cell, nx, ny)
+        if (x1 - x0 + 1) * (y1 - y0 + 1) == 1:
+            return self._buckets[x0 * ny + y0]
+        if (x1 - x0 + 1) * (y1 - y0 + 1) > len(self._boxes):
+            return range(len(self._boxes))
+        out: set[int] = set()
+        for cx in range(x0, x1 + 1):
+            for cy in range(y0, y1 + 1):
+                out.update(self._buckets[cx * ny + cy])
+        return sorted(out)
+
     def segment_hits_box(self, a: Sequence[float], b: Sequence[float]) -> bool:
         """Whether the straight segment a -> b touches an inflated box (exact slab test)."""
         d = self.dims
         seg_lo = [min(a[k], b[k]) for k in range(d)]
         seg_hi = [max(a[k], b[k]) for k in range(d)]
-        for lo, hi in self._boxes:
+        for i in self._boxes_over(seg_lo, seg_hi):
+            lo, hi = self._boxes[i]
             if any(seg_hi[k] < lo[k] or seg_lo[k] > hi[k] for k in range(d)):
                 continue
             t0, t1 = 0.0, 1.0

@@ -303,7 +303,7 @@ class SegmentProblem:
 
     def state_valid(self, p: Sequence[float]) -> bool:
         """Free, in bounds, and the letter is allowed or in the goal."""
-        if not self.in_bounds(p) or self.world.clearance(p) < 0:
+        if not self.in_bounds(p) or not self.world.point_free(p):
             return False
         return eval_key_cubes(self.valid_cubes, self.letter(p))
 
@@ -491,21 +491,24 @@ class SegmentProblem:
 
 
 def _drop_collinear(points: np.ndarray, tol: float = 1e-9) -> np.ndarray:
-    """Remove interior points that lie on the segment between their neighbours."""
+    """Remove repeated points, and interior points where the path goes straight on.
+
+    A point is dropped when the step into it and the step out of it point the same way
+    (within a relative 1e-9), so a densified polyline shrinks back to its corners.
+    """
     if len(points) <= 2:
         return points
-    keep = [0]
-    for i in range(1, len(points) - 1):
-        a, b, c = points[keep[-1]], points[i], points[i + 1]
-        ab, bc = b - a, c - b
-        n1, n2 = np.linalg.norm(ab), np.linalg.norm(bc)
-        if n1 < tol:
-            continue
-        if n2 > tol and abs(float(np.dot(ab, bc)) - n1 * n2) <= 1e-9 * max(1.0, n1 * n2):
-            continue
-        keep.append(i)
-    keep.append(len(points) - 1)
-    return points[keep]
+    step = np.linalg.norm(np.diff(points, axis=0), axis=1)
+    keep = np.concatenate([[True], step >= tol])       # drop a point equal to the one before
+    keep[-1] = True
+    pts = points[keep]
+    if len(pts) <= 2:
+        return pts
+    ab, bc = pts[1:-1] - pts[:-2], pts[2:] - pts[1:-1]
+    n1, n2 = np.linalg.norm(ab, axis=1), np.linalg.norm(bc, axis=1)
+    dot = np.einsum('ij,ij->i', ab, bc)
+    straight = np.abs(dot - n1 * n2) <= 1e-9 * np.maximum(1.0, n1 * n2)
+    return pts[np.concatenate([[True], ~straight, [True]])]
 
 
 SolveFn = Callable[[SegmentRequest], SegmentResult]

@@ -8,6 +8,11 @@ stamp echoes the request's ``stamp``) and a JSON verdict on ``~/status`` (``ok``
 typed error: ``START_OCCUPIED``, ``GOAL_OCCUPIED``, ``NO_VALID_PATH``, ``TIMEOUT``,
 ``INVALID_INPUT`` for an empty or malformed map...). A path is published only on
 success. Requests are served one at a time, in order, in a worker thread.
+
+Requests are idempotent by ``request_id``: the sender may repeat a request it has no
+answer to (a message sent before discovery matched the two nodes is lost); a repeat
+of a request still queued or being planned is dropped, and a repeat of an answered
+one gets the same answer again, without planning twice.
 """
 from __future__ import annotations
 
@@ -16,6 +21,7 @@ import queue
 import sys
 import threading
 import time
+from collections import OrderedDict
 from dataclasses import replace
 from typing import Any, Optional
 
@@ -42,7 +48,10 @@ PARAMS = (
     ParamSpec('bounds', '', '3D planning bounds "xmin,ymin,zmin,xmax,ymax,zmax" [m] for map_cloud '
               '("" = the extent of the points)'),
     ParamSpec('max_queue', 256, 'requests waiting at most; more fail with TIMEOUT', 1, 100000),
+    ParamSpec('map_timeout', 5.0, 'how long a request waits for a first map [s]', 0.0, 600.0),
 )
+
+REMEMBERED_ANSWERS = 512   # answers kept for repeated requests (a few per instruction)
 
 
 class FmtPlannerNode(Node):
@@ -56,9 +65,13 @@ class FmtPlannerNode(Node):
         self._worlds: dict[int, tuple[Any, LtlInstructError]] = {
             d: (None, InvalidInputError(f'no {"map" if d == 2 else "map_cloud"} received yet'))
             for d in (2, 3)}
+        self._received: set[int] = set()   # dimensions a map (good or rejected) has come for
         self._lock = threading.Lock()
+        self._map_come = threading.Condition(self._lock)
         self._jobs: queue.Queue = queue.Queue()
         self._closing = threading.Event()
+        # request_id -> None while queued or planning, then (path or None, status) as sent
+        self._answers: OrderedDict[str, Optional[tuple[Optional[Path], String]]] = OrderedDict()
         self.segment_pub = self.create_publisher(Path, 'plan_segment', reliable_qos())
         self.status_pub = self.create_publisher(String, '~/status', reliable_qos())
         self.create_subscription(OccupancyGrid, 'map', self.on_map, latched_qos(1))
@@ -93,16 +106,41 @@ class FmtPlannerNode(Node):
     def _set_world(self, dims: int, world: Any, error: Optional[LtlInstructError]) -> None:
         with self._lock:
             self._worlds[dims] = (world, error or InvalidInputError('no map'))
+            self._received.add(dims)
+            self._map_come.notify_all()
         if error is not None:
             self.get_logger().warning(f'map rejected: [{error.code.value}] {error.message}')
 
     # ------------------------------------------------------------------ requests
     def on_plan_request(self, msg: String) -> None:
-        """Queue a request (it is answered in order by the worker thread)."""
+        """Queue a request (answered in order by the worker thread); answer a repeat from memory."""
+        rid = _request_id(msg.data)
+        if rid:
+            with self._lock:
+                if rid in self._answers:
+                    answer = self._answers[rid]
+                    if answer is not None:   # answered already: the sender missed it, send it again
+                        self._send(*answer)
+                    return
+                self._answers[rid] = None
+                while len(self._answers) > REMEMBERED_ANSWERS:
+                    self._answers.popitem(last=False)
         if self._jobs.qsize() >= self.params['max_queue']:
             self._reply_error(msg.data, LtlInstructError('planner queue is full', ErrorCode.TIMEOUT))
             return
         self._jobs.put(msg.data)
+
+    def _send(self, path: Optional[Path], status: String) -> None:
+        if path is not None:
+            self.segment_pub.publish(path)
+        self.status_pub.publish(status)
+
+    def _answer(self, rid: str, path: Optional[Path], status: String) -> None:
+        """Send an answer and remember it for a repeat of the same request."""
+        if rid:
+            with self._lock:
+                self._answers[rid] = (path, status)
+        self._send(path, status)
 
     def close(self) -> None:
         """Stop the worker thread."""
@@ -128,7 +166,9 @@ class FmtPlannerNode(Node):
         if not isinstance(stamp, int) or stamp < 0:
             raise InvalidInputError('plan_request needs a non-negative integer "stamp"')
         request = planning.SegmentRequest.from_dict(data.get('request') or {})
-        with self._lock:
+        with self._lock:   # a planner that has just started waits a little for its latched map
+            self._map_come.wait_for(lambda: request.dims in self._received or self._closing.is_set(),
+                                    timeout=self.params['map_timeout'])
             world, world_error = self._worlds[request.dims]
         if world is None:
             raise world_error
@@ -141,23 +181,30 @@ class FmtPlannerNode(Node):
         seconds = time.monotonic() - t0
         body = dict(request_id=data.get('request_id', ''), stamp=stamp, ok=result.ok,
                     plan_s=seconds, result=result.to_dict())
+        path = None
         if result.ok:
-            self.segment_pub.publish(conv.path_msg(_as_3d(result.points), conv.stamp_from_key(stamp)))
+            path = conv.path_msg(_as_3d(result.points), conv.stamp_from_key(stamp))
         else:
             body['error'] = result.error.to_dict() if result.error is not None else None
-        self.status_pub.publish(conv.json_msg(conv.payload(conv.SEGMENT_STATUS, data['id'], **body)))
+        self._answer(str(body['request_id']), path,
+                     conv.json_msg(conv.payload(conv.SEGMENT_STATUS, data['id'], **body)))
 
     def _reply_error(self, text: str, error: LtlInstructError) -> None:
         iid = conv.salvage_id(text) or 'unidentified'
-        rid = ''
-        try:
-            d = json.loads(text)
-            rid = str(d.get('request_id', ''))[:400] if isinstance(d, dict) else ''
-        except (ValueError, RecursionError):
-            pass
+        rid = _request_id(text)
         self.get_logger().warning(f'{iid}: [{error.code.value}] {error.message}')
-        self.status_pub.publish(conv.json_msg(conv.payload(
+        self._answer(rid, None, conv.json_msg(conv.payload(
             conv.SEGMENT_STATUS, iid, request_id=rid, ok=False, error=error.to_dict())))
+
+
+def _request_id(text: str) -> str:
+    """The ``request_id`` of a plan_request payload, or '' when it has none (or is not JSON)."""
+    try:
+        d = json.loads(text)
+    except (ValueError, RecursionError):
+        return ''
+    rid = d.get('request_id') if isinstance(d, dict) else None
+    return rid[:400] if isinstance(rid, str) else ''
 
 
 def _as_3d(points: np.ndarray) -> np.ndarray:

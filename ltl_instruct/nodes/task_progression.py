@@ -50,6 +50,8 @@ PARAMS = (
     ParamSpec('robot_kind', 'ground', 'ground (2D planning) or drone (3D)', choices=('ground', 'drone')),
     ParamSpec('grounding_timeout', 10.0, 'how long a task spec waits for its referent map [s]', 0.5, 600.0),
     ParamSpec('segment_timeout', 10.0, 'how long to wait for one plan_segment [s]', 0.5, 600.0),
+    ParamSpec('segment_resend', 1.0, 'repeat an unanswered plan_request this often [s] (the planner '
+              'answers a repeat once)', 0.05, 600.0),
     ParamSpec('odom_timeout', 5.0, 'how long planning waits for a first odometry pose [s]', 0.1, 600.0),
     ParamSpec('max_segments', 60, 'segment solves before planning gives up (TIMEOUT)', 1, 100000),
     ParamSpec('time_budget', 60.0, 'wall-clock budget of one plan [s]', 0.1, 3600.0),
@@ -500,11 +502,18 @@ class TaskProgressionNode(Node):
         """Send one ``plan_request`` and wait for the planner's answer (bounded by ``segment_timeout``)."""
         stamp = next(self._stamps)
         rid = f'{request.id}#{stamp}'
-        self.request_pub.publish(conv.json_msg(conv.payload(
-            conv.PLAN_REQUEST, iid, request_id=rid, stamp=stamp, request=request.to_dict())))
+        msg = conv.json_msg(conv.payload(
+            conv.PLAN_REQUEST, iid, request_id=rid, stamp=stamp, request=request.to_dict()))
         deadline = time.monotonic() + self.params['segment_timeout']
+        resend_at = 0.0
         with self._segment_cond:
             while not self._closing.is_set():
+                now = time.monotonic()
+                # a request sent before discovery has matched us with a planner is lost:
+                # send only to a listening planner, and repeat while unanswered
+                if now >= resend_at and self.request_pub.get_subscription_count() > 0:
+                    self.request_pub.publish(msg)
+                    resend_at = now + self.params['segment_resend']
                 status = self._segments.get(rid)
                 if status is not None and (not status.get('ok') or stamp in self._paths):
                     self._segments.pop(rid, None)
@@ -516,9 +525,10 @@ class TaskProgressionNode(Node):
                 left = deadline - time.monotonic()
                 if left <= 0:
                     break
-                self._segment_cond.wait(min(left, 0.2))
+                self._segment_cond.wait(min(left, 0.05 if resend_at == 0.0 else 0.2))
+        listening = '' if self.request_pub.get_subscription_count() else ' (no fmt_planner is listening)'
         return planning.SegmentResult.failure(request.id, LtlInstructError(
-            f'{request.describe()}: no plan_segment within {self.params["segment_timeout"]} s',
+            f'{request.describe()}: no plan_segment within {self.params["segment_timeout"]} s{listening}',
             ErrorCode.TIMEOUT))
 
     def _publish_tpsm(self, plan: Any, state: int) -> None:

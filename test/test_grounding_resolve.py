@@ -220,3 +220,16 @@ def test_embedding_fallback_with_the_packaged_model():
     rmap = ground_formula('F near[basin]', [inst('s', 'kitchen sink', 1.0, 1.0)],
                           GroundingParams(use_embeddings=True, embedding_threshold=0.6))
     assert rmap.groundings['basin'].outcome == Outcome.RESOLVED
+
+
+def test_a_part_of_a_known_object_resolves_to_the_whole_only_when_nothing_bears_its_name():
+    """'the roof of the library' -> library_roof: near the library, said so in the explanation."""
+    town = (inst('library', 'library', 10.0, 5.0, 3.0), inst('bank', 'bank', 20.0, 5.0, 3.0),
+            inst('bank_door', 'bank door', 20.0, 4.0, 1.0))
+    roof = resolve('library_roof', town)
+    assert roof.outcome == Outcome.RESOLVED and ids(roof) == {'library'}
+    assert any('part of the library' in line for line in roof.explanation)
+    assert ids(resolve('bank_door', town)) == {'bank_door'}            # the part itself is known
+    assert ids(resolve('bank_roof::isbehind(library)', town)) == {'bank'}
+    for unknown in ('front_door', 'library_2', 'castle_roof', 'roof'):   # no whole, or no part word
+        assert resolve(unknown, town).outcome == Outcome.UNKNOWN_REFERENT, unknown

@@ -28,6 +28,7 @@ from ltl_instruct.core.grounding import comparators as cmp
 from ltl_instruct.core.grounding.comparators import GroundingParams
 from ltl_instruct.core.grounding.names import NameMatcher
 from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap
+from ltl_instruct.core.language.phrases import PART_WORDS
 from ltl_instruct.core.spec import (
     Atom, Descriptor, Formula, Iff, Implies, Not, parse_formula, referents_of,
 )
@@ -121,6 +122,18 @@ class Resolver:
         return np.array([k for k, inst in enumerate(self.instances)
                          if self.matcher.match(name, inst.label, inst.id)[0]], dtype=int)
 
+    def _whole_of_part(self, name: str) -> tuple[str, np.ndarray]:
+        """``library_roof`` names no object: the library's, if a library is known.
+
+        The translator writes parts of places before their whole ("the roof of the
+        library" -> ``library_roof``); a map rarely holds the part as an object of its
+        own, and being near the part means being near the whole.
+        """
+        whole, _, head = name.rpartition('_')
+        if not whole or head not in PART_WORDS:
+            return '', np.array([], dtype=int)
+        return whole, self.named(whole)
+
     # ------------------------------------------------------------------ resolution
     def resolve(self, descriptor: Descriptor) -> Resolution:
         """Resolve one descriptor (and, recursively, its arguments)."""
@@ -132,6 +145,9 @@ class Resolver:
             return hit
         text = str(d)
         idx = self.named(d.name)
+        part_of = ''
+        if idx.size == 0:
+            part_of, idx = self._whole_of_part(d.name)
         if idx.size == 0:
             known = sorted({i.label for i in self.instances})
             shown = ', '.join(known[:12]) + (', ...' if len(known) > 12 else '')
@@ -159,6 +175,8 @@ class Resolver:
             for k in range(idx.size):
                 reasons[k].append(why[k])
         lines = list(notes)
+        if part_of:
+            lines.append(f'no object is named "{d.name}": taken as a part of the {part_of.replace("_", " ")}')
         for k, j in enumerate(idx):
             inst = self.instances[j]
             verdict = 'passes' if alive[k] else 'fails'

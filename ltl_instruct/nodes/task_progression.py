@@ -52,6 +52,7 @@ PARAMS = (
     ParamSpec('segment_timeout', 10.0, 'how long to wait for one plan_segment [s]', 0.5, 600.0),
     ParamSpec('segment_resend', 1.0, 'repeat an unanswered plan_request this often [s] (the planner '
               'answers a repeat once)', 0.05, 600.0),
+    ParamSpec('map_timeout', 10.0, 'how long planning waits for a first map [s]', 0.0, 600.0),
     ParamSpec('odom_timeout', 5.0, 'how long planning waits for a first odometry pose [s]', 0.1, 600.0),
     ParamSpec('max_segments', 60, 'segment solves before planning gives up (TIMEOUT)', 1, 100000),
     ParamSpec('time_budget', 60.0, 'wall-clock budget of one plan [s]', 0.1, 3600.0),
@@ -122,6 +123,8 @@ class TaskProgressionNode(Node):
         self._bounds = conv.parse_bounds(self.params['bounds'])
         self._world: Any = None
         self._world_error: LtlInstructError = InvalidInputError('no map received yet')
+        self._map_received = False          # a map came (good or rejected)
+        self._map_come = threading.Condition(self._lock)
 
         self.status_pub = self.create_publisher(String, 'task_status', latched_qos())
         self.plan_pub = self.create_publisher(Path, 'plan', latched_qos(1))
@@ -243,8 +246,13 @@ class TaskProgressionNode(Node):
             world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
         except LtlInstructError as e:
             world, self._world_error = None, e
+        self._set_world(world)
+
+    def _set_world(self, world: Any) -> None:
         with self._lock:
             self._world = world
+            self._map_received = True
+            self._map_come.notify_all()
 
     def on_map_cloud(self, msg: PointCloud2) -> None:
         """Keep the 3D world of a drone."""
@@ -253,8 +261,7 @@ class TaskProgressionNode(Node):
                                                    self.params['robot_radius'], self._bounds)
         except LtlInstructError as e:
             world, self._world_error = None, e
-        with self._lock:
-            self._world = world
+        self._set_world(world)
 
     def on_odom(self, msg: Odometry) -> None:
         """Keep the pose; progress the running task's automaton."""
@@ -449,7 +456,9 @@ class TaskProgressionNode(Node):
         return LetterMaker(automaton.atoms, rmap, self.params['near_threshold'], dims)
 
     def _world_or_error(self) -> Any:
-        with self._lock:
+        with self._lock:   # just started: the latched map (a large cloud for a drone) may be on its way
+            self._map_come.wait_for(lambda: self._map_received or self._closing.is_set(),
+                                    timeout=self.params['map_timeout'])
             if self._world is None:
                 raise InvalidInputError(f'cannot plan without a valid map: {self._world_error.message}')
             return self._world

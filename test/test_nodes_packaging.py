@@ -81,6 +81,61 @@ def test_launch_file_names_every_node():
         assert f"'{node}'" in text
 
 
+def _run_launch_file(monkeypatch, arguments: dict) -> list:
+    """Execute the launch file against small stand-ins for ``launch`` / ``launch_ros`` (not on PyPI).
+
+    The stand-ins record what the file asks for; the file's own logic (which nodes, which
+    parameters) runs for real.
+    """
+    import types
+
+    class Recorded:
+        def __init__(self, *args, **kwargs):
+            self.args, self.kwargs = args, kwargs
+
+    class LaunchConfiguration:
+        def __init__(self, name):
+            self.name = name
+
+        def perform(self, context):
+            return context[self.name]
+
+    modules = {
+        'launch': types.SimpleNamespace(LaunchDescription=lambda actions: actions),
+        'launch.actions': types.SimpleNamespace(DeclareLaunchArgument=Recorded, OpaqueFunction=Recorded),
+        'launch.substitutions': types.SimpleNamespace(LaunchConfiguration=LaunchConfiguration),
+        'launch_ros': types.SimpleNamespace(),
+        'launch_ros.actions': types.SimpleNamespace(Node=Recorded),
+        'ament_index_python.packages': types.SimpleNamespace(get_package_share_directory=lambda pkg: str(REPO)),
+    }
+    for name, module in modules.items():
+        monkeypatch.setitem(sys.modules, name, module)
+    namespace: dict = {}
+    path = REPO / 'launch' / 'ltl_instruct.launch.py'
+    exec(compile(path.read_text(), str(path), 'exec'), namespace)
+    actions = namespace['generate_launch_description']()
+    declared = {a.args[0]: a.kwargs['default_value'] for a in actions if 'default_value' in a.kwargs}
+    context = dict(declared, **arguments)
+    opaque = [a for a in actions if 'function' in a.kwargs]
+    assert len(opaque) == 1
+    return opaque[0].kwargs['function'](context)
+
+
+def test_launch_file_gives_each_node_the_scene_parameters_as_bringup_does(monkeypatch):
+    from ltl_instruct.commands.bringup import scene_overrides
+    ground = _run_launch_file(monkeypatch, {})
+    assert sorted(n.kwargs['name'] for n in ground) == sorted(set(ALL_NODES) - {'sim_world'})
+    drone = _run_launch_file(monkeypatch, {'sim': 'true', 'scene': 'city_block'})
+    assert sorted(n.kwargs['name'] for n in drone) == sorted(ALL_NODES)
+    expected = scene_overrides('city_block')
+    for node in drone:
+        params_file, overrides = node.kwargs['parameters']
+        assert params_file == str(REPO / 'config' / 'ltl_instruct.yaml')
+        assert overrides == expected.get(node.kwargs['name'], {})
+    planner = next(n for n in drone if n.kwargs['name'] == 'task_progression')
+    assert planner.kwargs['parameters'][1]['robot_kind'] == 'drone'
+
+
 def test_params_file_matches_declared_parameters():
     """Every key of config/ltl_instruct.yaml is a declared parameter, valid for its node."""
     from ltl_instruct.nodes import (fmt_planner, ltl_translator, referent_grounder, sim_world,

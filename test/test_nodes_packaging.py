@@ -106,7 +106,8 @@ def _run_launch_file(monkeypatch, arguments: dict) -> list:
         'launch.substitutions': types.SimpleNamespace(LaunchConfiguration=LaunchConfiguration),
         'launch_ros': types.SimpleNamespace(),
         'launch_ros.actions': types.SimpleNamespace(Node=Recorded),
-        'ament_index_python.packages': types.SimpleNamespace(get_package_share_directory=lambda pkg: str(REPO)),
+        'ament_index_python.packages': types.SimpleNamespace(
+            get_package_share_directory=lambda pkg: str(REPO)),
     }
     for name, module in modules.items():
         monkeypatch.setitem(sys.modules, name, module)

@@ -10,8 +10,14 @@ ordering constraint, or a count. Noun phrases become descriptors
 conjoined chains of steps plus constraints, rendered as a formula in the
 conventions of the development set (``spatial-temporal-dev/CONVENTIONS.md``).
 
-Whatever the rules cannot place raises :class:`TranslationError` naming the words
-left over; nothing is dropped silently.
+Before reading, misspelt words are corrected (:mod:`ltl_instruct.core.language.spelling`)
+and paraphrases rewritten to one phrasing (:mod:`ltl_instruct.core.language.paraphrase`).
+Words that ask for nothing (statements about the scene, courtesy, filler:
+:mod:`ltl_instruct.core.language.chatter`) are left out, and a verb the rules do not
+know, followed by a place, is read as going there; each of these is named in the
+translation's notes, which the verification dialog shows. Whatever else the rules
+cannot place, and any leftover word that could carry meaning (a place, a negation, an
+order word), raises :class:`TranslationError` naming the words left over.
 """
 from __future__ import annotations
 
@@ -21,11 +27,14 @@ from dataclasses import dataclass, field
 from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
+from ltl_instruct.core.language import chatter
 from ltl_instruct.core.language.base import Translation
+from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS as DETS, NAME_VERBS, NounPhrase, PhraseParser, is_name_word,
+    DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
 )
 from ltl_instruct.core.language.rewrite import apply_corrections, resolve_list_references
+from ltl_instruct.core.language.spelling import Speller
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
     Always, And, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Or, Relation, Until, WeakUntil,
@@ -383,6 +392,8 @@ class OfflineTranslator:
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         notes: list[str] = []
+        tokens = _correct_spelling(tokens, notes, self.landmarks)
+        tokens = paraphrase(chatter.strip_courtesy(tokens, notes))
         tokens = resolve_list_references(tokens, notes)
         tokens = apply_corrections(tokens, notes)
         reader = _Reader(self.avoid_scope, notes, self.landmarks)
@@ -396,6 +407,55 @@ class OfflineTranslator:
         elapsed = time.perf_counter() - started
         return Translation(instruction, formula, self.name, tuple(notes),
                            {'seconds': elapsed, 'tokens': ' '.join(tokens)})
+
+
+# Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
+NEGATIVE_VERBS = frozenset({'ignore', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade', 'miss', 'exit',
+                            'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee', 'circumvent', 'spare',
+                            'leave', 'drop', 'scratch', 'lose', 'pass', 'release', 'free', 'not'})
+# Prepositions after a motion verb that still mean going there ("hover above X", drone phrasing).
+MOTION_PREPS = frozenset({'above', 'below', 'beneath', 'under', 'beside', 'near', 'alongside', 'atop',
+                          'across', 'along', 'outside', 'upon'})
+SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bring'}) - FILLERS - {
+    'be', 'need', 'want', 'robot', 'drone', 'hey', 'can', 'could', 'would', 'you', 'i', 'will', 'ahead',
+    'end', 'up', 'please', 'kindly'} | {'make', 'do'}
+
+_SPELLER: Optional[Speller] = None
+
+
+def _speller() -> Speller:
+    """Return the speller, its lexicon the word lists of the rules (built once)."""
+    global _SPELLER
+    if _SPELLER is None:
+        from ltl_instruct.core.language import phrases, text
+        lexicon: set[str] = set()
+        for module in (globals(), vars(phrases), vars(text), vars(chatter)):
+            for value in module.values():
+                if isinstance(value, frozenset) and all(isinstance(w, str) for w in value):
+                    lexicon |= value
+        lexicon |= set(text.TYPOS.values())
+        _SPELLER = Speller(lexicon=lexicon)
+    return _SPELLER
+
+
+def _is_word(w: str) -> bool:
+    """Whether ``w`` is an English word (an unknown one may be a misspelt place: never left out)."""
+    return _speller().known(w) or w.isdigit()
+
+
+def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str]) -> list[str]:
+    """Correct typing slips in words the rules do not know; each correction is noted."""
+    speller = _speller()
+    known = {w for name in landmarks for w in name.replace('_', ' ').split()}
+    out = list(tokens)
+    for k, w in enumerate(tokens):
+        if w in known or len(w) < 4:
+            continue
+        fixed = speller.correct(w)
+        if fixed is not None:
+            out[k] = fixed
+            notes.append(f'read "{w}" as "{fixed}"')
+    return out
 
 
 def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
@@ -464,6 +524,7 @@ class _Reader:
         self.saw_action = False
         self.mentions: list[Descriptor] = []
         self.before_target: Optional[Descriptor] = None
+        self.last_clause: Optional[tuple[list[str], Optional[_Scope]]] = None
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -617,15 +678,16 @@ class _Reader:
                 clauses[-1].tokens.append(t)
                 i += 1
                 continue
-            elif t in (',', 'and', 'but', 'so', 'while', 'or') and i > 0:
+            elif t in (',', 'and', 'but', 'so', 'while', 'or', ':') and i > 0:
                 j = i + 1
-                while j < n and tokens[j] in (',', 'and', 'but', 'so'):
+                while j < n and tokens[j] in (',', 'and', 'but', 'so', ':'):
                     j += 1
                 if t == 'while' and j < n and tokens[j] in ('avoiding', 'staying', 'keeping', 'never'):
                     boundary, skip = 'and', 1
                 elif t == 'or' and j < n and tokens[j] in GOAL_VERBS | DELIVER_VERBS:
                     boundary, skip = 'or', j - i
-                elif j < n and tokens[j] in CLAUSE_STARTERS and t != 'while' and not (
+                elif j < n and (tokens[j] in CLAUSE_STARTERS or t in (',', 'and') and tokens[j - 1] in (
+                        ',', 'and') and self._unknown_verb(tokens, j) is not None) and t != 'while' and not (
                         tokens[j] in ('at', 'in', 'on', 'twice', 'three', 'exactly', 'order', 'and')
                         and not _starts(tokens, j, ['on', 'the', 'way']) and not _starts(
                             tokens, j, ['on', 'your', 'way'])):
@@ -665,6 +727,13 @@ class _Reader:
         tokens = self._strip_fillers(clause.tokens)
         if not tokens:
             return scope
+        try:
+            return self._read_clause_tokens(clause, tokens, scope)
+        finally:
+            self.last_clause = (tokens, scope)
+
+    def _read_clause_tokens(self, clause: _Clause, tokens: list[str], scope: Optional[_Scope]
+                            ) -> Optional[_Scope]:
         s = ' '.join(tokens)
         if s.startswith('either way'):
             tokens = tokens[2:]
@@ -681,6 +750,8 @@ class _Reader:
             return scope
         if s in ('not both', 'but not both', 'not both of them'):
             self._exclusive_or()
+            return scope
+        if self._read_same_for(tokens, scope):
             return scope
         if tokens[0] in ('twice', 'thrice', 'once') or (len(tokens) > 1 and tokens[1] == 'times') or \
                 tokens[0] in ('exactly', 'at') and len(tokens) < 5:
@@ -715,6 +786,8 @@ class _Reader:
             if tokens[-len(tail):] == tail and len(tokens) > len(tail):
                 tokens = ['visit'] + tokens[:-len(tail)]
                 break
+        if self._read_chatter(tokens):
+            return scope
         raw = [t for t in clause.tokens if t not in PUNCT]
         first_flag = bool(raw) and (raw[-1] == 'first' or raw[:2] == ['but', 'first'] or (
             raw[0] == 'first' and clause.connector == 'and'))
@@ -761,6 +834,77 @@ class _Reader:
         self._read_goal(tokens, clause, scope)
         return scope
 
+    def _read_chatter(self, tokens: list[str]) -> bool:
+        """Leave out a clause that asks for nothing: a statement about the scene, filler, a skip.
+
+        The things a statement names stay known for "it" and "there" ("the crate is in the
+        hall, so don't go near it"). Every part left out is noted.
+        """
+        text = ' '.join(tokens)
+        if all(t in chatter.INTERJECTIONS or t in PUNCT for t in tokens):
+            self.notes.append(f'left out "{text}" (asks for nothing)')
+            return True
+        kept = ('leave', 'drop', 'pass', 'release', 'not', 'exit')   # read elsewhere (deliveries, staying)
+        if tokens[0] in NEGATIVE_VERBS and tokens[0] not in kept and len(tokens) > 1 and tokens[1] in DETS:
+            nps, _, end = self._np_list(tokens, 1, place=False)
+            if nps and not [t for t in tokens[end:] if t not in PUNCT]:
+                # "skip the hall": nothing to do there (a goal already given is retracted by rewrite)
+                self.notes.append(f'"{text}": no goal there')
+                return True
+        np_end = 0
+        if tokens[0] in DETS:
+            np = self.phrases.parse(tokens, 0)
+            np_end = np.end if np is not None else 0
+        if chatter.is_statement(tokens, np_end):
+            named: list[NounPhrase] = []
+            i = 0
+            while i < len(tokens):
+                if tokens[i] in DETS and tokens[i] not in ('your', 'my', 'our') or i == 0 and np_end:
+                    np = self.phrases.parse(tokens, i)
+                    if np is not None and not np.pronoun and np.end > i:
+                        named.append(np)
+                        i = np.end
+                        continue
+                i += 1
+            if named:
+                self.last_object = named[0] if np_end else named[-1]
+                self.last_place = named[-1]
+                self.phrases.last = self.last_object
+                self.mentions.extend(np.descriptor for np in named)
+            self.notes.append(f'took "{text}" as a description of the scene, not a task')
+            return True
+        return False
+
+    def _read_same_for(self, tokens: list[str], scope: Optional[_Scope]) -> bool:
+        """Read 'the same goes for X', 'same with X', 'likewise X': the last clause again, with X."""
+        k = -1
+        for lead in (['the', 'same', 'goes', 'for'], ['same', 'goes', 'for'], ['the', 'same', 'for'],
+                     ['same', 'for'], ['same', 'with'], ['the', 'same', 'with'], ['likewise', 'for'],
+                     ['likewise'], ['ditto', 'for'], ['the', 'same', 'applies', 'to'],
+                     ['same', 'applies', 'to'], ['that', 'goes', 'for'], ['this', 'goes', 'for'],
+                     ['same', 'thing', 'for']):
+            if _starts(tokens, 0, lead):
+                k = len(lead)
+                break
+        if k < 0 or self.last_clause is None:
+            return False
+        nps, _, end = self._np_list(tokens, k, place=False)
+        prev, prev_scope = self.last_clause
+        if not nps or [t for t in tokens[end:] if t not in ('too', 'as', 'well', 'also')]:
+            return False
+        # the last noun phrase (or pronoun) of the last clause is the one replaced
+        spans = [i for i in range(len(prev)) if prev[i] in DETS or prev[i] in ('it', 'them', 'there')]
+        if not spans:
+            return False
+        start = spans[-1]
+        old = self.phrases.parse(prev, start)
+        if old is None:
+            return False
+        again = prev[:start] + tokens[k:end] + prev[old.end:]
+        self.notes.append(f'"{" ".join(tokens)}" read as "{" ".join(again)}"')
+        self._read_clause_body(_Clause('and', again), prev_scope)
+        return True
+
     @staticmethod
     def _strip_fillers(tokens: list[str]) -> list[str]:
         i = 0
@@ -768,7 +912,7 @@ class _Reader:
         while i < len(tokens) - 1 and (tokens[i] == 'always' and tokens[i + 1] in GOAL_VERBS or (
                 tokens[i] in ORDINALS or tokens[i] in adverbs) and tokens[i + 1] == ','):
             i += 2 if tokens[i + 1] == ',' else 1
-        while i < len(tokens) and (tokens[i] in FILLERS or tokens[i] == ',') and not (
+        while i < len(tokens) and (tokens[i] in FILLERS or tokens[i] in (',', ':')) and not (
                 tokens[i] in ORDINALS and _ordinal_name(tokens, i)):
             if tokens[i] == 'make' and not _starts(tokens, i, ['make', 'sure']):
                 break
@@ -986,7 +1130,7 @@ class _Reader:
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
                     'anymore', 'costs', 'instant', 'moment')
         leftover = [t for t in rest if t not in harmless]
-        if leftover and leftover[0] not in ('when', 'while'):
+        if leftover and leftover[0] not in ('when', 'while') and not self._leave_out(leftover):
             raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(leftover)})
         self._apply_avoid(targets, scope)
@@ -1388,9 +1532,21 @@ class _Reader:
             k += 1
         return k
 
+    def _leave_out(self, rest: Sequence[str]) -> bool:
+        """Leave out words that ask for nothing (no place, skill verb or constraint word), noted."""
+        if not chatter.is_filler(rest, SKILL_VERBS) or not all(
+                _is_word(t) for t in rest if t not in PUNCT) or \
+                self.phrases.landmarks and any(
+                self.phrases._landmark(rest, i) is not None for i in range(len(rest))) or self.phrases.parse(
+                [t for t in rest if t not in PUNCT], 0) is not None and rest[0] not in ('is', 'are', 'was'):
+            return False
+        words = ' '.join(t for t in rest if t not in PUNCT)
+        self.notes.append(f'left out "{words}" (asks for nothing)')
+        return True
+
     def _check_leftover(self, rest: list[str], whole: list[str]) -> None:
         rest = [t for t in rest if t not in (',', 'please', 'first', 'too', 'again', 'then')]
-        if rest:
+        if rest and not self._leave_out(rest):
             raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
                                    details={'part': ' '.join(rest)})
 
@@ -1461,10 +1617,10 @@ class _Reader:
         k = 1
         implicit_dest: Optional[Descriptor] = None
         binned = verb in ('bin', 'dump', 'chuck') and 'in' not in tokens
-        if verb == 'throw' and 'away' in tokens[:4] or binned:
+        if verb in ('throw', 'toss', 'chuck') and ('away' in tokens[:4] or 'out' in tokens[:2]) or binned:
             implicit_dest = TRASH
-        if _starts(tokens, 0, ['pick', 'up']) or _starts(tokens, 0, ['throw', 'away']) or _starts(
-                tokens, 0, ['throw', 'out']):
+        if _starts(tokens, 0, ['pick', 'up']) or verb in ('throw', 'toss', 'chuck') and tokens[1:2] in (
+                ['away'], ['out']):
             k = 2
         elif tokens[0] == 'get' and _starts(tokens, 1, ['rid', 'of']):
             k, implicit_dest = 3, TRASH
@@ -1566,11 +1722,24 @@ class _Reader:
                 tokens[k] in ORDINALS and _ordinal_name(tokens, k)) and not (
                 tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)
         ) and not (tokens[k] == 'back' and k + 1 < len(tokens)
-                   and tokens[k + 1] in ('door', 'gate', 'yard', 'room', 'porch')):
+                   and tokens[k + 1] in ('door', 'gate', 'yard', 'room', 'porch')) or (
+                0 < k < len(tokens) and tokens[k] in MOTION_PREPS and tokens[k - 1] in GOAL_VERBS):
             if tokens[k] in ('from', 'through', 'via') and k > 0:
                 patrol_from = True
             k += 1
+        verb_end = self._unknown_verb(tokens, k)
+        if verb_end is not None:
+            if k == 0 and self._read_unknown_placement(tokens, verb_end, clause):
+                return
+            self.notes.append(f'read "{" ".join(tokens[k:verb_end])}" as going to what follows')
+            k = verb_end
+            self.saw_action = True
         nps, joiner, end = self._np_list(tokens, k)
+        if not nps and all(t in GOAL_VERBS or t in GOAL_PARTICLES for t in tokens) and self.task.chain:
+            self.saw_action = True   # "the pallet jack, go": the place was named before the verb
+            return
+        if not nps and self._leave_out(tokens):
+            return   # "be careful", "just so you know"
         if not nps:
             raise TranslationError(f'could not place "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
@@ -1630,6 +1799,48 @@ class _Reader:
                                                    _near(targets[0])))
             self.task.chain.pop()
             self.conditional = None
+
+    def _unknown_verb(self, tokens: list[str], k: int) -> Optional[int]:
+        """Where the place starts after a verb the rules do not know ("hit the mail cart"), else None.
+
+        A word that is no name, number or known verb, followed (after particles) by a
+        determiner or a known landmark, is the verb of an imperative.
+        """
+        if k >= len(tokens):
+            return None
+        w = tokens[k]
+        if self.phrases.landmarks and self.phrases._landmark(tokens, k) is not None:
+            return None
+        if w in DETS or w in NEGATIVE_VERBS or w in STOPWORDS or w in ORDINALS or w in NUMBER_WORDS or \
+                not w.isalpha() or w in chatter.CONSTRAINT_WORDS or w in FILLERS or not _is_word(w):
+            return None
+        j = k + 1
+        while j < len(tokens) and (tokens[j] in GOAL_PARTICLES or tokens[j] in MOTION_PREPS) and \
+                tokens[j] not in ('there', 'here', 'me', 'from'):
+            j += 1
+        if j == k + 1 and j + 1 < len(tokens) and tokens[j] in ('it', 'them') and tokens[j + 1] in (
+                'on', 'onto', 'in', 'into', 'inside'):
+            return j   # "hang it on the hook"
+        if j < len(tokens) and (tokens[j] in DETS and tokens[j] not in ('any', 'each', 'some') or (
+                self.phrases.landmarks and self.phrases._landmark(tokens, j) is not None)):
+            return j
+        return None
+
+    def _read_unknown_placement(self, tokens: list[str], j: int, clause: _Clause) -> bool:
+        """'hang the coat on the hook': an unknown verb, an object, a destination: a delivery."""
+        obj = self.phrases.parse(tokens, j, destination_stops=True)
+        if obj is None or obj.end >= len(tokens) or tokens[obj.end] not in (
+                'on', 'onto', 'in', 'into', 'inside'):
+            return False
+        dest = self.phrases.parse(tokens, obj.end + 1)
+        if dest is None:
+            return False
+        what = self._resolve(obj).descriptor
+        if not self._read_delivery(['put'] + tokens[j:], clause):
+            return False
+        self.notes.append(f'read "{tokens[0]}" as putting {what} at {dest.descriptor}')
+        self.saw_action = True
+        return True
 
     def _add_targets(self, targets: list[Descriptor], joiner: str, ordered: bool) -> None:
         if len(targets) == 1 or joiner == 'or':
@@ -1716,5 +1927,7 @@ class _Reader:
             if sc is not None and sc.kind == 'global':
                 self._check_leftover(rem, whole)
                 return
+        if self._leave_out(rest):
+            return
         raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
                                details={'part': ' '.join(rest)})

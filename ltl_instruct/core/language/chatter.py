@@ -1,0 +1,166 @@
+"""Chatter: the words around an instruction that ask for nothing, and how to tell them apart.
+
+People frame instructions ("Hi! We've got visitors coming, so..."), add courtesy and
+time words ("for me", "real quick", "this evening"), and describe the scene ("the cat
+keeps knocking things off the counter"). None of it names a goal, a constraint or an
+order, so the offline translator may leave it out, but never silently: every part
+left out is named in the translation's notes, which the verification dialog shows the
+person before the robot moves.
+
+What may be left out is decided by what the words lack, not by a list of sentences:
+
+- a *statement* (:func:`is_statement`): a clause whose subject is not the robot ("I
+  left...", "we have got...", "the sprinkler is off") and that carries no constraint
+  word; the things it names stay known for "it" and "there";
+- *filler* (:func:`is_filler`): words with no place, no skill verb and no constraint
+  word in them ("be careful", "for me", "just so you know");
+- *courtesy and time phrases* at the end of a clause, and lead-ins such as "just so you
+  know," at its start (:func:`strip_courtesy`).
+
+Words that could carry meaning (a negation, an order or time word, a count, a
+place) are never left out: the translator still raises ``TranslationError`` on them.
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+from ltl_instruct.core.language.phrases import DETERMINERS, is_name_word, match_relation
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
+
+# Words that change what the robot must do; a part holding one is never left out.
+CONSTRAINT_WORDS = frozenset('''
+not never no avoid avoiding away without except unless before after until till then first last
+once twice thrice times time only always whenever while when if either or nor again more less least
+most exactly stay keep leave instead but forbidden mustn cannot nothing none neither
+'''.split()) | frozenset(NUMBER_WORDS) | frozenset(ORDINALS)
+
+# Subjects that make a clause a statement about the world, not a request to the robot.
+STATEMENT_SUBJECTS = frozenset({'i', 'we', 'they', 'he', 'she', 'it', 'this', 'that', 'someone',
+                                'somebody', 'everyone', 'nobody', 'people'})
+# After such a subject, words that turn the clause into a request after all.
+REQUEST_WORDS = frozenset({'need', 'want', 'would', 'like', 'should', 'must', 'will', 'can', 'could',
+                           'mean', 'meant', 'am', 'wanted', 'needed', 'asked', 'ask', 'expect',
+                           'prefer', 'wish', 'hope', 'd', 'shall', 'may', 'might', 'ought', 'to', 'you'})
+# Finite verbs after a noun-phrase subject ("the cat keeps...", "the gate is...").
+FINITE_VERBS = frozenset('''
+is are was were keeps keep has had seems seem looks look sits sit stands lies lie got gets needs
+belongs goes went broke fell spilled leaks leaked smells tends happens
+'''.split())
+
+INTERJECTIONS = frozenset('''
+hi hello hey hiya howdy thanks thank cheers great cool awesome perfect ok okay alright right sure
+please good morning afternoon evening ah oh ahh hmm um uh er erm yo dear buddy pal friend
+'''.split())
+
+# Courtesy and time-of-day phrases that end a clause and ask for nothing.
+COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('for', 'me'), ('for', 'us'), ('real', 'quick'), ('quick',), ('asap',), ('as', 'soon', 'as', 'possible'),
+    ('if', 'you', 'can'), ('if', 'you', 'could'), ('if', 'possible'), ('if', 'you', 'would'),
+    ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'), ('when', 'you', 'have', 'a', 'moment'),
+    ('this', 'evening'), ('this', 'morning'), ('this', 'afternoon'), ('tonight',), ('today',),
+    ('right', 'now'), ('now',), ('thanks',), ('thank', 'you'), ('would', 'you'), ('could', 'you'),
+    ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('if', 'you', 'do', 'not', 'mind'),
+    ('when', 'you', 'are', 'free'), ('at', 'some', 'point', 'today'), ('later',), ('soon',),
+    ('for', 'now'), ('will', 'you'), ('okay',), ('ok',), ('cheers',),
+), key=lambda t: -len(t)))
+_CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
+# Lead-ins before a comma that announce what follows and ask for nothing themselves.
+LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('fyi',), ('just', 'so', 'you', 'know'), ('so', 'you', 'know'), ('by', 'the', 'way'), ('btw',),
+    ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
+    ('listen',), ('look',), ('hey', 'there'), ('quick', 'one'), ('quick', 'favour'), ('quick', 'favor'),
+    ('one', 'more', 'thing'), ('oh', 'and'), ('also', 'fyi'), ('for', 'the', 'record'), ('well',),
+), key=lambda t: -len(t)))
+
+PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',
+                          'past', 'toward', 'towards', 'inside', 'behind', 'under', 'over', 'beside',
+                          'between', 'around', 'with', 'outside', 'across', 'along', 'via', 'up', 'down'})
+
+# Nouns of time: "this evening" is not a place.
+TIME_NOUNS = frozenset({'evening', 'morning', 'afternoon', 'night', 'week', 'weekend', 'day', 'moment',
+                        'minute', 'second', 'sec', 'today', 'tonight', 'tomorrow', 'now', 'while'})
+
+
+def has_constraint_word(tokens: Sequence[str]) -> bool:
+    """Whether any token is a negation, order, time or count word."""
+    return any(t in CONSTRAINT_WORDS or t.isdigit() for t in tokens)
+
+
+def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
+    """Whether a clause describes the world rather than asking the robot for something.
+
+    Parameters
+    ----------
+    tokens:
+        The clause, fillers stripped.
+    np_end:
+        Where a noun phrase at the start of the clause ends (0: none), for
+        noun-phrase subjects ("the cat keeps...").
+    """
+    if not tokens or has_constraint_word(tokens):
+        return False
+    if tokens[0] in STATEMENT_SUBJECTS:
+        if len(tokens) < 2 or tokens[1] in REQUEST_WORDS or (tokens[0] == 'it' and tokens[1] in (
+                'is', 'was')) or (tokens[0] in ('this', 'that') and tokens[1] not in FINITE_VERBS):
+            return False
+        # "we have to go...", "i have got to...": obligations are requests
+        return not ('to' in tokens[1:4] and tokens[1] in ('have', 'has', 'got', 'am', 'are'))
+    if np_end and np_end < len(tokens) and tokens[0] in DETERMINERS and tokens[np_end] in FINITE_VERBS:
+        return tokens[np_end + 1:np_end + 2] != ['to']
+    return False
+
+
+def is_filler(tokens: Sequence[str], known_verbs: frozenset[str]) -> bool:
+    """Whether words carry nothing to do: no place, no skill verb, no constraint word.
+
+    Parameters
+    ----------
+    tokens:
+        The words left over.
+    known_verbs:
+        Verbs of goals, deliveries and picks (a part holding one is an instruction).
+    """
+    words = [t for t in tokens if t not in PUNCT]
+    if not words or has_constraint_word(words) or any(w in known_verbs for w in words):
+        return False
+    for k, w in enumerate(words):
+        nxt = words[k + 1] if k + 1 < len(words) else ''
+        # a determiner or a preposition before a name word starts a place ("the shed", "of blue room")
+        if (w in DETERMINERS or w in PREPOSITIONS) and nxt and nxt not in TIME_NOUNS and \
+                is_name_word(words, k + 1, False):
+            return False
+        if match_relation(words, k) is not None and k + 1 < len(words):
+            return False
+    return True
+
+
+def strip_courtesy(tokens: list[str], notes: list[str]) -> list[str]:
+    """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...")."""
+    out: list[str] = []
+    i = 0
+    n = len(tokens)
+    while i < n:
+        hit = 0
+        if i == 0 or tokens[i - 1] in PUNCT:
+            for phrase in LEADS:
+                m = len(phrase)
+                if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] in (',', ':'):
+                    notes.append(f'left out "{" ".join(phrase)}" (asks for nothing)')
+                    hit = m + 1
+                    break
+            if hit:
+                i += hit
+                continue
+        if i > 0 and tokens[i - 1] not in DETERMINERS:
+            for phrase in COURTESY:
+                m = len(phrase)
+                if tuple(tokens[i:i + m]) == phrase and (i + m >= n or tokens[i + m] in _CLAUSE_END):
+                    hit = m
+                    break
+        if hit and (hit > 1 or tokens[i] not in ('please', 'okay', 'ok', 'now')):
+            notes.append(f'left out "{" ".join(tokens[i:i + hit])}" (asks for nothing)')
+            i += hit
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out

@@ -1,0 +1,85 @@
+"""Paraphrases rewritten to the one phrasing the clause reader knows, before it reads.
+
+Many ways of saying the same thing map to one form, so the rules that read a form
+need not know every way to say it:
+
+- finishing a step: "when you're done there", "once finished", "after you're through
+  with that" -> ``then``;
+- passes and trips: "make three passes over X", "do two laps around X" -> "go over X
+  three times";
+- counts: "once and only once", "one time only" -> ``exactly once``;
+- looking at a place: "have a look at", "take a peek at", "go see", "pay a visit to"
+  -> ``visit``; "check whether X is closed" -> "check X is closed" (the rest is left
+  to the reader, which leaves out words that ask for nothing, noted);
+- emphasis inside avoidance: "stay well away from", "keep right away from" -> "stay
+  away from";
+- goals stated as a fact: "your goal is X", "the destination is X" -> "go to X".
+
+Each rewrite works on the token list; none adds a place or a constraint that the
+words did not name.
+"""
+from __future__ import annotations
+
+import re
+
+from ltl_instruct.core.language.phrases import PhraseParser
+
+_DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |it is |that is |'
+         r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
+         r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)')
+
+_REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
+    # "go to a . when you are done there , head to b" -> "go to a . then head to b"
+    (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
+    (r' once and only once ', ' exactly once '),
+    (r' (?:one time|1 time) (?:and one time )?only ', ' exactly once '),
+    (r' once only ', ' exactly once '),
+    (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
+     r'(?:at|in|inside|around|over) ', ' visit '),
+    (r' (?:pay|make) a (?:quick )?(?:visit|trip) to ', ' visit '),
+    (r' (?:check|see|find out|look) (?:whether|if) ', ' check '),
+    (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
+    (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
+     r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
+    (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:goal|destination|target|aim|objective|end point|'
+     r'endpoint|final destination|job|task|mission) (?:is|will be) (?:to (?:go to |reach |get to |visit )?)?',
+     r'\1 go to '),
+))
+
+_PASS_RE = re.compile(r'(^| )(?:make|do|take|fly|run|perform|complete) (one|two|three|four|five|six|seven|'
+                      r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
+                      r'(?:passes|pass|trips|trip|laps|lap|rounds|round|sweeps|sweep|runs|run|loops|loop|'
+                      r'flyovers|flyover|visits|visit|circuits|circuit) '
+                      r'(?:over|to|by|past|around|round|of|through|across|above|at)? ?')
+
+
+def paraphrase(tokens: list[str]) -> list[str]:
+    """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
+    text = ' ' + ' '.join(tokens) + ' '
+    if not any(w in text for w in (' done', ' finish', ' through', ' ready', ' once ', ' time ', ' look',
+                                   ' peek', ' peep', ' glance', ' gander', ' visit', ' trip', ' see ',
+                                   ' check', ' whether', ' if ', ' away', ' clear', ' off', ' out',
+                                   ' goal', ' destination', ' target', ' aim', ' objective', ' end',
+                                   ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
+                                   ' run', ' loop', ' flyover', ' circuit')):
+        return tokens
+    for pattern, repl in _REWRITES:
+        text = pattern.sub(repl, text)
+    out = text.split()
+    return _passes(out)
+
+
+def _passes(tokens: list[str]) -> list[str]:
+    """'make three passes over the farm' -> 'go over the farm three times'."""
+    text = ' '.join(tokens)
+    m = _PASS_RE.search(text)
+    if m is None:
+        return tokens
+    before = text[:m.start()].split()
+    after = text[m.end():].split()
+    np = PhraseParser().parse(after, 0)
+    if np is None:
+        return tokens
+    count = m.group(2)
+    times = ['once'] if count in ('a', 'an', 'a single', 'one', '1') else [count, 'times']
+    return before + ['go', 'over'] + after[:np.end] + times + _passes(after[np.end:])

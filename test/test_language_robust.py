@@ -1,0 +1,112 @@
+"""Offline translator on language its rules were not written for: chatter, unknown verbs, typos.
+
+Every sentence here was written for these tests. Each case checks the formula on automata
+and, where the translator left words out or read a word its own way, that the notes say so
+(the person sees the notes before the robot moves).
+"""
+from __future__ import annotations
+
+import pytest
+
+from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.errors import TranslationError
+from ltl_instruct.core.language.offline import OfflineTranslator
+from ltl_instruct.core.language.spelling import Speller
+from ltl_instruct.core.spec import parse_formula
+
+T = OfflineTranslator()
+
+
+def _check(instruction: str, gold: str) -> tuple[str, ...]:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    return got.notes
+
+
+UNKNOWN_VERBS = [
+    ('Zip over to the printer, then the water cooler.', 'F (near[printer] & F near[water_cooler])'),
+    ('Climb to the third landing.', 'F near[third_landing]'),
+    ('Descend into the basement and then the boiler room.', 'F (near[basement] & F near[boiler_room])'),
+    ('Cruise past the fountain.', 'F near[fountain]'),
+    ('Hover above the blue tarp next to the barn.', 'F near[blue_tarp::isnextto(barn)]'),
+    ('Tuck the blanket into the laundry basket.',
+     'F (near[blanket] & F (pick[blanket] & F (near[laundry_basket] & F release[blanket, laundry_basket])))'),
+    ('Grab the scarf and drape it on the coat hook.',
+     'F (near[scarf] & F (pick[scarf] & F (near[coat_hook] & F release[scarf, coat_hook])))'),
+    ('Toss out the old newspaper.',
+     'F (near[old_newspaper] & F (pick[old_newspaper] & F (near[trash_can] & '
+     'F release[old_newspaper, trash_can])))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', UNKNOWN_VERBS, ids=[c[0][:30] for c in UNKNOWN_VERBS])
+def test_an_unknown_verb_before_a_place_is_read_as_going_there(instruction: str, gold: str) -> None:
+    notes = _check(instruction, gold)
+    if not instruction.startswith(('Hover', 'Toss')):
+        assert any('read' in n for n in notes), notes
+
+
+CHATTER = [
+    ('Morning! Pop over to the greenhouse for me, would you?', 'F near[greenhouse]'),
+    ('We are expecting a delivery. Head to the loading bay real quick.', 'F near[loading_bay]'),
+    ('The toddler is napping upstairs, so go to the laundry room and avoid the nursery.',
+     'F near[laundry_room] & G !near[nursery]'),
+    ('Visit the porch, and be gentle: never touch the wind chimes.',
+     'F near[porch] & G !near[wind_chimes]'),
+    ('Fyi, the ladder is in the garage, so please stay away from it.', 'G !near[ladder]'),
+    ('Go to the den this afternoon.', 'F near[den]'),
+    ('Check if the side door is locked.', 'F near[side_door]'),
+    ('Go to the mailbox, and keep well away from the hedge.', 'F near[mailbox] & G !near[hedge]'),
+    ('Your destination is the east stairwell.', 'F near[east_stairwell]'),
+    ('Go to the atrium. When you are finished there, head to the elevator lobby.',
+     'F (near[atrium] & F near[elevator_lobby])'),
+    ('Go have a quick look at the skylight.', 'F near[skylight]'),
+    ('Do two laps around the tennis court.',
+     'F (near[tennis_court] & F (!near[tennis_court] & F near[tennis_court]))'),
+    ('Go to the study, and avoid the rug; the same goes for the vase.',
+     'F near[study] & G !near[rug] & G !near[vase]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CHATTER, ids=[c[0][:30] for c in CHATTER])
+def test_chatter_is_left_out_and_noted(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_what_is_left_out_is_in_the_notes() -> None:
+    notes = T.translate('Hello! The dog is asleep. Go to the pantry for me.').notes
+    assert any('hello' in n for n in notes), notes
+    assert any('the dog is asleep' in n for n in notes), notes
+    assert any('for me' in n for n in notes), notes
+
+
+@pytest.mark.parametrize('bad', [
+    'go to the kitchen and then the pantry unless the stove',   # a leftover place and order word
+    'go to the shed and zorble the quigley',                    # not English: a misspelt place?
+    'the kettle is on the stove',                              # nothing to do at all
+])
+def test_leftovers_that_could_mean_something_still_raise(bad: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(bad)
+
+
+def test_typos_in_names_are_corrected_and_noted() -> None:
+    t = T.translate('Go to the bathrom, then the kitchn, then the coutner.')
+    assert equivalent(t.formula, parse_formula('F (near[bathroom] & F (near[kitchen] & F near[counter]))'))
+    assert any('"coutner" as "counter"' in n for n in t.notes), t.notes
+
+
+def test_speller_is_conservative() -> None:
+    s = Speller()
+    assert s.correct('patnry') == 'pantry'      # two letters swapped
+    assert s.correct('securty') == 'security'   # a letter dropped
+    assert s.correct('linnen') == 'linen'       # a letter doubled
+    for word in ('futon', 'crib', 'loveseat', 'nightlight', 'blender', 'dumpster', 'copier', 'table'):
+        assert s.correct(word) is None, word    # real words, listed or not, stay as they are
+    assert s.correct('xqzvbt') is None          # no near word: nothing to guess
+    assert Speller(words={}).correct('patnry') is None   # without a word list nothing changes
+
+
+def test_landmark_names_are_never_corrected() -> None:
+    t = OfflineTranslator(landmarks=('patnry',)).translate('go to patnry')
+    assert str(t.formula) == 'F near[patnry]'

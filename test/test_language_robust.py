@@ -110,3 +110,26 @@ def test_speller_is_conservative() -> None:
 def test_landmark_names_are_never_corrected() -> None:
     t = OfflineTranslator(landmarks=('patnry',)).translate('go to patnry')
     assert str(t.formula) == 'F near[patnry]'
+
+
+SCOPES = [
+    ('Go to the bakery, and after that keep away from the fountain.',
+     'F (near[bakery] & G !near[fountain])'),
+    ('Head to the gate and, until you reach it, avoid the mud.', '!near[mud] U near[gate]'),
+    ('Visit the cellar, then the attic. After the cellar, never go near the boiler again.',
+     'F (near[cellar] & G !near[boiler] & F near[attic])'),
+    ('Bring the tray to the sink, and while you have the tray, avoid the dog.',
+     'F (near[tray] & F (pick[tray] & (!near[dog] U (near[sink] & F release[tray, sink]))))'),
+    ("Don't stroll anywhere near the pond. Go to the bench.", 'F near[bench] & G !near[pond]'),
+    ('Go to the hall; you can also stop at the kiosk, but only once.',
+     'F near[hall] & (!near[kiosk] W (near[kiosk] & (near[kiosk] W G !near[kiosk])))'),
+    ('Before you go anywhere near the nursery, wash up at the sink.',
+     'F near[nursery] & (!near[nursery] U near[sink])'),
+    ("Go into the lab, but only once you've swung by the locker room.",
+     'F near[lab] & (!near[lab] U near[locker_room])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', SCOPES, ids=[c[0][:30] for c in SCOPES])
+def test_time_words_and_back_references_scope_what_they_say(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

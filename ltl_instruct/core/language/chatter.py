@@ -61,7 +61,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('right', 'now'), ('now',), ('thanks',), ('thank', 'you'), ('would', 'you'), ('could', 'you'),
     ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('if', 'you', 'do', 'not', 'mind'),
     ('when', 'you', 'are', 'free'), ('at', 'some', 'point', 'today'), ('later',), ('soon',),
-    ('for', 'now'), ('will', 'you'), ('okay',), ('ok',), ('cheers',),
+    ('for', 'now'), ('will', 'you'), ('okay',), ('ok',), ('cheers',), ('if', 'you', 'like'),
+    ('if', 'you', 'want'), ('if', 'you', 'wish'), ('if', 'you', 'feel', 'like', 'it'),
 ), key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins before a comma that announce what follows and ask for nothing themselves.
@@ -105,8 +106,10 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
             return False
         # "we have to go...", "i have got to...": obligations are requests
         return not ('to' in tokens[1:4] and tokens[1] in ('have', 'has', 'got', 'am', 'are'))
-    if np_end and np_end < len(tokens) and tokens[0] in DETERMINERS and tokens[np_end] in FINITE_VERBS:
-        return tokens[np_end + 1:np_end + 2] != ['to']
+    if np_end and tokens[0] in DETERMINERS:
+        # the noun phrase may have swallowed the verb ("the cat keeps knocking...")
+        f = next((k for k in range(2, np_end + 1) if k < len(tokens) and tokens[k] in FINITE_VERBS), -1)
+        return f > 0 and tokens[f + 1:f + 2] != ['to']
     return False
 
 
@@ -125,11 +128,13 @@ def is_filler(tokens: Sequence[str], known_verbs: frozenset[str]) -> bool:
         return False
     for k, w in enumerate(words):
         nxt = words[k + 1] if k + 1 < len(words) else ''
-        # a determiner or a preposition before a name word starts a place ("the shed", "of blue room")
-        if (w in DETERMINERS or w in PREPOSITIONS) and nxt and nxt not in TIME_NOUNS and \
-                is_name_word(words, k + 1, False):
+        # a determiner, or a preposition before a name word, starts a place ("the it office", "of blue room")
+        if nxt and nxt not in TIME_NOUNS and (w in DETERMINERS or w in PREPOSITIONS and is_name_word(
+                words, k + 1, False)):
             return False
-        if match_relation(words, k) is not None and k + 1 < len(words):
+        rel = match_relation(words, k)
+        if rel is not None and rel[1] < len(words) and (words[rel[1]] in DETERMINERS or is_name_word(
+                words, rel[1], False)):
             return False
     return True
 

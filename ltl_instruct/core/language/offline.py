@@ -525,6 +525,7 @@ class _Reader:
         self.mentions: list[Descriptor] = []
         self.before_target: Optional[Descriptor] = None
         self.last_clause: Optional[tuple[list[str], Optional[_Scope]]] = None
+        self.before_strict = False
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -608,15 +609,49 @@ class _Reader:
                 return
         scope: Optional[_Scope] = None
         clauses = self._clauses(tokens)
+        skip = False
         for n, clause in enumerate(clauses):
+            if skip:
+                skip = False
+                continue
             later = [t for c in clauses[n:] for t in c.tokens]
             first = self._strip_fillers(clause.tokens)
+            if self._read_optional(clause.tokens, clauses[n + 1].tokens if n + 1 < len(clauses) else []):
+                skip = n + 1 < len(clauses)
+                continue
             permits = self._is_permission(first) or self._is_permission(clause.tokens)
             opens = first[:1] in (['if'], ['once'], ['only'])
             if (self.task.chain and permits) or (opens and self._is_permission(later)):
                 self._read_permission(later)
                 return
             scope = self._read_clause(clause, scope)
+
+    def _read_optional(self, tokens: list[str], nxt: list[str]) -> bool:
+        """Read 'you can also stop by X, but no more than once': X is optional, its visits bounded."""
+        words = [t for t in tokens if t not in PUNCT]
+        if not (_starts(words, 0, ['you', 'can', 'also']) or _starts(words, 0, ['you', 'may', 'also']) or
+                _starts(words, 0, ['you', 'are', 'also', 'allowed', 'to']) or _starts(
+                    words, 0, ['feel', 'free'])):
+            return False
+        k = self._skip_event_verbs(words, words.index('also') + 1 if 'also' in words[:3] else 2)
+        nps, _, end = self._np_list(words, k)
+        rest = [t for t in nxt if t not in PUNCT and t not in ('but', 'and', 'though', 'just')]
+        rest = [t for t in words[end:] if t not in ('but', 'though', 'too')] + rest
+        if not nps or rest and not (rest[0] in ('no', 'not', 'at', 'up', 'max', 'maximum') or rest[0] in (
+                'only', 'just') and rest[1:2] == ['once']):
+            return False
+        if rest and rest[0] in ('only', 'just'):
+            rest = ['at', 'most'] + rest[1:]
+        self.saw_action = True
+        targets = [np.descriptor for np in nps]
+        if rest:
+            before = len(self.task.constraints)
+            ok, left = self._read_count(rest, targets)
+            if not ok or left or len(self.task.constraints) == before:
+                raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(words)}"',
+                                       details={'part': ' '.join(rest)})
+        self.notes.append(f'{", ".join(map(str, targets))}: allowed, not required')
+        return True
 
     def _read_alternatives(self, parts: list[list[str]]) -> None:
         self.saw_action = True
@@ -684,6 +719,11 @@ class _Reader:
                     j += 1
                 if t == 'while' and j < n and tokens[j] in ('avoiding', 'staying', 'keeping', 'never'):
                     boundary, skip = 'and', 1
+                elif t == ',' and j + 1 < n and tokens[j] in ('can', 'could', 'would', 'will') and \
+                        tokens[j + 1] == 'you':
+                    boundary, skip = 'and', 1   # "I left it by the door, can you go there"
+                elif t in (',', 'and') and self._same_for_lead(tokens, j):
+                    boundary, skip = 'and', j - i
                 elif t == 'or' and j < n and tokens[j] in GOAL_VERBS | DELIVER_VERBS:
                     boundary, skip = 'or', j - i
                 elif j < n and (tokens[j] in CLAUSE_STARTERS or t in (',', 'and') and tokens[j - 1] in (
@@ -786,7 +826,7 @@ class _Reader:
             if tokens[-len(tail):] == tail and len(tokens) > len(tail):
                 tokens = ['visit'] + tokens[:-len(tail)]
                 break
-        if self._read_chatter(tokens):
+        if self._read_chatter(tokens, clause.tokens):
             return scope
         raw = [t for t in clause.tokens if t not in PUNCT]
         first_flag = bool(raw) and (raw[-1] == 'first' or raw[:2] == ['but', 'first'] or (
@@ -815,6 +855,14 @@ class _Reader:
             self.only = True
         if tokens[0] == 'before' and len(tokens) > 2:
             k = self._skip_event_verbs(tokens, 1)
+            strict = _starts(tokens, k, ['anywhere', 'near']) or tokens[k:k + 1] == ['near']
+            if strict:   # "before you go anywhere near X": X not until the next goal is reached
+                k += 2 if tokens[k] == 'anywhere' else 1
+                np = self.phrases.parse(tokens, k)
+                if np is not None and np.end == len(tokens):
+                    self.before_target = np.descriptor
+                    self.before_strict = True
+                    return scope
             np = self.phrases.parse(tokens, k)
             if np is not None and np.end == len(tokens) and k > 1:
                 self.before_target = np.descriptor   # the next goal comes first, then this
@@ -825,6 +873,12 @@ class _Reader:
             self.saw_action = True
             if clause.connector == 'there' and scope is None and self.last_place is not None:
                 scope = _Scope('after', self.last_place)   # "once you're there, never go back to Y"
+            elif clause.connector == 'seq' and scope is None and self.task.chain and \
+                    self.task.chain[-1].kind in ('visit', 'deliver') and self.avoid_scope == 'global' and \
+                    'first' not in tokens and not self.phrases.landmarks:
+                # "go to X, and after that stay away from Y": from X on
+                last = self.task.chain[-1]
+                scope = _Scope('after', NounPhrase((last.dests or last.targets)[0], 0, 0, ''))
             self._read_avoid(tokens, scope)
             return scope
         if tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS or _starts(tokens, 0, ['throw', 'away']):
@@ -834,7 +888,7 @@ class _Reader:
         self._read_goal(tokens, clause, scope)
         return scope
 
-    def _read_chatter(self, tokens: list[str]) -> bool:
+    def _read_chatter(self, tokens: list[str], raw: list[str]) -> bool:
         """Leave out a clause that asks for nothing: a statement about the scene, filler, a skip.
 
         The things a statement names stay known for "it" and "there" ("the crate is in the
@@ -851,8 +905,16 @@ class _Reader:
                 # "skip the hall": nothing to do there (a goal already given is retracted by rewrite)
                 self.notes.append(f'"{text}": no goal there')
                 return True
+        raw = [t for t in raw if t not in PUNCT]
+        while raw and raw[0] in ('and', 'but', 'so', 'because', 'since', 'as') + tuple(chatter.INTERJECTIONS):
+            raw = raw[1:]
+        if raw[:2] == ['i', 'mean'] and chatter.is_filler(raw[2:], SKILL_VERBS):
+            self.notes.append(f'left out "{" ".join(raw)}" (emphasis)')   # "and I mean anywhere near it"
+            return True
+        if raw and raw[0] in chatter.STATEMENT_SUBJECTS:
+            tokens, text = raw, ' '.join(raw)   # the subject was stripped as a filler ("i")
         np_end = 0
-        if tokens[0] in DETS:
+        if tokens[0] in DETS and not (self.phrases.landmarks and self.phrases._landmark(tokens, 0)):
             np = self.phrases.parse(tokens, 0)
             np_end = np.end if np is not None else 0
         if chatter.is_statement(tokens, np_end):
@@ -875,17 +937,21 @@ class _Reader:
             return True
         return False
 
-    def _read_same_for(self, tokens: list[str], scope: Optional[_Scope]) -> bool:
-        """Read 'the same goes for X', 'same with X', 'likewise X': the last clause again, with X."""
-        k = -1
+    @staticmethod
+    def _same_for_lead(tokens: list[str], i: int) -> int:
+        """Length of a 'the same goes for' lead at ``tokens[i]``, else 0."""
         for lead in (['the', 'same', 'goes', 'for'], ['same', 'goes', 'for'], ['the', 'same', 'for'],
                      ['same', 'for'], ['same', 'with'], ['the', 'same', 'with'], ['likewise', 'for'],
                      ['likewise'], ['ditto', 'for'], ['the', 'same', 'applies', 'to'],
                      ['same', 'applies', 'to'], ['that', 'goes', 'for'], ['this', 'goes', 'for'],
-                     ['same', 'thing', 'for']):
-            if _starts(tokens, 0, lead):
-                k = len(lead)
-                break
+                     ['same', 'thing', 'for'], ['the', 'same', 'is', 'true', 'of'], ['same', 'deal', 'with']):
+            if _starts(tokens, i, lead):
+                return len(lead)
+        return 0
+
+    def _read_same_for(self, tokens: list[str], scope: Optional[_Scope]) -> bool:
+        """Read 'the same goes for X', 'same with X', 'likewise X': the last clause again, with X."""
+        k = self._same_for_lead(tokens, 0) or -1
         if k < 0 or self.last_clause is None:
             return False
         nps, _, end = self._np_list(tokens, k, place=False)
@@ -893,7 +959,9 @@ class _Reader:
         if not nps or [t for t in tokens[end:] if t not in ('too', 'as', 'well', 'also')]:
             return False
         # the last noun phrase (or pronoun) of the last clause is the one replaced
-        spans = [i for i in range(len(prev)) if prev[i] in DETS or prev[i] in ('it', 'them', 'there')]
+        timely = ('point', 'time', 'times', 'moment', 'cost', 'costs')   # "at any point" is no referent
+        spans = [i for i in range(len(prev)) if (prev[i] in DETS or prev[i] in ('it', 'them', 'there')) and
+                 not (i + 1 < len(prev) and prev[i + 1] in timely)]
         if not spans:
             return False
         start = spans[-1]
@@ -956,10 +1024,26 @@ class _Reader:
             sc, end = self._event_phrase(tokens, 1)
             if sc is not None:
                 return sc, tokens[end:]
+        if tokens[0] in ('until', 'till') and len(tokens) > 1:
+            sc, rest = self._trailing_scope(tokens)   # "until you get there, don't ..."
+            if sc is not None and sc.kind == 'until':
+                return sc, rest
         return None, tokens
 
     def _event_phrase(self, tokens: list[str], i: int) -> tuple[Optional[_Scope], int]:
         """After "once/after/while": the event (reaching X, picking it up, dropping it off, carrying it)."""
+        if tokens[i - 1] == 'while':
+            # "while you've got the bag", "while you have it": carrying
+            h = next((h for h in range(i, min(i + 3, len(tokens))) if tokens[h] in ('have', 'got', 'has')),
+                     -1)
+            if h >= 0 and all(t in ('you', 'have', 'got', 'has', 'still', 'the', 'robot')
+                              for t in tokens[i:h]):
+                h += 1
+                while h < len(tokens) and tokens[h] in ('got', 'still'):
+                    h += 1
+                np = self.phrases.parse(tokens, h)
+                if np is not None:
+                    return _Scope('carry'), np.end
         j = i
         while j < len(tokens) and tokens[j] in ('you', 'have', 'are', 'i', 'it', 'is', 'been', 'the',
                                                 'robot'):
@@ -1016,6 +1100,11 @@ class _Reader:
                 step = self.task.last_step(('visit', 'deliver'))
                 return _Scope('after', self.last_place if step else None), k + 1
             k += 1
+        if k == j and tokens[i - 1] in ('after', 'once'):
+            # "after the library, ...": a goal already given, no verb
+            np = self.phrases.parse(tokens, i)
+            if np is not None and not np.pronoun and self.task.find_step(np.descriptor) is not None:
+                return _Scope('after', np), np.end
         if k == j:
             return None, i
         np = self.phrases.parse(tokens, k)
@@ -1051,6 +1140,11 @@ class _Reader:
                 k = i + len(trig)
                 if _starts(tokens, k, ['let']):
                     return None
+                if trig[-1] in ('not', 'never') and k + 1 < len(tokens) and \
+                        tokens[k] not in AVOID_FILLER and tokens[k + 1] in AVOID_FILLER and \
+                        tokens[k + 1] not in ('to', 'the') and tokens[k].isalpha() and \
+                        tokens[k] not in STOPWORDS and _is_word(tokens[k]):
+                    k += 1   # a verb the rules do not know: "don't roll anywhere near X"
                 while k < len(tokens) and tokens[k] in AVOID_FILLER:
                     k += 1
                 return k
@@ -1527,8 +1621,12 @@ class _Reader:
 
     @staticmethod
     def _skip_event_verbs(s: list[str], k: int) -> int:
-        while k < len(s) and s[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
-                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure'}:
+        while k < len(s) and (s[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
+                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure', 'swung', 'flown', 'driven',
+                'ridden', 'run', 'come', 'done'} or (
+                # a participle before a particle or a place: "once you've stopped at X"
+                s[k].endswith(('ed', 'en')) and k + 1 < len(s) and (
+                    s[k + 1] in GOAL_PARTICLES or s[k + 1] in DETS) and s[k] not in STOPWORDS)):
             k += 1
         return k
 
@@ -1790,8 +1888,11 @@ class _Reader:
         else:
             self._add_targets(targets, joiner, ordered)
         if self.before_target is not None:
+            if self.before_strict:
+                self.task.constraints.append(Until(Not(_near(self.before_target)), _or(
+                    [_near(t) for t in targets])))
             self.task.chain.append(Step('visit', [self.before_target]))
-            self.before_target = None
+            self.before_target, self.before_strict = None, False
             targets = [self.task.chain[-1].targets[0]]
         self._goal_trailer(rest, tokens, targets)
         if self.conditional is not None:

@@ -73,7 +73,8 @@ whichever whatever matter care which else other others until till avoid avoiding
 while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside
-unless except whenever since because though although otherwise
+unless except whenever since because though although otherwise something anything everything nothing
+someone anyone
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.
@@ -181,7 +182,7 @@ def singular(word: str) -> str:
 def name_of(words: Sequence[str]) -> str:
     """Snake-case name from name words; cardinal number words after a noun become digits."""
     out = []
-    for k, w in enumerate(words):
+    for k, w in enumerate(w.lower() for w in words):   # acronyms ("the IT office") are upper case
         if k > 0 and w in NUMBER_WORDS and w not in ('once', 'twice', 'thrice'):
             w = str(NUMBER_WORDS[w])
         out.append(w)

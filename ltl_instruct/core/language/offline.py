@@ -29,6 +29,7 @@ from typing import Optional, Sequence
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
 from ltl_instruct.core.language import chatter
 from ltl_instruct.core.language.base import Translation
+from ltl_instruct.core.language.idioms import rewrite_idioms
 from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
     DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
@@ -396,6 +397,7 @@ class OfflineTranslator:
         tokens = paraphrase(chatter.strip_courtesy(tokens, notes))
         tokens = resolve_list_references(tokens, notes)
         tokens = apply_corrections(tokens, notes)
+        tokens = rewrite_idioms(tokens)
         reader = _Reader(self.avoid_scope, notes, self.landmarks)
         try:
             formula = reader.read(tokens)
@@ -620,7 +622,8 @@ class _Reader:
                 skip = n + 1 < len(clauses)
                 continue
             permits = self._is_permission(first) or self._is_permission(clause.tokens)
-            opens = first[:1] in (['if'], ['once'], ['only'])
+            opens = first[:1] in (['if'], ['once']) or first[:2] in (['only', 'if'], ['only', 'once'],
+                                                                     ['only', 'when'], ['only', 'after'])
             if (self.task.chain and permits) or (opens and self._is_permission(later)):
                 self._read_permission(later)
                 return
@@ -1161,6 +1164,21 @@ class _Reader:
         rest, _ = _strip_tails([t for t in tokens[end:] if t != ','])
         # "more than once / more than N times" is a count, not an avoidance.
         rest = normalize_counts(rest)
+        if _starts(rest, 0, ['at', 'least']) or _starts(rest, 0, ['at', 'most']):
+            # "do not visit a at least three times": at most two; "... at most two times": three or more
+            n = self._count_word(rest, 2)
+            if n is None:
+                raise TranslationError(f'could not read the count in "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(rest)})
+            for d in targets:
+                if rest[1] == 'least':
+                    self.task.constraints.append(
+                        at_most(_near(d), n[0] - 1) if n[0] > 1 else Always(Not(_near(d))))
+                else:
+                    self.task.chain.extend(
+                        [Step('visit', [d]), Step('leave', [d])] * n[0] + [Step('visit', [d])])
+            self._check_leftover(rest[n[1]:], tokens)
+            return
         if rest and rest[0] == 'exactly' or _starts(rest, 0, ['any', 'fewer', 'than']) or _starts(
                 rest, 0, ['fewer', 'than']) or _starts(rest, 0, ['less', 'than']) or _starts(
                 rest, 0, ['any', 'less', 'than']):

@@ -1,0 +1,264 @@
+"""Idioms rewritten to the plain phrasing the clause reader knows, before it reads them.
+
+People say the same task many ways: "the maximum number of times you can visit the
+shed is two", "you are allowed at most two visits to the shed" and "visiting the shed
+more than twice is prohibited" all mean "visit the shed at most twice". Rather than
+teach every clause reader each variant, this module rewrites the variants of a
+construction to one canonical phrasing, on each sentence's tokens joined by spaces,
+with regular expressions. Each entry of :data:`RULES` is one construction, named by an
+example of it; they apply in order.
+
+The rewrites only replace wording with an equivalent wording: they never guess a
+referent or drop a word that carries meaning, so what the reader then cannot place
+still raises an error naming it. Every pattern is linear to match (no nested
+repetition), so hostile input cannot make matching slow.
+"""
+from __future__ import annotations
+
+import re
+from typing import Callable, NamedTuple, Union
+
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS
+
+_NUM = r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+)'
+_KIND = r'(?:separate |distinct |different |individual )?'
+_UNIT = r'(?:times?|occasions?|instances?|visits?|passes)'
+# a count: "once", "twice", "three times", "four separate occasions"
+_COUNT = rf'(?:once|twice|thrice|{_NUM} {_KIND}{_UNIT})'
+_ORD = '(?:' + '|'.join(ORDINALS) + ')'
+# words that belong to the frame of a sentence, never to a noun phrase inside it
+_FRAME = (r'then|but|you|is|are|be|once|twice|thrice|more|less|fewer|at|on|for|in|again|must|has|have|'
+          r'should|needs|need|shall|will|can|cannot|may|get|gets|do|not|never|no|until|before|after|when|'
+          r'while|if|unless|whenever|make|sure|ensure|that|to|go|visit|reach|avoid|only')
+_W = rf'(?:(?!(?:and|or|{_FRAME})\b)[a-z0-9_]+)'
+# a noun phrase ("the red room", "a"), and a list of them ("a, b and c"): one bounded repetition
+# each, so that matching stays linear
+_NP = rf'(?:{_W}(?: {_W}){{0,6}})'
+_NPS = rf'(?:{_W}(?: (?:(?!(?:{_FRAME})\b)[a-z0-9_,]+)){{0,12}}?)'
+# connectives that open an event ("until", "as soon as")
+_WHEN = (r'until|till|before|after|once|when|whenever|if|unless|as soon as|every time|each time|any time|'
+         r'anytime|only after|not until')
+# the passive's auxiliaries: "is", "must be", "has to be", "gets"
+_PASSIVE = (r'(?:(?:must|has to|have to|should|needs to|need to|is to|are to|shall|will|can) (?:always )?be|'
+            r'are|is|gets?)')
+# movement verbs, plain, in -ing and as participles ("visit", "visiting", "visited")
+_GO = (r'(?:visit|go to|reach|enter|pass through|go through|move to|travel to|navigate to|get to|'
+       r'make your way to|head to|find|come to|walk to|fly to|drive to)')
+_GOING = (r'(?:visiting|going to|reaching|entering|passing through|going through|moving to|traveling to|'
+          r'travelling to|navigating to|getting to|heading to|finding|coming to|walking to|flying to)')
+_GONE = r'(?:visited|been to|gone to|reached|entered|passed through|gone through|found|arrived at)'
+_BACK = rf'(?:{_GO}|revisit|come back to|return to|go back to)'
+_FORBIDDEN = r'(?:prohibited|forbidden|not allowed|not permitted|banned)'
+
+Replacement = Union[str, Callable[['re.Match[str]'], str]]
+
+
+class Rule(NamedTuple):
+    """One construction: an example of it, the pattern, and the canonical wording."""
+
+    example: str
+    pattern: str
+    replacement: Replacement
+
+
+def _number(word: str) -> int:
+    if word.isdigit():
+        return int(word)
+    return ORDINALS.get(word) or NUMBER_WORDS.get(word, 1)
+
+
+def _count_of(text: str) -> int:
+    """Return the number a count phrase names ("twice" -> 2, "three separate times" -> 3)."""
+    return _number(text.split()[0])
+
+
+def _times(n: int) -> str:
+    return {1: 'once', 2: 'twice'}.get(n, f'{n} times')
+
+
+def _plain(gerund: str) -> str:
+    """Return the plain form of a movement verb in -ing ("going to" -> "go to")."""
+    first, _, rest = gerund.partition(' ')
+    stem = {'visiting': 'visit', 'going': 'go', 'reaching': 'reach', 'entering': 'enter', 'passing': 'pass',
+            'moving': 'move', 'traveling': 'travel', 'travelling': 'travel', 'navigating': 'navigate',
+            'getting': 'get', 'heading': 'head', 'finding': 'find', 'coming': 'come', 'walking': 'walk',
+            'flying': 'fly'}.get(first, first)
+    return f'{stem} {rest}'.strip()
+
+
+def _group(m: 're.Match[str]', name: str) -> str:
+    return m.group(name) or ''
+
+
+def _upto(m: 're.Match[str]') -> str:
+    # "zero times, once or twice": the largest count named is the bound
+    counts = re.findall(rf'(?:once|twice|thrice|{_NUM} times?)', m.group(0))
+    return f'at most {_times(max(_count_of(c) for c in counts))}'
+
+
+def _bound(m: 're.Match[str]') -> str:
+    mode = {'maximum': 'at most', 'max': 'at most', 'minimum': 'at least', 'min': 'at least',
+            'required': 'exactly', 'exact': 'exactly'}[m.group('bound')]
+    return f'visit {m.group("x")} {mode} {_times(_number(m.group("n")))}'
+
+
+def _visits(m: 're.Match[str]') -> str:
+    mode = _group(m, 'mode').strip().replace('only', 'exactly')
+    n = 1 if m.group('n') in ('a', 'an', 'single', 'any single') else _number(m.group('n'))
+    return f'visit {m.group("x")} {mode + " " if mode else ""}{_times(n)}'
+
+
+def _locks(m: 're.Match[str]') -> str:
+    return f'visit {m.group("x")} at most {_times(_number(m.group("n")))}'
+
+
+def _repeat(m: 're.Match[str]') -> str:
+    mode = _group(m, 'mode').strip() or 'at least'
+    return f'visit {m.group("x")} {mode} {_times(1 + _number(m.group("n")))}'
+
+
+RULES: tuple[Rule, ...] = (
+    # ---- modal frames said at length: permission, obligation, prohibition
+    Rule('you are not allowed to go there',
+         r'\byou are (?:not|never) (?:allowed|permitted) to\b', 'you cannot'),
+    Rule('it is forbidden to go there', r'\bit is (?:not allowed|forbidden|prohibited) to\b', 'you cannot'),
+    Rule('you are allowed at most two visits',
+         rf'\byou are (?P<neg>not )?(?:allowed|permitted) (?=(?:at least|at most|exactly|only|no more than|'
+         rf'{_NUM}|once|twice) )',
+         lambda m: 'you cannot make ' if m.group('neg') else 'you can make '),
+    Rule('you are allowed to go there', r'\byou are (?:allowed|permitted|good|free|able) to\b', 'you can'),
+    Rule('your task is to go there',
+         r'\b(?:you are required to|your task is to|your job is to|your goal is to|you are supposed to|'
+         r'you are expected to)\b', 'you must'),
+    Rule('you cannot finish the task without visiting X',
+         rf'\b(?:you cannot|you can not|you must not|do not) (?:complete|finish|end) '
+         rf'(?:the task |the mission |your task )?without (?P<verb>{_GOING})\b',
+         lambda m: _plain(m.group('verb'))),
+
+    # ---- counts said as ranges
+    Rule('zero times, once or twice',
+         rf'\b(?:zero|0|no) times?(?: ,)?(?: (?:or )?(?:once|twice|thrice|{_NUM} times?)(?: ,)?)+', _upto),
+    Rule('equal or less than twice', r'\bequal (?:to )?or (?:less|fewer) than\b', 'at most'),
+    Rule('equal or more than twice', r'\bequal (?:to )?or (?:more|greater) than\b', 'at least'),
+    Rule('at least twice or more', rf'\bat least (?P<c>{_COUNT}) or more\b', r'at least \g<c>'),
+    Rule('three or fewer times', rf'\b(?P<c>{_NUM}) (?:times )?or (?:fewer|less)(?: times)?\b',
+         lambda m: f'at most {_times(_number(m.group("c")))}'),
+    Rule('twice or fewer times',
+         r'\b(?P<c>once|twice|thrice) or (?:fewer|less)(?: times)?\b', r'at most \g<c>'),
+    Rule('two or more than two times', rf'\b(?P<c>{_NUM}) or more than (?P=c) {_KIND}times?\b',
+         lambda m: f'at least {_times(_number(m.group("c")))}'),
+    Rule('two or more times', rf'\b(?P<c>{_NUM}) (?:times )?or more(?: {_KIND}{_UNIT})?\b',
+         lambda m: f'at least {_times(_number(m.group("c")))}'),
+    Rule('once or more', r'\b(?P<c>once|twice|thrice) or more(?: times)?\b', r'at least \g<c>'),
+    Rule('exactly twice, no more, no less', r'(?: ,)? no more(?: ,)? (?:and |or |, )?no less\b', ''),
+    Rule('no fewer or greater than twice', r'\b(?:no|any) (?:fewer|less) or (?:any )?(?:more|greater) than\b',
+         'exactly'),
+    Rule('any more or any fewer than twice', r'\b(?:any )?(?:more|greater) or (?:any )?(?:fewer|less) than\b',
+         'exactly'),
+    Rule('at most and at least twice', r'\bat (?:most and at least|least and at most)\b', 'exactly'),
+    Rule('but two times at most', rf'\b(?:but )?(?:only )?(?P<c>{_COUNT}) at (?P<m>most|least)\b',
+         r'at \g<m> \g<c>'),
+    Rule('on at least three separate occasions',
+         rf'\bon (?P<mode>(?:at least|at most|exactly|any more than|more than|any fewer than|fewer than|'
+         rf'less than) )?(?P<c>{_NUM}) {_KIND}(?:occasions?|instances?|times)\b',
+         lambda m: f'{_group(m, "mode").replace("any ", "")}{_times(_number(m.group("c")))}'),
+    Rule('for more than one distinct visit',
+         rf'\bfor (?P<mode>more than |at least |at most |exactly )?(?P<c>{_NUM}) {_KIND}(?:visits?|times)\b',
+         lambda m: f'{_group(m, "mode")}{_times(_number(m.group("c")))}'),
+
+    # ---- counts said with a noun
+    Rule('the maximum number of visits to X is three',
+         rf'\bthe (?P<bound>maximum|max|minimum|min|required|exact) (?:allowable |allowed |permitted )?'
+         rf'(?:number of )?{_KIND}(?:visits|passes|trips) (?:to|through|of|at) (?P<x>{_NP}) '
+         rf'(?:is|are|should be|must be) (?:exactly )?(?P<n>{_NUM}|once|twice)\b', _bound),
+    Rule('the maximum number of times you can visit X is three',
+         rf'\bthe (?P<bound>maximum|max|minimum|min|required) (?:allowable |allowed |permitted )?number of '
+         rf'times (?:that )?you (?:can|must|may|should|are allowed to|have to|need to) {_GO} (?P<x>{_NP}) '
+         rf'(?:is |are )?(?:exactly )?(?P<n>{_NUM}|once|twice)\b', _bound),
+    Rule('make at least three separate visits to X',
+         rf'\b(?:make|complete|have|need|pay|do)(?: only)? (?P<mode>(?:at least|at most|exactly|only|'
+         rf'no more than|no fewer than|no less than) )?(?P<n>{_NUM}|a|an|single|any single) {_KIND}'
+         rf'(?:visits?|trips?|passes) (?:to|through|of|at) (?P<x>{_NP})(?= |$)', _visits),
+    Rule('do not make any single visit to X', r'\b(?:make|pay) (?:any|a) (?:single )?(?:visits?|trips?) to\b',
+         'visit'),
+
+    # ---- counts said as a lock
+    Rule('visiting X twice locks it for future visits',
+         rf'\b(?:{_GOING}|passing through) (?P<x>{_NP}) (?:(?P<n>{_NUM}|twice|thrice|once)(?: times)? |for '
+         rf'the (?P<o>{_ORD}) time )?(?:will )?locks? it(?: for (?:all )?future visits)?\b',
+         lambda m: f'visit {m.group("x")} at most {_times(_number(m.group("o") or m.group("n") or "once"))}'),
+    Rule('once you leave X for the second time you cannot come back to it',
+         rf'\bonce you (?:leave|exit|enter|visit|reach) (?P<x>{_NP}) for the (?P<n>{_ORD}) time (?:, )?'
+         rf'(?:you (?:cannot|can not|can never|must not|may not|should not) (?:come back|return|go back|'
+         rf'reenter|re enter|enter|visit|go)(?: to| into)? it(?: again)?|it is locked(?: for you)?)\b',
+         _locks),
+    Rule('never visit X again after you have visited it three times',
+         rf'\b(?:never|do not|you cannot|you can not) {_BACK} (?P<x>{_NP}) again after (?:you )?'
+         rf'(?:have |haven |had )?{_GONE} (?:it|(?P=x)) (?P<n>{_COUNT})\b',
+         lambda m: f'visit {m.group("x")} at most {_times(_count_of(m.group("n")))}'),
+    Rule('once you reach X you can never visit it again',
+         rf'\bonce you (?:have )?(?:{_GO}|{_GONE}) (?P<x>{_NP}) (?:, )?(?:you (?:can never|cannot|can not|'
+         rf'must never|must not|should never|may not)|never) {_BACK} (?:it|(?P=x)) '
+         rf'(?:again|anymore|any more)\b',
+         r'visit \g<x> at most once'),
+    Rule('visiting X more than twice is prohibited',
+         rf'^(?P<verb>{_GOING}) (?P<rest>.+?) (?:is|are) {_FORBIDDEN}$',
+         lambda m: f'do not {_plain(m.group("verb"))} {m.group("rest")}'),
+    Rule('go to X more or less than twice is prohibited',
+         rf'^(?P<verb>{_GO}) (?P<rest>.+?) (?:is|are) {_FORBIDDEN}$',
+         r'do not \g<verb> \g<rest>'),
+    Rule('go to X then leave it and repeat this two more times',
+         rf'\b{_GO} (?P<x>{_NP})(?: ,)?(?: and)?(?: then)? leave(?: (?P=x)| it)?(?: and)*(?: then)? '
+         rf'repeat(?: this| that| it)? (?P<mode>exactly |at least )?(?P<n>{_NUM}|once) more(?: times?)?\b',
+         _repeat),
+    Rule('at least twice, leaving in between',
+         r'\b(?:while |by )?leaving(?: (?:its region|the region|it|there))? in between\b', ''),
+    Rule('each time you must leave before coming back',
+         r'\b(?:and )?each time you (?:must|have to|should) leave before coming back\b', ''),
+    Rule('stop visiting it anymore', rf'\bstop (?P<verb>{_GOING}) (?P<x>it|{_NP}) (?:anymore|any more)\b',
+         lambda m: f'do not {_plain(m.group("verb"))} {m.group("x")} anymore'),
+
+    # ---- passive goals and avoidances
+    Rule('the shed must be visited',
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) {_PASSIVE} (?:all |both |each )?'
+         rf'(?:visited|reached|entered)(?= |$)', r'\g<pre>visit \g<x>'),
+    Rule('the shed must be avoided',
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?:always )?{_PASSIVE} '
+         rf'(?:always )?avoided(?= |$)', r'\g<pre>avoid \g<x>'),
+
+    # ---- events said of the place
+    Rule('until the gate is reached',
+         rf'\b(?P<c>{_WHEN}) (?P<x>{_NPS}) (?:is|are|has been|have been|gets|get|was|were) '
+         rf'(?:all |both |each |first |successfully )?(?:visited|reached|seen|observed|entered|encountered|'
+         rf'detected|found|true|spotted)(?= |$)', r'\g<c> you visit \g<x>'),
+    Rule('once the alarm occurs',
+         rf'\b(?P<c>{_WHEN}) (?P<x>{_NPS}) (?:occurs|happens|holds|holds true|is true|becomes true|'
+         rf'has occurred|has occured|has happened|appears|shows up)(?= |$)', r'\g<c> you visit \g<x>'),
+    Rule('after you observe X',
+         r'\byou (?:have |had )?(?:see|saw|seen|observe|observed|encounter|encountered|spot|spotted|notice|'
+         r'noticed|detect|detected)\b', 'you visit'),
+)
+
+_SENTENCE_ENDS = frozenset('.;!?')
+_COMPILED = tuple((re.compile(r.pattern), r.replacement) for r in RULES)
+
+
+def rewrite_idioms(tokens: list[str]) -> list[str]:
+    """Rewrite each sentence's idioms to their canonical phrasing (see :data:`RULES`)."""
+    out: list[str] = []
+    start = 0
+    for i, t in enumerate(tokens + ['.']):
+        if t in _SENTENCE_ENDS:
+            out.extend(_rewrite_sentence(tokens[start:i]))
+            out.extend(tokens[i:i + 1])
+            start = i + 1
+    return out
+
+
+def _rewrite_sentence(words: list[str]) -> list[str]:
+    if not words:
+        return []
+    text = ' '.join(words)
+    for pattern, replacement in _COMPILED:
+        text = pattern.sub(replacement, text)
+    return text.split()

@@ -1,0 +1,72 @@
+"""Offline translator: idioms (counts said at length, passives, events) read as their plain phrasing."""
+from __future__ import annotations
+
+import time
+
+import pytest
+
+from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.language.idioms import rewrite_idioms
+from ltl_instruct.core.language.offline import OfflineTranslator, at_least, at_most, exactly
+from ltl_instruct.core.language.text import tokenize
+from ltl_instruct.core.spec import near, parse_formula
+
+T = OfflineTranslator()
+
+# Sentences written for these tests (not from any data set), with the formula each must be equivalent to.
+COUNTS = [
+    ('The maximum number of times you can visit the pantry is two.', at_most(near('pantry'), 2)),
+    ('You are allowed at most three visits to the garage.', at_most(near('garage'), 3)),
+    ('Visiting the nursery more than once is prohibited.', at_most(near('nursery'), 1)),
+    ('You can check the oven zero times, once or twice.', at_most(near('oven'), 2)),
+    ('Go to the mailbox equal or more than three times.', at_least(near('mailbox'), 3)),
+    ('Make at least two separate visits to the greenhouse.', at_least(near('greenhouse'), 2)),
+    ('Visit the porch exactly twice, no more, no less.', exactly(near('porch'), 2)),
+    ('Never go to the cellar again after you have visited it twice.', at_most(near('cellar'), 2)),
+    ('Once you leave the lab for the third time, you cannot come back to it.', at_most(near('lab'), 3)),
+    ('Go to the shed, then leave it and repeat this two more times.', at_least(near('shed'), 3)),
+    ('You are not allowed to enter the garage more than twice.', at_most(near('garage'), 2)),
+    ('You cannot visit the pond three or more times.', at_most(near('pond'), 2)),
+    ('You must not visit the pond at least three times.', at_most(near('pond'), 2)),
+    ('The minimum number of visits to the barn is three.', at_least(near('barn'), 3)),
+    ('Visiting the attic twice locks it for future visits.', at_most(near('attic'), 2)),
+    ('You need at least two distinct visits to the library.', at_least(near('library'), 2)),
+    ('Check the crib on at most two separate occasions.', at_most(near('crib'), 2)),
+    ('Visit the well at least twice while leaving it in between.', at_least(near('well'), 2)),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', COUNTS, ids=[c[0][:40] for c in COUNTS])
+def test_counts_said_at_length(instruction: str, gold: object) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, gold), f'{instruction!r} -> {got.formula}'
+
+
+PHRASINGS = [
+    ('The back door must be visited.', 'F near[back_door]'),
+    ('The wet floor has to be avoided.', 'G !near[wet_floor]'),
+    ('Make sure the shed and the barn are both visited.', 'F near[shed] & F near[barn]'),
+    ('Do not go into the office until the printer has been visited.', '!near[office] U near[printer]'),
+    ('Stay out of the garden until the gate is reached.', '!near[garden] U near[gate]'),
+    ('You are required to go to the lobby.', 'F near[lobby]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', PHRASINGS, ids=[c[0][:40] for c in PHRASINGS])
+def test_passives_and_frames(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+def test_rewrites_keep_sentences_and_plain_text() -> None:
+    assert rewrite_idioms(tokenize('Go to the den. Then go to the hall!')) == tokenize(
+        'Go to the den. Then go to the hall!')
+    assert rewrite_idioms([]) == []
+    assert rewrite_idioms(tokenize('visit a two or more times')) == ['visit', 'a', 'at', 'least', 'twice']
+
+
+def test_rewrites_stay_fast_on_long_hostile_input() -> None:
+    text = ' '.join(['the red room is'] * 120 + ['visited'])
+    started = time.perf_counter()
+    rewrite_idioms(tokenize(text))
+    assert time.perf_counter() - started < 0.5

@@ -133,3 +133,50 @@ SCOPES = [
 @pytest.mark.parametrize('instruction,gold', SCOPES, ids=[c[0][:30] for c in SCOPES])
 def test_time_words_and_back_references_scope_what_they_say(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+CORRECTIONS = [
+    ('Go to the shower, no sorry, the bathtub.', 'F near[bathtub]'),
+    ('Head to the red armchair... actually, make that the grey one.', 'F near[grey_armchair]'),
+    ('Carry the towel to the bathroom. Hmm, on second thought, carry it to the laundry room.',
+     'F (near[towel] & F (pick[towel] & F (near[laundry_room] & F release[towel, laundry_room])))'),
+    ('Go to the porch, then the shed. Scratch the porch.', 'F near[shed]'),
+    ('Go to the lamp left of the bed, or rather the one right of it.', 'F near[lamp::isrightof(bed)]'),
+    ('Put the forks in the drawer, erm, the spoons I mean.',
+     'F (near[spoons] & F (pick[spoons] & F (near[drawer] & F release[spoons, drawer])))'),
+    ('Go to the garage and avoid the car. Oh, forget it, the car is gone, no need to avoid it.',
+     'F near[garage]'),
+    ('Go to the loft. Change of plan: go to the cellar.', 'F near[cellar]'),
+    ('Visit the pond and the barn. Skip the barn and go to the silo.', 'F near[pond] & F near[silo]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CORRECTIONS, ids=[c[0][:30] for c in CORRECTIONS])
+def test_self_corrections_keep_the_final_intent(instruction: str, gold: str) -> None:
+    notes = _check(instruction, gold)
+    assert notes, 'a correction is always noted'
+
+
+LISTS_AND_NESTING = [
+    ('We have a mop, a bucket and a broom in the closet. Bring the third thing I mentioned to the porch.',
+     'F (near[broom] & F (pick[broom] & F (near[porch] & F release[broom, porch])))'),
+    ('There is a kettle and a toaster. Check the latter three times.',
+     'F (near[toaster] & F (!near[toaster] & F (near[toaster] & F (!near[toaster] & F near[toaster]))))'),
+    ('Rake, hoe, spade. Leave out the first one and bring the others to the shed.',
+     'F (near[hoe] & F (pick[hoe] & F (near[shed] & F release[hoe, shed]))) & '
+     'F (near[spade] & F (pick[spade] & F (near[shed] & F release[spade, shed])))'),
+    ('Go to the vase on the small table, the table that is next to the window.',
+     'F near[vase::isabove(small_table::isnextto(window))]'),
+    ('Either the north exit or the south exit will do, just head to one of them.',
+     'F near[north_exit] | F near[south_exit]'),
+    ('Take the laundry to the utility room, and only go into the utility room once.',
+     'F (near[laundry] & F (pick[laundry] & F (near[utility_room] & F release[laundry, utility_room]))) & '
+     '(!near[utility_room] W (near[utility_room] & (near[utility_room] W G !near[utility_room])))'),
+    ('Visit the gazebo once and only once.',
+     '!near[gazebo] U (near[gazebo] & (near[gazebo] W G !near[gazebo]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', LISTS_AND_NESTING, ids=[c[0][:30] for c in LISTS_AND_NESTING])
+def test_list_positions_appositives_and_counts(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -440,9 +440,16 @@ def _speller() -> Speller:
     return _SPELLER
 
 
-def _is_word(w: str) -> bool:
-    """Whether ``w`` is an English word (an unknown one may be a misspelt place: never left out)."""
-    return _speller().known(w) or w.isdigit()
+def _is_word(w: str, listed: bool = False) -> bool:
+    """Whether ``w`` is an English word (an unknown one may be a misspelt place: never left out).
+
+    With ``listed``, only a listed word counts (not one derived from a listed word, such as
+    "quantumly"): words are left out only on that firmer ground.
+    """
+    sp = _speller()
+    if listed:
+        return w in sp.words or w in sp.lexicon or w.isdigit() or not sp.words
+    return sp.known(w) or w.isdigit()
 
 
 def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str]) -> list[str]:
@@ -787,7 +794,15 @@ class _Reader:
             if not tokens:
                 return scope
         s = ' '.join(tokens)
-        if s.endswith((' is fine', ' is okay', ' are fine', ' is ok')) or s in IGNORED_CLAUSES or \
+        fine = (' is fine', ' is okay', ' are fine', ' is ok', ' will do', ' works', ' is good')
+        if s.endswith(fine) and 'or' in tokens:
+            # "either the left lift or the right lift is fine": a choice of goals
+            nps, joiner, end = self._np_list(tokens, 0)
+            if joiner == 'or' and ' '.join(tokens[end:]) in [f.strip() for f in fine]:
+                self.saw_action = True
+                self.task.chain.append(Step('visit', [np.descriptor for np in nps]))
+                return scope
+        if s.endswith(fine) or s in IGNORED_CLAUSES or \
                 s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                               'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
             return scope
@@ -902,8 +917,10 @@ class _Reader:
             self.notes.append(f'left out "{text}" (asks for nothing)')
             return True
         kept = ('leave', 'drop', 'pass', 'release', 'not', 'exit')   # read elsewhere (deliveries, staying)
-        if tokens[0] in NEGATIVE_VERBS and tokens[0] not in kept and len(tokens) > 1 and tokens[1] in DETS:
-            nps, _, end = self._np_list(tokens, 1, place=False)
+        skip = 2 if tokens[:2] in (['leave', 'out'], ['cross', 'off']) else 1
+        if (tokens[0] in NEGATIVE_VERBS and tokens[0] not in kept or skip == 2) and len(tokens) > skip and \
+                tokens[skip] in DETS:
+            nps, _, end = self._np_list(tokens, skip, place=False)
             if nps and not [t for t in tokens[end:] if t not in PUNCT]:
                 # "skip the hall": nothing to do there (a goal already given is retracted by rewrite)
                 self.notes.append(f'"{text}": no goal there')
@@ -1651,7 +1668,7 @@ class _Reader:
     def _leave_out(self, rest: Sequence[str]) -> bool:
         """Leave out words that ask for nothing (no place, skill verb or constraint word), noted."""
         if not chatter.is_filler(rest, SKILL_VERBS) or not all(
-                _is_word(t) for t in rest if t not in PUNCT) or \
+                _is_word(t, listed=True) for t in rest if t not in PUNCT) or \
                 self.phrases.landmarks and any(
                 self.phrases._landmark(rest, i) is not None for i in range(len(rest))) or self.phrases.parse(
                 [t for t in rest if t not in PUNCT], 0) is not None and rest[0] not in ('is', 'are', 'was'):
@@ -1723,7 +1740,8 @@ class _Reader:
                     self.task.chain.append(Step('visit', [d]))
             elif mode == 'exactly':
                 self.task.constraints.append(exactly(x, n))
-                self.task.chain.append(Step('visit', [d]))
+                if self.task.find_step(d) is None:   # "bring X to the pantry and only enter it once"
+                    self.task.chain.append(Step('visit', [d]))
             else:
                 self.task.constraints.append(at_most(x, n))
         return True, rest[end:]
@@ -1850,6 +1868,12 @@ class _Reader:
             self.notes.append(f'read "{" ".join(tokens[k:verb_end])}" as going to what follows')
             k = verb_end
             self.saw_action = True
+        last = self.task.chain[-1] if self.task.chain else None
+        if tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
+                          ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these']) and \
+                last is not None and last.kind == 'visit' and len(last.targets) > 1:
+            self.saw_action = True   # "just get to one of them": the choice already given
+            return
         nps, joiner, end = self._np_list(tokens, k)
         if not nps and all(t in GOAL_VERBS or t in GOAL_PARTICLES for t in tokens) and self.task.chain:
             self.saw_action = True   # "the pallet jack, go": the place was named before the verb
@@ -1892,6 +1916,8 @@ class _Reader:
             react = _or([_near(d) for d in targets])
             self.task.constraints.append(Always(Implies(_near(scope.target.descriptor), Eventually(react))))
             return
+        if self.only and rest[:1] == ['once']:
+            rest = ['exactly'] + rest   # "only enter the pantry once"
         counted, rest = self._read_count(rest, targets)
         if counted:
             if len(rest) > 1 and rest[0] == 'and' and rest[1] in DETS:

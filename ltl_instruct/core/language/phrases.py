@@ -74,7 +74,7 @@ while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside
 unless except whenever since because though although otherwise something anything everything nothing
-someone anyone
+someone anyone anymore forever
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.
@@ -190,6 +190,25 @@ def name_of(words: Sequence[str]) -> str:
     if name and not name[0].isalpha():
         name = 'n_' + name
     return name
+
+
+def _attach(d: Descriptor, appositive: Descriptor) -> Optional[Descriptor]:
+    """``d`` with the relations of ``appositive`` added to the noun inside it that it names again.
+
+    The noun matched is the one named last (deepest first), with the same head word and
+    a name that the appositive's name ends ("tall_cabinet" ... "the cabinet"), and
+    that has no relations of its own; None if there is none.
+    """
+    for k, rel in reversed(list(enumerate(d.relations))):
+        for a, arg in reversed(list(enumerate(rel.args))):
+            inner = _attach(arg, appositive)
+            if inner is not None:
+                args = rel.args[:a] + (inner,) + rel.args[a + 1:]
+                rels = d.relations[:k] + (Relation(rel.comparator, args),) + d.relations[k + 1:]
+                return Descriptor(d.name, rels)
+    if d.relations or not (d.name == appositive.name or d.name.endswith('_' + appositive.name)):
+        return None
+    return Descriptor(d.name, appositive.relations)
 
 
 class PhraseParser:
@@ -353,6 +372,13 @@ class PhraseParser:
             nxt = self.parse(tokens, j, destination_stops)
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
+            if sep == 'and' and tokens[i] == ',' and nxt.descriptor.relations and not nxt.pronoun:
+                # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
+                merged = _attach(phrases[-1].descriptor, nxt.descriptor)
+                if merged is not None:
+                    phrases[-1] = NounPhrase(merged, phrases[-1].start, nxt.end, phrases[-1].head)
+                    i = nxt.end
+                    continue
             if j < len(tokens) and tokens[j] in NAME_VERBS:
                 break
             phrases.append(nxt)

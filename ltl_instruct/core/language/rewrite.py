@@ -17,15 +17,18 @@ from __future__ import annotations
 from typing import Optional
 
 from ltl_instruct.core.errors import TranslationError
-from ltl_instruct.core.language.phrases import DETERMINERS, NounPhrase, PhraseParser, singular
+from ltl_instruct.core.language import chatter
+from ltl_instruct.core.language.phrases import (
+    DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, NounPhrase, PhraseParser, is_name_word, singular,
+)
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
                           'notice'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-'})
-_REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'reverse', 'before', 'after',
-                                    'former', 'latter', 'them', 'all'}
+_REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
+                                    'after', 'former', 'latter', 'them', 'all'}
 
 
 def _np_text(tokens: list[str], np: NounPhrase) -> list[str]:
@@ -39,6 +42,10 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
     """Find the first enumeration of three (or two, with "and") noun phrases, and its category."""
     parser = PhraseParser()
     starts = [0] + [i + 1 for i, t in enumerate(tokens) if t in _LIST_INTROS]
+    # "I left a notebook, a pen and a ruler...": after a pronoun subject and its verb
+    starts += [i + 2 for i, t in enumerate(tokens) if t in ('i', 'we', 'they') and (
+        i == 0 or tokens[i - 1] in PUNCT)]
+    starts.sort()
     for s in starts:
         if s >= len(tokens):
             continue
@@ -53,6 +60,30 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             category = singular(tokens[s - 2])
         return s, end, nps, category
     return None
+
+
+_MENTIONED: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('i', 'mentioned'), ('i', 'just', 'mentioned'), ('i', 'said'), ('i', 'listed'), ('i', 'named'),
+    ('i', 'described'), ('i', 'told', 'you', 'about'), ('you', 'saw'), ('we', 'talked', 'about'),
+    ('on', 'the', 'list'), ('in', 'the', 'list'), ('from', 'the', 'list'), ('from', 'before'),
+    ('i', 'listed', 'earlier'), ('i', 'mentioned', 'earlier'), ('i', 'mentioned', 'before'),
+), key=lambda t: -len(t)))
+
+
+def _drop_mentions(tail: list[str]) -> list[str]:
+    """Remove "(that) I mentioned" after a position word: "the second item I mentioned"."""
+    out: list[str] = []
+    i = 0
+    while i < len(tail):
+        out.append(tail[i])
+        i += 1
+        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle') or out[-1] in ORDINALS:
+            j = i + (1 if i < len(tail) and tail[i] in ('that', 'which') else 0)
+            for m in _MENTIONED:
+                if tuple(tail[j:j + len(m)]) == m:
+                    i = j + len(m)
+                    break
+    return out
 
 
 def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
@@ -77,6 +108,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             words = [category if w == 'one' else w for w in words]
         items.append(words)
     used: set[int] = set()
+    tail = _drop_mentions(tail)
 
     def joined(idx: list[int], sep: str = 'and') -> list[str]:
         out: list[str] = []
@@ -96,7 +128,9 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
         if t == 'the' and nxt:
             w = tail[i + 2] if i + 2 < len(tail) else ''
             one = 1 if w in ('one', 'item', 'thing') else 0
-            ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or')
+            # "the second", "the latter twice": no noun follows the position word
+            ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
+                not is_name_word(tail, i + 2, False)
             if nxt in ORDINALS and ends:
                 idx = ORDINALS[nxt] - 1
                 if idx >= n:
@@ -114,7 +148,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += joined(list(range(NUMBER_WORDS[w])))
                 i += 3
                 continue
-            if nxt in ('last', 'latter') and (not w or w in PUNCT or one or w in ('and', 'then', 'to')):
+            if nxt in ('last', 'latter') and ends:
                 out += joined([n - 1])
                 i += 2 + one
                 continue
@@ -130,7 +164,10 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += joined([n // 2])
                 i += 2 + one
                 continue
-            if nxt == 'other' or (nxt == 'rest' and not w):
+            if nxt in ('other', 'others', 'remaining') or (
+                    nxt == 'rest' and (not w or w in PUNCT or w == 'of')):
+                if nxt == 'rest' and tail[i + 2:i + 4] == ['of', 'them']:
+                    i += 2
                 rest_idx = [k for k in range(n) if k not in used]
                 out += joined(rest_idx)
                 i += 2 + (1 if w in ('two', 'three', 'ones', 'one') else 0)
@@ -181,8 +218,20 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('no', 'wait'), ('oh', 'wait'), ('wait',), ('sorry',), ('er',), ('um',), ('uh',), ('i', 'mean'),
     ('i', 'meant'), ('actually',), ('scratch', 'that'), ('forget',), ('ignore',), ('never', 'mind'),
     ('hmm',), ('make', 'that'), ('correction',), ('oops',), ('rather',), ('no',),
+    ('no', 'sorry'), ('sorry', 'no'), ('no', 'no'), ('erm',), ('uhh',), ('umm',), ('ah',), ('my', 'bad'),
+    ('my', 'mistake'), ('or', 'rather'), ('or', 'actually'), ('or', 'better'), ('on', 'second', 'thought'),
+    ('on', 'second', 'thoughts'), ('come', 'to', 'think', 'of', 'it'), ('change', 'of', 'plan'),
+    ('change', 'of', 'plans'), ('let', 'me', 'rephrase'), ('wait', 'no'), ('hold', 'on'), ('scratch',),
+    ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'),
 ), key=lambda m: -len(m)))
-_CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip'})
+_CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
+                     'leave'})
+# Markers that restate a whole clause ("on second thought, bring it to the couch").
+_RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
+                      'or', 'er', 'erm', 'um', 'uh', 'ah'})
+# Words that start a clause of their own (the verbs of goals and deliveries).
+_VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
+                       'deliver', 'carry', 'return', 'avoid'}
 
 
 def _marker_at(tokens: list[str], i: int) -> int:
@@ -196,6 +245,11 @@ def _marker_at(tokens: list[str], i: int) -> int:
             if m == ('ignore',) and i == 0:
                 return 0
             if m == ('forget',) and i == 0:
+                return 0
+            if m[0] in ('skip', 'omit', 'scratch', 'cross', 'leave') and m != ('scratch', 'that') and (
+                    i == 0 or tokens[i - 1] not in '.;!?'):
+                return 0   # only a sentence of its own cancels ("Scratch the pantry.")
+            if m == ('leave', 'out') and i + 2 < len(tokens) and tokens[i + 2] == 'of':
                 return 0
             return len(m)
     return 0
@@ -227,13 +281,26 @@ def _strip_corr(seg: list[str]) -> list[str]:
         if seg[0] == 'make' and not (len(seg) > 1 and seg[1] == 'that'):
             break
         seg = seg[1:]
-    while seg and seg[-1] in (',', 'instead', 'please', 'then'):
-        seg = seg[:-1]
+    while seg and seg[-1] in (',', 'instead', 'please', 'then', 'rather') or seg[-2:] in (
+            ['i', 'mean'], ['i', 'meant']):
+        seg = seg[:-2] if seg[-1] in ('mean', 'meant') else seg[:-1]
     return seg
 
 
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
+    if 'it' in new and 'one' in new:
+        # "the chair behind the desk, or rather the one in front of it": it is the desk
+        spans = _np_spans(prev)
+        if spans and spans[-1].descriptor.relations:
+            ref = PhraseParser().parse(prev, spans[-1].start)
+            rel_at = next((k for k in range(spans[-1].start + 1, spans[-1].end) if prev[k] in DETERMINERS),
+                          -1)
+            if ref is not None and rel_at > 0:
+                inner = PhraseParser().parse(prev, rel_at)
+                if inner is not None:
+                    k = new.index('it')
+                    new = new[:k] + prev[rel_at:inner.end] + new[k + 1:]
     parser = PhraseParser()
     np = parser.parse(new, 0)
     if np is None or np.end != len(new):
@@ -241,7 +308,12 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     spans = _np_spans(prev)
     if not spans:
         return None
-    target = next((sp for sp in reversed(spans) if sp.head == np.head), spans[-1])
+    target = next((sp for sp in reversed(spans) if sp.head == np.head), None)
+    if target is None:
+        # no phrase with the same head: one of the same number ("the glasses ... the cups I mean")
+        plural = singular(np.head) != np.head
+        same = [sp for sp in spans if (singular(sp.head) != sp.head) == plural]
+        target = same[-1] if len(same) == 1 and np.pronoun != 'one' else spans[-1]
     new_words = new
     if np.pronoun == 'one' or 'one' in new[:np.end]:
         old = prev[target.start:target.end]
@@ -258,7 +330,11 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
                 break
             name.append(w)
         adjectives = k > 0 and any(w not in DETERMINERS for w in new[:k])
-        new_words = new[:k] + (name[-1:] if adjectives else name) + new[k + 1:]
+        if adjectives:
+            # "the blue recycling bin ... make that the green one": the new adjective replaces the old
+            while len(name) > 1 and name[0] in PLACEHOLDER_ADJECTIVES:
+                name = name[1:]
+        new_words = new[:k] + name + new[k + 1:]
     start, end = target.start, target.end
     # an either-or group is corrected as a whole ("the sofa or the armchair ... just the sofa")
     for sp in spans:
@@ -323,9 +399,96 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+_RETRACT: tuple[tuple[str, ...], ...] = (
+    ('do', 'not', 'need', 'to', 'avoid'), ('do', 'not', 'have', 'to', 'avoid'), ('no', 'need', 'to', 'avoid'),
+    ('need', 'not', 'avoid'), ('do', 'not', 'bother', 'avoiding'),
+    ('no', 'need', 'to', 'stay', 'away', 'from'),
+    ('do', 'not', 'need', 'to', 'stay', 'away', 'from'), ('can', 'go', 'near'), ('it', 'is', 'safe'),
+    ('do', 'not', 'worry', 'about'),
+)
+
+
+def _retract_avoidance(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """'..., you don't need to avoid it (after all)': the avoidance of it is dropped from ``prev``."""
+    at = next((k for k in range(len(seg)) for r in _RETRACT if tuple(seg[k:k + len(r)]) == r), -1)
+    if at < 0:
+        return None
+    r = next(r for r in _RETRACT if tuple(seg[at:at + len(r)]) == r)
+    named = PhraseParser().parse(seg, at + len(r))
+    head = named.head if named is not None and not named.pronoun else ''
+    avoid_at = [p for p in range(len(prev)) if prev[p] in _AVOID_WORDS]
+    for p in reversed(avoid_at):
+        spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
+        if spans:
+            notes.append('the avoidance was retracted')
+            kept = [c for c in _split_commas(seg[:at]) + _split_commas(seg[at + len(r):])
+                    if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS]
+            return _remove_clause(prev, p) + [t for c in kept for t in [','] + c]
+    return None
+
+
+def _split_commas(seg: list[str]) -> list[list[str]]:
+    out: list[list[str]] = [[]]
+    for t in seg:
+        if t == ',':
+            out.append([])
+        else:
+            out[-1].append(t)
+    return [c for c in out if c]
+
+
+def _np_end(words: list[str]) -> int:
+    np = PhraseParser().parse(words, 0) if words and words[0] in DETERMINERS else None
+    return np.end if np is not None else 0
+
+
+def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Restate a clause: 'bring the blanket to the bedroom. On second thought, bring it to the couch'."""
+    if not seg or seg[0] not in _VERBS:
+        return None
+    end = len(prev)
+    while end > 0 and prev[end - 1] in PUNCT:
+        end -= 1
+    b = end
+    while b > 0 and not (prev[b - 1] in '.;!?' or prev[b - 1] in (',', 'then', 'and') and prev[b] in _VERBS):
+        b -= 1
+    if b >= end or prev[b] != seg[0]:
+        return None
+    old = prev[b:end]
+    new = list(seg)
+    if any(t in ('it', 'them') for t in new):
+        k = 1
+        while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back'):
+            k += 1
+        obj = PhraseParser().parse(old, k, destination_stops=True)
+        if obj is not None and not obj.pronoun:
+            at = next(j for j, t in enumerate(new) if t in ('it', 'them'))
+            new = new[:at] + old[k:obj.end] + new[at + 1:]
+    notes.append(f'"{" ".join(old).strip(" .")}" replaced by "{" ".join(new)}"')
+    while prev[:b] and prev[b - 1] in (',', 'then', 'and'):
+        b -= 1
+    head = prev[:b]
+    return head + ([','] if head and head[-1] not in PUNCT else []) + new + prev[end:]
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
-    while seg and seg[0] in (',', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh'):
-        seg = seg[1:]
+    stripped = True
+    while stripped:   # "hmm, on second thought, ...": markers in a row
+        stripped = False
+        while seg and seg[0] in (',', ':', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh', 'erm',
+                                 'ah'):
+            seg, stripped = seg[1:], True
+        for m in _MARKERS:
+            if len(m) > 1 and tuple(seg[:len(m)]) == m and m[0] not in _CANCEL and m != ('make', 'that'):
+                marker, seg, stripped = m[0], seg[len(m):], True
+                break
+    retracted = _retract_avoidance(prev, seg, notes)
+    if retracted is not None:
+        return retracted
+    if marker in _RESTATE:
+        restated = _restate(prev, seg, notes)
+        if restated is not None:
+            return restated
     if seg and seg[0] in _CANCEL and marker not in _CANCEL and marker != 'never':
         marker, seg = seg[0], seg[1:]
     s = ' '.join(seg)
@@ -338,6 +501,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if seg and seg[0] == 'that' or marker == 'scratch':
             seg = seg[1:] if seg and seg[0] == 'that' else seg
         k = seg.index(',') if ',' in seg else len(seg)
+        k = next((j for j in range(k) if seg[j] in ('and', 'then') and j + 1 < len(seg) and seg[j + 1] in
+                  _VERBS | {'do'}), k)
         target, rest = seg[:k], seg[k + 1:]
         tgt = ' '.join(target)
         if any(w in tgt for w in ('avoid', 'avoiding', 'avoidance')):
@@ -369,6 +534,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return None
         hit = next((sp for sp in reversed(spans)
                     if sp.descriptor == tnp.descriptor or sp.head == tnp.head), None)
+        if hit is None and marker in ('skip', 'omit', 'scratch', 'cross', 'leave'):
+            notes.append(f'"{marker} {tgt}": no goal there')   # nothing given to cancel
+            return prev + ([','] if prev and prev[-1] not in PUNCT and rest else []) + rest
         if hit is None:
             return None
         if new:

@@ -180,3 +180,40 @@ LISTS_AND_NESTING = [
 @pytest.mark.parametrize('instruction,gold', LISTS_AND_NESTING, ids=[c[0][:30] for c in LISTS_AND_NESTING])
 def test_list_positions_appositives_and_counts(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+MORE = [
+    ('Scoot to the bookshelf, then the piano.', 'F (near[bookshelf] & F near[piano])'),
+    ('Nip over to the corner shop.', 'F near[corner_shop]'),
+    ('Park yourself next to the charging dock.', 'F near[charging_dock]'),
+    ('Rover: head down to the creek, then up to the ridge.', 'F (near[creek] & F near[ridge])'),
+    ('Get rid of the broken lamp.',
+     'F (near[broken_lamp] & F (pick[broken_lamp] & F (near[trash_can] & '
+     'F release[broken_lamp, trash_can])))'),
+    ("Hey there! Hope you're well. Please go to the studio.", 'F near[studio]'),
+    ('Go to the pool. Thanks a lot!', 'F near[pool]'),
+    ('No rush, but go to the attic at some point.', 'F near[attic]'),
+    ('Be careful, the floor is wet. Go to the sink.', 'F near[sink]'),
+    ('Whenever you are ready, head to the conference room.', 'F near[conference_room]'),
+    ('Go to the shed, and please be quick about it.', 'F near[shed]'),
+    ('Go to the studio real fast.', 'F near[studio]'),
+    ('Go to the mall and from then on stay away from the parking lot.',
+     'F (near[mall] & G !near[parking_lot])'),
+    ('Go to the kitchen and avoid the dog. Never mind the dog, it is outside.', 'F near[kitchen]'),
+    ('Put the book on the shelf, uh, the top shelf I mean.',
+     'F (near[book] & F (pick[book] & F (near[top_shelf] & F release[book, top_shelf])))'),
+    ('Check the window exactly once and only once.',
+     '!near[window] U (near[window] & (near[window] W G !near[window]))'),
+    ('Go to the mug next to the laptop, the laptop on the desk.',
+     'F near[mug::isnextto(laptop::isabove(desk))]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', MORE, ids=[c[0][:30] for c in MORE])
+def test_more_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_a_statement_inside_a_descriptor_is_not_split_off() -> None:
+    _check("Go to the bag between the bed and the desk that's next to the window.",
+           'F near[bag::isbetween(bed, desk::isnextto(window))]')

@@ -47,10 +47,22 @@ is are was were keeps keep has had seems seem looks look sits sit stands lies li
 belongs goes went broke fell spilled leaks leaked smells tends happens
 '''.split())
 
+# After "it is": words that make the clause a permission or a demand.
+PERMISSIVE = frozenset({'okay', 'ok', 'fine', 'alright', 'allowed', 'important', 'necessary', 'essential',
+                        'vital', 'crucial', 'required', 'best', 'better', 'safe', 'forbidden', 'not',
+                        'mandatory'})
+
 INTERJECTIONS = frozenset('''
 hi hello hey hiya howdy thanks thank cheers great cool awesome perfect ok okay alright right sure
-please good morning afternoon evening ah oh ahh hmm um uh er erm yo dear buddy pal friend
+please good morning afternoon evening ah oh ahh hmm um uh er erm yo dear buddy pal friend there lot
+much appreciated wonderful brilliant
 '''.split())
+# Clause openings that wish or greet and ask for nothing ("hope you're well", "have a good one").
+WISHES: tuple[tuple[str, ...], ...] = (
+    ('hope',), ('i', 'hope'), ('hoping',), ('have', 'a', 'good'), ('have', 'a', 'nice'), ('good', 'luck'),
+    ('be', 'careful'), ('be', 'quick'), ('be', 'gentle'), ('be', 'quiet'), ('be', 'safe'), ('take', 'care'),
+    ('thanks', 'for'), ('thank', 'you', 'for'), ('sorry', 'to', 'bother'), ('sorry', 'for'),
+)
 
 # Courtesy and time-of-day phrases that end a clause and ask for nothing.
 COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -62,7 +74,12 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('if', 'you', 'do', 'not', 'mind'),
     ('when', 'you', 'are', 'free'), ('at', 'some', 'point', 'today'), ('later',), ('soon',),
     ('for', 'now'), ('will', 'you'), ('okay',), ('ok',), ('cheers',), ('if', 'you', 'like'),
-    ('if', 'you', 'want'), ('if', 'you', 'wish'), ('if', 'you', 'feel', 'like', 'it'),
+    ('if', 'you', 'want'), ('if', 'you', 'wish'), ('if', 'you', 'feel', 'like', 'it'), ('real', 'fast'),
+    ('super', 'quick'), ('super', 'fast'), ('fast',), ('no', 'rush'), ('no', 'hurry'), ('no', 'worries'),
+    ('no', 'matter', 'what'), ('thanks', 'a', 'lot'), ('thanks', 'so', 'much'),
+    ('thank', 'you', 'so', 'much'),
+    ('many', 'thanks'), ('when', 'you', 'are', 'ready'), ('whenever', 'you', 'are', 'ready'),
+    ('in', 'a', 'minute'), ('straight', 'away'),
 ), key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins before a comma that announce what follows and ask for nothing themselves.
@@ -71,6 +88,11 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
     ('listen',), ('look',), ('hey', 'there'), ('quick', 'one'), ('quick', 'favour'), ('quick', 'favor'),
     ('one', 'more', 'thing'), ('oh', 'and'), ('also', 'fyi'), ('for', 'the', 'record'), ('well',),
+    ('no', 'rush'), ('no', 'hurry'), ('no', 'worries'), ('no', 'pressure'), ('no', 'problem'),
+    ('whenever', 'you', 'are', 'ready'), ('when', 'you', 'are', 'ready'), ('once', 'you', 'are', 'ready'),
+    ('if', 'you', 'are', 'ready'), ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'),
+    ('if', 'you', 'can'), ('if', 'possible'), ('if', 'you', 'do', 'not', 'mind'), ('in', 'a', 'minute'),
+    ('right',), ('alright', 'then'), ('okay', 'then'), ('ok', 'then'), ('now', 'then'),
 ), key=lambda t: -len(t)))
 
 PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',
@@ -102,13 +124,15 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         return False
     if tokens[0] in STATEMENT_SUBJECTS:
         if len(tokens) < 2 or tokens[1] in REQUEST_WORDS or (tokens[0] == 'it' and tokens[1] in (
-                'is', 'was')) or (tokens[0] in ('this', 'that') and tokens[1] not in FINITE_VERBS):
-            return False
+                'is', 'was') and (len(tokens) < 3 or tokens[2] in PERMISSIVE or 'to' in tokens)) or (
+                tokens[0] in ('this', 'that') and tokens[1] not in FINITE_VERBS):
+            return False   # "it is fine to go ...", "it is important to ...": not a description
         # "we have to go...", "i have got to...": obligations are requests
         return not ('to' in tokens[1:4] and tokens[1] in ('have', 'has', 'got', 'am', 'are'))
     if np_end and tokens[0] in DETERMINERS:
         # the noun phrase may have swallowed the verb ("the cat keeps knocking...")
-        f = next((k for k in range(2, np_end + 1) if k < len(tokens) and tokens[k] in FINITE_VERBS), -1)
+        f = next((k for k in range(2, np_end + 1) if k < len(tokens) and tokens[k] in FINITE_VERBS and
+                  tokens[k - 1] not in ("that", "which", "who")), -1)   # not "the desk that is by..."
         return f > 0 and tokens[f + 1:f + 2] != ['to']
     return False
 

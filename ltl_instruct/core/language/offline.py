@@ -734,6 +734,15 @@ class _Reader:
                     boundary, skip = 'and', 1   # "I left it by the door, can you go there"
                 elif t in (',', 'and') and self._same_for_lead(tokens, j):
                     boundary, skip = 'and', j - i
+                elif t in (',', 'so') and self._starts_statement(tokens, j):
+                    boundary, skip = 'and', j - i   # "be careful, the floor is wet"
+                elif i < 4 and t in (',', ':') and all(is_name_word(tokens, m, m > 0) for m in range(i)) and \
+                        j < n and tokens[j] in STRONG_VERBS | GOAL_VERBS_SEED | {'fly', 'land', 'hover'} and \
+                        self._unknown_verb(tokens, 0) is None and any(tokens[m] in DETS for m in range(j, n)):
+                    # "Rover: head to the creek": the robot addressed by name, not a place
+                    self.notes.append(f'took "{" ".join(tokens[:i])}" as the name of the robot addressed')
+                    clauses[-1].tokens.clear()
+                    boundary, skip = 'and', 1
                 elif t == 'or' and j < n and tokens[j] in GOAL_VERBS | DELIVER_VERBS:
                     boundary, skip = 'or', j - i
                 elif j < n and (tokens[j] in CLAUSE_STARTERS or t in (',', 'and') and tokens[j - 1] in (
@@ -906,6 +915,14 @@ class _Reader:
         self._read_goal(tokens, clause, scope)
         return scope
 
+    def _starts_statement(self, tokens: list[str], j: int) -> bool:
+        """Whether a statement about the scene starts at ``tokens[j]`` ("..., the floor is wet")."""
+        if j >= len(tokens) or tokens[j] not in DETS or self.phrases.landmarks:
+            return False
+        np = self.phrases.parse(tokens, j)
+        end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
+        return np is not None and chatter.is_statement(tokens[j:end], np.end - j)
+
     def _read_chatter(self, tokens: list[str], raw: list[str]) -> bool:
         """Leave out a clause that asks for nothing: a statement about the scene, filler, a skip.
 
@@ -913,8 +930,13 @@ class _Reader:
         hall, so don't go near it"). Every part left out is noted.
         """
         text = ' '.join(tokens)
-        if all(t in chatter.INTERJECTIONS or t in PUNCT for t in tokens):
-            self.notes.append(f'left out "{text}" (asks for nothing)')
+        raw = [t for t in raw if t not in PUNCT]
+        while raw and raw[0] in ('and', 'but', 'so', 'because', 'since', 'as') + tuple(chatter.INTERJECTIONS):
+            raw = raw[1:]
+        if all(t in chatter.INTERJECTIONS or t in PUNCT for t in tokens) or any(
+                _starts(raw, 0, w) or _starts(tokens, 0, w) for w in chatter.WISHES) and \
+                not chatter.has_constraint_word(tokens):
+            self.notes.append(f'left out "{" ".join(raw) or text}" (asks for nothing)')
             return True
         kept = ('leave', 'drop', 'pass', 'release', 'not', 'exit')   # read elsewhere (deliveries, staying)
         skip = 2 if tokens[:2] in (['leave', 'out'], ['cross', 'off']) else 1
@@ -925,9 +947,6 @@ class _Reader:
                 # "skip the hall": nothing to do there (a goal already given is retracted by rewrite)
                 self.notes.append(f'"{text}": no goal there')
                 return True
-        raw = [t for t in raw if t not in PUNCT]
-        while raw and raw[0] in ('and', 'but', 'so', 'because', 'since', 'as') + tuple(chatter.INTERJECTIONS):
-            raw = raw[1:]
         if raw[:2] == ['i', 'mean'] and chatter.is_filler(raw[2:], SKILL_VERBS):
             self.notes.append(f'left out "{" ".join(raw)}" (emphasis)')   # "and I mean anywhere near it"
             return True
@@ -1780,7 +1799,8 @@ class _Reader:
             if rest[0] == 'away' and verb in ('throw', 'toss', 'put'):
                 implicit_dest = TRASH
             rest = rest[1:]
-        if verb in PICK_VERBS and (not rest or rest[0] not in ('to', 'into', 'in', 'on', 'onto', 'at')):
+        if verb in PICK_VERBS and implicit_dest is None and (
+                not rest or rest[0] not in ('to', 'into', 'in', 'on', 'onto', 'at')):
             # a plain pick; a following "and bring it to X" turns it into a delivery.
             for o in objs:
                 self.task.chain.append(Step('pick', [o.descriptor]))
@@ -1957,18 +1977,20 @@ class _Reader:
         if self.phrases.landmarks and self.phrases._landmark(tokens, k) is not None:
             return None
         if w in DETS or w in NEGATIVE_VERBS or w in STOPWORDS or w in ORDINALS or w in NUMBER_WORDS or \
-                not w.isalpha() or w in chatter.CONSTRAINT_WORDS or w in FILLERS or not _is_word(w):
+                not w.isalpha() or w in chatter.CONSTRAINT_WORDS or w in FILLERS or \
+                w in chatter.INTERJECTIONS or w in DELIVER_VERBS or w in PICK_VERBS:
             return None
         j = k + 1
-        while j < len(tokens) and (tokens[j] in GOAL_PARTICLES or tokens[j] in MOTION_PREPS) and \
-                tokens[j] not in ('there', 'here', 'me', 'from'):
+        while j < len(tokens) and (tokens[j] in GOAL_PARTICLES or tokens[j] in MOTION_PREPS or tokens[j] in (
+                'yourself', 'itself', 'next')) and tokens[j] not in ('there', 'here', 'me', 'from'):
             j += 1
         if j == k + 1 and j + 1 < len(tokens) and tokens[j] in ('it', 'them') and tokens[j + 1] in (
                 'on', 'onto', 'in', 'into', 'inside'):
             return j   # "hang it on the hook"
         if j < len(tokens) and (tokens[j] in DETS and tokens[j] not in ('any', 'each', 'some') or (
-                self.phrases.landmarks and self.phrases._landmark(tokens, j) is not None)):
-            return j
+                self.phrases.landmarks and self.phrases._landmark(tokens, j) is not None)) and (
+                _is_word(w) or j > k + 1 and tokens[j - 1] in ('to', 'into', 'onto', 'towards', 'toward')):
+            return j   # a word that is no English word must at least be followed by "... to the"
         return None
 
     def _read_unknown_placement(self, tokens: list[str], j: int, clause: _Clause) -> bool:

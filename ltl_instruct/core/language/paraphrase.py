@@ -31,7 +31,10 @@ _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |
 _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
     # "go to a . when you are done there , head to b" -> "go to a . then head to b"
     (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
-    (r' once and only once ', ' exactly once '),
+    (r' (?:exactly )?once and only once ', ' exactly once '),
+    (r' (?:from then on|from that point on|from there on|thereafter|from that moment on|after this) ',
+     ' after that '),
+    (r' from now on ', ' '),
     (r' (?:one time|1 time) (?:and one time )?only ', ' exactly once '),
     (r' once only ', ' exactly once '),
     (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
@@ -61,7 +64,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' check', ' whether', ' if ', ' away', ' clear', ' off', ' out',
                                    ' goal', ' destination', ' target', ' aim', ' objective', ' end',
                                    ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
-                                   ' run', ' loop', ' flyover', ' circuit')):
+                                   ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter')):
         return tokens
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)

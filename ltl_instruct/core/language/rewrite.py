@@ -310,6 +310,15 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
         return None
     target = next((sp for sp in reversed(spans) if sp.head == np.head), None)
     if target is None:
+        # a noun inside a phrase: "put the book on the shelf, uh, the top shelf I mean"
+        inner = PhraseParser()
+        for sp in reversed(spans):
+            for p in range(sp.end - 1, sp.start, -1):
+                if prev[p] in DETERMINERS:
+                    sub = inner.parse(prev, p)
+                    if sub is not None and sub.head == np.head and not sub.pronoun:
+                        return prev[:p] + new + prev[sub.end:]
+    if target is None:
         # no phrase with the same head: one of the same number ("the glasses ... the cups I mean")
         plural = singular(np.head) != np.head
         same = [sp for sp in spans if (singular(sp.head) != sp.head) == plural]
@@ -539,6 +548,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return prev + ([','] if prev and prev[-1] not in PUNCT and rest else []) + rest
         if hit is None:
             return None
+        if new and chatter.is_statement(new, _np_end(new)):
+            new = []   # "never mind the dog, it is outside": a reason, not a replacement
         if new:
             notes.append(f'"{tgt}" was replaced')
             return prev[:hit.start] + new + prev[hit.end:]

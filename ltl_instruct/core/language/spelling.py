@@ -34,10 +34,11 @@ _SUFFIXES = ('s', 'es', 'ies', 'ier', 'iers', 'ied', 'er', 'ers', 'ing', 'ed', '
 _PREFIXES = ('re', 'un', 'dis', 'pre', 'mini', 'micro', 'over', 'under', 'out', 'up', 'down', 'back',
              'fore', 'mid', 'sub', 'super', 'non', 'multi', 'in', 'side', 'cross', 'half')
 # Preference of slips, likeliest first (a lower rank wins before frequency is looked at).
-_RANK = {'double': 0, 'swap': 0, 'vowel': 1, 'missing': 2, 'key': 3}
+_RANK = {'double': 0, 'swap': 0, 'vowel': 1, 'missing': 2, 'extra': 2, 'key': 3}
 # Slips allowed by word length: a short word is one slip from too many others.
 # A neighbouring key is never tried: it turns too many real words into others ("copier").
-_MIN_LENGTH = {'double': 4, 'swap': 5, 'vowel': 5, 'missing': 5, 'key': 99}
+# Nor a stray letter removed: "steeple" would become "steele" (the vocabulary lacks the word).
+_MIN_LENGTH = {'double': 4, 'swap': 5, 'vowel': 5, 'missing': 5, 'extra': 99, 'key': 99}
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
 # Household, office and outdoor words a robot is sent to that the vocabulary lacks
 # (it was built from encyclopaedia and book text); they are words, not slips.
@@ -167,9 +168,8 @@ def _slips(word: str) -> Iterable[tuple[str, str]]:
         # the typist swapped two neighbouring letters
         if len(b) > 1 and b[0] != b[1]:
             yield a + b[1] + b[0] + b[2:], 'swap'
-        # a letter typed twice ("linnen"), or a stray letter
-        if b[0] == word[i - 1]:
-            yield a + b[1:], 'double'
+        # a letter typed twice ("linnen"), or a stray letter ("garadge")
+        yield a + b[1:], 'double' if b[0] == word[i - 1] else 'extra'
         # a letter dropped ("securty"): put one back
         for c in 'abcdefghijklmnopqrstuvwxyz':
             yield a + c + b, 'missing'

@@ -217,3 +217,9 @@ def test_more_unseen_phrasings(instruction: str, gold: str) -> None:
 def test_a_statement_inside_a_descriptor_is_not_split_off() -> None:
     _check("Go to the bag between the bed and the desk that's next to the window.",
            'F near[bag::isbetween(bed, desk::isnextto(window))]')
+
+
+def test_the_person_sees_how_the_words_were_read() -> None:
+    from ltl_instruct.core.language.verification import verification_for
+    text = verification_for(T.translate('Hi! Go to the patnry for me.')).text()
+    assert 'Note: read "patnry" as "pantry"' in text and 'Note: left out "for me"' in text

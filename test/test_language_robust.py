@@ -223,3 +223,24 @@ def test_the_person_sees_how_the_words_were_read() -> None:
     from ltl_instruct.core.language.verification import verification_for
     text = verification_for(T.translate('Hi! Go to the patnry for me.')).text()
     assert 'Note: read "patnry" as "pantry"' in text and 'Note: left out "for me"' in text
+
+
+ROUND_TWO = [
+    ('Can you get yourself over to the whiteboard?', 'F near[whiteboard]'),
+    ('You may only enter the vault after visiting the security office.',
+     'F near[vault] & (!near[vault] U near[security_office])'),
+    ('Go to the gym, staying well clear of the pool the whole time.', 'F near[gym] & G !near[pool]'),
+    ('Under no circumstances go near the server rack. Go to the desk.',
+     'F near[desk] & G !near[server_rack]'),
+    ('There are two doors, a red one and a blue one. Go through the blue one.', 'F near[blue_door]'),
+    ('I have three mugs: a tall one, a short one and a chipped one. Bring the short one to the sink.',
+     'F (near[short_mug] & F (pick[short_mug] & F (near[sink] & F release[short_mug, sink])))'),
+    ('You will find a vase, a clock and a statue on the shelf. Go to the one in the middle.',
+     'F near[clock]'),
+    ('Head to the garage; oops, I meant the shed.', 'F near[shed]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_TWO, ids=[c[0][:30] for c in ROUND_TWO])
+def test_second_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -56,6 +56,7 @@ AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('anywhere', 'but'), ('anywhere', 'except'), ('go', 'anywhere', 'other', 'than'),
     ('while', 'staying', 'away', 'from'),
     ('staying', 'away', 'from'), ('keeping', 'away', 'from'), ('you', 'cannot'), ('you', 'can', 'not'),
+    ('staying', 'clear', 'of'), ('keeping', 'clear', 'of'), ('steering', 'clear', 'of'),
     ('you', 'must', 'not'), ('you', 'should', 'not'), ('must', 'not'), ('cannot',), ('should', 'not'),
 ), key=lambda t: -len(t)))
 
@@ -431,10 +432,13 @@ def _speller() -> Speller:
     if _SPELLER is None:
         from ltl_instruct.core.language import phrases, text
         lexicon: set[str] = set()
-        for module in (globals(), vars(phrases), vars(text), vars(chatter)):
+        from ltl_instruct.core.language import rewrite
+        for module in (globals(), vars(phrases), vars(text), vars(chatter), vars(rewrite)):
             for value in module.values():
                 if isinstance(value, frozenset) and all(isinstance(w, str) for w in value):
                     lexicon |= value
+                elif isinstance(value, tuple) and value and all(isinstance(p, tuple) for p in value):
+                    lexicon |= {w for p in value for w in p if isinstance(w, str)}   # phrase lists
         lexicon |= set(text.TYPOS.values())
         _SPELLER = Speller(lexicon=lexicon)
     return _SPELLER
@@ -834,6 +838,10 @@ class _Reader:
             if _starts(clause.tokens, 0, lead) or _starts(tokens, 0, lead):
                 # sets the scene: the things named are remembered for "it" / "there", not goals
                 body = tokens[len(lead):] if _starts(tokens, 0, lead) else tokens
+                counts = ('several', 'few', 'a', 'couple', 'of')
+                while body and (body[0] in NUMBER_WORDS or body[0] in counts) and len(body) > 1 and \
+                        body[1] not in PUNCT:
+                    body = body[1:]   # "there are two doors, ..."
                 nps, _, _ = self._np_list(body, 0)
                 if nps:
                     self.last_object = nps[-1]
@@ -1780,8 +1788,8 @@ class _Reader:
         while k < len(tokens) and tokens[k] in ('me', 'up', 'back', 'off', 'down', 'us'):
             k += 1
         objs, joiner, end = self._np_list(tokens, k, place=False, destination_stops=verb in PUT_VERBS)
-        if not objs:
-            return False
+        if not objs or objs[0].descriptor.name in ('yourself', 'itself', 'over'):
+            return False   # "get yourself over to X" is going there
         rest = tokens[end:]
         if rest and rest[0] == 'from' and len(objs) == 1:
             # "the blanket from the closet": where the object is, as a nearness relation
@@ -1877,7 +1885,8 @@ class _Reader:
                 tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)
         ) and not (tokens[k] == 'back' and k + 1 < len(tokens)
                    and tokens[k + 1] in ('door', 'gate', 'yard', 'room', 'porch')) or (
-                0 < k < len(tokens) and tokens[k] in MOTION_PREPS and tokens[k - 1] in GOAL_VERBS):
+                0 < k < len(tokens) and tokens[k] in MOTION_PREPS and tokens[k - 1] in GOAL_VERBS) or (
+                0 < k < len(tokens) and tokens[k] in ('yourself', 'itself')):
             if tokens[k] in ('from', 'through', 'via') and k > 0:
                 patrol_from = True
             k += 1
@@ -1940,7 +1949,8 @@ class _Reader:
             rest = ['exactly'] + rest   # "only enter the pantry once"
         counted, rest = self._read_count(rest, targets)
         if counted:
-            if len(rest) > 1 and rest[0] == 'and' and rest[1] in DETS:
+            rest = [t for t in rest if t != ',']
+            if len(rest) > 1 and rest[0] in ('and', 'but') and rest[1] in DETS:
                 self._read_goal(['visit'] + rest[1:], _Clause('seq', rest[1:]), None)
                 return
             self._goal_trailer(rest, tokens, targets)

@@ -35,6 +35,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' (?:from then on|from that point on|from there on|thereafter|from that moment on|after this) ',
      ' after that '),
     (r' from now on ', ' '),
+    (r' (?:you )?(?:may|can|are allowed to|are permitted to|should) only ', ' only '),
+    (r' (?:under no circumstances|on no account|at no point|at no time)'
+     r'(?: should you| must you| are you to)? ',
+     ' never '),
+    (r' (?:pick|choose|select) (?:either|one of) ', ' go to either '),
     (r' (?:one time|1 time) (?:and one time )?only ', ' exactly once '),
     (r' once only ', ' exactly once '),
     (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
@@ -64,7 +69,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' check', ' whether', ' if ', ' away', ' clear', ' off', ' out',
                                    ' goal', ' destination', ' target', ' aim', ' objective', ' end',
                                    ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
-                                   ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter')):
+                                   ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
+                                   ' only ', ' no ', ' pick', ' choose', ' select')):
         return tokens
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)

@@ -24,7 +24,7 @@ from ltl_instruct.core.language.phrases import (
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
-                          'notice'})
+                          'notice', 'find', ','})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-'})
 _REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
@@ -56,8 +56,11 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             continue
         # the category before a colon: "three chairs: a red one by the desk, ..."
         category = ''
-        if s >= 2 and tokens[s - 1] == ':':
-            category = singular(tokens[s - 2])
+        if s >= 2 and tokens[s - 1] == ':' or s >= 3 and tokens[s - 1] == ',' and \
+                tokens[s - 3] in NUMBER_WORDS:
+            category = singular(tokens[s - 2])   # "three chairs: a red one...", "two doors, a red one..."
+        elif s >= 2 and tokens[s - 1] == ',':
+            continue
         return s, end, nps, category
     return None
 
@@ -100,6 +103,13 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     if tail and tail[0] not in PUNCT and any(t in PUNCT for t in tail):
         tail = tail[next(k for k, t in enumerate(tail) if t in PUNCT):]
     if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail):
+        if category and any(tokens[np.end - 1] == 'one' for np in nps):
+            # "two doors, a red one and a blue one. Go through the blue one": the ones are doors; the
+            # enumeration only sets the scene
+            notes.append(f'"one" read as "{category}"')
+            keep = max((k for k in range(s) if tokens[k] in '.;!?'), default=-1)
+            return tokens[:keep + 1] + [category if t == 'one' and k > 0 and tail[k - 1] not in DETERMINERS
+                                        else t for k, t in enumerate(tail)]
         return tokens
     items = []
     for np in nps:

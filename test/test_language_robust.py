@@ -244,3 +244,33 @@ ROUND_TWO = [
 @pytest.mark.parametrize('instruction,gold', ROUND_TWO, ids=[c[0][:30] for c in ROUND_TWO])
 def test_second_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+ROUND_THREE = [
+    ('Carry the plate to the table, avoiding the rug on the way.',
+     'F (near[plate] & F (pick[plate] & (!near[rug] U (near[table] & F release[plate, table]))))'),
+    ('Go to the porch. From there, stay away from the pond.', 'F (near[porch] & G !near[pond])'),
+    ('Go to the kitchen. Wait, not the kitchen, the dining room.', 'F near[dining_room]'),
+    ('Put the jar on the table - no, on the counter.',
+     'F (near[jar] & F (pick[jar] & F (near[counter] & F release[jar, counter])))'),
+    ('Pay the kitchen a visit.', 'F near[kitchen]'),
+    ('Check that the oven is off.', 'F near[oven]'),
+    ('See if the cat is in the laundry room.', 'F near[laundry_room]'),
+    ('Could you make sure the garage door is shut?', 'F near[garage_door]'),
+    ('Go to the red chair, the one by the fireplace.', 'F near[red_chair::isnextto(fireplace)]'),
+    ('Go to the attic, the basement and the garage, skipping the basement.',
+     'F near[attic] & F near[garage]'),
+    ('Visit the oak, the elm and the pine, but not the elm.', 'F near[oak] & F near[pine]'),
+    ('Go to the couch, wait, make it the loveseat.', 'F near[loveseat]'),
+    ('Go to the study, or the library if the study is locked.', 'F near[study] | F near[library]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_THREE, ids=[c[0][:30] for c in ROUND_THREE])
+def test_third_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_a_demand_to_ensure_is_not_a_check() -> None:
+    got = OfflineTranslator(landmarks=('a', 'b')).translate('ensure that you never reach a or b')
+    assert equivalent(got.formula, parse_formula('G !near[a] & G !near[b]'))

@@ -163,6 +163,17 @@ def is_filler(tokens: Sequence[str], known_verbs: frozenset[str]) -> bool:
     return True
 
 
+def _by_first(phrases: tuple[tuple[str, ...], ...]) -> dict[str, tuple[tuple[str, ...], ...]]:
+    out: dict[str, list[tuple[str, ...]]] = {}
+    for p in phrases:
+        out.setdefault(p[0], []).append(p)
+    return {k: tuple(v) for k, v in out.items()}   # longest first, as in the source
+
+
+_LEADS_BY_FIRST = _by_first(LEADS)
+_COURTESY_BY_FIRST = _by_first(COURTESY)
+
+
 def strip_courtesy(tokens: list[str], notes: list[str]) -> list[str]:
     """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...")."""
     out: list[str] = []
@@ -171,7 +182,7 @@ def strip_courtesy(tokens: list[str], notes: list[str]) -> list[str]:
     while i < n:
         hit = 0
         if i == 0 or tokens[i - 1] in PUNCT:
-            for phrase in LEADS:
+            for phrase in _LEADS_BY_FIRST.get(tokens[i], ()):
                 m = len(phrase)
                 if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] in (',', ':'):
                     notes.append(f'left out "{" ".join(phrase)}" (asks for nothing)')
@@ -181,7 +192,7 @@ def strip_courtesy(tokens: list[str], notes: list[str]) -> list[str]:
                 i += hit
                 continue
         if i > 0 and tokens[i - 1] not in DETERMINERS:
-            for phrase in COURTESY:
+            for phrase in _COURTESY_BY_FIRST.get(tokens[i], ()):
                 m = len(phrase)
                 if tuple(tokens[i:i + m]) == phrase and (i + m >= n or tokens[i + m] in _CLAUSE_END):
                     hit = m

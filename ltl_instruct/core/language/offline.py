@@ -34,7 +34,7 @@ from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
     DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
 )
-from ltl_instruct.core.language.rewrite import apply_corrections, resolve_list_references
+from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
 from ltl_instruct.core.language.spelling import Speller
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
@@ -381,6 +381,7 @@ class OfflineTranslator:
                                    ErrorCode.INVALID_INPUT)
         self.avoid_scope = avoid_scope
         self.landmarks = tuple(landmarks)
+        _speller()   # the word list is read once, here, not inside the first translation
 
     def translate(self, instruction: str) -> Translation:
         """Translate one instruction (raises :class:`TranslationError` naming what it cannot place)."""
@@ -397,7 +398,7 @@ class OfflineTranslator:
         tokens = _correct_spelling(tokens, notes, self.landmarks)
         tokens = paraphrase(chatter.strip_courtesy(tokens, notes))
         tokens = resolve_list_references(tokens, notes)
-        tokens = apply_corrections(tokens, notes)
+        tokens = apply_exclusions(apply_corrections(tokens, notes), notes)
         tokens = rewrite_idioms(tokens)
         reader = _Reader(self.avoid_scope, notes, self.landmarks)
         try:
@@ -424,6 +425,7 @@ SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bri
     'end', 'up', 'please', 'kindly'} | {'make', 'do'}
 
 _SPELLER: Optional[Speller] = None
+_WISH_FIRST = frozenset(w[0] for w in chatter.WISHES)
 
 
 def _speller() -> Speller:
@@ -941,8 +943,9 @@ class _Reader:
         raw = [t for t in raw if t not in PUNCT]
         while raw and raw[0] in ('and', 'but', 'so', 'because', 'since', 'as') + tuple(chatter.INTERJECTIONS):
             raw = raw[1:]
-        if all(t in chatter.INTERJECTIONS or t in PUNCT for t in tokens) or any(
-                _starts(raw, 0, w) or _starts(tokens, 0, w) for w in chatter.WISHES) and \
+        wish = bool({raw[0] if raw else '', tokens[0]} & _WISH_FIRST) and any(
+            _starts(raw, 0, w) or _starts(tokens, 0, w) for w in chatter.WISHES)
+        if all(t in chatter.INTERJECTIONS or t in PUNCT for t in tokens) or wish and \
                 not chatter.has_constraint_word(tokens):
             self.notes.append(f'left out "{" ".join(raw) or text}" (asks for nothing)')
             return True
@@ -987,6 +990,8 @@ class _Reader:
     @staticmethod
     def _same_for_lead(tokens: list[str], i: int) -> int:
         """Length of a 'the same goes for' lead at ``tokens[i]``, else 0."""
+        if i >= len(tokens) or tokens[i] not in ('the', 'same', 'likewise', 'ditto', 'that', 'this'):
+            return 0
         for lead in (['the', 'same', 'goes', 'for'], ['same', 'goes', 'for'], ['the', 'same', 'for'],
                      ['same', 'for'], ['same', 'with'], ['the', 'same', 'with'], ['likewise', 'for'],
                      ['likewise'], ['ditto', 'for'], ['the', 'same', 'applies', 'to'],
@@ -1848,6 +1853,9 @@ class _Reader:
         if rest and rest[0] == 'without':
             without, rest = rest, []
         rest = [t for t in rest if t not in (',', 'too', 'please', 'instead', 'as', 'well', 'again')]
+        avoiding: list[str] = []
+        if rest and rest[0] in ('avoiding', 'while') and self._avoid_start(rest) is not None:
+            avoiding, rest = rest, []   # "carry X to Y, avoiding Z on the way": read with the delivery
         if rest and rest[0] in ('while', 'when', 'on', 'along', 'and', 'without'):
             sc, rem = self._trailing_scope(rest)
             if sc is None and rest[0] == 'and':
@@ -1869,6 +1877,8 @@ class _Reader:
             self.task.chain.append(Step('any' if joiner == 'or' else 'all', chains=[[s] for s in steps]))
         if without:   # "take it to X without passing Y": while carrying it
             self._read_avoid(without, _Scope('carry'))
+        if avoiding:
+            self._read_avoid(avoiding, None)
         return True
 
     def _read_goal(self, tokens: list[str], clause: _Clause, scope: Optional[_Scope]) -> None:
@@ -1988,8 +1998,8 @@ class _Reader:
             return None
         if w in DETS or w in NEGATIVE_VERBS or w in STOPWORDS or w in ORDINALS or w in NUMBER_WORDS or \
                 not w.isalpha() or w in chatter.CONSTRAINT_WORDS or w in FILLERS or \
-                w in chatter.INTERJECTIONS or w in DELIVER_VERBS or w in PICK_VERBS:
-            return None
+                w in chatter.INTERJECTIONS or w in DELIVER_VERBS or w in PICK_VERBS or w.endswith('ing'):
+            return None   # an imperative is no gerund ("skipping the hall")
         j = k + 1
         while j < len(tokens) and (tokens[j] in GOAL_PARTICLES or tokens[j] in MOTION_PREPS or tokens[j] in (
                 'yourself', 'itself', 'next')) and tokens[j] not in ('there', 'here', 'me', 'from'):
@@ -2103,6 +2113,15 @@ class _Reader:
             sc, rem = self._trailing_scope(rest)
             if sc is not None and sc.kind == 'global':
                 self._check_leftover(rem, whole)
+                return
+        last = self.task.chain[-1] if self.task.chain else None
+        if rest[0] in ('if', 'in') and rest[:2] != ['in', 'order'] and last is not None and \
+                last.kind == 'visit' and len(last.targets) > 1:
+            cond = rest[2:] if rest[:2] == ['in', 'case'] else rest[1:]
+            np = self.phrases.parse(cond, 0) if cond and cond[0] in DETS else None
+            if np is not None and chatter.is_statement(cond, np.end):
+                # "the study, or the library if the study is locked": either will do
+                self.notes.append(f'"{" ".join(rest)}": either place will do')
                 return
         if self._leave_out(rest):
             return

@@ -45,7 +45,16 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
      r'(?:at|in|inside|around|over) ', ' visit '),
     (r' (?:pay|make) a (?:quick )?(?:visit|trip) to ', ' visit '),
-    (r' (?:check|see|find out|look) (?:whether|if) ', ' check '),
+    (r' (?:check|see|find out|look|make sure|verify|confirm) (?:whether|if) ', ' check '),
+    (r' (?:check|see|look) that ', ' check '),
+    # "make sure the door is shut": a state to check there (not "make sure you never...")
+    (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=(?:the|my|your|our) (?:\w+ ){1,3}(?:is|are) '
+     r'(?!never|not|visited|reached|avoided|always)\w)', ' check '),
+    # "check the cat is in the laundry room": the place where it is
+    (r' check (?:the |my |our |your )(?:\w+ ){1,3}(?:is|are) (?:still )?(?:in|at|inside|on|by|near|next to) ',
+     ' check '),
+    (r' pay (the|a|an|my|your|our) ((?:\w+ ){1,4})a (?:quick |short )?visit ', r' visit \1 \2'),
+    (r' from there , ', ' after that , '),
     (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
     (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
      r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
@@ -70,7 +79,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' goal', ' destination', ' target', ' aim', ' objective', ' end',
                                    ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
                                    ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
-                                   ' only ', ' no ', ' pick', ' choose', ' select')):
+                                   ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
+                                   ' verify', ' confirm', ' pay ')):
         return tokens
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)

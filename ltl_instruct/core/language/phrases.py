@@ -372,7 +372,7 @@ class PhraseParser:
             nxt = self.parse(tokens, j, destination_stops)
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
-            if sep == 'and' and tokens[i] == ',' and nxt.descriptor.relations and not nxt.pronoun:
+            if sep == 'and' and tokens[i] == ',' and nxt.descriptor.relations and nxt.pronoun in ('', 'one'):
                 # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
                 merged = _attach(phrases[-1].descriptor, nxt.descriptor)
                 if merged is not None:

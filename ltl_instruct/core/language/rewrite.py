@@ -232,7 +232,7 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('my', 'mistake'), ('or', 'rather'), ('or', 'actually'), ('or', 'better'), ('on', 'second', 'thought'),
     ('on', 'second', 'thoughts'), ('come', 'to', 'think', 'of', 'it'), ('change', 'of', 'plan'),
     ('change', 'of', 'plans'), ('let', 'me', 'rephrase'), ('wait', 'no'), ('hold', 'on'), ('scratch',),
-    ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'),
+    ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
                      'leave'})
@@ -283,7 +283,9 @@ def _np_spans(tokens: list[str]) -> list[NounPhrase]:
 
 def _strip_corr(seg: list[str]) -> list[str]:
     while seg and seg[0] in (',', 'i', 'mean', 'meant', 'just', 'wait', 'no', 'actually', 'sorry', 'er',
-                             'um', 'hmm', 'oh', 'make', 'that', 'rather', 'go', 'to', 'do', 'instead'):
+                             'um', 'hmm', 'oh', 'make', 'that', 'rather', 'go', 'to', 'do', 'instead', 'it'):
+        if seg[0] == 'it' and (len(seg) < 2 or seg[1] in PUNCT or seg[1] in ('is', 'was')):
+            break
         if seg[0] == 'that' and len(seg) > 1 and seg[1] == 'is':
             break
         if seg[0] == 'go' and len(seg) > 1 and seg[1] not in ('to',):
@@ -384,6 +386,50 @@ def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]
 
 
 _AVOID_WORDS = ('avoid', 'never', 'away', 'clear', 'not', 'off')
+_PREPS = frozenset({'on', 'in', 'into', 'onto', 'at', 'under', 'behind', 'beside', 'by', 'inside', 'near'})
+
+
+_EXCEPT: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('skipping',), ('except',), ('except', 'for'), ('excluding',), ('apart', 'from'), ('other', 'than'),
+    ('but', 'not'), ('leaving', 'out'), ('minus',), ('but', 'skip'), ('but', 'leave', 'out'), ('not',),
+), key=lambda t: -len(t)))
+
+
+def apply_exclusions(tokens: list[str], notes: list[str]) -> list[str]:
+    """Drop a listed goal the same sentence excludes ("the oak, the elm and the pine, but not the elm")."""
+    if not any(t in ('skipping', 'except', 'excluding', 'apart', 'other', 'not', 'leaving', 'minus', 'skip')
+               for t in tokens):
+        return tokens
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        m = next((m for m in _EXCEPT if tuple(out[i:i + len(m)]) == m), None)
+        if m is None or i == 0 or out[i - 1] not in (',', 'and') and m[0] != 'but':
+            i += 1
+            continue
+        start = i - 1 if out[i - 1] in (',', 'and') else i
+        ex = PhraseParser().parse(out, i + len(m))
+        end = ex.end if ex is not None else i
+        if ex is None or ex.pronoun or (end < len(out) and out[end] not in PUNCT):
+            i += 1
+            continue
+        sent = max((k for k in range(start) if out[k] in '.;!?'), default=-1) + 1
+        listed = [sp for sp in _np_spans(out[sent:start]) if sp.descriptor == ex.descriptor]
+        if not listed:
+            i += 1
+            continue
+        a, b = sent + listed[-1].start, sent + listed[-1].end
+        # the separator before it goes too ("the oak, the elm and the pine")
+        if a > 0 and out[a - 1] in (',', 'and'):
+            a -= 1
+            if out[a - 1:a] == [','] and out[b:b + 1] == ['and']:
+                a -= 1
+        elif out[b:b + 1] in ([','], ['and']):
+            b += 1
+        notes.append(f'{ex.descriptor} left out of the list, as asked')
+        out = out[:a] + out[b:start] + out[end:]
+        i = a
+    return out
 
 
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
@@ -592,6 +638,21 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     if count_fix is not None:
         notes.append('the count was corrected')
         return count_fix
+    if seg and seg[0] == 'not' and ',' in seg:
+        # "wait, not the kitchen, the dining room"
+        k = seg.index(',')
+        seg = seg[k + 1:] + ['not'] + seg[1:k]
+    if seg and seg[0] in _PREPS and len(seg) > 1:
+        # "put the jar on the table - no, on the counter": the phrase after the same kind of word
+        new_np = PhraseParser().parse(seg, 1)
+        if new_np is not None and new_np.end == len(_strip_corr(seg)) or new_np is not None and not [
+                t for t in seg[new_np.end:] if t not in PUNCT]:
+            for p in range(len(prev) - 1, -1, -1):
+                if prev[p] in _PREPS:
+                    old = PhraseParser().parse(prev, p + 1)
+                    if old is not None and not old.pronoun:
+                        notes.append(f'corrected to "{" ".join(seg[:new_np.end])}"')
+                        return prev[:p] + seg[:new_np.end] + prev[old.end:]
     if 'not' in seg:
         # "the freezer, not the fridge"
         k = seg.index('not')

@@ -274,3 +274,23 @@ def test_third_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
 def test_a_demand_to_ensure_is_not_a_check() -> None:
     got = OfflineTranslator(landmarks=('a', 'b')).translate('ensure that you never reach a or b')
     assert equivalent(got.formula, parse_formula('G !near[a] & G !near[b]'))
+
+
+ROUND_FOUR = [
+    ('Go to the den. You can stop by the bar too, but only once.',
+     'F near[den] & (!near[bar] W (near[bar] & (near[bar] W G !near[bar])))'),
+    ('Our guests arrive at six, so please tidy up near the sofa.', 'F near[sofa]'),
+    ('My keys fell behind the couch. Could you go there?', 'F near[couch]'),
+    ('Head to the barn and, until you arrive, keep away from the fence.', '!near[fence] U near[barn]'),
+    ('Go to the porch. Before the porch, stop at the mailbox.', 'F (near[mailbox] & F near[porch])'),
+    ('Avoid the lawn at all times; what I need is for you to get to the shed.',
+     'F near[shed] & G !near[lawn]'),
+    ('Go to the left window, or rather the right one.', 'F near[right_window]'),
+    ('Here are the stops: bakery, florist, post office. Skip the first one and visit the rest in order.',
+     'F (near[florist] & F near[post_office])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_FOUR, ids=[c[0][:30] for c in ROUND_FOUR])
+def test_fourth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -44,7 +44,8 @@ REQUEST_WORDS = frozenset({'need', 'want', 'would', 'like', 'should', 'must', 'w
 # Finite verbs after a noun-phrase subject ("the cat keeps...", "the gate is...").
 FINITE_VERBS = frozenset('''
 is are was were keeps keep has had seems seem looks look sits sit stands lies lie got gets needs
-belongs goes went broke fell spilled leaks leaked smells tends happens
+belongs goes went broke fell spilled leaks leaked smells tends happens arrive arrives arrived came comes
+dropped jammed stopped started moved died spilt broken overflowed overflows ran runs
 '''.split())
 
 # After "it is": words that make the clause a permission or a demand.
@@ -105,8 +106,10 @@ TIME_NOUNS = frozenset({'evening', 'morning', 'afternoon', 'night', 'week', 'wee
 
 
 def has_constraint_word(tokens: Sequence[str]) -> bool:
-    """Whether any token is a negation, order, time or count word."""
-    return any(t in CONSTRAINT_WORDS or t.isdigit() for t in tokens)
+    """Whether any token is a negation, order, time or count word (not a clock time: "at six")."""
+    return any((t in CONSTRAINT_WORDS or t.isdigit()) and not (
+        (t in NUMBER_WORDS or t.isdigit()) and k > 0 and tokens[k - 1] in ('at', 'around', 'about') and
+        tokens[k + 1:k + 2] not in (['times'], ['time'])) for k, t in enumerate(tokens))
 
 
 def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
@@ -131,10 +134,15 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         return not ('to' in tokens[1:4] and tokens[1] in ('have', 'has', 'got', 'am', 'are'))
     if np_end and tokens[0] in DETERMINERS:
         # the noun phrase may have swallowed the verb ("the cat keeps knocking...")
-        f = next((k for k in range(2, np_end + 1) if k < len(tokens) and tokens[k] in FINITE_VERBS and
-                  tokens[k - 1] not in ("that", "which", "who")), -1)   # not "the desk that is by..."
+        f = statement_verb(tokens, np_end)   # not "the desk that is by..."
         return f > 0 and tokens[f + 1:f + 2] != ['to']
     return False
+
+
+def statement_verb(tokens: Sequence[str], np_end: int) -> int:
+    """Where the verb of a statement with a noun-phrase subject is (-1: none)."""
+    return next((k for k in range(2, np_end + 1) if k < len(tokens) and tokens[k] in FINITE_VERBS and
+                 tokens[k - 1] not in ('that', 'which', 'who', 'is', 'are')), -1)
 
 
 def is_filler(tokens: Sequence[str], known_verbs: frozenset[str]) -> bool:

@@ -541,6 +541,8 @@ class _Reader:
         self.before_target: Optional[Descriptor] = None
         self.last_clause: Optional[tuple[list[str], Optional[_Scope]]] = None
         self.before_strict = False
+        self.insert_before: Optional[Step] = None
+        self.connector = 'and'
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -645,9 +647,12 @@ class _Reader:
     def _read_optional(self, tokens: list[str], nxt: list[str]) -> bool:
         """Read 'you can also stop by X, but no more than once': X is optional, its visits bounded."""
         words = [t for t in tokens if t not in PUNCT]
+        bound = [t for t in nxt if t not in PUNCT and t not in ('but', 'and', 'though', 'just')][:2]
+        bounded = bound in (['no', 'more'], ['not', 'more'], ['at', 'most'], ['only', 'once'],
+                            ['just', 'once'], ['up', 'to'], ['max'], ['maximum'], ['once'], ['only', 'twice'])
         if not (_starts(words, 0, ['you', 'can', 'also']) or _starts(words, 0, ['you', 'may', 'also']) or
                 _starts(words, 0, ['you', 'are', 'also', 'allowed', 'to']) or _starts(
-                    words, 0, ['feel', 'free'])):
+                    words, 0, ['feel', 'free']) or bounded and words[:2] in (['you', 'can'], ['you', 'may'])):
             return False
         k = self._skip_event_verbs(words, words.index('also') + 1 if 'also' in words[:3] else 2)
         nps, _, end = self._np_list(words, k)
@@ -799,6 +804,7 @@ class _Reader:
 
     def _read_clause_tokens(self, clause: _Clause, tokens: list[str], scope: Optional[_Scope]
                             ) -> Optional[_Scope]:
+        self.connector = clause.connector
         s = ' '.join(tokens)
         if s.startswith('either way'):
             tokens = tokens[2:]
@@ -904,6 +910,12 @@ class _Reader:
             if np is not None and np.end == len(tokens) and k > 1:
                 self.before_target = np.descriptor   # the next goal comes first, then this
                 return scope
+            if np is not None and np.end == len(tokens) and not np.pronoun:
+                known = next((st for st in self.task.chain
+                              if st.kind == 'visit' and st.targets == [np.descriptor]), None)
+                if known is not None:   # "go to the porch. before the porch, stop at the mailbox"
+                    self.insert_before = known
+                    return scope
         if self._read_ordering(tokens, clause):
             return scope
         if self._avoid_start(tokens) is not None:
@@ -970,8 +982,15 @@ class _Reader:
         if chatter.is_statement(tokens, np_end):
             named: list[NounPhrase] = []
             i = 0
+            verb = chatter.statement_verb(tokens, np_end) if np_end else -1
+            if verb > 0:   # the subject ends at its verb ("my keys fell behind the couch")
+                subject = self.phrases.parse(tokens[:verb], 0)
+                if subject is not None:
+                    named.append(subject)
+                i = verb + 1
             while i < len(tokens):
-                if tokens[i] in DETS and tokens[i] not in ('your', 'my', 'our') or i == 0 and np_end:
+                if tokens[i] in DETS and tokens[i] not in ('your', 'my', 'our') or i == 0 and np_end or (
+                        i > 0 and tokens[i - 1] in chatter.PREPOSITIONS and is_name_word(tokens, i, False)):
                     np = self.phrases.parse(tokens, i)
                     if np is not None and not np.pronoun and np.end > i:
                         named.append(np)
@@ -1319,6 +1338,10 @@ class _Reader:
             nps, _, end = self._np_list(rest, j)
             if nps:
                 return _Scope('until', nps[0], event), rest[end:]
+            if rest[0] in ('until', 'till') and j > 1 and (j == len(rest) or rest[j] in PUNCT) and \
+                    rest[j - 1] in ('arrive', 'arrived', 'get', 'got', 'are', 'reach', 'reached', 'land',
+                                    'landed') and self.last_place is not None:
+                return _Scope('until', self.last_place, event), rest[j:]   # "until you arrive": at the goal
         if _starts(rest, 0, ['on', 'the', 'way']) or _starts(rest, 0, ['on', 'your', 'way']) or \
                 _starts(rest, 0, ['along', 'the', 'way']):
             sc, rem = self._leading_scope(rest)
@@ -1772,7 +1795,8 @@ class _Reader:
                     self.task.chain.append(Step('visit', [d]))
             elif mode == 'exactly':
                 self.task.constraints.append(exactly(x, n))
-                if self.task.find_step(d) is None:   # "bring X to the pantry and only enter it once"
+                # "bring X to the pantry and only enter it once": a bound, not a step after the others
+                if self.task.find_step(d) is None and (self.connector != 'and' or not self.task.chain):
                     self.task.chain.append(Step('visit', [d]))
             else:
                 self.task.constraints.append(at_most(x, n))
@@ -1969,6 +1993,11 @@ class _Reader:
             last = self.task.chain.pop()
             self._add_targets(targets, joiner, ordered)
             self.task.chain.append(last)
+        elif self.insert_before is not None and self.insert_before in self.task.chain:
+            at = self.task.chain.index(self.insert_before)
+            self._add_targets(targets, joiner, ordered)
+            self.task.chain.insert(at, self.task.chain.pop())
+            self.insert_before = None
         else:
             self._add_targets(targets, joiner, ordered)
         if self.before_target is not None:

@@ -55,6 +55,7 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      ' check '),
     (r' pay (the|a|an|my|your|our) ((?:\w+ ){1,4})a (?:quick |short )?visit ', r' visit \1 \2'),
     (r' from there , ', ' after that , '),
+    (r' what (?:i|we) (?:need|want|would like)(?: you to do)? is (?:for you )?(?:to )?', ' '),
     (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
     (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
      r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
@@ -80,7 +81,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
                                    ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
                                    ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
-                                   ' verify', ' confirm', ' pay ')):
+                                   ' verify', ' confirm', ' pay ', ' what ')):
         return tokens
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)

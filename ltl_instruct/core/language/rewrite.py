@@ -175,7 +175,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 i += 2 + one
                 continue
             if nxt in ('other', 'others', 'remaining') or (
-                    nxt == 'rest' and (not w or w in PUNCT or w == 'of')):
+                    nxt == 'rest' and (not w or w in PUNCT or w == 'of' or not is_name_word(
+                        tail, i + 2, False))):
                 if nxt == 'rest' and tail[i + 2:i + 4] == ['of', 'them']:
                     i += 2
                 rest_idx = [k for k in range(n) if k not in used]
@@ -345,9 +346,10 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
         old_head = [w for w in prev[target.start:target.end] if w not in DETERMINERS]
         k = new.index('one')
         name = []
-        for w in old_head:
-            if w in ('left', 'right', 'behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below',
-                     'by', 'near', 'beside', 'to', 'that', 'which'):
+        for m, w in enumerate(old_head):
+            if w in ('behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below', 'by', 'near',
+                     'beside', 'to', 'that', 'which') or w in ('left', 'right') and \
+                    old_head[m + 1:m + 2] == ['of']:
                 break
             name.append(w)
         adjectives = k > 0 and any(w not in DETERMINERS for w in new[:k])

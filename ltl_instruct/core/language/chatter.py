@@ -73,7 +73,7 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('this', 'evening'), ('this', 'morning'), ('this', 'afternoon'), ('tonight',), ('today',),
     ('right', 'now'), ('now',), ('thanks',), ('thank', 'you'), ('would', 'you'), ('could', 'you'),
     ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('if', 'you', 'do', 'not', 'mind'),
-    ('when', 'you', 'are', 'free'), ('at', 'some', 'point', 'today'), ('later',), ('soon',),
+    ('when', 'you', 'are', 'free'), ('at', 'some', 'point', 'today'),
     ('for', 'now'), ('will', 'you'), ('okay',), ('ok',), ('cheers',), ('if', 'you', 'like'),
     ('if', 'you', 'want'), ('if', 'you', 'wish'), ('if', 'you', 'feel', 'like', 'it'), ('real', 'fast'),
     ('super', 'quick'), ('super', 'fast'), ('fast',), ('no', 'rush'), ('no', 'hurry'), ('no', 'worries'),

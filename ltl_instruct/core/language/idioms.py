@@ -50,6 +50,8 @@ _GONE = r'(?:visited|been to|gone to|reached|entered|passed through|gone through
 _BACK = rf'(?:{_GO}|revisit|come back to|return to|go back to)'
 _FORBIDDEN = r'(?:prohibited|forbidden|not allowed|not permitted|banned)'
 
+_PLAIN_AUX = ('is', 'are', 'get', 'gets')
+
 Replacement = Union[str, Callable[['re.Match[str]'], str]]
 
 
@@ -175,12 +177,12 @@ RULES: tuple[Rule, ...] = (
          rf'\bthe (?P<bound>maximum|max|minimum|min|required) (?:allowable |allowed |permitted )?number of '
          rf'times (?:that )?you (?:can|must|may|should|are allowed to|have to|need to) {_GO} (?P<x>{_NP}) '
          rf'(?:is |are )?(?:exactly )?(?P<n>{_NUM}|once|twice)\b', _bound),
+    Rule('do not make any single visit to X', r'\b(?:make|pay) (?:any|a) (?:single )?(?:visits?|trips?) to\b',
+         'visit'),
     Rule('make at least three separate visits to X',
          rf'\b(?:make|complete|have|need|pay|do)(?: only)? (?P<mode>(?:at least|at most|exactly|only|'
          rf'no more than|no fewer than|no less than) )?(?P<n>{_NUM}|a|an|single|any single) {_KIND}'
          rf'(?:visits?|trips?|passes) (?:to|through|of|at) (?P<x>{_NP})(?= |$)', _visits),
-    Rule('do not make any single visit to X', r'\b(?:make|pay) (?:any|a) (?:single )?(?:visits?|trips?) to\b',
-         'visit'),
 
     # ---- counts said as a lock
     Rule('visiting X twice locks it for future visits',
@@ -220,11 +222,39 @@ RULES: tuple[Rule, ...] = (
 
     # ---- passive goals and avoidances
     Rule('the shed must be visited',
-         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) {_PASSIVE} (?:all |both |each )?'
-         rf'(?:visited|reached|entered)(?= |$)', r'\g<pre>visit \g<x>'),
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?P<aux>{_PASSIVE}) '
+         rf'(?:all |both |each )?(?:visited|reached|entered)(?= |$)',
+         lambda m: f'{m.group("pre")}{"" if m.group("aux") in _PLAIN_AUX else "you must "}visit '
+                   f'{m.group("x")}'),
     Rule('the shed must be avoided',
          rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?:always )?{_PASSIVE} '
          rf'(?:always )?avoided(?= |$)', r'\g<pre>avoid \g<x>'),
+
+    Rule('never let the alarm hold',
+         rf'\bnever let (?P<x>{_NPS}) (?:hold|hold true|happen|occur|be true|become '
+         rf'true|be visited)(?= |$)', r'never visit \g<x>'),
+    Rule('the alarm must never hold',
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) '
+         rf'(?:must |should |can |will |shall )?'
+         rf'(?:never|not) (?:hold|holds|hold true|happen|happens|occur|occurs|be true|become true)(?= |$)',
+         r'\g<pre>never visit \g<x>'),
+
+    Rule('any visit to the shed is not allowed',
+         rf'\b(?:any |a )?(?:single )?(?:visits?|trips?) (?:to|through) '
+         rf'(?P<x>{_NPS}) (?:is|are) {_FORBIDDEN}(?= |$)', r'you cannot visit \g<x>'),
+    Rule('the shed can never be visited',
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?|\bbut )(?P<x>{_NPS}) '
+         rf'(?:can never|cannot|can not|must not|must never|should not|should never|may not|may never|'
+         rf'shall not) '
+         rf'(?:be )?(?:visited|reached|'
+         rf'entered|approached)(?= |$)', r'\g<pre>you cannot visit \g<x>'),
+
+    # ---- conditions on order: "visit b only if you have been to a", "do not visit b if you have not seen a"
+    Rule('only if you have been to X',
+         rf'\bonly if you (?:have |had )?(?:already |first )?(?:{_GONE}|{_GO})\b',
+         'only after you visit'),
+    Rule('if you have not been to X', rf'\bif you (?:have not|haven not|did not|have never|had not) (?:yet )?'
+         rf'(?:{_GONE}|{_GO})\b', 'unless you visit'),
 
     # ---- events said of the place
     Rule('until the gate is reached',
@@ -235,8 +265,8 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?P<c>{_WHEN}) (?P<x>{_NPS}) (?:occurs|happens|holds|holds true|is true|becomes true|'
          rf'has occurred|has occured|has happened|appears|shows up)(?= |$)', r'\g<c> you visit \g<x>'),
     Rule('after you observe X',
-         r'\byou (?:have |had )?(?:see|saw|seen|observe|observed|encounter|encountered|spot|spotted|notice|'
-         r'noticed|detect|detected)\b', 'you visit'),
+         rf'\b(?P<c>{_WHEN}|sure|ensure|that) you (?:have |had )?(?:see|saw|seen|observe|observed|encounter|'
+         rf'encountered|spot|spotted|notice|noticed|detect|detected)\b', r'\g<c> you visit'),
 )
 
 _SENTENCE_ENDS = frozenset('.;!?')

@@ -34,6 +34,7 @@ from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
     DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
 )
+from ltl_instruct.core.language.reactions import RuleReader
 from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
 from ltl_instruct.core.language.spelling import Speller
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
@@ -54,7 +55,9 @@ AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('avoiding',), ('while', 'avoiding'), ('no',), ('shun',), ('always', 'avoid'), ('always', 'avoiding'),
     ('without',), ('always', 'stay', 'away', 'from'), ('go', 'anywhere', 'but'), ('go', 'anywhere', 'except'),
     ('anywhere', 'but'), ('anywhere', 'except'), ('go', 'anywhere', 'other', 'than'),
-    ('while', 'staying', 'away', 'from'),
+    ('while', 'staying', 'away', 'from'), ('keep', 'avoiding'), ('bypass',),
+    ('keep', 'staying', 'away', 'from'),
+    ('keep', 'away', 'from'), ('while', 'keeping', 'away', 'from'),
     ('staying', 'away', 'from'), ('keeping', 'away', 'from'), ('you', 'cannot'), ('you', 'can', 'not'),
     ('staying', 'clear', 'of'), ('keeping', 'clear', 'of'), ('steering', 'clear', 'of'),
     ('you', 'must', 'not'), ('you', 'should', 'not'), ('must', 'not'), ('cannot',), ('should', 'not'),
@@ -118,6 +121,15 @@ NOT_BEFORE_VERB = frozenset({'you', 'i', 'we', 'to', 'must', 'should', 'please',
                              'single', 'any', 'every', 'each', 'no'}) | \
     GOAL_VERBS_SEED
 
+# Words that may open a trigger of a rule ("whenever", "as soon as", "visiting a means...").
+RULE_WORDS = frozenset({'whenever', 'time', 'anytime', 'if', 'soon', 'after', 'once', 'when', 'moment',
+                        'before', 'means', 'later', 'future', 'afterwards', 'afterward', 'immediately'})
+
+# Words after which a clause opener ("do not", "never", "you must") does not start a new clause.
+RUN_ON_NOT_AFTER = frozenset({'and', 'or', 'but', 'then', 'that', 'so', 'if', 'when', 'because', 'where',
+                              'which', 'who', 'what', 'why', 'how', 'as', 'the', 'a', 'an', 'to', 'of', 'for',
+                              'until', 'before', 'after', 'while', 'unless', 'whenever'})
+
 STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})
 
 # Trailing phrases that add nothing to the task ("at all costs", "on your travels").
@@ -127,14 +139,31 @@ NOISE_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('order', 'is', 'not', 'important'), ('in', 'any', 'order', 'required'), ('required',),
     ('the', 'order', 'does', 'not', 'matter'), ('in', 'no', 'particular', 'order'), ('eventually',),
     ('at', 'least', 'once'), ('at', 'any', 'time'), ('at', 'any', 'instant'), ('ever',),
+    ('as', 'many', 'times', 'as', 'you', 'want'), ('as', 'many', 'times', 'as', 'you', 'like'),
+    ('as', 'often', 'as', 'you', 'want'), ('as', 'often', 'as', 'you', 'like'),
 ), key=lambda t: -len(t)))
 ORDER_TAILS: tuple[tuple[str, ...], ...] = (
     ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),
     ('in', 'the', 'given', 'order'), ('in', 'the', 'same', 'order'), ('in', 'this', 'order'),
     ('in', 'that', 'order'), ('in', 'order'), ('one', 'after', 'the', 'other'),
-    ('in', 'the', 'order', 'given'), ('in', 'that', 'specific', 'order'), ('in', 'this', 'strict', 'order'),
-    ('in', 'that', 'strict', 'order'), ('in', 'this', 'specific', 'order'), ('in', 'strict', 'order'),
+    ('in', 'the', 'order', 'given'),
 )
+# "in that strict order", "without visiting any out of turn": no goal may come before the one it follows.
+STRICT_ORDER_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('in', 'that', 'specific', 'order'), ('in', 'this', 'strict', 'order'), ('in', 'that', 'strict', 'order'),
+    ('in', 'this', 'specific', 'order'), ('in', 'strict', 'order'), ('in', 'strictly', 'this', 'order'),
+    ('in', 'strictly', 'that', 'order'), ('strictly', 'in', 'this', 'order'),
+    ('strictly', 'in', 'that', 'order'),
+    ('strictly', 'in', 'order'), ('in', 'the', 'exact', 'order'), ('in', 'exactly', 'that', 'order'),
+    ('in', 'exactly', 'this', 'order'), ('in', 'that', 'exact', 'order'), ('in', 'this', 'exact', 'order'),
+    ('in', 'the', 'following', 'strict', 'order'), ('in', 'strict', 'sequence'),
+    ('make', 'sure', 'not', 'to', 'visit', 'waypoints', 'out', 'of', 'turn'),
+    ('make', 'sure', 'not', 'to', 'visit', 'locations', 'out', 'of', 'turn'),
+    ('ensure', 'to', 'not', 'visit', 'locations', 'out', 'of', 'turn'),
+    ('ensure', 'to', 'not', 'visit', 'waypoints', 'out', 'of', 'turn'),
+    ('without', 'visiting', 'any', 'out', 'of', 'turn'), ('never', 'out', 'of', 'turn'),
+    ('not', 'out', 'of', 'turn'),
+), key=lambda t: -len(t)))
 
 IGNORED_CLAUSES = frozenset({
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
@@ -168,7 +197,8 @@ CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
     'only', 'not', 'never', 'do', 'stay', 'keep', 'avoid', 'on', 'once', 'after', 'before', 'while',
     'if', 'either', 'also', 'just', 'first', 'but', 'when', 'until', 'whatever', 'finally', 'no', 'steer',
     'along', 'take', 'fly', 'survey', 'drive', 'land', 'stop', 'swing', 'make', 'patrol', 'charge', 'hover',
-    'whichever', 'order', 'in', 'twice', 'three', 'exactly', 'at', 'and', 'then'}) - {
+    'whichever', 'order', 'in', 'twice', 'three', 'exactly', 'at', 'and', 'then', 'eventually', 'sometime',
+    'afterwards', 'afterward', 'later'}) - {
     'be', 'robot', 'drone', 'hey', 'okay', 'kindly', 'so', 'now', 'lastly', 'up', 'end', 'ahead', 'i',
     'you', 'can', 'could', 'would', 'will', 'need', 'want', 'please'} | {'i', 'you', 'please'}
 
@@ -305,6 +335,7 @@ def _until_avoid(avoid: Sequence[Descriptor], goal: Formula) -> Formula:
 class _Clause:
     connector: str          # 'seq', 'and', 'pre', 'or'
     tokens: list[str]
+    strict: bool = False    # "..., and only then ...": its goal not before the one before it
 
 
 @dataclass
@@ -492,23 +523,30 @@ def normalize_counts(rest: list[str]) -> list[str]:
     return text.split()
 
 
-def _strip_tails(rest: list[str]) -> tuple[list[str], bool]:
-    """Remove phrases that add nothing ("at all costs") and say whether an order phrase was there."""
-    ordered = False
+def _strip_tails(rest: list[str]) -> tuple[list[str], str]:
+    """Remove phrases that add nothing ("at all costs"), and say which order phrase was there.
+
+    The order is ``''`` (none), ``'sequence'`` ("in that order": one after the other) or
+    ``'strict'`` ("in that strict order": none before the one it follows).
+    """
+    order = ''
     changed = True
     while changed and rest:
         changed = False
-        for tail in NOISE_TAILS + ORDER_TAILS:
+        for tail in STRICT_ORDER_TAILS + NOISE_TAILS + ORDER_TAILS:
             n = len(tail)
             for i in range(len(rest) - n + 1):
                 if tuple(rest[i:i + n]) == tail and (i == 0 or i + n == len(rest)):
-                    ordered = ordered or tail in ORDER_TAILS
+                    if tail in STRICT_ORDER_TAILS:
+                        order = 'strict'
+                    elif tail in ORDER_TAILS:
+                        order = order or 'sequence'
                     rest = rest[:i] + rest[i + n:]
                     changed = True
                     break
             if changed:
                 break
-    return rest, ordered
+    return rest, order
 
 
 def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
@@ -527,6 +565,7 @@ class _Reader:
 
     def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = ()) -> None:
         self.phrases = PhraseParser(landmarks)
+        self.rules = RuleReader(self.phrases)
         self.task = _Task()
         self.avoid_scope = avoid_scope
         self.notes = notes
@@ -543,6 +582,7 @@ class _Reader:
         self.before_strict = False
         self.insert_before: Optional[Step] = None
         self.connector = 'and'
+        self.strict_chain = False   # "in that strict order" somewhere in the instruction
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -558,6 +598,8 @@ class _Reader:
             raise TranslationError(f'found no action (go, bring, avoid...) in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
         self._repair_avoid_then_visit()
+        if self.strict_chain:
+            self._strict_chain()
         if self.pending_avoid_at:
             step = self.task.last_step(('visit',))
             if step is not None:
@@ -565,6 +607,15 @@ class _Reader:
             else:
                 self.task.constraints.extend(_never(self.pending_avoid_at))
         return self.task.formula()
+
+    def _strict_chain(self) -> None:
+        """'in that strict order': each goal of the chain only after the one before it."""
+        visits = [st for st in self.task.chain if st.kind == 'visit']
+        for a, b in zip(visits, visits[1:]):
+            for d in b.targets:
+                f = Until(Not(_near(d)), _or([_near(t) for t in a.targets]))
+                if f not in self.task.constraints and d not in a.targets:
+                    self.task.constraints.append(f)
 
     def _repair_avoid_then_visit(self) -> None:
         """Avoid a place that is also a later goal only on the way there.
@@ -623,6 +674,14 @@ class _Reader:
                         head = head[:-1]
                     self._read_sentence(head)
                 self._read_permission(tokens[p:])
+                return
+        if any(t in RULE_WORDS for t in tokens):
+            goals = [d for st in self.task._all_steps() for d in st.targets + st.dests]
+            rules = self.rules.read(tokens, goals)
+            if rules is not None:
+                # "whenever you pass a, check b": rules over the whole run
+                self.saw_action = True
+                self.task.constraints.extend(rules)
                 return
         scope: Optional[_Scope] = None
         clauses = self._clauses(tokens)
@@ -696,6 +755,15 @@ class _Reader:
             t = tokens[i]
             boundary = ''
             skip = 0
+            only_then = _starts(tokens, i + 1, ['then']) or _starts(tokens, i + 1, ['after', 'that'])
+            if t == 'only' and only_then:
+                # "go to a, and only then go to b": b after a, and not before it
+                boundary, skip = 'seq', 2 if tokens[i + 1] == 'then' else 3
+                if clauses[-1].tokens:
+                    clauses.append(_Clause('seq', []))
+                clauses[-1].connector, clauses[-1].strict = 'seq', True
+                i += skip
+                continue
             if t == 'then' and (i + 1 >= n or not _starts(tokens, i + 1, [','])):
                 boundary, skip = 'seq', 1
             elif _starts(tokens, i, ['and', 'then']) or _starts(tokens, i, [',', 'then']) or \
@@ -720,6 +788,13 @@ class _Reader:
             elif t == 'always' and 0 < i < n - 1 and tokens[i + 1] in ('avoid', 'stay', 'keep') and \
                     tokens[i - 1] not in (',', 'and', 'but', 'while'):
                 boundary, skip = 'and', 0
+                if clauses[-1].tokens:
+                    clauses.append(_Clause('and', []))
+                clauses[-1].tokens.append(t)
+                i += 1
+                continue
+            elif 0 < i < n - 1 and self._opens_run_on(tokens, i):
+                # "go to a do not go to b": a new clause without a comma
                 if clauses[-1].tokens:
                     clauses.append(_Clause('and', []))
                 clauses[-1].tokens.append(t)
@@ -776,6 +851,33 @@ class _Reader:
             i += 1
         return [c for c in clauses if c.tokens]
 
+    def _opens_run_on(self, tokens: list[str], i: int) -> bool:
+        """Whether a prohibition or an obligation starts at ``i`` right after a noun phrase or a count.
+
+        Typed or transcribed instructions often run clauses together ("never go to a never go to
+        b", "visit the den at least once do not go to the hall before the den"); a clause opener
+        right after the end of a phrase starts a new clause.
+        """
+        prev = tokens[i - 1]
+        landmark = any(tuple(tokens[i - len(lm):i]) == lm for lm in self.phrases.landmarks)
+        if not landmark and (prev in NOT_BEFORE_VERB or prev in PUNCT or prev in RUN_ON_NOT_AFTER):
+            return False
+        counted = prev in ('once', 'twice', 'thrice', 'times', 'again')
+        if not (landmark or counted or is_name_word(tokens, i - 1, True)):
+            return False
+        nxt = tokens[i + 1]
+        if tokens[i] == 'do':
+            return nxt in ('not', 'no')
+        if tokens[i] == 'never':
+            return nxt in AVOID_FILLER or nxt in GOAL_VERBS
+        if tokens[i] in ('ensure', 'make'):
+            return tokens[i] == 'ensure' or nxt == 'sure'
+        if tokens[i] == 'you':
+            verb = tokens[i + 2] if i + 2 < len(tokens) else ''
+            return nxt in ('must', 'cannot', 'should', 'have', 'need', 'can', 'may', 'are') and (
+                verb in GOAL_VERBS or verb in AVOID_FILLER or verb in ('not', 'never', 'to', 'only'))
+        return False
+
     # ----------------------------------------------------------------- clauses
     def _read_clause(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
         """Read one clause; returns the scope that carries to the next clause of the sentence."""
@@ -826,6 +928,9 @@ class _Reader:
         if s.endswith(fine) or s in IGNORED_CLAUSES or \
                 s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                               'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
+            return scope
+        if tuple(tokens) in STRICT_ORDER_TAILS:
+            self.strict_chain = True   # "in strictly this order, visit a, then b"
             return scope
         if s in ('not both', 'but not both', 'not both of them'):
             self._exclusive_or()
@@ -887,8 +992,9 @@ class _Reader:
             first_flag = True
         if self._avoid_start(tokens) is not None and 'first' in tokens[:4] and self.task.chain:
             first_flag = True
+        ordering = tokens[:2] in (['not', 'until'], ['not', 'before'], ['only', 'after'])
         if first_flag and self.task.chain and clause.connector == 'and' and self.conditional is None:
-            if self._avoid_start(tokens) is not None:
+            if self._avoid_start(tokens) is not None and not ordering:
                 self.saw_action = True
                 self._read_avoid(tokens, _Scope('onway'))
                 return scope
@@ -1957,7 +2063,10 @@ class _Reader:
                 joiner = 'then'
                 rest = rest[e2:]
         # "X in that order" / "in any order"
-        ordered = ordered_tail
+        ordered = bool(ordered_tail)
+        strict = clause.strict
+        if ordered_tail == 'strict':
+            self.strict_chain = True
         for phrase in (['in', 'that', 'order'], ['in', 'order'], ['in', 'this', 'order'],
                        ['one', 'after', 'the', 'other']):
             if _starts(rest, 0, phrase):
@@ -1973,12 +2082,10 @@ class _Reader:
         if c is not None and _starts(rest, c[1], ['in', 'a', 'row']):
             self.task.repeat = c[0]
             rest = rest[c[1] + 3:]
-        if scope is not None and scope.kind == 'after' and scope.target is not None and not self.task.chain \
-                and self.task.find_step(scope.target.descriptor) is None and not rest:
-            # "once you visit a, you have to visit b": whenever a happens, b follows
-            react = _or([_near(d) for d in targets])
-            self.task.constraints.append(Always(Implies(_near(scope.target.descriptor), Eventually(react))))
-            return
+        if scope is not None and scope.kind == 'after' and scope.target is not None and \
+                self.task.find_step(scope.target.descriptor) is None:
+            # "after you visit a, go to b": a first (a rule when said as one: see reactions)
+            self.task.chain.append(Step('visit', [scope.target.descriptor]))
         if self.only and rest[:1] == ['once']:
             rest = ['exactly'] + rest   # "only enter the pantry once"
         counted, rest = self._read_count(rest, targets)
@@ -1999,7 +2106,10 @@ class _Reader:
             self.task.chain.insert(at, self.task.chain.pop())
             self.insert_before = None
         else:
+            before = self.task.last_step(('visit', 'deliver'))
             self._add_targets(targets, joiner, ordered)
+            if strict:
+                self._strict_order(before, targets, joiner)
         if self.before_target is not None:
             if self.before_strict:
                 self.task.constraints.append(Until(Not(_near(self.before_target)), _or(
@@ -2057,6 +2167,14 @@ class _Reader:
         self.notes.append(f'read "{tokens[0]}" as putting {what} at {dest.descriptor}')
         self.saw_action = True
         return True
+
+    def _strict_order(self, before: Optional[Step], targets: list[Descriptor], joiner: str) -> None:
+        """'go to a, and only then go to b': this clause's goals not before the goal before them."""
+        prev = before.targets if before is not None and before.kind == 'visit' else (
+            before.dests if before is not None else [])
+        if prev:
+            for d in targets if joiner == 'or' else targets[:1]:
+                self.task.constraints.append(Until(Not(_near(d)), _or([_near(p) for p in prev])))
 
     def _add_targets(self, targets: list[Descriptor], joiner: str, ordered: bool) -> None:
         if len(targets) == 1 or joiner == 'or':

@@ -73,8 +73,8 @@ whichever whatever matter care which else other others until till avoid avoiding
 while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside
-unless except whenever since because though although otherwise something anything everything nothing
-someone anyone anymore forever staying keeping steering remaining
+unless except whenever since because though although otherwise later afterwards afterward means thereafter
+something anything everything nothing someone anyone anymore forever staying keeping steering remaining
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.

@@ -294,3 +294,37 @@ ROUND_FOUR = [
 @pytest.mark.parametrize('instruction,gold', ROUND_FOUR, ids=[c[0][:30] for c in ROUND_FOUR])
 def test_fourth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+ROUND_FIVE = [
+    ('If you go into the nursery at all, hit the changing table first.',
+     '!near[nursery] W near[changing_table]'),
+    ('Honestly the easiest thing would be to go to the den.', 'F near[den]'),
+    ("I'm not sure where the keys are, maybe check the kitchen drawer.", 'F near[kitchen_drawer]'),
+    ('It would be great if you could go to the attic.', 'F near[attic]'),
+    ('Do me a favour and go to the porch.', 'F near[porch]'),
+    ('Time to head to the garage.', 'F near[garage]'),
+    ("Let's visit the greenhouse, then the shed.", 'F (near[greenhouse] & F near[shed])'),
+    ('Go to the pantry, which is next to the kitchen.', 'F near[pantry::isnextto(kitchen)]'),
+    ('Go to the printer near the window, the one on the left of the desk.',
+     'F near[printer::isnextto(window)::isleftof(desk)]'),
+    ('Bring the plates to the table, but do not go near the dog until you have put them down.',
+     'F (near[plates] & F (pick[plates] & (!near[dog] U (near[table] & F release[plates, table]))))'),
+    ('Go to the sink and wash your hands, then go to the table.', 'F (near[sink] & F near[table])'),
+    ('Head to the door and knock.', 'F near[door]'),
+    ('Go to the fridge, open it, and grab a soda.', 'F (near[fridge] & F (near[soda] & F pick[soda]))'),
+    ('Visit the chapel three times but no more.',
+     '!near[chapel] U (near[chapel] & (near[chapel] U (!near[chapel] & (!near[chapel] U (near[chapel] & '
+     '(near[chapel] U (!near[chapel] & (!near[chapel] U (near[chapel] & '
+     '(near[chapel] W G !near[chapel]))))))))))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_FIVE, ids=[c[0][:30] for c in ROUND_FIVE])
+def test_fifth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_real_words_the_vocabulary_lacks_are_not_corrected() -> None:
+    t = T.translate('Grab the goggles and take them to the workbench.')
+    assert 'goggles' in str(t.formula) and not any('read "goggles"' in n for n in t.notes)

@@ -22,6 +22,7 @@ place) are never left out: the translator still raises ``TranslationError`` on t
 """
 from __future__ import annotations
 
+import re
 from typing import Sequence
 
 from ltl_instruct.core.language.phrases import DETERMINERS, is_name_word, match_relation
@@ -99,6 +100,39 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
 PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',
                           'past', 'toward', 'towards', 'inside', 'behind', 'under', 'over', 'beside',
                           'between', 'around', 'with', 'outside', 'across', 'along', 'via', 'up', 'down'})
+
+# Things done where the robot already is ("go to the door and knock"): no goal of their own
+# unless a place follows them ("clean the kitchen" is read as going there).
+ACTIVITY_VERBS = frozenset('''
+wash knock sit stand wait rest look listen open close shut ring check tidy clean dust sweep mop vacuum
+lie kneel pause charge recharge beep watch take stay turn switch unlock lock press push pull make
+'''.split()) - {'take', 'push', 'make', 'turn', 'switch', 'stay'}
+
+# Frames around a request that ask for nothing themselves, and what they become.
+FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
+    (r'(^ | [,.;!?] )(?:honestly |so |well )?(?:the )?(?:easiest|best|simplest|quickest|ideal) '
+     r'(?:thing|option|way|plan|move)(?: to do)? (?:would be|is|will be) (?:for you )?(?:to )?', r'\1 '),
+    (r'(^ | [,.;!?] )(?:it would be|it is|it will be|that would be) (?:great|nice|good|lovely|helpful|'
+     r'awesome|ideal|perfect|wonderful) if you (?:could|would|can|will) ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:it is )?(?:time|high time) (?:for you )?to ', r'\1 '),
+    (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
+    (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
+     r'get) )', r'\1 '),
+    (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),
+    (r'(^ | [,.;!?] )(?:maybe|perhaps|probably) (?=[a-z])', r'\1 '),
+))
+
+
+def strip_frames(tokens: list[str], notes: list[str]) -> list[str]:
+    """Remove frames around a request ("it would be great if you could ...", "time to ..."), noted."""
+    text = ' ' + ' '.join(tokens) + ' '
+    for pattern, repl in FRAMES:
+        m = pattern.search(text)
+        if m is not None:
+            notes.append(f'left out "{m.group(0).strip(" ,.;!?")}" (asks for nothing)')
+            text = ' ' + ' '.join(pattern.sub(repl, text).split()) + ' '
+    return text.split()
+
 
 # Nouns of time: "this evening" is not a place.
 TIME_NOUNS = frozenset({'evening', 'morning', 'afternoon', 'night', 'week', 'weekend', 'day', 'moment',

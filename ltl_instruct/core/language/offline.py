@@ -427,7 +427,7 @@ class OfflineTranslator:
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         notes: list[str] = []
         tokens = _correct_spelling(tokens, notes, self.landmarks)
-        tokens = paraphrase(chatter.strip_courtesy(tokens, notes))
+        tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes), notes))
         tokens = resolve_list_references(tokens, notes)
         tokens = apply_exclusions(apply_corrections(tokens, notes), notes)
         tokens = rewrite_idioms(tokens)
@@ -820,6 +820,11 @@ class _Reader:
                     boundary, skip = 'and', 1   # "I left it by the door, can you go there"
                 elif t in (',', 'and') and self._same_for_lead(tokens, j):
                     boundary, skip = 'and', j - i
+                elif t in (',', 'and') and j < n and tokens[j] in chatter.ACTIVITY_VERBS and (
+                        j + 1 >= n or tokens[j + 1] in PUNCT or tokens[j + 1] in (
+                            'it', 'them', 'your', 'my', 'down', 'up', 'outside', 'inside', 'around', 'for',
+                            'there', 'here', 'we', 'if', 'whether', 'a', 'and', 'then')):
+                    boundary, skip = 'and', j - i   # "go to the door and knock"
                 elif t in (',', 'so') and self._starts_statement(tokens, j):
                     boundary, skip = 'and', j - i   # "be careful, the floor is wet"
                 elif i < 4 and t in (',', ':') and all(is_name_word(tokens, m, m > 0) for m in range(i)) and \
@@ -974,7 +979,7 @@ class _Reader:
             if tokens[-len(tail):] == tail and len(tokens) > len(tail):
                 tokens = ['visit'] + tokens[:-len(tail)]
                 break
-        if self._read_chatter(tokens, clause.tokens):
+        if self._read_chatter(tokens, clause.tokens) or self._read_activity(tokens):
             return scope
         raw = [t for t in clause.tokens if t not in PUNCT]
         first_flag = bool(raw) and (raw[-1] == 'first' or raw[:2] == ['but', 'first'] or (
@@ -1050,6 +1055,22 @@ class _Reader:
         np = self.phrases.parse(tokens, j)
         end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
         return np is not None and chatter.is_statement(tokens[j:end], np.end - j)
+
+    def _read_activity(self, tokens: list[str]) -> bool:
+        """'go to the sink and wash your hands', 'open it': something done where the robot is, no new goal."""
+        if not tokens or tokens[0] not in chatter.ACTIVITY_VERBS or self.phrases.landmarks or \
+                not self.task.chain:
+            return False
+        rest = tokens[1:]
+        if tokens[0] == 'check' and rest[:1] and rest[0] not in chatter.STATEMENT_SUBJECTS | {'there'}:
+            return False
+        if any(t in DETS and t not in ('your', 'my', 'our', 'his', 'her', 'their') for t in rest) or \
+                chatter.has_constraint_word(rest):
+            return False
+        place = self.task.chain[-1]
+        where = ', '.join(map(str, place.dests or place.targets)) or 'the last place'
+        self.notes.append(f'"{" ".join(tokens)}": done at {where}, no goal of its own')
+        return True
 
     def _read_chatter(self, tokens: list[str], raw: list[str]) -> bool:
         """Leave out a clause that asks for nothing: a statement about the scene, filler, a skip.
@@ -1438,6 +1459,13 @@ class _Reader:
                         'it', 'them', 'up')):
                     return _Scope('until', self.last_object, 'pick'), []
                 event = 'pick' if rest[j] not in ('got', 'gotten', 'get') else 'near'
+            released = ('put', 'dropped', 'delivered', 'placed', 'set', 'released', 'left')
+            if j < len(rest) and rest[j] in released and rest[j + 1:j + 2] in (
+                    ['it'], ['them'], ['down'], ['off']) and self.task.last_step(('deliver',)) is not None:
+                k = j + 1
+                while k < len(rest) and rest[k] in ('it', 'them', 'down', 'off'):
+                    k += 1
+                return _Scope('carry'), rest[k:]   # "until you have put them down": while carrying
             skippable = NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {'picked', 'grabbed', 'up'}
             while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in skippable:
                 j += 1
@@ -1926,8 +1954,8 @@ class _Reader:
         if not objs or objs[0].descriptor.name in ('yourself', 'itself', 'over'):
             return False   # "get yourself over to X" is going there
         rest = tokens[end:]
-        if rest and rest[0] == 'from' and len(objs) == 1:
-            # "the blanket from the closet": where the object is, as a nearness relation
+        if rest and rest[0] in ('from', 'off') and len(objs) == 1:
+            # "the blanket from the closet", "the remote off the couch": where the object is, as nearness
             src = self.phrases.parse(rest, 1, destination_stops=True)
             if src is not None and not src.pronoun:
                 o = objs[0]

@@ -42,6 +42,9 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' (?:pick|choose|select) (?:either|one of) ', ' go to either '),
     (r' (?:one time|1 time) (?:and one time )?only ', ' exactly once '),
     (r' once only ', ' exactly once '),
+    (r'(?<!exactly) ((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|thrice) '
+     r'(?:, )?'
+     r'(?:but |and )?no more(?: than that| and no less| , no less)?(?= [,.;!?]|$| $)', r' exactly \1'),
     (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
      r'(?:at|in|inside|around|over) ', ' visit '),
     (r' (?:pay|make) a (?:quick )?(?:visit|trip) to ', ' visit '),

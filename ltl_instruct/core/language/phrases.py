@@ -192,13 +192,17 @@ def name_of(words: Sequence[str]) -> str:
     return name
 
 
-def _attach(d: Descriptor, appositive: Descriptor) -> Optional[Descriptor]:
+def _attach(d: Descriptor, appositive: Descriptor, same: bool = False) -> Optional[Descriptor]:
     """``d`` with the relations of ``appositive`` added to the noun inside it that it names again.
 
     The noun matched is the one named last (deepest first), with the same head word and
     a name that the appositive's name ends ("tall_cabinet" ... "the cabinet"), and
-    that has no relations of its own; None if there is none.
+    that has no relations of its own; None if there is none. With ``same`` ("the printer
+    by the window, the one left of the desk") the relations are added to ``d`` itself.
     """
+    if same and d.name == appositive.name:
+        extra = tuple(r for r in appositive.relations if r not in d.relations)
+        return Descriptor(d.name, d.relations + extra)
     for k, rel in reversed(list(enumerate(d.relations))):
         for a, arg in reversed(list(enumerate(rel.args))):
             inner = _attach(arg, appositive)
@@ -305,7 +309,11 @@ class PhraseParser:
         relations: list[Relation] = []
         while i < len(tokens):
             j = i
-            lead = _relative_lead(tokens, j)
+            if tokens[j] == ',' and j + 1 < len(tokens) and tokens[j + 1] in ('which', 'that') and \
+                    _relative_lead(tokens, j + 1):
+                j += 1   # "the pantry, which is next to the kitchen"
+            lead = _relative_lead(tokens, j) + (j - i)
+            j = i
             if not lead and relations and tokens[j] in ('and', 'but'):
                 lead = 1 + _relative_lead(tokens, j + 1) if match_relation(tokens, j + 1 + _relative_lead(
                     tokens, j + 1)) else 0
@@ -374,7 +382,7 @@ class PhraseParser:
                 break
             if sep == 'and' and tokens[i] == ',' and nxt.descriptor.relations and nxt.pronoun in ('', 'one'):
                 # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
-                merged = _attach(phrases[-1].descriptor, nxt.descriptor)
+                merged = _attach(phrases[-1].descriptor, nxt.descriptor, nxt.pronoun == 'one')
                 if merged is not None:
                     phrases[-1] = NounPhrase(merged, phrases[-1].start, nxt.end, phrases[-1].head)
                     i = nxt.end

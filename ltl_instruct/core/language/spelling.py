@@ -8,12 +8,11 @@ People type names with typos ("the patnry", "the securty desk"); a referent name
   frequency), not in the translator's own lexicon, and not explainable as a known word
   with a common suffix or prefix, or as two known words run together ("loveseat");
 - exactly the kind of slip a typist makes turns a known word into it: two letters
-  swapped, a letter doubled or dropped, a vowel for a vowel;
-  never a change of the first letter nor a neighbouring key (too many real words are
-  one key from another), never an inflection ("dumpster" is not
-  "dumpsters");
-- the word is long enough (four letters, five for a swap or a dropped letter) for one
-  slip to be told from another word.
+  swapped, a letter doubled or dropped; never a change of the first letter, a
+  neighbouring key, a vowel for a vowel or a stray letter (a real word the list lacks
+  is too often one such change from another: "goggles" is not "giggles", "steeple" is
+  not "steele"), never an inflection ("dumpster" is not "dumpsters");
+- the word is long enough (five letters) for one slip to be told from another word.
 
 Among candidates the likelier slip wins, then the more frequent word. Each correction
 is returned so the translator can note it ('read "patnry" as "pantry"'); the person
@@ -37,8 +36,8 @@ _PREFIXES = ('re', 'un', 'dis', 'pre', 'mini', 'micro', 'over', 'under', 'out', 
 _RANK = {'double': 0, 'swap': 0, 'vowel': 1, 'missing': 2, 'extra': 2, 'key': 3}
 # Slips allowed by word length: a short word is one slip from too many others.
 # A neighbouring key is never tried: it turns too many real words into others ("copier").
-# Nor a stray letter removed: "steeple" would become "steele" (the vocabulary lacks the word).
-_MIN_LENGTH = {'double': 4, 'swap': 5, 'vowel': 5, 'missing': 5, 'extra': 99, 'key': 99}
+# Nor a stray letter removed ("steeple" -> "steele"), nor a vowel for a vowel ("goggles").
+_MIN_LENGTH = {'double': 5, 'swap': 5, 'vowel': 99, 'missing': 5, 'extra': 99, 'key': 99}
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
 # Household, office and outdoor words a robot is sent to that the vocabulary lacks
 # (it was built from encyclopaedia and book text); they are words, not slips.
@@ -53,7 +52,7 @@ modem lectern easel corkboard turnstile lanyard daypack duffel keychain coaster 
 skillet saucepan trivet stovetop rangehood sconce lampshade cistern mulch trowel secateurs laptop
 fishtank terrarium hamster gerbil parakeet budgie cockatiel poodle labrador tupperware thermos minibar
 kiosk gazebo hangar tarmac workbench toolbox wheelbarrow sprinkler gutter chimney mantel copier
-shredder printer scanner fridge freezer cooktop pantry closet dresser vanity hamper
+shredder printer scanner fridge freezer cooktop pantry closet dresser vanity hamper goggles mitt grater
 '''.split())
 
 

@@ -328,3 +328,13 @@ def test_fifth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
 def test_real_words_the_vocabulary_lacks_are_not_corrected() -> None:
     t = T.translate('Grab the goggles and take them to the workbench.')
     assert 'goggles' in str(t.formula) and not any('read "goggles"' in n for n in t.notes)
+
+
+@pytest.mark.parametrize('instruction,gold', [
+    ('Never mind, go to the porch.', 'F near[porch]'),
+    ('Go to the den. Never mind, go to the porch.', 'F near[porch]'),
+    ("Please don't, under any circumstances, enter the lab.", 'G !near[lab]'),
+    ('Ignore the kitchen and go to the hall.', 'F near[hall]'),
+])
+def test_words_that_take_back_or_stress_are_not_places(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

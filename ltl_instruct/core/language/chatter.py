@@ -81,9 +81,11 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('no', 'matter', 'what'), ('thanks', 'a', 'lot'), ('thanks', 'so', 'much'),
     ('thank', 'you', 'so', 'much'),
     ('many', 'thanks'), ('when', 'you', 'are', 'ready'), ('whenever', 'you', 'are', 'ready'),
-    ('in', 'a', 'minute'), ('straight', 'away'),
+    ('in', 'a', 'minute'), ('straight', 'away'), ('under', 'any', 'circumstances'), ('whatever', 'happens'),
 ), key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
+# Lead-ins that ask for nothing only at the very start (later they take back what came before).
+START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
 # Lead-ins before a comma that announce what follows and ask for nothing themselves.
 LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('fyi',), ('just', 'so', 'you', 'know'), ('so', 'you', 'know'), ('by', 'the', 'way'), ('btw',),
@@ -224,7 +226,7 @@ def strip_courtesy(tokens: list[str], notes: list[str]) -> list[str]:
     while i < n:
         hit = 0
         if i == 0 or tokens[i - 1] in PUNCT:
-            for phrase in _LEADS_BY_FIRST.get(tokens[i], ()):
+            for phrase in _LEADS_BY_FIRST.get(tokens[i], ()) + (START_LEADS if i == 0 else ()):
                 m = len(phrase)
                 if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] in (',', ':'):
                     notes.append(f'left out "{" ".join(phrase)}" (asks for nothing)')
@@ -242,6 +244,9 @@ def strip_courtesy(tokens: list[str], notes: list[str]) -> list[str]:
         if hit and (hit > 1 or tokens[i] not in ('please', 'okay', 'ok', 'now')):
             notes.append(f'left out "{" ".join(tokens[i:i + hit])}" (asks for nothing)')
             i += hit
+            if out and out[-1] == ',' and i < n and tokens[i] == ',':
+                out.pop()   # "don't, under any circumstances, enter": no commas are left
+                i += 1
             continue
         out.append(tokens[i])
         i += 1

@@ -571,6 +571,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         k = next((j for j in range(k) if seg[j] in ('and', 'then') and j + 1 < len(seg) and seg[j + 1] in
                   _VERBS | {'do'}), k)
         target, rest = seg[:k], seg[k + 1:]
+        if seg and seg[0] in _VERBS and seg[0] not in ('drop', 'leave') and marker in (
+                'never', 'forget', 'ignore'):
+            target, rest = [], seg   # "never mind, go to the porch": the last goal is replaced
         tgt = ' '.join(target)
         if any(w in tgt for w in ('avoid', 'avoiding', 'avoidance')):
             pos = next((p for p in range(len(prev) - 1, -1, -1) if prev[p] in _AVOID_WORDS), -1)

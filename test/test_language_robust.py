@@ -338,3 +338,8 @@ def test_real_words_the_vocabulary_lacks_are_not_corrected() -> None:
 ])
 def test_words_that_take_back_or_stress_are_not_places(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+def test_slips_in_the_words_that_give_structure() -> None:
+    _check('Go to the balcony, thne the roof, but nver go near the chimney.',
+           'F (near[balcony] & F near[roof]) & G !near[chimney]')

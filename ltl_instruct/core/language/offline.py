@@ -473,7 +473,10 @@ def _speller() -> Speller:
                 elif isinstance(value, tuple) and value and all(isinstance(p, tuple) for p in value):
                     lexicon |= {w for p in value for w in p if isinstance(w, str)}   # phrase lists
         lexicon |= set(text.TYPOS.values())
-        _SPELLER = Speller(lexicon=lexicon)
+        core = chatter.CONSTRAINT_WORDS | GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
+            'avoid', 'near', 'away', 'visit', 'between', 'behind', 'after', 'before', 'until', 'then',
+            'never', 'twice', 'once', 'stay', 'keep', 'bring', 'take', 'please'}
+        _SPELLER = Speller(lexicon=lexicon, core=core - {'be', 'i', 'you'})
     return _SPELLER
 
 

@@ -12,7 +12,8 @@ People type names with typos ("the patnry", "the securty desk"); a referent name
   neighbouring key, a vowel for a vowel or a stray letter (a real word the list lacks
   is too often one such change from another: "goggles" is not "giggles", "steeple" is
   not "steele"), never an inflection ("dumpster" is not "dumpsters");
-- the word is long enough (five letters) for one slip to be told from another word.
+- the word is long enough (five letters) for one slip to be told from another word;
+  four for the few words that give an instruction its structure ("nver", "thne").
 
 Among candidates the likelier slip wins, then the more frequent word. Each correction
 is returned so the translator can note it ('read "patnry" as "pantry"'); the person
@@ -108,9 +109,13 @@ class Speller:
         Further words to treat as known (the translator's own vocabulary).
     """
 
-    def __init__(self, words: Optional[dict[str, int]] = None, lexicon: Iterable[str] = ()) -> None:
+    def __init__(self, words: Optional[dict[str, int]] = None, lexicon: Iterable[str] = (),
+                 core: Iterable[str] = ()) -> None:
         self.words = default_words() if words is None else words
         self.lexicon = frozenset(lexicon) | DOMAIN_WORDS
+        # the few words that give an instruction its structure ("never", "then"): a slip in one of
+        # them is told apart already at four letters ("nver", "thne"), the list being short
+        self.core = frozenset(w for w in core if len(w) >= 4 and w.isalpha())
         self._cache: dict[str, Optional[str]] = {}
 
     def known(self, word: str) -> bool:
@@ -139,6 +144,12 @@ class Speller:
         if word in self._cache:
             return self._cache[word]
         out: Optional[str] = None
+        if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word) and self.core:
+            core = sorted(c for c, kind in _slips(word)
+                          if c in self.core and kind in ('swap', 'double', 'missing'))
+            if core:
+                self._cache[word] = core[0]
+                return core[0]
         if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word):
             best: Optional[tuple[int, int, str]] = None
             for cand, kind in _slips(word):

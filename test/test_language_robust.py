@@ -343,3 +343,23 @@ def test_words_that_take_back_or_stress_are_not_places(instruction: str, gold: s
 def test_slips_in_the_words_that_give_structure() -> None:
     _check('Go to the balcony, thne the roof, but nver go near the chimney.',
            'F (near[balcony] & F near[roof]) & G !near[chimney]')
+
+
+ROUND_SEVEN = [
+    ('The kids left their shoes in the hall. Take the shoes to the closet.',
+     'F (near[shoes] & F (pick[shoes] & F (near[closet] & F release[shoes, closet])))'),
+    ('First stop, the bakery. Second stop, the butcher. Last stop, the florist.',
+     'F (near[bakery] & F (near[butcher] & F near[florist]))'),
+    ('Go to the pool, then the gym. Hmm, actually do the gym first.', 'F (near[gym] & F near[pool])'),
+    ('Water the ferns on the porch and then go to the kitchen.',
+     'F (near[ferns::isabove(porch)] & F near[kitchen])'),
+    ("There's a red cup, a blue cup, and a green cup. Bring me the blue one.",
+     'F (near[blue_cup] & F pick[blue_cup])'),
+    ("I spilled coffee by the desk, so avoid the desk and go to the window.",
+     'F near[window] & G !near[desk]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_SEVEN, ids=[c[0][:30] for c in ROUND_SEVEN])
+def test_seventh_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -451,6 +451,10 @@ NEGATIVE_VERBS = frozenset({'ignore', 'skip', 'forget', 'omit', 'bypass', 'dodge
 # Prepositions after a motion verb that still mean going there ("hover above X", drone phrasing).
 MOTION_PREPS = frozenset({'above', 'below', 'beneath', 'under', 'beside', 'near', 'alongside', 'atop',
                           'across', 'along', 'outside', 'upon'})
+# Verbs of placing something somewhere ("drape the scarf on the hook"), beyond put/place/leave.
+PLACING_VERBS = frozenset({'hang', 'lay', 'drape', 'tuck', 'slide', 'prop', 'slip', 'slot', 'shove', 'pile',
+                           'stack', 'stow', 'mount', 'rest', 'pop', 'plonk', 'plop', 'sit', 'stand', 'lean',
+                           'rack', 'shelve', 'pin', 'tape', 'clip', 'fold', 'arrange', 'position', 'park'})
 SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bring'}) - FILLERS - {
     'be', 'need', 'want', 'robot', 'drone', 'hey', 'can', 'could', 'would', 'you', 'i', 'will', 'ahead',
     'end', 'up', 'please', 'kindly'} | {'make', 'do'}
@@ -2184,10 +2188,16 @@ class _Reader:
         return None
 
     def _read_unknown_placement(self, tokens: list[str], j: int, clause: _Clause) -> bool:
-        """'hang the coat on the hook': an unknown verb, an object, a destination: a delivery."""
+        """'hang the coat on the hook': an unknown verb, an object, a destination: a delivery.
+
+        Only where the words say it is one: "into"/"onto", the object a pronoun ("hang it on"),
+        or a verb of placing; "water the ferns on the porch" is going to the ferns on the porch.
+        """
         obj = self.phrases.parse(tokens, j, destination_stops=True)
         if obj is None or obj.end >= len(tokens) or tokens[obj.end] not in (
                 'on', 'onto', 'in', 'into', 'inside'):
+            return False
+        if not (tokens[obj.end] in ('onto', 'into', 'inside') or obj.pronoun or tokens[0] in PLACING_VERBS):
             return False
         dest = self.phrases.parse(tokens, obj.end + 1)
         if dest is None:

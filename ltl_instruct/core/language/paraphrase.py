@@ -58,6 +58,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      ' check '),
     (r' pay (the|a|an|my|your|our) ((?:\w+ ){1,4})a (?:quick |short )?visit ', r' visit \1 \2'),
     (r' from there , ', ' after that , '),
+    # "first stop, the bakery. last stop, the florist": the order of the stops
+    (r'(^ | [,.;!?] )(first|second|third|fourth|fifth|next) (?:stop|destination|place|location|port of call) '
+     r'(?:is |will be )?(?:, |: )?', r'\1 \2 , '),
+    (r'(^ | [,.;!?] )(?:last|final) (?:stop|destination|place|location|port of call) '
+     r'(?:is |will be )?(?:, |: )?', r'\1 finally '),
     (r' what (?:i|we) (?:need|want|would like)(?: you to do)? is (?:for you )?(?:to )?', ' '),
     (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
     (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
@@ -84,7 +89,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
                                    ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
                                    ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
-                                   ' verify', ' confirm', ' pay ', ' what ')):
+                                   ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location')):
         return tokens
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)

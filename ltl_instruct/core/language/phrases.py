@@ -341,8 +341,8 @@ class PhraseParser:
                 i = arg1.end
         np = NounPhrase(Descriptor(name_of(words), tuple(relations)), start, i, head,
                         'one' if one else '')
-        if depth == 0:
-            self.last = np
+        if depth == 0 and not (tokens[start] == words[0] and words[0] in NAME_VERBS):
+            self.last = np   # not a verb tried as a noun ("bring me the blue one": one is not a bring)
         return np
 
     def parse_list(self, tokens: Sequence[str], i: int, destination_stops: bool = False

@@ -538,6 +538,29 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     return head + ([','] if head and head[-1] not in PUNCT else []) + new + prev[end:]
 
 
+def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Move a goal first: 'go to the pool, then the gym. Actually, do the gym first'."""
+    words = [t for t in seg if t not in PUNCT]
+    if not words or words[-1] != 'first':
+        return None
+    k = 0
+    while k < len(words) and words[k] in _VERBS | {'do', 'to', 'at', 'by', 'over', 'up'}:
+        k += 1
+    np = PhraseParser().parse(words, k)
+    if np is None or np.end != len(words) - 1 or np.pronoun:
+        return None
+    hit = next((sp for sp in reversed(_np_spans(prev)) if sp.descriptor == np.descriptor), None)
+    if hit is None:
+        return None
+    sent = max((p for p in range(hit.start) if prev[p] in '.;!?'), default=-1) + 1
+    rest = _remove_clause(prev, hit.start, narrow=True)
+    body = rest[sent:]
+    while body and body[0] in (',', 'then', 'and'):
+        body = body[1:]
+    notes.append(f'{np.descriptor} moved first')
+    return rest[:sent] + ['go', 'to'] + words[k:np.end] + [',', 'then'] + body
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
@@ -556,6 +579,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         restated = _restate(prev, seg, notes)
         if restated is not None:
             return restated
+    reordered = _first_instead(prev, seg, notes)
+    if reordered is not None:
+        return reordered
     if seg and seg[0] in _CANCEL and marker not in _CANCEL and marker != 'never':
         marker, seg = seg[0], seg[1:]
     s = ' '.join(seg)

@@ -4,6 +4,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.errors import TranslationError
 from ltl_instruct.core.language.offline import OfflineTranslator
 from ltl_instruct.core.spec import parse_formula
 
@@ -87,3 +88,41 @@ LANDMARKS = [
 def test_rules_with_known_landmarks(instruction: str, gold: str) -> None:
     got = OfflineTranslator(landmarks=('a', 'b', 'c')).translate(instruction)
     assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+ONCE = [
+    # the default (development set) reading: once in the whole run
+    ('Visit the porch exactly once, then go to the shed.', {},
+     'F (near[porch] & F near[shed]) & (!near[porch] U (near[porch] & (near[porch] W G !near[porch])))'),
+    ('Go to the lab, then the office. No revisiting is allowed.', {},
+     'F (near[lab] & F near[office]) & (!near[lab] U (near[lab] & (near[lab] W G !near[lab]))) & '
+     '(!near[office] U (near[office] & (near[office] W G !near[office])))'),
+    # once_scope='next': not again before the next goal; the last goal is visited in its turn
+    ('Visit the porch exactly once, then go to the shed.', {'once_scope': 'next'},
+     'F (near[porch] & F near[shed]) & (!near[porch] U (near[porch] U (!near[porch] U near[shed])))'),
+    ('Visit the kitchen, then the hall, visiting each room only once.', {'once_scope': 'next'},
+     '(!near[kitchen] U (near[kitchen] U (!near[kitchen] U near[hall]))) & (!near[hall] U near[kitchen]) & '
+     'F near[hall]'),
+    ('Go to the kitchen, then go to the hall without returning to the kitchen.', {'once_scope': 'next'},
+     'F (near[kitchen] & F near[hall]) & (!near[kitchen] U (near[kitchen] U (!near[kitchen] U near[hall])))'),
+    ('Visit the porch exactly once.', {'once_scope': 'next'},
+     '!near[porch] U (near[porch] & (near[porch] W G !near[porch]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,options,gold', ONCE, ids=[c[0][:30] + str(c[1]) for c in ONCE])
+def test_once_scope(instruction: str, options: dict, gold: str) -> None:
+    got = OfflineTranslator(**options).translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+def test_once_scope_is_checked() -> None:
+    with pytest.raises(TranslationError):
+        OfflineTranslator(once_scope='sometimes')
+
+
+def test_before_visiting_it_moves_the_new_goal_first() -> None:
+    got = T.translate('Visit the shed, but before visiting the shed you must visit the barn.')
+    assert equivalent(got.formula, parse_formula('F (near[barn] & F near[shed])'))
+    got = T.translate('Go to the gate followed by visiting the pond.')
+    assert equivalent(got.formula, parse_formula('F (near[gate] & F near[pond])'))

@@ -51,6 +51,10 @@ _BACK = rf'(?:{_GO}|revisit|come back to|return to|go back to)'
 _FORBIDDEN = r'(?:prohibited|forbidden|not allowed|not permitted|banned)'
 
 _PLAIN_AUX = ('is', 'are', 'get', 'gets')
+_PLACES = r'(?:landmarks?|locations?|places?|waypoints?|ones?|goals?|them|rooms?|spots?)'
+# the canonical wording of "no goal visited twice", which the clause reader knows
+_NO_REVISITS = ' , visit each place only once , '
+_CLAUSE_END = r'(?= ,| then| and| finally| only|$)'
 
 Replacement = Union[str, Callable[['re.Match[str]'], str]]
 
@@ -219,6 +223,49 @@ RULES: tuple[Rule, ...] = (
          r'\b(?:and )?each time you (?:must|have to|should) leave before coming back\b', ''),
     Rule('stop visiting it anymore', rf'\bstop (?P<verb>{_GOING}) (?P<x>it|{_NP}) (?:anymore|any more)\b',
          lambda m: f'do not {_plain(m.group("verb"))} {m.group("x")} anymore'),
+
+    # ---- no revisits: "visit each location only once", "no revisiting", "without returning to X"
+    Rule('visit each landmark only once',
+         rf'(?:\byou can |\band |\bwhile )?(?:only )?(?:visit|visiting|go to|going to) (?:each|every|all)'
+         rf'(?: of the| the| of)? {_PLACES} (?:only )?(?:exactly )?(?:once|one time|a single time)\b',
+         _NO_REVISITS),
+    Rule('no revisiting is allowed',
+         r'\b(?:and |but )?no revisit(?:ing|s)? (?:is |are )?(?:allowed|permitted)(?: here)?\b',
+         _NO_REVISITS),
+    Rule('without returning to previously visited locations',
+         rf'\bwithout (?:any )?(?:repetitions?|repeating|revisits|(?:skipping or )?revisiting any(?: one)? '
+         rf'of them|(?:revisiting|returning to) (?:any )?previously visited {_PLACES})\b', _NO_REVISITS),
+    Rule('repeated visits are not permitted',
+         r'\b(?:and )?repeated visits are not (?:permitted|allowed)\b', _NO_REVISITS),
+    Rule('once you leave any location you cannot return to it',
+         rf'\bonce you leave any {_PLACES} you cannot (?:return|go back|come back) to it\b', _NO_REVISITS),
+    Rule('never return to a previous location you have been to',
+         rf'\b(?:along the (?:path|way) )?(?:make sure to |ensure to |and )?(?:do not|never|not) '
+         rf'(?:return|go back|come back|revisit)(?: to)? (?:the |any )?(?:previous(?:ly visited)?|earlier) '
+         rf'{_PLACES}(?: (?:that )?you (?:have )?(?:been to|visited))?(?: while heading to the next)?\b',
+         _NO_REVISITS),
+    Rule('do not revisit any of the locations before completing the task',
+         r'\b(?:make sure to |ensure to )?(?:do not|not|never) revisit any(?: one)? of (?:them|the locations|'
+         r'the places)(?: once after you have been there| before completing the task| after you have been '
+         r'there)?\b', _NO_REVISITS),
+    Rule('you cannot revisit a before completing the task',
+         rf'\b(?:also )?(?:you cannot|you can not|you must not|do not|never|not|(?:ensure|make sure) '
+         rf'(?:to not|not to)) (?:revisit|return to|go back to|come back to) (?P<x>{_NPS})(?: again)?'
+         rf'(?: before (?:completing|finishing) (?:the )?(?:remaining )?tasks?)?{_CLAUSE_END}',
+         r' , do not revisit \g<x> , '),
+    Rule('while visiting a and b only once',
+         rf'\b(?:while |and )(?:only )?visiting (?P<x>{_NPS}) (?:only )?(?:once|one time)(?= |$)',
+         r' , visit \g<x> only once , '),
+    Rule('go to b without returning to a',
+         rf'\b(?:(?:but )?without|(?:, )?(?:or|and|nor)) (?:returning|going back|coming back|revisiting|'
+         rf'revisit|return|go back|come back)(?: to)? (?P<x>{_NPS}){_CLAUSE_END}',
+         r' , do not revisit \g<x> , '),
+    Rule('without skipping any of them', r'\bwithout skipping any(?: one)?(?: of them)?\b', ''),
+    Rule('a followed by visiting b', rf'\bfollowed by {_GOING}\b', 'followed by'),
+    Rule('a, then visiting b', rf'\bthen (?P<verb>{_GOING})\b', lambda m: f'then {_plain(m.group("verb"))}'),
+    Rule('make sure not to visit waypoints out of turn',
+         r'\b(?:make sure|ensure)(?: not)? to (?:not )?visit (?:waypoints|locations|places|them) out of '
+         r'(?:turn|order)\b', ' , in strict order , '),
 
     # ---- passive goals and avoidances
     Rule('the shed must be visited',

@@ -140,7 +140,7 @@ NOISE_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('the', 'order', 'does', 'not', 'matter'), ('in', 'no', 'particular', 'order'), ('eventually',),
     ('at', 'least', 'once'), ('at', 'any', 'time'), ('at', 'any', 'instant'), ('ever',),
     ('as', 'many', 'times', 'as', 'you', 'want'), ('as', 'many', 'times', 'as', 'you', 'like'),
-    ('as', 'often', 'as', 'you', 'want'), ('as', 'often', 'as', 'you', 'like'),
+    ('as', 'often', 'as', 'you', 'want'), ('as', 'often', 'as', 'you', 'like'), ('in', 'the', 'future'),
 ), key=lambda t: -len(t)))
 ORDER_TAILS: tuple[tuple[str, ...], ...] = (
     ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),
@@ -157,6 +157,8 @@ STRICT_ORDER_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('strictly', 'in', 'order'), ('in', 'the', 'exact', 'order'), ('in', 'exactly', 'that', 'order'),
     ('in', 'exactly', 'this', 'order'), ('in', 'that', 'exact', 'order'), ('in', 'this', 'exact', 'order'),
     ('in', 'the', 'following', 'strict', 'order'), ('in', 'strict', 'sequence'),
+    ('follow', 'this', 'strict', 'order'), ('in', 'this', 'exact', 'sequence'),
+    ('in', 'that', 'exact', 'sequence'), ('in', 'that', 'exact', 'order'),
     ('make', 'sure', 'not', 'to', 'visit', 'waypoints', 'out', 'of', 'turn'),
     ('make', 'sure', 'not', 'to', 'visit', 'locations', 'out', 'of', 'turn'),
     ('ensure', 'to', 'not', 'visit', 'locations', 'out', 'of', 'turn'),
@@ -277,6 +279,7 @@ class Step:
     chains: list[list['Step']] = field(default_factory=list)
     formula: Optional[Formula] = None
     avoid_at: list[Descriptor] = field(default_factory=list)
+    once: str = ''   # 'exactly' ("visit a exactly once"), 'plain' ("go to a once, then b"), or ''
 
 
 def render(steps: Sequence[Step]) -> Optional[Formula]:
@@ -402,15 +405,26 @@ class OfflineTranslator:
         avoid Y" is ``F near[x] & G !near[y]``. ``'goal'`` reads it as the
         drone-planning data set does: Y is avoided at the moment X is reached,
         ``F (near[x] & !near[y])``.
+    once_scope:
+        ``'run'`` (default, the development set's convention): "visit X only once, then Y"
+        allows one visit of X in the whole run. ``'next'`` reads a goal's "once" (and "visit
+        each only once", "no revisiting") in a sequence as lang2ltl's strictly ordered visits
+        do: X is not visited again before the next goal, ``!x U (x U (!x U y))``; a goal
+        with none after it keeps "exactly once".
     """
 
     name = 'offline'
 
-    def __init__(self, avoid_scope: str = 'global', landmarks: Sequence[str] = ()) -> None:
+    def __init__(self, avoid_scope: str = 'global', landmarks: Sequence[str] = (),
+                 once_scope: str = 'run') -> None:
         if avoid_scope not in ('global', 'goal'):
             raise TranslationError(f'avoid_scope must be global or goal, not {avoid_scope!r}',
                                    ErrorCode.INVALID_INPUT)
+        if once_scope not in ('run', 'next'):
+            raise TranslationError(f'once_scope must be run or next, not {once_scope!r}',
+                                   ErrorCode.INVALID_INPUT)
         self.avoid_scope = avoid_scope
+        self.once_scope = once_scope
         self.landmarks = tuple(landmarks)
         _speller()   # the word list is read once, here, not inside the first translation
 
@@ -431,7 +445,7 @@ class OfflineTranslator:
         tokens = resolve_list_references(tokens, notes)
         tokens = apply_exclusions(apply_corrections(tokens, notes), notes)
         tokens = rewrite_idioms(tokens)
-        reader = _Reader(self.avoid_scope, notes, self.landmarks)
+        reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope)
         try:
             formula = reader.read(tokens)
         except (IndexError, KeyError, ValueError, AttributeError, RecursionError, AssertionError) as e:
@@ -570,7 +584,10 @@ def _find(tokens: Sequence[str], words: Sequence[str], start: int = 0) -> int:
 class _Reader:
     """Reads the clauses of one instruction into a :class:`_Task`."""
 
-    def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = ()) -> None:
+    def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = (),
+                 once_scope: str = 'run') -> None:
+        self.once_scope = once_scope
+        self.no_revisits = False   # "visit each place only once", "no revisiting"
         self.phrases = PhraseParser(landmarks)
         self.rules = RuleReader(self.phrases)
         self.task = _Task()
@@ -607,6 +624,7 @@ class _Reader:
         self._repair_avoid_then_visit()
         if self.strict_chain:
             self._strict_chain()
+        self._visits_once()
         if self.pending_avoid_at:
             step = self.task.last_step(('visit',))
             if step is not None:
@@ -614,6 +632,35 @@ class _Reader:
             else:
                 self.task.constraints.extend(_never(self.pending_avoid_at))
         return self.task.formula()
+
+    def _visits_once(self) -> None:
+        """Constraints of the goals visited once ("visit a exactly once", "no revisiting"; see once_scope)."""
+        chain = self.task.chain
+        if self.task.repeat > 1:
+            return
+        if self.no_revisits:
+            for st in chain:
+                if st.kind == 'visit' and len(st.targets) == 1:
+                    st.once = 'exactly'
+        for k, st in enumerate(chain):
+            if st.kind != 'visit' or not st.once or len(st.targets) != 1:
+                continue
+            x = _near(st.targets[0])
+            nxt = chain[k + 1] if k + 1 < len(chain) else None
+            if self.once_scope == 'next' and nxt is not None and nxt.kind == 'visit' and \
+                    st.targets[0] not in nxt.targets:
+                # not again before the next goal: !x U (x U (!x U next))
+                reach = _or([_near(t) for t in nxt.targets])
+                self.task.constraints.append(Until(Not(x), Until(x, Until(Not(x), reach))))
+            elif self.once_scope == 'next' and nxt is None and len(chain) > 1:
+                pass   # the last goal of a sequence: nothing comes after it to go back from
+            elif st.once == 'exactly':
+                self.task.constraints.append(exactly(x, 1))
+            prev = chain[k - 1] if k > 0 else None
+            if self.once_scope == 'next' and prev is not None and prev.kind == 'visit' and \
+                    st.targets[0] not in prev.targets:
+                # its one visit comes in its turn: not before the goal before it
+                self.task.constraints.append(Until(Not(x), _or([_near(t) for t in prev.targets])))
 
     def _strict_chain(self) -> None:
         """'in that strict order': each goal of the chain only after the one before it."""
@@ -789,7 +836,7 @@ class _Reader:
                 boundary = 'there'
                 skip = 2 if tokens[i + 1] == 'there' else 4
             elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
-                  ) and any(c.tokens for c in clauses) and 'make' not in clauses[-1].tokens and \
+                  ) and any(c.tokens for c in clauses) and 'sure' not in clauses[-1].tokens and \
                     'visited' not in tokens[i:]:
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
             elif t == 'always' and 0 < i < n - 1 and tokens[i + 1] in ('avoid', 'stay', 'keep') and \
@@ -940,6 +987,9 @@ class _Reader:
         if s.endswith(fine) or s in IGNORED_CLAUSES or \
                 s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                               'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
+            return scope
+        if tokens == ['visit', 'each', 'place', 'only', 'once']:
+            self.no_revisits = True   # the canonical wording of "no revisiting" (see idioms)
             return scope
         if tuple(tokens) in STRICT_ORDER_TAILS:
             self.strict_chain = True   # "in strictly this order, visit a, then b"
@@ -1406,7 +1456,13 @@ class _Reader:
                       for d in targets}
             if all(visits.values()):
                 for d, n_visits in visits.items():   # "visit a twice and never again": exactly that many
-                    self.task.constraints.append(at_most(_near(d), n_visits))
+                    if n_visits == 1:
+                        # "go to a, then b, without returning to a": a once (see once_scope)
+                        step = self.task.find_step(d)
+                        assert step is not None
+                        step.once = 'exactly'
+                    else:
+                        self.task.constraints.append(at_most(_near(d), n_visits))
                 return
         for lead in (['on', 'any', 'more', 'than'], ['on', 'more', 'than'], ['any', 'more', 'than'],
                      ['more', 'than']):
@@ -1925,11 +1981,22 @@ class _Reader:
         if _starts(rest, end, ['in', 'a', 'row']):
             self.task.repeat = n
             return True, rest[end + 3:]
-        if n == 1 and mode == 'at_least' and i == 0:
-            mode = 'at_least'
+        if self.only and mode == 'at_least' and i == 0:
+            mode = 'exactly'   # "only visit a once"
         for d in targets:
             x = _near(d)
-            if mode == 'at_least':
+            known = self.task.find_step(d)
+            if n == 1 and mode == 'exactly' and known is not None and known.kind == 'visit' and \
+                    known.targets == [d]:
+                known.once = 'exactly'   # "go to a, then b; visit each of them only once"
+                continue
+            if mode == 'exactly' and known is not None and known.kind == 'deliver':
+                self.task.constraints.append(exactly(x, n))   # "bring X to the pantry, enter it only once"
+                continue
+            if n == 1 and mode in ('exactly', 'at_least') and not (mode == 'at_least' and i > 0):
+                # "visit a exactly once", "go to a once, then b": see once_scope
+                self.task.chain.append(Step('visit', [d], once='exactly' if mode == 'exactly' else 'plain'))
+            elif mode == 'at_least':
                 for k in range(n):
                     if k:
                         self.task.chain.append(Step('leave', [d]))
@@ -2149,9 +2216,16 @@ class _Reader:
             if self.before_strict:
                 self.task.constraints.append(Until(Not(_near(self.before_target)), _or(
                     [_near(t) for t in targets])))
-            self.task.chain.append(Step('visit', [self.before_target]))
+            known = next((st for st in self.task.chain[:-1] if st.kind == 'visit'
+                          and st.targets == [self.before_target]), None)
+            if known is not None:
+                # "visit b, but before visiting b you must visit a": a moves before that b
+                new = self.task.chain.pop()
+                self.task.chain.insert(self.task.chain.index(known), new)
+            else:
+                self.task.chain.append(Step('visit', [self.before_target]))
+                targets = [self.task.chain[-1].targets[0]]
             self.before_target, self.before_strict = None, False
-            targets = [self.task.chain[-1].targets[0]]
         self._goal_trailer(rest, tokens, targets)
         if self.conditional is not None:
             self.task.constraints.append(WeakUntil(Not(_near(self.conditional.descriptor)),

@@ -363,3 +363,14 @@ ROUND_SEVEN = [
 @pytest.mark.parametrize('instruction,gold', ROUND_SEVEN, ids=[c[0][:30] for c in ROUND_SEVEN])
 def test_seventh_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+def test_there_after_a_choice_is_the_choice() -> None:
+    _check('Pick either the red bench or the green bench and go there.',
+           'F near[red_bench] | F near[green_bench]')
+
+
+def test_a_bound_said_with_and_is_no_step_after_the_others() -> None:
+    _check('Put the plant on the windowsill, and enter the kitchen only once.',
+           'F (near[plant] & F (pick[plant] & F (near[windowsill] & F release[plant, windowsill]))) & '
+           '(!near[kitchen] U (near[kitchen] & (near[kitchen] W G !near[kitchen])))')

@@ -1990,8 +1990,11 @@ class _Reader:
                     known.targets == [d]:
                 known.once = 'exactly'   # "go to a, then b; visit each of them only once"
                 continue
-            if mode == 'exactly' and known is not None and known.kind == 'deliver':
-                self.task.constraints.append(exactly(x, n))   # "bring X to the pantry, enter it only once"
+            if mode == 'exactly' and (known is not None and known.kind == 'deliver' or known is None and (
+                    self.connector == 'and' and self.task.chain and not self.phrases.landmarks)):
+                # "bring X to the pantry, and enter it only once", "put X on Y, and enter the hall only
+                # once": a bound on the whole run, not a step after the others
+                self.task.constraints.append(exactly(x, n))
                 continue
             if n == 1 and mode in ('exactly', 'at_least') and not (mode == 'at_least' and i > 0):
                 # "visit a exactly once", "go to a once, then b": see once_scope
@@ -2140,8 +2143,9 @@ class _Reader:
             k = verb_end
             self.saw_action = True
         last = self.task.chain[-1] if self.task.chain else None
-        if tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
-                          ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these']) and \
+        if (tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
+                           ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these']) or (
+                k > 0 and tokens[k:] == ['there'] and not self.phrases.landmarks)) and \
                 last is not None and last.kind == 'visit' and len(last.targets) > 1:
             self.saw_action = True   # "just get to one of them": the choice already given
             return

@@ -374,3 +374,25 @@ def test_a_bound_said_with_and_is_no_step_after_the_others() -> None:
     _check('Put the plant on the windowsill, and enter the kitchen only once.',
            'F (near[plant] & F (pick[plant] & F (near[windowsill] & F release[plant, windowsill]))) & '
            '(!near[kitchen] U (near[kitchen] & (near[kitchen] W G !near[kitchen])))')
+
+
+ROUND_EIGHT = [
+    ('Go to the lab, then the office; any order works.', 'F near[lab] & F near[office]'),
+    ('Visit the lab and the office, the order is up to you.', 'F near[lab] & F near[office]'),
+    ('Keep away from the fence at all times. Your destination: the orchard.',
+     'F near[orchard] & G !near[fence]'),
+    ('Go to the well, and stay away from the trough until you get there.', '!near[trough] U near[well]'),
+    ('Put the book on the desk. Wait, I mean the nightstand.',
+     'F (near[book] & F (pick[book] & F (near[nightstand] & F release[book, nightstand])))'),
+    ('Head to the shed and avoid the pond. Scratch that last part.', 'F near[shed]'),
+    ('Go to the desk, sorry, the other desk.', 'F near[other_desk]'),
+    ('Visit the museum and the zoo. Actually, just the zoo.', 'F near[zoo]'),
+    ('A hammer, a saw, a drill: bring the saw to the bench.',
+     'F (near[saw] & F (pick[saw] & F (near[bench] & F release[saw, bench])))'),
+    ('Go to the lamp on the left.', 'F near[left_lamp]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_EIGHT, ids=[c[0][:30] for c in ROUND_EIGHT])
+def test_eighth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

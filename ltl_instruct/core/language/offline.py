@@ -879,6 +879,10 @@ class _Reader:
                             'it', 'them', 'your', 'my', 'down', 'up', 'outside', 'inside', 'around', 'for',
                             'there', 'here', 'we', 'if', 'whether', 'a', 'and', 'then')):
                     boundary, skip = 'and', j - i   # "go to the door and knock"
+                elif t in (',', ';') and tokens[j:j + 2] in (
+                        ['the', 'order'], ['any', 'order'], ['in', 'any'], ['in', 'whatever'],
+                        ['order', 'does']):
+                    boundary, skip = 'and', j - i   # "..., the order is up to you"
                 elif t in (',', 'so') and self._starts_statement(tokens, j):
                     boundary, skip = 'and', j - i   # "be careful, the floor is wet"
                 elif i < 4 and t in (',', ':') and all(is_name_word(tokens, m, m > 0) for m in range(i)) and \
@@ -976,6 +980,13 @@ class _Reader:
             if not tokens:
                 return scope
         s = ' '.join(tokens)
+        if 'order' in tokens and (s.startswith(('any order', 'in any order', 'the order does not matter',
+                                                'order does not matter', 'the order is up to you',
+                                                'the order is not important', 'order is up to you',
+                                                'in whatever order', 'whatever order', 'any order works'))
+                                  or s in ('the order is yours', 'you choose the order', 'pick the order')):
+            self._any_order()   # "go to a, then b; any order works": the goals in any order
+            return scope
         fine = (' is fine', ' is okay', ' are fine', ' is ok', ' will do', ' works', ' is good')
         if s.endswith(fine) and 'or' in tokens:
             # "either the left lift or the right lift is fine": a choice of goals
@@ -1112,6 +1123,19 @@ class _Reader:
         np = self.phrases.parse(tokens, j)
         end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
         return np is not None and chatter.is_statement(tokens[j:end], np.end - j)
+
+    def _any_order(self) -> None:
+        """Make the plain visits that end the chain one step, in any order (the person said so)."""
+        chain = self.task.chain
+        k = len(chain)
+        while k > 0 and chain[k - 1].kind == 'visit' and len(chain[k - 1].targets) == 1 and \
+                not chain[k - 1].avoid_until and not chain[k - 1].avoid_after:
+            k -= 1
+        if len(chain) - k >= 2:
+            steps = chain[k:]
+            del chain[k:]
+            chain.append(Step('all', chains=[[st] for st in steps]))
+            self.notes.append('the goals may be visited in any order')
 
     def _read_activity(self, tokens: list[str]) -> bool:
         """'go to the sink and wash your hands', 'open it': something done where the robot is, no new goal."""
@@ -1253,6 +1277,8 @@ class _Reader:
             if out[-1] == 'well' and len(out) > 1 and out[-2] == 'as':
                 out = out[:-2]
                 continue
+            if out[-1] == 'well':
+                break   # "go to the well"
             out = out[:-1]
         return out
 

@@ -68,7 +68,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
      r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
     (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:goal|destination|target|aim|objective|end point|'
-     r'endpoint|final destination|job|task|mission) (?:is|will be) (?:to (?:go to |reach |get to |visit )?)?',
+     r'endpoint|final destination|job|task|mission) (?:is|will be|:) '
+     r'(?:to (?:go to |reach |get to |visit )?)?',
      r'\1 go to '),
 ))
 

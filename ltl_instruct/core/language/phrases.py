@@ -162,6 +162,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return False
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')
+    if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \
+            nxt not in NUMBER_WORDS and nxt not in ('ones', 'one'):
+        return True   # "the other desk"
     if w in STOPWORDS:
         return False
     if w.endswith('ly') and len(w) > 5 and w not in LY_NOUNS:
@@ -281,6 +284,12 @@ class PhraseParser:
                 if i + 1 < len(tokens) and tokens[i] == 'of' and words[-1] in CONTAINER_WORDS:
                     words.append('of')
                     i += 1
+            sides = (('on', 'the'), ('to', 'the'), ('on', 'your'), ('to', 'your'))
+            if words and tuple(tokens[i:i + 2]) in sides \
+                    and i + 2 < len(tokens) and tokens[i + 2] in ('left', 'right') and (
+                    i + 3 >= len(tokens) or tokens[i + 3] not in ('of', 'side')):
+                words = [tokens[i + 2]] + words   # "the lamp on the left" is the left lamp
+                i += 3
             if words and words[-1] in PART_WORDS and i + 1 < len(tokens) and tokens[i] == 'of' and depth < 8:
                 whole = self.parse(tokens, i + 1, destination_stops, depth + 1)
                 if whole is not None and not whole.descriptor.relations and not whole.pronoun:

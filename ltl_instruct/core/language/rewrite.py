@@ -103,6 +103,12 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     if tail and tail[0] not in PUNCT and any(t in PUNCT for t in tail):
         tail = tail[next(k for k, t in enumerate(tail) if t in PUNCT):]
     if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail):
+        heads = {np.head for np in nps}
+        if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
+                not any(t in NAME_VERBS for t in tokens[:end]):
+            # "a hammer, a saw, a drill: bring the saw to the bench": the list only sets the scene
+            notes.append('list of ' + ', '.join(str(np.descriptor) for np in nps) + ': the scene')
+            return tokens[end + 1:]
         if category and any(tokens[np.end - 1] == 'one' for np in nps):
             # "two doors, a red one and a blue one. Go through the blue one": the ones are doors; the
             # enumeration only sets the scene
@@ -336,6 +342,13 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
         plural = singular(np.head) != np.head
         same = [sp for sp in spans if (singular(sp.head) != sp.head) == plural]
         target = same[-1] if len(same) == 1 and np.pronoun != 'one' else spans[-1]
+        if target.descriptor.relations and np.pronoun != 'one' and not np.descriptor.relations:
+            # "put the book on the desk. I mean the nightstand": the noun named last
+            p = max((p for p in range(target.start + 1, target.end) if prev[p] in DETERMINERS), default=-1)
+            sub = PhraseParser().parse(prev, p) if p > 0 else None
+            if sub is not None and not sub.pronoun and sub.end == target.end and (
+                    singular(sub.head) != sub.head) == plural:
+                return prev[:p] + new + prev[sub.end:]
     new_words = new
     if np.pronoun == 'one' or 'one' in new[:np.end]:
         old = prev[target.start:target.end]
@@ -538,6 +551,31 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     return head + ([','] if head and head[-1] not in PUNCT else []) + new + prev[end:]
 
 
+def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Keep one goal of a list: 'visit the museum and the zoo. Actually, just the zoo'."""
+    words = [t for t in seg if t not in PUNCT]
+    if not words or words[0] not in ('just', 'only'):
+        return None
+    np = PhraseParser().parse(words, 1)
+    if np is None or np.end != len(words) or np.pronoun:
+        return None
+    spans = _np_spans(prev)
+    hit = next((k for k in range(len(spans) - 1, -1, -1) if spans[k].descriptor == np.descriptor), -1)
+    if hit < 0:
+        return None
+    # the list it is in: phrases joined by "," / "and" / "or" only
+    a = b = hit
+    while a > 0 and all(t in (',', 'and', 'or', 'the') for t in prev[spans[a - 1].end:spans[a].start]):
+        a -= 1
+    while b + 1 < len(spans) and all(t in (',', 'and', 'or', 'the')
+                                     for t in prev[spans[b].end:spans[b + 1].start]):
+        b += 1
+    if a == b:
+        return None
+    notes.append(f'only {np.descriptor} kept of that list')
+    return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
+
+
 def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Move a goal first: 'go to the pool, then the gym. Actually, do the gym first'."""
     words = [t for t in seg if t not in PUNCT]
@@ -613,7 +651,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append('the count was corrected')
             return count_fix
         if tgt in ('', 'the last thing', 'the last one', 'the last part', 'that last part', 'that', 'it',
-                   'the last bit', 'that last one', 'last thing'):
+                   'the last bit', 'that last one', 'last thing', 'last part', 'that part', 'that last bit',
+                   'last bit', 'the last step', 'that last step', 'the last instruction'):
             spans = _np_spans(prev)
             if not spans:
                 return None
@@ -696,6 +735,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if hit is not None:
                 notes.append(f'corrected to "{" ".join(new)}"')
                 return prev[:hit.start] + new + prev[hit.end:]
+    only = _only_this(prev, seg, notes)
+    if only is not None:
+        return only
     new = _strip_corr(seg)
     if not new:
         return prev

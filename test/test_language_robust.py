@@ -396,3 +396,28 @@ ROUND_EIGHT = [
 @pytest.mark.parametrize('instruction,gold', ROUND_EIGHT, ids=[c[0][:30] for c in ROUND_EIGHT])
 def test_eighth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+GLUED = [
+    ('Go to the attic right away.', 'F near[attic]'),
+    ('Go to the basement first thing.', 'F near[basement]'),
+    ('Go to the hall, like, right now.', 'F near[hall]'),
+    ('Go to the office tomorrow morning.', 'F near[office]'),
+    ('Just go to the shed already.', 'F near[shed]'),
+    ('Go to the yard and stuff.', 'F near[yard]'),
+    ('Get to the roof, pronto.', 'F near[roof]'),
+    ('Go to the cellar, if that is ok.', 'F near[cellar]'),
+    ('Swing by the mailroom on your way out.', 'F near[mailroom]'),
+    ('Dart over to the recycling bins and back.', 'F near[recycling_bins]'),
+    ('Go to the lobby and hang out there.', 'F near[lobby]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', GLUED, ids=[c[0][:30] for c in GLUED])
+def test_words_after_a_place_that_are_no_part_of_its_name(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_timing_words_are_kept_for_the_rules_where_landmarks_are_named() -> None:
+    from ltl_instruct.core.language import chatter
+    assert chatter.strip_courtesy(['visit', 'b', 'right', 'away'], [], timing=True)[-2:] == ['right', 'away']

@@ -82,6 +82,13 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('thank', 'you', 'so', 'much'),
     ('many', 'thanks'), ('when', 'you', 'are', 'ready'), ('whenever', 'you', 'are', 'ready'),
     ('in', 'a', 'minute'), ('straight', 'away'), ('under', 'any', 'circumstances'), ('whatever', 'happens'),
+    ('first', 'thing'), ('first', 'thing', 'tomorrow'), ('first', 'thing', 'in', 'the', 'morning'),
+    ('tomorrow',), ('tomorrow', 'morning'), ('tomorrow', 'evening'), ('already',), ('anyway',), ('pronto',),
+    ('and', 'stuff'), ('or', 'something'), ('or', 'whatever'), ('if', 'that', 'is', 'ok'),
+    ('if', 'that', 'is', 'okay'), ('if', 'that', 'is', 'alright'), ('if', 'that', 'is', 'fine'),
+    ('if', 'you', 'would', 'be', 'so', 'kind'), ('if', 'it', 'is', 'not', 'too', 'much', 'trouble'),
+    ('on', 'your', 'way', 'out'), ('on', 'the', 'way', 'out'), ('and', 'back'), ('and', 'back', 'again'),
+    ('there', 'and', 'back'), ('right', 'away'), ('at', 'once'),
 ), key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
@@ -107,7 +114,8 @@ PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'i
 # unless a place follows them ("clean the kitchen" is read as going there).
 ACTIVITY_VERBS = frozenset('''
 wash knock sit stand wait rest look listen open close shut ring check tidy clean dust sweep mop vacuum
-lie kneel pause charge recharge beep watch take stay turn switch unlock lock press push pull make
+lie kneel pause charge recharge beep watch take stay turn switch unlock lock press push pull make hang
+chill relax idle linger loiter hover
 '''.split()) - {'take', 'push', 'make', 'turn', 'switch', 'stay'}
 
 # Frames around a request that ask for nothing themselves, and what they become.
@@ -220,8 +228,20 @@ _LEADS_BY_FIRST = _by_first(LEADS)
 _COURTESY_BY_FIRST = _by_first(COURTESY)
 
 
-def strip_courtesy(tokens: list[str], notes: list[str]) -> list[str]:
-    """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...")."""
+# Timing words a rule may read ("visit b right away after a"): kept where landmarks are named.
+TIMING: frozenset[tuple[str, ...]] = frozenset({('right', 'away'), ('at', 'once'), ('already',),
+                                               ('straight', 'away')})
+# Discourse fillers between commas ("go to the hall, like, now").
+ASIDES: tuple[tuple[str, ...], ...] = (
+    ('like',), ('you', 'know'), ('i', 'guess'), ('basically',), ('i', 'think'), ('honestly',), ('kinda',),
+    ('sort', 'of'), ('i', 'suppose'))   # not "uh", "um": they mark self-corrections
+
+
+def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
+    """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...").
+
+    With ``timing``, phrases that time an event ("right away") are kept for the rules to read.
+    """
     out: list[str] = []
     i = 0
     n = len(tokens)
@@ -240,7 +260,14 @@ def strip_courtesy(tokens: list[str], notes: list[str]) -> list[str]:
         if i > 0 and tokens[i - 1] not in DETERMINERS:
             for phrase in _COURTESY_BY_FIRST.get(tokens[i], ()):
                 m = len(phrase)
-                if tuple(tokens[i:i + m]) == phrase and (i + m >= n or tokens[i + m] in _CLAUSE_END):
+                if tuple(tokens[i:i + m]) == phrase and (i + m >= n or tokens[i + m] in _CLAUSE_END) and not (
+                        timing and phrase in TIMING):
+                    hit = m
+                    break
+        if not hit and i > 0 and tokens[i - 1] == ',':
+            for phrase in ASIDES:
+                m = len(phrase)
+                if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] == ',':
                     hit = m
                     break
         if hit and (hit > 1 or tokens[i] not in ('please', 'okay', 'ok', 'now')):

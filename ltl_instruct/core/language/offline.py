@@ -441,7 +441,8 @@ class OfflineTranslator:
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         notes: list[str] = []
         tokens = _correct_spelling(tokens, notes, self.landmarks)
-        tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes), notes))
+        tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
+                                                 notes))
         tokens = resolve_list_references(tokens, notes)
         tokens = apply_exclusions(apply_corrections(tokens, notes), notes)
         tokens = rewrite_idioms(tokens)
@@ -877,7 +878,7 @@ class _Reader:
                 elif t in (',', 'and') and j < n and tokens[j] in chatter.ACTIVITY_VERBS and (
                         j + 1 >= n or tokens[j + 1] in PUNCT or tokens[j + 1] in (
                             'it', 'them', 'your', 'my', 'down', 'up', 'outside', 'inside', 'around', 'for',
-                            'there', 'here', 'we', 'if', 'whether', 'a', 'and', 'then')):
+                            'there', 'here', 'we', 'if', 'whether', 'a', 'and', 'then', 'out')):
                     boundary, skip = 'and', j - i   # "go to the door and knock"
                 elif t in (',', ';') and tokens[j:j + 2] in (
                         ['the', 'order'], ['any', 'order'], ['in', 'any'], ['in', 'whatever'],

@@ -1328,7 +1328,9 @@ class _Reader:
                  ' over and over', ' frequent ', ' keep on visiting ', ' indefinitely', ' again and again',
                  ' keep revisiting ', ' continually', ' constantly', ' unlimited ', ' perpetually',
                  ' continue to stop ', ' continue visiting ', ' continue going ', ' not stop ',
-                 ' cannot stop ', ' never stop ', ' keep on ')
+                 ' cannot stop ', ' never stop ', ' keep on ', ' continue moving ', ' continue to visit ',
+                 ' continue to go ', ' keep going between ', ' back and forth ', ' cycle through ',
+                 ' ever stop ', ' cease ', ' always visiting ', ' finite number of times ', ' keep moving ')
         if not any(m in s for m in marks):
             return False
         nps: list[NounPhrase] = []
@@ -1617,7 +1619,8 @@ class _Reader:
         if c is None:
             return False, rest
         n, end = c
-        if _starts(rest, end, ['in', 'a', 'row']):
+        if rest[i] == 'once' and end < len(rest) and rest[end] in ('you', 'i', 'we', 'the', 'it', 'that'):
+            return False, rest   # "once you have been to a": a conjunction, no count
             self.task.repeat = n
             return True, rest[end + 3:]
         if self.only and mode == 'at_least' and i == 0:

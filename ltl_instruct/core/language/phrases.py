@@ -49,6 +49,8 @@ CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piec
 LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('each', 'of'), ('all', 'of'), ('both', 'of'), ('any', 'of'), ('all', 'the', 'following', 'locations'),
     ('the', 'following', 'locations'), ('the', 'following', 'places'), ('all', 'locations'),
+    ('all', 'places'), ('all', 'the', 'places'), ('places',), ('the', 'places'), ('landmarks',),
+    ('all', 'landmarks'),
     ('the', 'locations'), ('locations',), ('all', 'the', 'locations'), ('the', 'following'),
     ('any', 'locations', 'among'), ('any', 'of', 'the', 'locations'), ('none', 'among'), ('none', 'of'),
     ('either', 'one', 'among'), ('one', 'among'), ('any', 'one', 'among'), ('either', 'of'), ('any', 'of'),
@@ -82,6 +84,9 @@ PART_WORDS = frozenset('''
 roof top side front back door entrance exit corner end edge middle center centre bottom base foot gate
 window wall floor lobby steps stairs porch yard garden balcony
 '''.split())
+
+# "location b", "landmark c": a generic noun before a known landmark name
+PLACE_NOUNS = frozenset({'location', 'landmark', 'place', 'waypoint', 'point'})
 
 # Words before "one" that make it a placeholder ("the blue one") rather than a number ("landmark one").
 PLACEHOLDER_ADJECTIVES = frozenset('''
@@ -232,6 +237,8 @@ class PhraseParser:
                 break
         if self.landmarks:
             j = i + 1 if i < len(tokens) and tokens[i] == 'the' else i
+            if j + 1 < len(tokens) and tokens[j] in PLACE_NOUNS and self._landmark(tokens, j + 1) is not None:
+                j += 1   # "location b": the landmark b
             lm = self._landmark(tokens, j)
             if lm is not None:
                 np = NounPhrase(Descriptor(name_of(list(lm))), start, j + len(lm), lm[-1])

@@ -98,3 +98,26 @@ WAITING_AND_ORDER = [
 def test_waiting_order_and_repetition_said_at_length(instruction: str, gold: str) -> None:
     got = T.translate(instruction)
     assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+STAYING = [
+    # staying within a region said many ways
+    ('Go to the charging pad and remain within the lab.', 'F near[charging_pad] & G near[lab]'),
+    ('Fly to the tower staying on the east side.', 'F near[tower] & G near[east_side]'),
+    ('Go to the kiosk by only moving in the atrium.', 'F near[kiosk] & G near[atrium]'),
+    ('Without stepping outside of the garden, go to the bench.', 'F near[bench] & G near[garden]'),
+    ('Go to the bench without ever leaving the garden.', 'F near[bench] & G near[garden]'),
+    ('Go to the bench only through the garden.', 'F near[bench] & G near[garden]'),
+    # on the way, first, typed ordinals
+    ('Go to the attic while avoiding going through the nursery.', '!near[nursery] U near[attic]'),
+    ('Go to the study by first visiting the hall.', 'F (near[hall] & F near[study])'),
+    ('Go to the study, but make sure to go to the hall first.', 'F (near[hall] & F near[study])'),
+    ('Start on the roof, then go to the 2 nd floor.', 'F (near[roof] & F near[second_floor])'),
+    ('Go to level three.', 'F near[third_floor]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', STAYING, ids=[c[0][:40] for c in STAYING])
+def test_staying_within_and_on_the_way(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'

@@ -59,6 +59,10 @@ _PLACES = r'(?:landmarks?|locations?|places?|waypoints?|ones?|goals?|them|rooms?
 _NO_REVISITS = ' , visit each place only once , '
 _CLAUSE_END = r'(?= ,| then| and| finally| only|$)'
 
+_ORDINAL_OF = {'one': 'first', 'two': 'second', 'three': 'third', 'four': 'fourth', 'five': 'fifth',
+               '1': 'first', '2': 'second', '3': 'third', '4': 'fourth', '5': 'fifth'}
+_SMALL = '(?:' + '|'.join(_ORDINAL_OF) + ')'
+
 Replacement = Union[str, Callable[['re.Match[str]'], str]]
 
 
@@ -148,6 +152,12 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?:you cannot|you can not|you must not|do not) (?:complete|finish|end) '
          rf'(?:the task |the mission |your task )?without (?P<verb>{_GOING})\b',
          lambda m: _plain(m.group('verb'))),
+
+    Rule('go to the lab from the second floor only', rf'\b(?:from|via|through) (?P<x>{_NP}) only\b',
+         r'only through \g<x>'),
+    Rule('start on the third floor, go to the roof', r'^start (?:on|at|in|from)\b', 'go to'),
+    Rule('the 2 nd floor, level two', rf'\b(?:(?P<n>{_SMALL}) (?:st|nd|rd|th) floor|level (?P<m>{_SMALL}))\b',
+         lambda m: f'{_ORDINAL_OF[m.group("n") or m.group("m")]} floor'),
 
     # ---- counts said as ranges
     Rule('zero times, once or twice',
@@ -274,6 +284,8 @@ RULES: tuple[Rule, ...] = (
     Rule('make sure not to visit waypoints out of turn',
          r'\b(?:make sure|ensure)(?: not)? to (?:not )?visit (?:waypoints|locations|places|them) out of '
          r'(?:turn|order)\b', ' , in strict order , '),
+
+    Rule('make sure to go there', r'\b(?:be sure|make sure|ensure|remember)(?: that)?(?: you)? to\b', ''),
 
     # ---- passive goals and avoidances
     Rule('the shed must be visited',

@@ -182,7 +182,13 @@ STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('keep', 'going', 'on'), ('wait', 'at'), ('wait', 'in'), ('stay', 'put', 'at'),
     ('are', 'not', 'allowed', 'to', 'leave'), ('do', 'not', 'move', 'outside', 'of'),
     ('only', 'walk', 'in'), ('while', 'staying', 'in'), ('while', 'staying', 'on'),
-    ('while', 'remaining', 'in'), ('while', 'remaining', 'on'),
+    ('while', 'remaining', 'in'), ('while', 'remaining', 'on'), ('staying', 'on'), ('staying', 'in'),
+    ('staying', 'within'), ('remaining', 'on'), ('remaining', 'in'), ('remaining', 'within'),
+    ('by', 'only', 'navigating', 'within'), ('by', 'only', 'navigating', 'in'),
+    ('by', 'only', 'moving', 'in'), ('by', 'only', 'moving', 'within'), ('only', 'navigating', 'within'),
+    ('only', 'moving', 'in'), ('without', 'stepping', 'outside', 'of'), ('without', 'stepping', 'outside'),
+    ('without', 'ever', 'leaving'), ('without', 'stepping', 'out', 'of'), ('never', 'leaving'),
+    ('only', 'through'), ('by', 'staying', 'in'), ('by', 'staying', 'on'), ('by', 'staying', 'within'),
 ), key=lambda t: -len(t)))
 
 CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
@@ -1160,8 +1166,9 @@ class _Reader:
         local, rest = self._trailing_scope(rest)
         if local is not None:
             scope = local
-        elif scope is None and 'without' in tokens[:k] and 'through' in tokens[:k] and self.task.chain:
-            scope = _Scope('onway')
+        elif scope is None and 'through' in tokens[:k] and len(self.task.chain) == 1 and (
+                {'without', 'avoid', 'avoiding', 'not', 'never'} & set(tokens[:k])):
+            scope = _Scope('onway')   # "go to X, avoid going through Y": on the way to X
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
                     'anymore', 'costs', 'instant', 'moment')
@@ -1566,7 +1573,7 @@ class _Reader:
     @staticmethod
     def _skip_event_verbs(s: list[str], k: int) -> int:
         while k < len(s) and s[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
-                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure'}:
+                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure', 'first'}:
             k += 1
         return k
 

@@ -76,7 +76,7 @@ while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside
 unless except whenever since because though although otherwise later afterwards afterward means thereafter
-followed
+followed remain remaining staying keeping
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.
@@ -133,6 +133,8 @@ def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
             if words == ('over',) and i + 1 < len(tokens) and tokens[i + 1] in ('to', 'there', 'here'):
                 continue
             nxt = tokens[i + n] if i + n < len(tokens) else ''
+            if nxt == 'first' and i + n + 1 < len(tokens):
+                nxt = tokens[i + n + 1]   # "by first visiting X"
             if nxt.endswith('ing') and nxt not in ('ceiling', 'building', 'railing', 'painting'):
                 continue  # "by passing through X" is a manner, not a place
             return comparator, i + n

@@ -70,3 +70,54 @@ def test_rewrites_stay_fast_on_long_hostile_input() -> None:
     started = time.perf_counter()
     rewrite_idioms(tokenize(text))
     assert time.perf_counter() - started < 0.5
+
+
+WAITING_AND_ORDER = [
+    ('Wait at the door as long as the courier does not appear.', 'near[door] U near[courier]'),
+    ('As long as you do not see the courier, do not leave the porch.', 'near[porch] U near[courier]'),
+    ('You can leave the lobby after the guard is seen, otherwise stay at the lobby.',
+     'near[lobby] U near[guard]'),
+    ('You cannot go anywhere from the dock unless you see the boat.', 'near[dock] U near[boat]'),
+    ('Until you see the boat, stay at the dock.', 'near[dock] U near[boat]'),
+    ('Visit the pantry, the cellar and the attic in no particular order.',
+     'F near[pantry] & F near[cellar] & F near[attic]'),
+    ('Go to one of the shed and the barn and then to the other.', 'F near[shed] & F near[barn]'),
+    ('Patrol between the gate and the yard again and again.', 'G F near[gate] & G F near[yard]'),
+    ('Keep going back and forth between the kitchen and the den.', 'G F near[kitchen] & G F near[den]'),
+    ('Do not stop until the bins and the racks are all visited.', 'F near[bins] & F near[racks]'),
+    ('Visit the lab, then the office; there can be other places in between.',
+     'F (near[lab] & F near[office])'),
+    ('Go to the gate, and move on to the lab once you have been to the gate.',
+     'F (near[gate] & F near[lab])'),
+    ('Visit all four places: the gate, the shed, the barn and the pond.',
+     'F near[gate] & F near[shed] & F near[barn] & F near[pond]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', WAITING_AND_ORDER, ids=[c[0][:40] for c in WAITING_AND_ORDER])
+def test_waiting_order_and_repetition_said_at_length(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+STAYING = [
+    # staying within a region said many ways
+    ('Go to the charging pad and remain within the lab.', 'F near[charging_pad] & G near[lab]'),
+    ('Fly to the tower staying on the east side.', 'F near[tower] & G near[east_side]'),
+    ('Go to the kiosk by only moving in the atrium.', 'F near[kiosk] & G near[atrium]'),
+    ('Without stepping outside of the garden, go to the bench.', 'F near[bench] & G near[garden]'),
+    ('Go to the bench without ever leaving the garden.', 'F near[bench] & G near[garden]'),
+    ('Go to the bench only through the garden.', 'F near[bench] & G near[garden]'),
+    # on the way, first, typed ordinals
+    ('Go to the attic while avoiding going through the nursery.', '!near[nursery] U near[attic]'),
+    ('Go to the study by first visiting the hall.', 'F (near[hall] & F near[study])'),
+    ('Go to the study, but make sure to go to the hall first.', 'F (near[hall] & F near[study])'),
+    ('Start on the roof, then go to the 2 nd floor.', 'F (near[roof] & F near[second_floor])'),
+    ('Go to level three.', 'F near[third_floor]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', STAYING, ids=[c[0][:40] for c in STAYING])
+def test_staying_within_and_on_the_way(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'

@@ -49,12 +49,19 @@ _GOING = (r'(?:visiting|going to|reaching|entering|passing through|going through
 _GONE = r'(?:visited|been to|gone to|reached|entered|passed through|gone through|found|arrived at)'
 _BACK = rf'(?:{_GO}|revisit|come back to|return to|go back to)'
 _FORBIDDEN = r'(?:prohibited|forbidden|not allowed|not permitted|banned)'
+_STAY = r'(?:stay|remain|wait|hold (?:your )?position)'
+_SEE = r'(?:visit|see|observe)'
+_HAPPEN = r'(?:occur|happen|hold|appear)'
 
 _PLAIN_AUX = ('is', 'are', 'get', 'gets')
 _PLACES = r'(?:landmarks?|locations?|places?|waypoints?|ones?|goals?|them|rooms?|spots?)'
 # the canonical wording of "no goal visited twice", which the clause reader knows
 _NO_REVISITS = ' , visit each place only once , '
 _CLAUSE_END = r'(?= ,| then| and| finally| only|$)'
+
+_ORDINAL_OF = {'one': 'first', 'two': 'second', 'three': 'third', 'four': 'fourth', 'five': 'fifth',
+               '1': 'first', '2': 'second', '3': 'third', '4': 'fourth', '5': 'fifth'}
+_SMALL = '(?:' + '|'.join(_ORDINAL_OF) + ')'
 
 Replacement = Union[str, Callable[['re.Match[str]'], str]]
 
@@ -118,6 +125,11 @@ def _locks(m: 're.Match[str]') -> str:
     return f'visit {m.group("x")} at most {_times(_number(m.group("n")))}'
 
 
+def _wait(m: 're.Match[str]') -> str:
+    # "hold position at a as long as b does not happen": a until b
+    return f'stay at {m.group("y")} until you visit {m.group("x1") or m.group("x2")}'
+
+
 def _repeat(m: 're.Match[str]') -> str:
     mode = _group(m, 'mode').strip() or 'at least'
     return f'visit {m.group("x")} {mode} {_times(1 + _number(m.group("n")))}'
@@ -140,6 +152,12 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?:you cannot|you can not|you must not|do not) (?:complete|finish|end) '
          rf'(?:the task |the mission |your task )?without (?P<verb>{_GOING})\b',
          lambda m: _plain(m.group('verb'))),
+
+    Rule('go to the lab from the second floor only', rf'\b(?:from|via|through) (?P<x>{_NP}) only\b',
+         r'only through \g<x>'),
+    Rule('start on the third floor, go to the roof', r'^start (?:on|at|in|from)\b', 'go to'),
+    Rule('the 2 nd floor, level two', rf'\b(?:(?P<n>{_SMALL}) (?:st|nd|rd|th) floor|level (?P<m>{_SMALL}))\b',
+         lambda m: f'{_ORDINAL_OF[m.group("n") or m.group("m")]} floor'),
 
     # ---- counts said as ranges
     Rule('zero times, once or twice',
@@ -267,6 +285,8 @@ RULES: tuple[Rule, ...] = (
          r'\b(?:make sure|ensure)(?: not)? to (?:not )?visit (?:waypoints|locations|places|them) out of '
          r'(?:turn|order)\b', ' , in strict order , '),
 
+    Rule('make sure to go there', r'\b(?:be sure|make sure|ensure|remember)(?: that)?(?: you)? to\b', ''),
+
     # ---- passive goals and avoidances
     Rule('the shed must be visited',
          rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?P<aux>{_PASSIVE}) '
@@ -296,13 +316,6 @@ RULES: tuple[Rule, ...] = (
          rf'(?:be )?(?:visited|reached|'
          rf'entered|approached)(?= |$)', r'\g<pre>you cannot visit \g<x>'),
 
-    # ---- conditions on order: "visit b only if you have been to a", "do not visit b if you have not seen a"
-    Rule('only if you have been to X',
-         rf'\bonly if you (?:have |had )?(?:already |first )?(?:{_GONE}|{_GO})\b',
-         'only after you visit'),
-    Rule('if you have not been to X', rf'\bif you (?:have not|haven not|did not|have never|had not) (?:yet )?'
-         rf'(?:{_GONE}|{_GO})\b', 'unless you visit'),
-
     # ---- events said of the place
     Rule('until the gate is reached',
          rf'\b(?P<c>{_WHEN}) (?P<x>{_NPS}) (?:is|are|has been|have been|gets|get|was|were) '
@@ -314,6 +327,69 @@ RULES: tuple[Rule, ...] = (
     Rule('after you observe X',
          rf'\b(?P<c>{_WHEN}|sure|ensure|that) you (?:have |had )?(?:see|saw|seen|observe|observed|encounter|'
          rf'encountered|spot|spotted|notice|noticed|detect|detected)\b', r'\g<c> you visit'),
+
+    # ---- conditions on order: "visit b only if you have been to a", "do not visit b if you have not seen a"
+    Rule('only if you have been to X',
+         rf'(?<!\band )\bonly if you (?:have |had )?(?:already |first )?(?:{_GONE}|{_GO})\b',
+         'only after you visit'),
+    Rule('if you have not been to X', rf'\bif you (?:have not|haven not|did not|have never|had not) (?:yet )?'
+         rf'(?:{_GONE}|{_GO})\b', 'unless you visit'),
+
+    Rule('only visit b if you already visited a',
+         rf'\bonly (?P<v>{_GO}) (?P<x>{_NPS}) if you (?:have |had )?(?:already |first )?(?:{_GONE}|{_GO})\b',
+         r'\g<v> \g<x> only after you visit'),
+    Rule('do not stop until you visit a and b', r'\b(?:do not|never) stop until you visit\b', 'visit'),
+
+    # ---- waiting somewhere until something happens: all become "stay at Y until you visit X"
+    Rule('until you see b, stay at a',
+         rf'^(?:until|till) you visit (?P<x>{_NPS})(?: ,)? (?:you must |you should |please )?'
+         rf'(?P<stay>{_STAY} (?:at|in|on)|(?:do not|never|you cannot) (?:leave|exit)) (?P<y>{_NPS})$',
+         r'\g<stay> \g<y> until you visit \g<x>'),
+    Rule('you can leave a after b is seen, otherwise stay at a',
+         rf'^(?:once you visit (?P<x1>{_NPS})(?: ,)? )?(?:you can |you may |feel free to |then )*leave'
+         rf'(?: {_NP})?(?: after you visit (?P<x2>{_NPS}))?(?: ,)? otherwise {_STAY} (?:at|in|on) '
+         rf'(?P<y>{_NPS})$',
+         lambda m: _wait(m) if m.group('x1') or m.group('x2') else m.group(0)),
+    Rule('hold position at a for as long as b does not occur',
+         rf'^{_STAY} (?:at|in|on) (?P<y>{_NPS}) (?:for )?as long as (?:you do not {_SEE} (?P<x1>{_NPS})|'
+         rf'(?P<x2>{_NPS}) (?:does|do) not {_HAPPEN})$', _wait),
+    Rule('as long as you do not see b, do not leave a',
+         rf'^as long as (?:you do not {_SEE} (?P<x1>{_NPS})(?: happen| occur)?|(?P<x2>{_NPS}) (?:does|do) '
+         rf'not {_HAPPEN})(?: ,)? (?:do not|never|you cannot) (?:leave|exit) (?P<y>{_NPS})$', _wait),
+    Rule('you cannot go anywhere from a unless you see b',
+         rf'\b(?:you cannot|you can not|do not|never) (?:go|move|leave)(?: to)? (?:anywhere(?: else)?|'
+         rf'any other places?|other places?|elsewhere) from (?P<y>{_NPS}) (?:unless|until|before) '
+         rf'(?:you visit (?P<x1>{_NPS})|having (?P<x2>{_NPS}) (?:observed|seen|visited))$', _wait),
+
+    # ---- order said at length
+    Rule('in no particular order',
+         r'\b(?:but )?(?:it can be done )?in (?:no (?:specific|particular)|an? (?:arbitrary|random)|any|'
+         r'whatever|whichever|arbitrary|random) (?:order|sequence)(?: you (?:like|want|prefer|choose))?\b',
+         'in any order'),
+    Rule('there can be other places in between',
+         r'\bthere (?:can|may|could|might) be other (?:locations|landmarks|places|waypoints|stops|rooms) '
+         r'in between\b', ''),
+    Rule('in some sequence', r'\bin some (?:sequence|order)\b', ''),
+    Rule('each must be followed by the next',
+         r'\beach (?:one )?(?:must|should|has to) be followed by the next(?: one)?\b', 'in order'),
+    Rule('a followed by b which is then to be followed by c',
+         r'\b(?:, )?which (?:is|are) (?:then )?(?:to be )?followed by\b', 'followed by'),
+    Rule('go to four locations a, b, c and d',
+         rf'\b(?P<head>all |the following |all the following |these |all of the )?(?:{_NUM}) '
+         rf'(?P<what>locations|places|landmarks|rooms|spots|waypoints)(?: :)?(?= |$)', r'\g<head>\g<what>'),
+    Rule('go to one of a and b and then to the other',
+         rf'\b(?:go to|visit|pick) one (?:of|from|among) (?P<x>{_NP}) and (?P<y>{_NP})(?: ,)? (?:go there )?'
+         rf'(?:and )?then (?:go |head |move )?to the other(?: one)?\b', r'visit \g<x> and \g<y>'),
+
+    # ---- repetition said at length: "again and again", "with no limits", "at any point in time, visit a"
+    Rule('visit a again and again', r'\b(?:again and again|over and over(?: again)?|with no limits?|without '
+         r'(?:any )?limits?|time after time|all the time)\b', 'repeatedly'),
+    Rule('at any point in time you must visit a at least once in the future',
+         rf'\b(?:make sure )?(?:at any point in time|at every point in time|at all times|at any time)(?: ,)? '
+         rf'(?:you (?:will |must |should |have to )?|ensure that you (?:will )?|'
+         rf'make sure (?:that )?you (?:will )?)?'
+         rf'(?:visit|go to|reach) (?P<x>{_NPS}) at least once (?:in the future|after|afterwards|later)\b',
+         r'visit \g<x> repeatedly'),
 )
 
 _SENTENCE_ENDS = frozenset('.;!?')

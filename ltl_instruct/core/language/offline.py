@@ -192,7 +192,13 @@ STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('keep', 'going', 'on'), ('wait', 'at'), ('wait', 'in'), ('stay', 'put', 'at'),
     ('are', 'not', 'allowed', 'to', 'leave'), ('do', 'not', 'move', 'outside', 'of'),
     ('only', 'walk', 'in'), ('while', 'staying', 'in'), ('while', 'staying', 'on'),
-    ('while', 'remaining', 'in'), ('while', 'remaining', 'on'),
+    ('while', 'remaining', 'in'), ('while', 'remaining', 'on'), ('staying', 'on'), ('staying', 'in'),
+    ('staying', 'within'), ('remaining', 'on'), ('remaining', 'in'), ('remaining', 'within'),
+    ('by', 'only', 'navigating', 'within'), ('by', 'only', 'navigating', 'in'),
+    ('by', 'only', 'moving', 'in'), ('by', 'only', 'moving', 'within'), ('only', 'navigating', 'within'),
+    ('only', 'moving', 'in'), ('without', 'stepping', 'outside', 'of'), ('without', 'stepping', 'outside'),
+    ('without', 'ever', 'leaving'), ('without', 'stepping', 'out', 'of'), ('never', 'leaving'),
+    ('only', 'through'), ('by', 'staying', 'in'), ('by', 'staying', 'on'), ('by', 'staying', 'within'),
 ), key=lambda t: -len(t)))
 
 CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
@@ -1521,8 +1527,9 @@ class _Reader:
         local, rest = self._trailing_scope(rest)
         if local is not None:
             scope = local
-        elif scope is None and 'without' in tokens[:k] and 'through' in tokens[:k] and self.task.chain:
-            scope = _Scope('onway')
+        elif scope is None and 'through' in tokens[:k] and len(self.task.chain) == 1 and (
+                {'without', 'avoid', 'avoiding', 'not', 'never'} & set(tokens[:k])):
+            scope = _Scope('onway')   # "go to X, avoid going through Y": on the way to X
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
                     'anymore', 'costs', 'instant', 'moment')
@@ -1700,7 +1707,9 @@ class _Reader:
                  ' over and over', ' frequent ', ' keep on visiting ', ' indefinitely', ' again and again',
                  ' keep revisiting ', ' continually', ' constantly', ' unlimited ', ' perpetually',
                  ' continue to stop ', ' continue visiting ', ' continue going ', ' not stop ',
-                 ' cannot stop ', ' never stop ', ' keep on ')
+                 ' cannot stop ', ' never stop ', ' keep on ', ' continue moving ', ' continue to visit ',
+                 ' continue to go ', ' keep going between ', ' back and forth ', ' cycle through ',
+                 ' ever stop ', ' cease ', ' always visiting ', ' finite number of times ', ' keep moving ')
         if not any(m in s for m in marks):
             return False
         nps: list[NounPhrase] = []
@@ -1936,8 +1945,8 @@ class _Reader:
     @staticmethod
     def _skip_event_verbs(s: list[str], k: int) -> int:
         while k < len(s) and (s[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
-                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure', 'swung', 'flown', 'driven',
-                'ridden', 'run', 'come', 'done'} or (
+                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure', 'first', 'swung', 'flown',
+                'driven', 'ridden', 'run', 'come', 'done'} or (
                 # a participle before a particle or a place: "once you've stopped at X"
                 s[k].endswith(('ed', 'en')) and k + 1 < len(s) and (
                     s[k + 1] in GOAL_PARTICLES or s[k + 1] in DETS) and s[k] not in STOPWORDS)):
@@ -2005,7 +2014,8 @@ class _Reader:
         if c is None:
             return False, rest
         n, end = c
-        if _starts(rest, end, ['in', 'a', 'row']):
+        if rest[i] == 'once' and end < len(rest) and rest[end] in ('you', 'i', 'we', 'the', 'it', 'that'):
+            return False, rest   # "once you have been to a": a conjunction, no count
             self.task.repeat = n
             return True, rest[end + 3:]
         if self.only and mode == 'at_least' and i == 0:

@@ -49,6 +49,8 @@ CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piec
 LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('each', 'of'), ('all', 'of'), ('both', 'of'), ('any', 'of'), ('all', 'the', 'following', 'locations'),
     ('the', 'following', 'locations'), ('the', 'following', 'places'), ('all', 'locations'),
+    ('all', 'places'), ('all', 'the', 'places'), ('places',), ('the', 'places'), ('landmarks',),
+    ('all', 'landmarks'),
     ('the', 'locations'), ('locations',), ('all', 'the', 'locations'), ('the', 'following'),
     ('any', 'locations', 'among'), ('any', 'of', 'the', 'locations'), ('none', 'among'), ('none', 'of'),
     ('either', 'one', 'among'), ('one', 'among'), ('any', 'one', 'among'), ('either', 'of'), ('any', 'of'),
@@ -75,7 +77,7 @@ fine enough again cannot cant dont one along throughout entire whole during with
 always directly immediately ever never by near behind between above under below beneath beside
 unless except whenever since because though although otherwise later afterwards afterward means thereafter
 something anything everything nothing someone anyone anymore forever staying keeping steering remaining
-followed
+followed remain
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.
@@ -83,6 +85,9 @@ PART_WORDS = frozenset('''
 roof top side front back door entrance exit corner end edge middle center centre bottom base foot gate
 window wall floor lobby steps stairs porch yard garden balcony
 '''.split())
+
+# "location b", "landmark c": a generic noun before a known landmark name
+PLACE_NOUNS = frozenset({'location', 'landmark', 'place', 'waypoint', 'point'})
 
 # Words before "one" that make it a placeholder ("the blue one") rather than a number ("landmark one").
 PLACEHOLDER_ADJECTIVES = frozenset('''
@@ -129,6 +134,8 @@ def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
             if words == ('over',) and i + 1 < len(tokens) and tokens[i + 1] in ('to', 'there', 'here'):
                 continue
             nxt = tokens[i + n] if i + n < len(tokens) else ''
+            if nxt == 'first' and i + n + 1 < len(tokens):
+                nxt = tokens[i + n + 1]   # "by first visiting X"
             if nxt.endswith('ing') and nxt not in ('ceiling', 'building', 'railing', 'painting'):
                 continue  # "by passing through X" is a manner, not a place
             return comparator, i + n
@@ -259,6 +266,8 @@ class PhraseParser:
                 break
         if self.landmarks:
             j = i + 1 if i < len(tokens) and tokens[i] == 'the' else i
+            if j + 1 < len(tokens) and tokens[j] in PLACE_NOUNS and self._landmark(tokens, j + 1) is not None:
+                j += 1   # "location b": the landmark b
             lm = self._landmark(tokens, j)
             if lm is not None:
                 np = NounPhrase(Descriptor(name_of(list(lm))), start, j + len(lm), lm[-1])

@@ -52,7 +52,7 @@ reached reaching visit visited visiting go went gone going arrive arrived arrivi
 entered entering
 pass passed passing through by find found come came pass see saw seen observe observed spot spotted touch
 touched hit land landed fly flew over step stepped walk walked move moved head headed make made your way
-navigate navigated travel travelled traveled
+navigate navigated travel travelled traveled want wish decide choose plan
 '''.split())
 
 # Words of obligation in a response ("you must", "you have to", "b should be visited").

@@ -25,7 +25,8 @@ TYPOS: dict[str, str] = {
     'nevr': 'never', 'alway': 'always', 'alwasy': 'always', 'twond': 'second', 'oppposite': 'opposite',
     'ofthe': 'of the', 'tothe': 'to the', 'togo': 'to go', 'dnt': 'do not', 'bak': 'back',
     'visti': 'visit', 'vsit': 'visit', 'vist1': 'visit', 'gp': 'go', 'og': 'go',
-    'occations': 'occasions', 'occation': 'occasion', 'endlessy': 'endlessly',
+    'util': 'until', 'onest': 'first', 'threerd': 'third', 'landark': 'landmark', 'occations': 'occasions',
+    'occation': 'occasion', 'endlessy': 'endlessly',
 }
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (

@@ -101,6 +101,7 @@ def test_speller_is_conservative() -> None:
     assert s.correct('patnry') == 'pantry'      # two letters swapped
     assert s.correct('securty') == 'security'   # a letter dropped
     assert s.correct('linnen') == 'linen'       # a letter doubled
+    assert s.correct('leef') == 'leaf'          # a vowel pair spelt as it sounds
     for word in ('futon', 'crib', 'loveseat', 'nightlight', 'blender', 'dumpster', 'copier', 'table'):
         assert s.correct(word) is None, word    # real words, listed or not, stay as they are
     assert s.correct('xqzvbt') is None          # no near word: nothing to guess

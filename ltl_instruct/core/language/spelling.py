@@ -11,7 +11,8 @@ People type names with typos ("the patnry", "the securty desk"); a referent name
   swapped, a letter doubled or dropped; never a change of the first letter, a
   neighbouring key, a vowel for a vowel or a stray letter (a real word the list lacks
   is too often one such change from another: "goggles" is not "giggles", "steeple" is
-  not "steele"), never an inflection ("dumpster" is not "dumpsters");
+  not "steele"), except a vowel pair spelt as it sounds ("heep": heap), never an
+  inflection ("dumpster" is not "dumpsters");
 - the word is long enough (five letters) for one slip to be told from another word;
   four for the few words that give an instruction its structure ("nver", "thne").
 
@@ -34,11 +35,11 @@ _SUFFIXES = ('s', 'es', 'ies', 'ier', 'iers', 'ied', 'er', 'ers', 'ing', 'ed', '
 _PREFIXES = ('re', 'un', 'dis', 'pre', 'mini', 'micro', 'over', 'under', 'out', 'up', 'down', 'back',
              'fore', 'mid', 'sub', 'super', 'non', 'multi', 'in', 'side', 'cross', 'half')
 # Preference of slips, likeliest first (a lower rank wins before frequency is looked at).
-_RANK = {'double': 0, 'swap': 0, 'vowel': 1, 'missing': 2, 'extra': 2, 'key': 3}
+_RANK = {'double': 0, 'swap': 0, 'sound': 1, 'vowel': 1, 'missing': 2, 'extra': 2, 'key': 3}
 # Slips allowed by word length: a short word is one slip from too many others.
 # A neighbouring key is never tried: it turns too many real words into others ("copier").
 # Nor a stray letter removed ("steeple" -> "steele"), nor a vowel for a vowel ("goggles").
-_MIN_LENGTH = {'double': 5, 'swap': 5, 'vowel': 99, 'missing': 5, 'extra': 99, 'key': 99}
+_MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 99, 'missing': 5, 'extra': 99, 'key': 99}
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
 # Household, office and outdoor words a robot is sent to that the vocabulary lacks
 # (it was built from encyclopaedia and book text); they are words, not slips.
@@ -183,10 +184,15 @@ def _slips(word: str) -> Iterable[tuple[str, str]]:
         # a letter dropped ("securty"): put one back
         for c in 'abcdefghijklmnopqrstuvwxyz':
             yield a + c + b, 'missing'
-        # a vowel for another vowel ("heep"), or a neighbouring key
+        # a vowel for another vowel, or a neighbouring key
         for c in _NEAR_KEYS.get(b[0], frozenset()) | (_VOWELS if b[0] in _VOWELS else frozenset()):
             if c != b[0]:
                 yield a + c + b[1:], 'vowel' if (c in _VOWELS and b[0] in _VOWELS) else 'key'
+        # a vowel pair spelt as it sounds ("heep" for heap, "sope" is not one): ee/ea, oo/ou
+        pair = word[i - 1:i + 1]
+        if pair in ('ee', 'ea', 'oo', 'ou'):
+            other = {'ee': 'ea', 'ea': 'ee', 'oo': 'ou', 'ou': 'oo'}[pair]
+            yield word[:i - 1] + other + word[i + 1:], 'sound'
     # a letter dropped at the very end ("fridg")
     for c in 'abcdefghijklmnopqrstuvwxyz':
         yield word + c, 'missing'

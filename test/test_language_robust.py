@@ -422,3 +422,21 @@ def test_words_after_a_place_that_are_no_part_of_its_name(instruction: str, gold
 def test_timing_words_are_kept_for_the_rules_where_landmarks_are_named() -> None:
     from ltl_instruct.core.language import chatter
     assert chatter.strip_courtesy(['visit', 'b', 'right', 'away'], [], timing=True)[-2:] == ['right', 'away']
+
+
+ROUND_TEN = [
+    ('Can you see whether the kettle is on? Just pop over and check it.', 'F near[kettle]'),
+    ('Would you mind visiting the archive and the print shop; either order is fine.',
+     'F near[archive] & F near[print_shop]'),
+    ('Our in-laws are visiting, so before you go anywhere near the guest room, stop by the linen cupboard.',
+     'F near[guest_room] & (!near[guest_room] U near[linen_cupboard])'),
+    ('Either the north stairs or the south stairs are fine, just take one of them.',
+     'F near[north_stairs] | F near[south_stairs]'),
+    ('I put a mug, a plate and a bowl on the counter. Take the third thing I mentioned to the sink.',
+     'F (near[bowl] & F (pick[bowl] & F (near[sink] & F release[bowl, sink])))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_TEN, ids=[c[0][:30] for c in ROUND_TEN])
+def test_tenth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -126,6 +126,7 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
      r'awesome|ideal|perfect|wonderful) if you (?:could|would|can|will) ', r'\1 '),
     (r'(^ | [,.;!?] )(?:it is )?(?:time|high time) (?:for you )?to ', r'\1 '),
     (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:would|could|do|will) you mind ', r'\1 '),
     (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
      r'get) )', r'\1 '),
     (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),
@@ -169,6 +170,10 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     """
     if not tokens or has_constraint_word(tokens):
         return False
+    if tokens[0] in ('our', 'my', 'his', 'her', 'their') and np_end == 0:
+        # "our in-laws are visiting": a possessive subject the phrase reader did not take
+        f = next((k for k in range(2, min(6, len(tokens))) if tokens[k] in FINITE_VERBS), -1)
+        return f > 0 and tokens[f + 1:f + 2] != ['to']
     if tokens[0] in STATEMENT_SUBJECTS:
         if len(tokens) < 2 or tokens[1] in REQUEST_WORDS or (tokens[0] == 'it' and tokens[1] in (
                 'is', 'was') and (len(tokens) < 3 or tokens[2] in PERMISSIVE or 'to' in tokens)) or (

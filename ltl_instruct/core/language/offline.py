@@ -2052,6 +2052,11 @@ class _Reader:
 
     def _read_delivery(self, tokens: list[str], clause: _Clause) -> bool:
         verb = tokens[0]
+        last = self.task.chain[-1] if self.task.chain else None
+        if [t for t in tokens[1:] if t != 'me'] in (['one', 'of', 'them'], ['either', 'of', 'them'],
+                                                    ['one', 'of', 'those'], ['either', 'one']) and \
+                last is not None and last.kind == 'visit' and len(last.targets) > 1:
+            return True   # "either stairs are fine, just take one of them": the choice already given
         k = 1
         implicit_dest: Optional[Descriptor] = None
         binned = verb in ('bin', 'dump', 'chuck') and 'in' not in tokens
@@ -2179,6 +2184,12 @@ class _Reader:
             self.notes.append(f'read "{" ".join(tokens[k:verb_end])}" as going to what follows')
             k = verb_end
             self.saw_action = True
+        if k == 0 and len(tokens) > 1 and all(t in GOAL_PARTICLES and t not in ('me', 'there', 'here')
+                                              for t in tokens[1:]) and tokens[0] not in DETS and \
+                tokens[0] not in STOPWORDS and _is_word(tokens[0]) and self.task.chain:
+            self.saw_action = True   # "just pop over (and check it)": to the place named before
+            self.notes.append(f'"{" ".join(tokens)}": going to the place named before')
+            return
         last = self.task.chain[-1] if self.task.chain else None
         if (tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
                            ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these']) or (

@@ -54,8 +54,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=(?:the|my|your|our) (?:\w+ ){1,3}(?:is|are) '
      r'(?!never|not|visited|reached|avoided|always)\w)', ' check '),
     # "check the cat is in the laundry room": the place where it is
-    (r' check (?:the |my |our |your )(?:\w+ ){1,3}(?:is|are) (?:still )?(?:in|at|inside|on|by|near|next to) ',
-     ' check '),
+    (r' check (?:the |my |our |your )(?:\w+ ){1,3}(?:is|are) (?:still )?(?:in|at|inside|on|by|near|next to) '
+     r'(?=(?:the|a|an|my|your|our) )', ' check '),
     (r' pay (the|a|an|my|your|our) ((?:\w+ ){1,4})a (?:quick |short )?visit ', r' visit \1 \2'),
     (r' from there , ', ' after that , '),
     # "first stop, the bakery. last stop, the florist": the order of the stops

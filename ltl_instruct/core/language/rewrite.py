@@ -22,6 +22,7 @@ from ltl_instruct.core.language.phrases import (
     DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, NounPhrase, PhraseParser, is_name_word, singular,
 )
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
+from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
                           'notice', 'find', ','})
@@ -118,6 +119,11 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                                         else t for k, t in enumerate(tail)]
         return tokens
     items = []
+    if nps[-1].descriptor.relations and not any(np.descriptor.relations for np in nps[:-1]):
+        # "a mug, a plate and a bowl on the counter": where they all are, not which bowl
+        rel = next((k for k in range(nps[-1].start + 1, nps[-1].end) if tokens[k] not in DETERMINERS and
+                    not is_name_word(tokens, k, True)), nps[-1].end)
+        nps[-1] = NounPhrase(Descriptor(nps[-1].descriptor.name), nps[-1].start, rel, nps[-1].head)
     for np in nps:
         words = _np_text(tokens, np)
         if category and 'one' in words:

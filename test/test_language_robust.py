@@ -440,3 +440,25 @@ ROUND_TEN = [
 @pytest.mark.parametrize('instruction,gold', ROUND_TEN, ids=[c[0][:30] for c in ROUND_TEN])
 def test_tenth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+ROUND_ELEVEN = [
+    ('Give the bins a quick check.', 'F near[bins]'),
+    ('Lots going on today! Before you head anywhere near the study, check the hallway closet.',
+     'F near[study] & (!near[study] U near[hallway_closet])'),
+    ('Stay far away from the fireplace throughout; you are going to the armchair.',
+     'F near[armchair] & G !near[fireplace]'),
+    ('Go to the den but keep clear of the cat bed as well as the plant stand.',
+     'F near[den] & G !near[cat_bed] & G !near[plant_stand]'),
+    ('Either the front desk or the back desk works, just go to one.',
+     'F near[front_desk] | F near[back_desk]'),
+    ('Grab the black jacket hanging on the hook and lay it on the bed.',
+     'F (near[black_jacket::isabove(hook)] & F (pick[black_jacket::isabove(hook)] & F (near[bed] & '
+     'F release[black_jacket::isabove(hook), bed])))'),
+    ('A sofa, a table and a rug are in here. Go to the second one.', 'F near[table]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_ELEVEN, ids=[c[0][:30] for c in ROUND_ELEVEN])
+def test_eleventh_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -170,6 +170,11 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     """
     if not tokens or has_constraint_word(tokens):
         return False
+    if len(tokens) > 2 and tokens[0] not in DETERMINERS and tokens[1] in (
+            'going', 'coming', 'happening', 'arriving', 'visiting', 'waiting', 'cooking', 'running') and \
+            tokens[0] not in STATEMENT_SUBJECTS | {'you', 'keep', 'stop', 'start', 'go', 'be'} and \
+            is_name_word(tokens, 0, False):
+        return True   # "lots going on today", "guests arriving at noon"
     if tokens[0] in ('our', 'my', 'his', 'her', 'their') and np_end == 0:
         # "our in-laws are visiting": a possessive subject the phrase reader did not take
         f = next((k for k in range(2, min(6, len(tokens))) if tokens[k] in FINITE_VERBS), -1)

@@ -997,8 +997,9 @@ class _Reader:
         fine = (' is fine', ' is okay', ' are fine', ' is ok', ' will do', ' works', ' is good')
         if s.endswith(fine) and 'or' in tokens:
             # "either the left lift or the right lift is fine": a choice of goals
-            nps, joiner, end = self._np_list(tokens, 0)
-            if joiner == 'or' and ' '.join(tokens[end:]) in [f.strip() for f in fine]:
+            tail = next(f.strip().split() for f in fine if s.endswith(f))
+            nps, joiner, end = self._np_list(tokens[:-len(tail)], 0)
+            if joiner == 'or' and end == len(tokens) - len(tail):
                 self.saw_action = True
                 self.task.chain.append(Step('visit', [np.descriptor for np in nps]))
                 return scope
@@ -2192,7 +2193,8 @@ class _Reader:
             return
         last = self.task.chain[-1] if self.task.chain else None
         if (tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
-                           ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these']) or (
+                           ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these'],
+                           ['one']) or (
                 k > 0 and tokens[k:] == ['there'] and not self.phrases.landmarks)) and \
                 last is not None and last.kind == 'visit' and len(last.targets) > 1:
             self.saw_action = True   # "just get to one of them": the choice already given

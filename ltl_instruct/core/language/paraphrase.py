@@ -56,7 +56,10 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "check the cat is in the laundry room": the place where it is
     (r' check (?:the |my |our |your )(?:\w+ ){1,3}(?:is|are) (?:still )?(?:in|at|inside|on|by|near|next to) '
      r'(?=(?:the|a|an|my|your|our) )', ' check '),
-    (r' pay (the|a|an|my|your|our) ((?:\w+ ){1,4})a (?:quick |short )?visit ', r' visit \1 \2'),
+    (r' (?:pay|give) (the|a|an|my|your|our) ((?:\w+ ){1,4})a (?:quick |short |good |brief )?'
+     r'(?:visit|check|look|once over|sweep|glance|inspection) ', r' visit \1 \2'),
+    (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
+    (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
     (r' from there , ', ' after that , '),
     # "first stop, the bakery. last stop, the florist": the order of the stops
     (r'(^ | [,.;!?] )(first|second|third|fourth|fifth|next) (?:stop|destination|place|location|port of call) '
@@ -90,7 +93,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
                                    ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
                                    ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
-                                   ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location')):
+                                   ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location',
+                                   ' give ', ' you ')):
         return tokens
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)

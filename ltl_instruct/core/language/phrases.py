@@ -61,6 +61,8 @@ RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
     ('that', 'is', 'right'), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
     ('that', 'sits'), ('that', 'is', 'sitting'), ('that', 'is', 'lying'), ('sitting',), ('located',),
     ('placed',), ('standing',), ('lying',), ('right',), ('just',), ('directly',), ('the', 'one'),
+    ('hanging',), ('resting',), ('leaning',), ('parked',), ('stored',), ('kept',), ('found',),
+    ('that', 'hangs'), ('that', 'sits'), ('that', 'stands'), ('that', 'lies'),
 )
 
 # Words that are never part of a name.
@@ -386,6 +388,10 @@ class PhraseParser:
             sep = ''
             if tokens[j] == ',':
                 j += 1
+                sep = 'and'
+            if tuple(tokens[j:j + 3]) in (('as', 'well', 'as'), ('along', 'with', 'the')) or \
+                    tokens[j:j + 1] == ['plus']:
+                j += 1 if tokens[j] == 'plus' else (3 if tokens[j] == 'as' else 2)   # "X as well as Y"
                 sep = 'and'
             if j < len(tokens) and tokens[j] in ('and', 'or', 'nor'):
                 sep = 'or' if tokens[j] == 'or' else 'and'

@@ -27,7 +27,7 @@ from ltl_instruct.core.spec import Descriptor
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
                           'notice', 'find', ','})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
-                       'there', '-'})
+                       'there', '-', 'are', 'sit', 'stand', 'lie'})
 _REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
                                     'after', 'former', 'latter', 'them', 'all'}
 

@@ -126,3 +126,27 @@ def test_before_visiting_it_moves_the_new_goal_first() -> None:
     assert equivalent(got.formula, parse_formula('F (near[barn] & F near[shed])'))
     got = T.translate('Go to the gate followed by visiting the pond.')
     assert equivalent(got.formula, parse_formula('F (near[gate] & F near[pond])'))
+
+
+ROUTES = [
+    ('Go to the den then the hall, or go to the hall then the den.',
+     'F (near[den] & F near[hall]) | F (near[hall] & F near[den])'),
+    ('Go to the shed after the barn. Go to the barn after the gate.',
+     'F (near[gate] & F (near[barn] & F near[shed]))'),
+    ('Go to the kitchen, then the bedroom. Go to the kitchen again after the bathroom.',
+     'F (near[kitchen] & F (near[bedroom] & F (near[bathroom] & F near[kitchen])))'),
+    ('Go to the dock, leave, and then go to the dock again.',
+     'F (near[dock] & F (!near[dock] & F near[dock]))'),
+    ('Visit the lab, then leave the lab and never go back.',
+     'F (near[lab] & F !near[lab]) & (!near[lab] U (near[lab] & (near[lab] W G !near[lab])))'),
+    ('Always avoid the cellar to get to the porch.', 'F near[porch] & G !near[cellar]'),
+    ('Go to the roof always passing through the attic.', 'F (near[attic] & F near[roof])'),
+    ('Go to the shed; you can only visit the shed once.',
+     '!near[shed] U (near[shed] & (near[shed] W G !near[shed]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUTES, ids=[c[0][:40] for c in ROUTES])
+def test_routes_leaving_and_goals_named_again(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'

@@ -116,7 +116,7 @@ def _bound(m: 're.Match[str]') -> str:
 
 
 def _visits(m: 're.Match[str]') -> str:
-    mode = _group(m, 'mode').strip().replace('only', 'exactly')
+    mode = _group(m, 'mode').strip().replace('only', 'exactly') or ('exactly' if m.group('only') else '')
     n = 1 if m.group('n') in ('a', 'an', 'single', 'any single') else _number(m.group('n'))
     return f'visit {m.group("x")} {mode + " " if mode else ""}{_times(n)}'
 
@@ -159,6 +159,17 @@ RULES: tuple[Rule, ...] = (
     Rule('the 2 nd floor, level two', rf'\b(?:(?P<n>{_SMALL}) (?:st|nd|rd|th) floor|level (?P<m>{_SMALL}))\b',
          lambda m: f'{_ORDINAL_OF[m.group("n") or m.group("m")]} floor'),
 
+    Rule('after seeing b',
+         r'\b(?P<c>after|before|until|once|when) (?:seeing|observing|visiting|reaching|going to)\b',
+         r'\g<c> you visit'),
+    Rule('when you have the chance', r'\b(?:when|whenever|if) you (?:have|get) (?:the|a) chance\b', ''),
+    Rule('visit a exactly once, you can stay there as long as you like',
+         r'\b(?:and )?you (?:can|may) stay there (?:for any (?:period|amount|length) of time|as long as you '
+         r'(?:like|want))\b', ''),
+    Rule('leave it and never go back', r'\b(?:and |then )*never (?:go|come) back(?: there| to it)?(?= ,|$)',
+         ' , do not revisit it , '),
+    Rule('go to a once again', r'\bonce again\b', 'again'),
+
     # ---- counts said as ranges
     Rule('zero times, once or twice',
          rf'\b(?:zero|0|no) times?(?: ,)?(?: (?:or )?(?:once|twice|thrice|{_NUM} times?)(?: ,)?)+', _upto),
@@ -171,6 +182,9 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<c>once|twice|thrice) or (?:fewer|less)(?: times)?\b', r'at most \g<c>'),
     Rule('two or more than two times', rf'\b(?P<c>{_NUM}) or more than (?P=c) {_KIND}times?\b',
          lambda m: f'at least {_times(_number(m.group("c")))}'),
+    Rule('five or more visits to X',
+         rf'\b(?P<c>{_NUM}) or more {_KIND}(?P<u>visits|trips|passes) (?=to |through )',
+         lambda m: f'at least {m.group("c")} {m.group("u")} '),
     Rule('two or more times', rf'\b(?P<c>{_NUM}) (?:times )?or more(?: {_KIND}{_UNIT})?\b',
          lambda m: f'at least {_times(_number(m.group("c")))}'),
     Rule('once or more', r'\b(?P<c>once|twice|thrice) or more(?: times)?\b', r'at least \g<c>'),
@@ -202,7 +216,7 @@ RULES: tuple[Rule, ...] = (
     Rule('do not make any single visit to X', r'\b(?:make|pay) (?:any|a) (?:single )?(?:visits?|trips?) to\b',
          'visit'),
     Rule('make at least three separate visits to X',
-         rf'\b(?:make|complete|have|need|pay|do)(?: only)? (?P<mode>(?:at least|at most|exactly|only|'
+         rf'\b(?:make|complete|have|need|pay|do)(?P<only> only)? (?P<mode>(?:at least|at most|exactly|only|'
          rf'no more than|no fewer than|no less than) )?(?P<n>{_NUM}|a|an|single|any single) {_KIND}'
          rf'(?:visits?|trips?|passes) (?:to|through|of|at) (?P<x>{_NP})(?= |$)', _visits),
 
@@ -278,6 +292,8 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?:(?:but )?without|(?:, )?(?:or|and|nor)) (?:returning|going back|coming back|revisiting|'
          rf'revisit|return|go back|come back)(?: to)? (?P<x>{_NPS}){_CLAUSE_END}',
          r' , do not revisit \g<x> , '),
+    Rule('go to b without going to a again', rf'\bwithout {_GOING} (?P<x>{_NPS}) again{_CLAUSE_END}',
+         r' , do not revisit \g<x> , '),
     Rule('without skipping any of them', r'\bwithout skipping any(?: one)?(?: of them)?\b', ''),
     Rule('a followed by visiting b', rf'\bfollowed by {_GOING}\b', 'followed by'),
     Rule('a, then visiting b', rf'\bthen (?P<verb>{_GOING})\b', lambda m: f'then {_plain(m.group("verb"))}'),
@@ -298,12 +314,13 @@ RULES: tuple[Rule, ...] = (
          rf'(?:always )?avoided(?= |$)', r'\g<pre>avoid \g<x>'),
 
     Rule('never let the alarm hold',
-         rf'\bnever let (?P<x>{_NPS}) (?:hold|hold true|happen|occur|be true|become '
+         rf'\bnever let (?P<x>{_NPS}) (?:hold true|hold|happen|occur|be true|become '
          rf'true|be visited)(?= |$)', r'never visit \g<x>'),
     Rule('the alarm must never hold',
          rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) '
          rf'(?:must |should |can |will |shall )?'
-         rf'(?:never|not) (?:hold|holds|hold true|happen|happens|occur|occurs|be true|become true)(?= |$)',
+         rf'(?:never|not) (?:hold true|holds true|hold|holds|happen|happens|occur|occurs|be true|become true)'
+         rf'(?= |$)',
          r'\g<pre>never visit \g<x>'),
 
     Rule('any visit to the shed is not allowed',

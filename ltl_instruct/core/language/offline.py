@@ -206,7 +206,7 @@ CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
     'if', 'either', 'also', 'just', 'first', 'but', 'when', 'until', 'whatever', 'finally', 'no', 'steer',
     'along', 'take', 'fly', 'survey', 'drive', 'land', 'stop', 'swing', 'make', 'patrol', 'charge', 'hover',
     'whichever', 'order', 'in', 'twice', 'three', 'exactly', 'at', 'and', 'then', 'eventually', 'sometime',
-    'afterwards', 'afterward', 'later'}) - {
+    'afterwards', 'afterward', 'later', 'ensure'}) - {
     'be', 'robot', 'drone', 'hey', 'okay', 'kindly', 'so', 'now', 'lastly', 'up', 'end', 'ahead', 'i',
     'you', 'can', 'could', 'would', 'will', 'need', 'want', 'please'} | {'i', 'you', 'please'}
 
@@ -367,7 +367,7 @@ class _Task:
         for s in reversed(self._all_steps()):
             if s.kind in ('visit', 'deliver', 'pick'):
                 names = s.targets + s.dests
-                if d in names or (head and any(n.name.split('_')[-1] == head for n in names)):
+                if d in names or (head and any(head in n.name.split('_') for n in names)):
                     return s
         return None
 
@@ -746,6 +746,17 @@ class _Reader:
                 return
         scope: Optional[_Scope] = None
         clauses = self._clauses(tokens)
+        if any(c.connector == 'or' for c in clauses[1:]) and clauses[0].connector != 'or' and \
+                not self._is_permission(tokens):
+            # "go to a then b, or go to b then a": one of the routes
+            groups: list[list[_Clause]] = [[]]
+            for c in clauses:
+                if c.connector == 'or' and groups[-1]:
+                    groups.append([_Clause('and', c.tokens)])
+                else:
+                    groups[-1].append(c)
+            self._read_alternative_clauses(groups)
+            return
         skip = False
         for n, clause in enumerate(clauses):
             if skip:
@@ -795,15 +806,17 @@ class _Reader:
         return True
 
     def _read_alternatives(self, parts: list[list[str]]) -> None:
+        self._read_alternative_clauses([self._clauses(p[1:] if p and p[0] == 'either' else p) for p in parts])
+
+    def _read_alternative_clauses(self, groups: list[list[_Clause]]) -> None:
         self.saw_action = True
         outer = self.task
         chains = []
-        for p in parts:
-            if p and p[0] == 'either':
-                p = p[1:]
+        for group in groups:
             self.task = _Task()
-            for clause in self._clauses(p):
-                self._read_clause(clause, None)
+            scope: Optional[_Scope] = None
+            for clause in group:
+                scope = self._read_clause(clause, scope)
             chains.append([Step('formula', formula=c) for c in self.task.constraints] + self.task.chain)
         self.task = outer
         self.task.chain.append(Step('any', chains=chains))
@@ -940,6 +953,8 @@ class _Reader:
             return nxt in ('not', 'no')
         if tokens[i] == 'never':
             return nxt in AVOID_FILLER or nxt in GOAL_VERBS
+        if tokens[i] == 'leave':
+            return nxt in ('and', 'then', ',', 'it', 'there')   # "go to a leave and then come back"
         if tokens[i] in ('ensure', 'make'):
             return tokens[i] == 'ensure' or nxt == 'sure'
         if tokens[i] == 'you':
@@ -1117,6 +1132,8 @@ class _Reader:
                 scope = _Scope('after', NounPhrase((last.dests or last.targets)[0], 0, 0, ''))
             self._read_avoid(tokens, scope)
             return scope
+        if tokens[0] in ('leave', 'exit') and self._read_leave(tokens[1:]):
+            return scope
         if tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS or _starts(tokens, 0, ['throw', 'away']):
             if self._read_delivery(tokens, clause):
                 self.saw_action = True
@@ -1260,6 +1277,21 @@ class _Reader:
         self._read_clause_body(_Clause('and', again), prev_scope)
         return True
 
+    def _read_leave(self, rest: list[str]) -> bool:
+        """Read 'leave (X)' after a visit of X: be away from it ("go to a, leave, then go to a again")."""
+        last = self.task.last_step(('visit',))
+        if last is None or len(last.targets) != 1:
+            return False
+        target = last.targets[0]
+        if rest and rest not in (['it'], ['there'], ['here']):
+            nps, _, end = self._np_list(rest, 0)
+            if len(nps) != 1 or end != len(rest) or self.task.find_step(nps[0].descriptor) is None:
+                return False
+            target = nps[0].descriptor
+        self.saw_action = True
+        self.task.chain.append(Step('leave', [target]))
+        return True
+
     @staticmethod
     def _strip_fillers(tokens: list[str]) -> list[str]:
         i = 0
@@ -1280,8 +1312,9 @@ class _Reader:
             if i < len(tokens) - 1 and tokens[i] == 'always' and tokens[i + 1] in GOAL_VERBS:
                 i += 1
         out = tokens[i:]
-        while out and out[-1] in (',', 'please', 'too', 'now', 'again', 'thanks', 'first', 'instead', 'ok',
-                                  'okay', 'then', 'as', 'well'):
+        while out and (out[-1] in (',', 'please', 'too', 'now', 'again', 'thanks', 'first', 'instead', 'ok',
+                                   'okay', 'then', 'as', 'well', 'after', 'afterwards', 'afterward') or (
+                out[-1] in ('second', 'third', 'fourth', 'fifth') and len(out) > 1 and out[-2] != 'the')):
             if out[-1] == 'well' and len(out) > 1 and out[-2] == 'as':
                 out = out[:-2]
                 continue
@@ -1525,6 +1558,11 @@ class _Reader:
                 step.avoid_until.extend(v.descriptor for v in via)
                 self._check_leftover(rest[vend:], tokens)
                 return
+        if len(rest) > 1 and rest[0] == 'to' and rest[1] in GOAL_VERBS and rest[1] not in (
+                'be', 'you', 'i', 'can', 'could', 'would', 'will', 'then', 'and', 'to', 'up', 'down', 'back'):
+            # "always avoid the cellar to get to the porch": the goal, with the avoidance read as if after it
+            self._read_goal(rest[1:], _Clause('and', rest[1:]), None)
+            rest = []
         local, rest = self._trailing_scope(rest)
         if local is not None:
             scope = local
@@ -1768,7 +1806,7 @@ class _Reader:
                                     ' you are allowed ', ' it is okay to ', ' it is fine to ', ' or stop ',
                                     ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ',
                                     ' or continue ')
-                   ) and ' not ' not in s
+                   ) and ' not ' not in s and ' can only ' not in s
 
     def _read_permission(self, tokens: list[str]) -> None:
         """'...then you can go to Y': an avoidance of Y that was pending ends where the goal is reached."""
@@ -2337,6 +2375,23 @@ class _Reader:
         self.saw_action = True
         return True
 
+    def _after_goals(self, moved: Step, others: list[Descriptor], again: bool) -> None:
+        """'go to X after Y': Y then X; a Y or an X given as a goal before is that goal, not a new one.
+
+        Unless said again ("go back to X after Y"): then X is visited once more.
+        """
+        chain = self.task.chain
+        known = {tuple(st.targets) for st in chain if st.kind == 'visit'}
+        new = [d for d in others if (d,) not in known]
+        same = next((st for st in chain if st.kind == 'visit' and st.targets == moved.targets), None)
+        if same is not None and moved.kind == 'visit' and not again:
+            # "go to c after b. go to b after a": a goes before the b already given
+            k = chain.index(same)
+            chain[k:k] = [Step('visit', [d]) for d in new]
+            return
+        chain.extend(Step('visit', [d]) for d in new)
+        chain.append(moved)
+
     def _strict_order(self, before: Optional[Step], targets: list[Descriptor], joiner: str) -> None:
         """'go to a, and only then go to b': this clause's goals not before the goal before them."""
         prev = before.targets if before is not None and before.kind == 'visit' else (
@@ -2394,11 +2449,15 @@ class _Reader:
                     for d in others:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(x)), _near(d)))
+                elif word == 'after':
+                    self._after_goals(moved, others, again=bool({'again', 'back', 'return'} & set(whole)))
                 else:
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                     self.task.chain.append(moved)
                 self._goal_trailer(rest[end:], whole, targets)
                 return
+        if rest[0] == 'always' and len(rest) > 2 and rest[1] in ('passing', 'going', 'moving'):
+            rest = ['by'] + rest[1:]   # "go to X always passing through Y": by passing through Y
         if rest[0] == 'by' and len(rest) > 2:
             j = 2 if rest[1] == 'first' else 1
             if rest[j].endswith('ing') and rest[j] not in ('avoiding', 'staying', 'remaining', 'keeping'):

@@ -35,7 +35,7 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' (?:from then on|from that point on|from there on|thereafter|from that moment on|after this) ',
      ' after that '),
     (r' from now on ', ' '),
-    (r' (?:you )?(?:may|can|are allowed to|are permitted to|should) only ', ' only '),
+    (r'(^ | [.;!?] )you (?:may|can|are allowed to|are permitted to|should) only ', r'\1 only '),
     (r' (?:under no circumstances|on no account|at no point|at no time)'
      r'(?: should you| must you| are you to)? ',
      ' never '),

@@ -462,3 +462,8 @@ ROUND_ELEVEN = [
 @pytest.mark.parametrize('instruction,gold', ROUND_ELEVEN, ids=[c[0][:30] for c in ROUND_ELEVEN])
 def test_eleventh_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+def test_a_wish_that_frames_the_request() -> None:
+    _check("I'd love for you to visit the sculpture garden and the gift shop; the order doesn't matter.",
+           'F near[sculpture_garden] & F near[gift_shop]')

@@ -127,6 +127,7 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )(?:it is )?(?:time|high time) (?:for you )?to ', r'\1 '),
     (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
     (r'(^ | [,.;!?] )(?:would|could|do|will) you mind ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
     (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
      r'get) )', r'\1 '),
     (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),

@@ -467,3 +467,10 @@ def test_eleventh_round_of_unseen_phrasings(instruction: str, gold: str) -> None
 def test_a_wish_that_frames_the_request() -> None:
     _check("I'd love for you to visit the sculpture garden and the gift shop; the order doesn't matter.",
            'F near[sculpture_garden] & F near[gift_shop]')
+
+
+@pytest.mark.parametrize('chatter_only', ['Thanks!', 'We have guests coming.', 'Be careful.',
+                                          'Hi there, how are you?'])
+def test_an_instruction_of_chatter_alone_is_still_an_error(chatter_only: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(chatter_only)

@@ -474,3 +474,28 @@ def test_a_wish_that_frames_the_request() -> None:
 def test_an_instruction_of_chatter_alone_is_still_an_error(chatter_only: str) -> None:
     with pytest.raises(TranslationError):
         T.translate(chatter_only)
+
+
+ROUND_THIRTEEN = [
+    ('Could you run down to the lobby and wait by the front doors?', 'F (near[lobby] & F near[front_doors])'),
+    ('Could you please go and get the newspaper from the porch and bring it to me in the study?',
+     'F (near[newspaper::isnextto(porch)] & F (pick[newspaper::isnextto(porch)] & F (near[study] & '
+     'F release[newspaper::isnextto(porch), study])))'),
+    ('Go to the conference room, but before that, grab a marker from the supply cabinet.',
+     'F (near[marker::isnextto(supply_cabinet)] & F (pick[marker::isnextto(supply_cabinet)] & '
+     'F near[conference_room]))'),
+    ('Visit the nurses station, then room twelve, then room fourteen.',
+     'F (near[nurses_station] & F (near[room_12] & F near[room_14]))'),
+    ('Get over to the loading bay as fast as you can.', 'F near[loading_bay]'),
+    ('Could you see if there is any mail in the mailbox?', 'F near[mailbox]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_THIRTEEN, ids=[c[0][:30] for c in ROUND_THIRTEEN])
+def test_thirteenth_round_of_unseen_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_a_place_after_go_to_is_no_verb() -> None:
+    with pytest.raises(TranslationError):   # "in the living room" names a place the rules cannot place
+        T.translate('Go check on grandma in the living room.')

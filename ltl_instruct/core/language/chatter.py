@@ -88,7 +88,9 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'that', 'is', 'okay'), ('if', 'that', 'is', 'alright'), ('if', 'that', 'is', 'fine'),
     ('if', 'you', 'would', 'be', 'so', 'kind'), ('if', 'it', 'is', 'not', 'too', 'much', 'trouble'),
     ('on', 'your', 'way', 'out'), ('on', 'the', 'way', 'out'), ('and', 'back'), ('and', 'back', 'again'),
-    ('there', 'and', 'back'), ('right', 'away'), ('at', 'once'),
+    ('there', 'and', 'back'), ('right', 'away'), ('at', 'once'), ('as', 'fast', 'as', 'you', 'can'),
+    ('as', 'quickly', 'as', 'you', 'can'), ('as', 'soon', 'as', 'you', 'can'),
+    ('as', 'quickly', 'as', 'possible'), ('as', 'fast', 'as', 'possible'),
 ), key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).

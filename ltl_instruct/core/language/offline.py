@@ -897,7 +897,8 @@ class _Reader:
                 elif t in (',', 'and') and j < n and tokens[j] in chatter.ACTIVITY_VERBS and (
                         j + 1 >= n or tokens[j + 1] in PUNCT or tokens[j + 1] in (
                             'it', 'them', 'your', 'my', 'down', 'up', 'outside', 'inside', 'around', 'for',
-                            'there', 'here', 'we', 'if', 'whether', 'a', 'and', 'then', 'out')):
+                            'there', 'here', 'we', 'if', 'whether', 'a', 'and', 'then', 'out', 'by', 'near',
+                            'beside', 'next')):
                     boundary, skip = 'and', j - i   # "go to the door and knock"
                 elif t in (',', ';') and tokens[j:j + 2] in (
                         ['the', 'order'], ['any', 'order'], ['in', 'any'], ['in', 'whatever'],
@@ -2131,8 +2132,10 @@ class _Reader:
         if verb in PICK_VERBS and implicit_dest is None and (
                 not rest or rest[0] not in ('to', 'into', 'in', 'on', 'onto', 'at')):
             # a plain pick; a following "and bring it to X" turns it into a delivery.
+            at = len(self.task.chain) - (1 if clause.connector == 'pre' and self.task.chain else 0)
             for o in objs:
-                self.task.chain.append(Step('pick', [o.descriptor]))
+                self.task.chain.insert(at, Step('pick', [o.descriptor]))
+                at += 1
             self._check_leftover(rest, tokens)
             return True
         dests: list[NounPhrase] = []
@@ -2187,10 +2190,12 @@ class _Reader:
                 self._read_avoid(without, _Scope('carry'))
             return True
         steps = [Step('deliver', [o], list(dest_ds)) for o in obj_ds]
-        if len(steps) == 1:
-            self.task.chain.append(steps[0])
+        group = 'any' if joiner == 'or' else 'all'
+        step = steps[0] if len(steps) == 1 else Step(group, chains=[[s] for s in steps])
+        if clause.connector == 'pre' and self.task.chain:
+            self.task.chain.insert(len(self.task.chain) - 1, step)   # "X, but before that, bring Y to Z"
         else:
-            self.task.chain.append(Step('any' if joiner == 'or' else 'all', chains=[[s] for s in steps]))
+            self.task.chain.append(step)
         if without:   # "take it to X without passing Y": while carrying it
             self._read_avoid(without, _Scope('carry'))
         if avoiding:
@@ -2216,7 +2221,8 @@ class _Reader:
             if tokens[k] in ('from', 'through', 'via') and k > 0:
                 patrol_from = True
             k += 1
-        verb_end = self._unknown_verb(tokens, k)
+        # after "go to" comes the place, not another verb ("go to grandma in the living room")
+        verb_end = self._unknown_verb(tokens, k) if k == 0 or tokens[k - 1] not in GOAL_PARTICLES else None
         if verb_end is not None:
             if k == 0 and self._read_unknown_placement(tokens, verb_end, clause):
                 return

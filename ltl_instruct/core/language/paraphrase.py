@@ -61,6 +61,10 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
     (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
     (r' from there , ', ' after that , '),
+    (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
+    (r' (?:wait|stand|sit|park) (?:by|near|next to|beside) (?=(?:the|a|my|your|our) )', ' go to '),
+    (r' check there (?:is|are) (?:any |some |a |an )?(?:\w+ ){1,2}(?:in|on|at|inside) '
+     r'(?=(?:the|a|an|my|your|our) )', ' check '),
     # "first stop, the bakery. last stop, the florist": the order of the stops
     (r'(^ | [,.;!?] )(first|second|third|fourth|fifth|next) (?:stop|destination|place|location|port of call) '
      r'(?:is |will be )?(?:, |: )?', r'\1 \2 , '),
@@ -94,7 +98,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
                                    ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
                                    ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location',
-                                   ' give ', ' you ')):
+                                   ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ')):
         return tokens
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)

@@ -43,7 +43,9 @@ ORDINAL_DIGITS: dict[str, str] = {
 
 NUMBER_WORDS: dict[str, int] = {
     'one': 1, 'two': 2, 'three': 3, 'four': 4, 'five': 5, 'six': 6, 'seven': 7, 'eight': 8,
-    'nine': 9, 'ten': 10, 'once': 1, 'twice': 2, 'thrice': 3,
+    'nine': 9, 'ten': 10, 'once': 1, 'twice': 2, 'thrice': 3, 'eleven': 11, 'twelve': 12, 'thirteen': 13,
+    'fourteen': 14, 'fifteen': 15, 'sixteen': 16, 'seventeen': 17, 'eighteen': 18, 'nineteen': 19,
+    'twenty': 20,
 }
 
 ORDINALS: dict[str, int] = {

@@ -529,6 +529,8 @@ class _Reader:
         self.mentions: list[Descriptor] = []
         self.before_target: Optional[Descriptor] = None
         self.strict_chain = False   # "in that strict order" somewhere in the instruction
+        self.last_goal: Optional[Step] = None   # the last goal clause's step ("before that" refers to it)
+        self.connector = 'and'   # how the goal clause being read joins the one before it
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -734,7 +736,8 @@ class _Reader:
                 boundary = 'there'
                 skip = 2 if tokens[i + 1] == 'there' else 4
             elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
-                  ) and any(c.tokens for c in clauses) and 'sure' not in clauses[-1].tokens and \
+                  ) and (any(c.tokens for c in clauses) or self.task.chain) and \
+                    'sure' not in clauses[-1].tokens and \
                     'visited' not in tokens[i:]:
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
             elif t == 'always' and 0 < i < n - 1 and tokens[i + 1] in ('avoid', 'stay', 'keep') and \
@@ -807,6 +810,8 @@ class _Reader:
             return nxt in ('not', 'no')
         if tokens[i] == 'never':
             return nxt in AVOID_FILLER or nxt in GOAL_VERBS
+        if tokens[i] == 'not':
+            return nxt == 'to'   # "visit a not to visit b before a not to visit c before b"
         if tokens[i] == 'leave':
             return nxt in ('and', 'then', ',', 'it', 'there')   # "go to a leave and then come back"
         if tokens[i] in ('ensure', 'make'):
@@ -1851,15 +1856,20 @@ class _Reader:
                 return
             self._goal_trailer(rest, tokens, targets)
             return
+        tail: list[Step] = []
         if clause.connector == 'pre' and self.task.chain:
-            last = self.task.chain.pop()
+            # "..., before that, go to X": X before the goal of the clause before
+            chain = self.task.chain
+            k = next((i for i, st in enumerate(chain) if st is self.last_goal), len(chain) - 1)
+            tail, self.task.chain = chain[k:], chain[:k]
             self._add_targets(targets, joiner, ordered)
-            self.task.chain.append(last)
         else:
             before = self.task.last_step(('visit', 'deliver'))
             self._add_targets(targets, joiner, ordered)
             if strict:
                 self._strict_order(before, targets, joiner)
+        new_step = self.task.chain[-1]
+        self.connector = clause.connector
         if self.before_target is not None:
             known = next((st for st in self.task.chain[:-1] if st.kind == 'visit'
                           and st.targets == [self.before_target]), None)
@@ -1872,10 +1882,12 @@ class _Reader:
                 targets = [self.task.chain[-1].targets[0]]
             self.before_target = None
         self._goal_trailer(rest, tokens, targets)
+        self.task.chain.extend(tail)
+        self.last_goal = new_step
         if self.conditional is not None:
             self.task.constraints.append(WeakUntil(Not(_near(self.conditional.descriptor)),
                                                    _near(targets[0])))
-            self.task.chain.pop()
+            self.task.chain = [st for st in self.task.chain if st is not new_step]
             self.conditional = None
 
     def _after_goals(self, moved: Step, others: list[Descriptor], again: bool) -> None:
@@ -1948,7 +1960,11 @@ class _Reader:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(d)), _near(x)))
                 elif only and word == 'after':
-                    self.task.chain.append(moved)   # "X only after Y": F x & (!x U y)
+                    # "X only after Y": F x & (!x U y), X not in sequence after the goals said before it
+                    if self.task.chain and self.connector != 'seq':
+                        self.task.chain = [Step('all', chains=[self.task.chain, [moved]])]
+                    else:
+                        self.task.chain.append(moved)
                     for d in others:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(x)), _near(d)))

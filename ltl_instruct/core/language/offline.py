@@ -201,6 +201,22 @@ CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
     'you', 'can', 'could', 'would', 'will', 'need', 'want', 'please'} | {'i', 'you', 'please'}
 
 
+def _by_first_word(phrases: Sequence[tuple[str, ...]]) -> dict[str, tuple[tuple[str, ...], ...]]:
+    """Index phrases by their first word, keeping their order (longest first where sorted so)."""
+    out: dict[str, list[tuple[str, ...]]] = {}
+    for p in phrases:
+        out.setdefault(p[0], []).append(p)
+    return {k: tuple(v) for k, v in out.items()}
+
+
+_AVOID_BY_FIRST = _by_first_word(AVOID_TRIGGERS)
+_STAY_BY_FIRST = _by_first_word(STAY_WITHIN)
+# Every word at which _clauses may see a clause boundary.
+CLAUSE_OPENING_WORDS = STRONG_VERBS | {
+    'only', 'then', 'and', ',', 'after', 'finally', 'afterwards', 'afterward', 'lastly', 'once', 'when',
+    'before', 'always', 'do', 'never', 'ensure', 'make', 'you', 'not', 'leave', 'but', 'so', 'while', 'or'}
+
+
 def _near(d: Descriptor) -> Atom:
     return Atom('near', (d,))
 
@@ -707,6 +723,10 @@ class _Reader:
         n = len(tokens)
         while i < n:
             t = tokens[i]
+            if t not in CLAUSE_OPENING_WORDS:
+                clauses[-1].tokens.append(t)   # no boundary can start here (the common case, kept fast)
+                i += 1
+                continue
             boundary = ''
             skip = 0
             only_then = _starts(tokens, i + 1, ['then']) or _starts(tokens, i + 1, ['after', 'that'])
@@ -1105,7 +1125,7 @@ class _Reader:
         softeners = ('while', 'and', 'but', 'always', 'also', 'please', 'by', 'just', 'so', 'then')
         while i < len(tokens) - 1 and tokens[i] in softeners:
             i += 1
-        for trig in AVOID_TRIGGERS:
+        for trig in _AVOID_BY_FIRST.get(tokens[i] if i < len(tokens) else '', ()):
             if _starts(tokens, i, trig):
                 k = i + len(trig)
                 if _starts(tokens, k, ['let']):
@@ -1480,7 +1500,7 @@ class _Reader:
         """'stay on the third floor [while going to X]' -> ``G near[floor]``; '... until Y' -> ``U``."""
         if tokens and tokens[0] in ('while', 'and', 'but', 'by', 'always'):
             tokens = tokens[1:]
-        leads = STAY_WITHIN
+        leads = _STAY_BY_FIRST.get(tokens[0] if tokens else '', ())
         if len(tokens) > 1 and tokens[0] in ('staying', 'remaining', 'keeping', 'stay', 'remain') and \
                 tokens[1] in ('in', 'on', 'within', 'inside'):
             leads = (tuple(tokens[:2]),)

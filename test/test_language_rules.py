@@ -150,3 +150,25 @@ ROUTES = [
 def test_routes_leaving_and_goals_named_again(instruction: str, gold: str) -> None:
     got = T.translate(instruction)
     assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+CHAINED = [
+    ('Make your way to the den only after going to the hall. Before that, make your way to the hall only '
+     'after going to the porch.',
+     'F near[den] & (!near[den] U near[hall]) & (!near[hall] U near[porch])'),
+    ('Go to the car. Make sure you have visited the mailbox before that, and only go to the gate after '
+     'the car.',
+     'F near[car] & (!near[car] U near[mailbox]) & F near[gate] & (!near[gate] U near[car])'),
+    ('Visit the oven, then the sink, while ensuring not to visit the sink before the oven.',
+     'F (near[oven] & F near[sink]) & (!near[sink] U near[oven])'),
+    ('Until you have been to the office, you cannot go to the lab.', '!near[lab] U near[office]'),
+    ('Seeing the guard unlocks the vault.', '!near[vault] U near[guard]'),
+    ('Visit the shed, in turn only visit the shed after the barn.',
+     'F near[shed] & (!near[shed] U near[barn])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CHAINED, ids=[c[0][:40] for c in CHAINED])
+def test_orderings_chained_and_said_first(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'

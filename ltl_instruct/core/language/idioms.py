@@ -168,7 +168,13 @@ RULES: tuple[Rule, ...] = (
          r'(?:like|want))\b', ''),
     Rule('leave it and never go back', r'\b(?:and |then )*never (?:go|come) back(?: there| to it)?(?= ,|$)',
          ' , do not revisit it , '),
-    Rule('go to a once again', r'\bonce again\b', 'again'),
+    Rule('go to a once again', r'(?<!least )\bonce again\b', 'again'),
+    Rule('visit c, in turn only visit b after a', r'\b(?:,? )?in turn\b', ' , '),
+    Rule('visit a then b while ensuring not to visit b before a',
+         r'\b(?:while|and) (?:ensuring|making sure)\b', ' , '),
+    Rule('once the predecessor is visited you must visit the successor',
+         r'\b(?:once|after|when) (?:the|a|each) predecessor is visited,? you (?:must|have to|should) visit '
+         r'(?:the|its) successor\b', ' , in strict order , '),
 
     # ---- counts said as ranges
     Rule('zero times, once or twice',
@@ -356,6 +362,16 @@ RULES: tuple[Rule, ...] = (
          rf'\bonly (?P<v>{_GO}) (?P<x>{_NPS}) if you (?:have |had )?(?:already |first )?(?:{_GONE}|{_GO})\b',
          r'\g<v> \g<x> only after you visit'),
     Rule('do not stop until you visit a and b', r'\b(?:do not|never) stop until you visit\b', 'visit'),
+
+    # ---- prohibitions said before their end: "until you have seen b, you cannot go to a"
+    Rule('until you see b, you cannot go to a',
+         rf'^(?P<u>(?:until|till) you (?:have |had )?(?:{_GONE}|{_GO}) {_NPS})(?: ,)? (?P<neg>(?:you cannot|'
+         rf'you can not|you must not|'
+         rf'do not|never|you should not|you may not)) (?P<v>{_GO}) (?P<y>{_NPS})$',
+         r'\g<neg> \g<v> \g<y> \g<u>'),
+    Rule('seeing b unlocks a',
+         rf'^(?:{_GOING}|seeing|observing|visiting) (?P<x>{_NPS}) unlocks (?P<y>{_NPS})$',
+         r'do not visit \g<y> until you visit \g<x>'),
 
     # ---- waiting somewhere until something happens: all become "stay at Y until you visit X"
     Rule('until you see b, stay at a',

@@ -211,6 +211,23 @@ CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
     'you', 'can', 'could', 'would', 'will', 'need', 'want', 'please'} | {'i', 'you', 'please'}
 
 
+def _by_first_word(phrases: Sequence[tuple[str, ...]]) -> dict[str, tuple[tuple[str, ...], ...]]:
+    """Index phrases by their first word, keeping their order (longest first where sorted so)."""
+    out: dict[str, list[tuple[str, ...]]] = {}
+    for p in phrases:
+        out.setdefault(p[0], []).append(p)
+    return {k: tuple(v) for k, v in out.items()}
+
+
+_AVOID_BY_FIRST = _by_first_word(AVOID_TRIGGERS)
+_STAY_BY_FIRST = _by_first_word(STAY_WITHIN)
+# Every word at which _clauses may see a clause boundary.
+CLAUSE_OPENING_WORDS = STRONG_VERBS | {
+    'only', 'then', 'and', ',', 'after', 'finally', 'afterwards', 'afterward', 'lastly', 'once', 'when',
+    'before', 'always', 'do', 'never', 'ensure', 'make', 'you', 'not', 'leave', 'but', 'so', 'while', 'or',
+    ':', ';'}   # ":" as in "be careful: never...", "Rover: head to..."
+
+
 def _near(d: Descriptor) -> Atom:
     return Atom('near', (d,))
 
@@ -612,8 +629,9 @@ class _Reader:
         self.last_clause: Optional[tuple[list[str], Optional[_Scope]]] = None
         self.before_strict = False
         self.insert_before: Optional[Step] = None
-        self.connector = 'and'
         self.strict_chain = False   # "in that strict order" somewhere in the instruction
+        self.last_goal: Optional[Step] = None   # the last goal clause's step ("before that" refers to it)
+        self.connector = 'and'   # how the goal clause being read joins the one before it
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -827,6 +845,10 @@ class _Reader:
         n = len(tokens)
         while i < n:
             t = tokens[i]
+            if t not in CLAUSE_OPENING_WORDS:
+                clauses[-1].tokens.append(t)   # no boundary can start here (the common case, kept fast)
+                i += 1
+                continue
             boundary = ''
             skip = 0
             only_then = _starts(tokens, i + 1, ['then']) or _starts(tokens, i + 1, ['after', 'that'])
@@ -856,7 +878,8 @@ class _Reader:
                 boundary = 'there'
                 skip = 2 if tokens[i + 1] == 'there' else 4
             elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
-                  ) and any(c.tokens for c in clauses) and 'sure' not in clauses[-1].tokens and \
+                  ) and (any(c.tokens for c in clauses) or self.task.chain) and \
+                    'sure' not in clauses[-1].tokens and \
                     'visited' not in tokens[i:]:
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
             elif t == 'always' and 0 < i < n - 1 and tokens[i + 1] in ('avoid', 'stay', 'keep') and \
@@ -954,6 +977,8 @@ class _Reader:
             return nxt in ('not', 'no')
         if tokens[i] == 'never':
             return nxt in AVOID_FILLER or nxt in GOAL_VERBS
+        if tokens[i] == 'not':
+            return nxt == 'to'   # "visit a not to visit b before a not to visit c before b"
         if tokens[i] == 'leave':
             return nxt in ('and', 'then', ',', 'it', 'there')   # "go to a leave and then come back"
         if tokens[i] in ('ensure', 'make'):
@@ -1458,7 +1483,7 @@ class _Reader:
         softeners = ('while', 'and', 'but', 'always', 'also', 'please', 'by', 'just', 'so', 'then')
         while i < len(tokens) - 1 and tokens[i] in softeners:
             i += 1
-        for trig in AVOID_TRIGGERS:
+        for trig in _AVOID_BY_FIRST.get(tokens[i] if i < len(tokens) else '', ()):
             if _starts(tokens, i, trig):
                 k = i + len(trig)
                 if _starts(tokens, k, ['let']):
@@ -1849,7 +1874,7 @@ class _Reader:
         """'stay on the third floor [while going to X]' -> ``G near[floor]``; '... until Y' -> ``U``."""
         if tokens and tokens[0] in ('while', 'and', 'but', 'by', 'always'):
             tokens = tokens[1:]
-        leads = STAY_WITHIN
+        leads = _STAY_BY_FIRST.get(tokens[0] if tokens else '', ())
         if len(tokens) > 1 and tokens[0] in ('staying', 'remaining', 'keeping', 'stay', 'remain') and \
                 tokens[1] in ('in', 'on', 'within', 'inside'):
             leads = (tuple(tokens[:2]),)
@@ -2296,10 +2321,13 @@ class _Reader:
                 return
             self._goal_trailer(rest, tokens, targets)
             return
+        tail: list[Step] = []
         if clause.connector == 'pre' and self.task.chain:
-            last = self.task.chain.pop()
+            # "..., before that, go to X": X before the goal of the clause before
+            chain = self.task.chain
+            k = next((i for i, st in enumerate(chain) if st is self.last_goal), len(chain) - 1)
+            tail, self.task.chain = chain[k:], chain[:k]
             self._add_targets(targets, joiner, ordered)
-            self.task.chain.append(last)
         elif self.insert_before is not None and self.insert_before in self.task.chain:
             at = self.task.chain.index(self.insert_before)
             self._add_targets(targets, joiner, ordered)
@@ -2310,6 +2338,8 @@ class _Reader:
             self._add_targets(targets, joiner, ordered)
             if strict:
                 self._strict_order(before, targets, joiner)
+        new_step = self.task.chain[-1]
+        self.connector = clause.connector
         if self.before_target is not None:
             if self.before_strict:
                 self.task.constraints.append(Until(Not(_near(self.before_target)), _or(
@@ -2325,10 +2355,12 @@ class _Reader:
                 targets = [self.task.chain[-1].targets[0]]
             self.before_target, self.before_strict = None, False
         self._goal_trailer(rest, tokens, targets)
+        self.task.chain.extend(tail)
+        self.last_goal = new_step
         if self.conditional is not None:
             self.task.constraints.append(WeakUntil(Not(_near(self.conditional.descriptor)),
                                                    _near(targets[0])))
-            self.task.chain.pop()
+            self.task.chain = [st for st in self.task.chain if st is not new_step]
             self.conditional = None
 
     def _unknown_verb(self, tokens: list[str], k: int) -> Optional[int]:
@@ -2451,7 +2483,11 @@ class _Reader:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(d)), _near(x)))
                 elif only and word == 'after':
-                    self.task.chain.append(moved)   # "X only after Y": F x & (!x U y)
+                    # "X only after Y": F x & (!x U y), X not in sequence after the goals said before it
+                    if self.task.chain and self.connector != 'seq':
+                        self.task.chain = [Step('all', chains=[self.task.chain, [moved]])]
+                    else:
+                        self.task.chain.append(moved)
                     for d in others:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(x)), _near(d)))

@@ -154,7 +154,8 @@ class LtlTranslatorNode(Node):
         spec = dict(formula=str(formula), referents=[str(d) for d in referents_of(formula)],
                     avoid=[str(d) for d in avoided_referents_of(formula)], backend=backend,
                     notes=list(notes), description=description.to_dict(),
-                    verification_text=description.text())
+                    # the translator's notes (words left out, typos corrected) are read before anything moves
+                    verification_text='\n'.join([description.text()] + [f'Note: {n}' for n in notes]))
         needs_reply = self.params['require_confirmation']
         self.verify_pub.publish(conv.json_msg(conv.payload(
             conv.VERIFICATION_REQUEST, iid, instruction=body, requires_reply=needs_reply, **spec)))

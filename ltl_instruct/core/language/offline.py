@@ -10,8 +10,14 @@ ordering constraint, or a count. Noun phrases become descriptors
 conjoined chains of steps plus constraints, rendered as a formula in the
 conventions of the development set (``spatial-temporal-dev/CONVENTIONS.md``).
 
-Whatever the rules cannot place raises :class:`TranslationError` naming the words
-left over; nothing is dropped silently.
+Before reading, misspelt words are corrected (:mod:`ltl_instruct.core.language.spelling`)
+and paraphrases rewritten to one phrasing (:mod:`ltl_instruct.core.language.paraphrase`).
+Words that ask for nothing (statements about the scene, courtesy, filler:
+:mod:`ltl_instruct.core.language.chatter`) are left out, and a verb the rules do not
+know, followed by a place, is read as going there; each of these is named in the
+translation's notes, which the verification dialog shows. Whatever else the rules
+cannot place, and any leftover word that could carry meaning (a place, a negation, an
+order word), raises :class:`TranslationError` naming the words left over.
 """
 from __future__ import annotations
 
@@ -21,11 +27,16 @@ from dataclasses import dataclass, field
 from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
+from ltl_instruct.core.language import chatter
 from ltl_instruct.core.language.base import Translation
+from ltl_instruct.core.language.idioms import rewrite_idioms
+from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS as DETS, NAME_VERBS, NounPhrase, PhraseParser, is_name_word,
+    DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
 )
-from ltl_instruct.core.language.rewrite import apply_corrections, resolve_list_references
+from ltl_instruct.core.language.reactions import RuleReader
+from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
+from ltl_instruct.core.language.spelling import Speller
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
     Always, And, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Or, Relation, Until, WeakUntil,
@@ -44,8 +55,11 @@ AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('avoiding',), ('while', 'avoiding'), ('no',), ('shun',), ('always', 'avoid'), ('always', 'avoiding'),
     ('without',), ('always', 'stay', 'away', 'from'), ('go', 'anywhere', 'but'), ('go', 'anywhere', 'except'),
     ('anywhere', 'but'), ('anywhere', 'except'), ('go', 'anywhere', 'other', 'than'),
-    ('while', 'staying', 'away', 'from'),
+    ('while', 'staying', 'away', 'from'), ('keep', 'avoiding'), ('bypass',),
+    ('keep', 'staying', 'away', 'from'),
+    ('keep', 'away', 'from'), ('while', 'keeping', 'away', 'from'),
     ('staying', 'away', 'from'), ('keeping', 'away', 'from'), ('you', 'cannot'), ('you', 'can', 'not'),
+    ('staying', 'clear', 'of'), ('keeping', 'clear', 'of'), ('steering', 'clear', 'of'),
     ('you', 'must', 'not'), ('you', 'should', 'not'), ('must', 'not'), ('cannot',), ('should', 'not'),
 ), key=lambda t: -len(t)))
 
@@ -107,6 +121,15 @@ NOT_BEFORE_VERB = frozenset({'you', 'i', 'we', 'to', 'must', 'should', 'please',
                              'single', 'any', 'every', 'each', 'no'}) | \
     GOAL_VERBS_SEED
 
+# Words that may open a trigger of a rule ("whenever", "as soon as", "visiting a means...").
+RULE_WORDS = frozenset({'whenever', 'time', 'anytime', 'if', 'soon', 'after', 'once', 'when', 'moment',
+                        'before', 'means', 'later', 'future', 'afterwards', 'afterward', 'immediately'})
+
+# Words after which a clause opener ("do not", "never", "you must") does not start a new clause.
+RUN_ON_NOT_AFTER = frozenset({'and', 'or', 'but', 'then', 'that', 'so', 'if', 'when', 'because', 'where',
+                              'which', 'who', 'what', 'why', 'how', 'as', 'the', 'a', 'an', 'to', 'of', 'for',
+                              'until', 'before', 'after', 'while', 'unless', 'whenever'})
+
 STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})
 
 # Trailing phrases that add nothing to the task ("at all costs", "on your travels").
@@ -116,14 +139,33 @@ NOISE_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('order', 'is', 'not', 'important'), ('in', 'any', 'order', 'required'), ('required',),
     ('the', 'order', 'does', 'not', 'matter'), ('in', 'no', 'particular', 'order'), ('eventually',),
     ('at', 'least', 'once'), ('at', 'any', 'time'), ('at', 'any', 'instant'), ('ever',),
+    ('as', 'many', 'times', 'as', 'you', 'want'), ('as', 'many', 'times', 'as', 'you', 'like'),
+    ('as', 'often', 'as', 'you', 'want'), ('as', 'often', 'as', 'you', 'like'), ('in', 'the', 'future'),
 ), key=lambda t: -len(t)))
 ORDER_TAILS: tuple[tuple[str, ...], ...] = (
     ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),
     ('in', 'the', 'given', 'order'), ('in', 'the', 'same', 'order'), ('in', 'this', 'order'),
     ('in', 'that', 'order'), ('in', 'order'), ('one', 'after', 'the', 'other'),
-    ('in', 'the', 'order', 'given'), ('in', 'that', 'specific', 'order'), ('in', 'this', 'strict', 'order'),
-    ('in', 'that', 'strict', 'order'), ('in', 'this', 'specific', 'order'), ('in', 'strict', 'order'),
+    ('in', 'the', 'order', 'given'),
 )
+# "in that strict order", "without visiting any out of turn": no goal may come before the one it follows.
+STRICT_ORDER_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('in', 'that', 'specific', 'order'), ('in', 'this', 'strict', 'order'), ('in', 'that', 'strict', 'order'),
+    ('in', 'this', 'specific', 'order'), ('in', 'strict', 'order'), ('in', 'strictly', 'this', 'order'),
+    ('in', 'strictly', 'that', 'order'), ('strictly', 'in', 'this', 'order'),
+    ('strictly', 'in', 'that', 'order'),
+    ('strictly', 'in', 'order'), ('in', 'the', 'exact', 'order'), ('in', 'exactly', 'that', 'order'),
+    ('in', 'exactly', 'this', 'order'), ('in', 'that', 'exact', 'order'), ('in', 'this', 'exact', 'order'),
+    ('in', 'the', 'following', 'strict', 'order'), ('in', 'strict', 'sequence'),
+    ('follow', 'this', 'strict', 'order'), ('in', 'this', 'exact', 'sequence'),
+    ('in', 'that', 'exact', 'sequence'), ('in', 'that', 'exact', 'order'),
+    ('make', 'sure', 'not', 'to', 'visit', 'waypoints', 'out', 'of', 'turn'),
+    ('make', 'sure', 'not', 'to', 'visit', 'locations', 'out', 'of', 'turn'),
+    ('ensure', 'to', 'not', 'visit', 'locations', 'out', 'of', 'turn'),
+    ('ensure', 'to', 'not', 'visit', 'waypoints', 'out', 'of', 'turn'),
+    ('without', 'visiting', 'any', 'out', 'of', 'turn'), ('never', 'out', 'of', 'turn'),
+    ('not', 'out', 'of', 'turn'),
+), key=lambda t: -len(t)))
 
 IGNORED_CLAUSES = frozenset({
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
@@ -150,16 +192,40 @@ STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('keep', 'going', 'on'), ('wait', 'at'), ('wait', 'in'), ('stay', 'put', 'at'),
     ('are', 'not', 'allowed', 'to', 'leave'), ('do', 'not', 'move', 'outside', 'of'),
     ('only', 'walk', 'in'), ('while', 'staying', 'in'), ('while', 'staying', 'on'),
-    ('while', 'remaining', 'in'), ('while', 'remaining', 'on'),
+    ('while', 'remaining', 'in'), ('while', 'remaining', 'on'), ('staying', 'on'), ('staying', 'in'),
+    ('staying', 'within'), ('remaining', 'on'), ('remaining', 'in'), ('remaining', 'within'),
+    ('by', 'only', 'navigating', 'within'), ('by', 'only', 'navigating', 'in'),
+    ('by', 'only', 'moving', 'in'), ('by', 'only', 'moving', 'within'), ('only', 'navigating', 'within'),
+    ('only', 'moving', 'in'), ('without', 'stepping', 'outside', 'of'), ('without', 'stepping', 'outside'),
+    ('without', 'ever', 'leaving'), ('without', 'stepping', 'out', 'of'), ('never', 'leaving'),
+    ('only', 'through'), ('by', 'staying', 'in'), ('by', 'staying', 'on'), ('by', 'staying', 'within'),
 ), key=lambda t: -len(t)))
 
 CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
     'only', 'not', 'never', 'do', 'stay', 'keep', 'avoid', 'on', 'once', 'after', 'before', 'while',
     'if', 'either', 'also', 'just', 'first', 'but', 'when', 'until', 'whatever', 'finally', 'no', 'steer',
     'along', 'take', 'fly', 'survey', 'drive', 'land', 'stop', 'swing', 'make', 'patrol', 'charge', 'hover',
-    'whichever', 'order', 'in', 'twice', 'three', 'exactly', 'at', 'and', 'then'}) - {
+    'whichever', 'order', 'in', 'twice', 'three', 'exactly', 'at', 'and', 'then', 'eventually', 'sometime',
+    'afterwards', 'afterward', 'later', 'ensure'}) - {
     'be', 'robot', 'drone', 'hey', 'okay', 'kindly', 'so', 'now', 'lastly', 'up', 'end', 'ahead', 'i',
     'you', 'can', 'could', 'would', 'will', 'need', 'want', 'please'} | {'i', 'you', 'please'}
+
+
+def _by_first_word(phrases: Sequence[tuple[str, ...]]) -> dict[str, tuple[tuple[str, ...], ...]]:
+    """Index phrases by their first word, keeping their order (longest first where sorted so)."""
+    out: dict[str, list[tuple[str, ...]]] = {}
+    for p in phrases:
+        out.setdefault(p[0], []).append(p)
+    return {k: tuple(v) for k, v in out.items()}
+
+
+_AVOID_BY_FIRST = _by_first_word(AVOID_TRIGGERS)
+_STAY_BY_FIRST = _by_first_word(STAY_WITHIN)
+# Every word at which _clauses may see a clause boundary.
+CLAUSE_OPENING_WORDS = STRONG_VERBS | {
+    'only', 'then', 'and', ',', 'after', 'finally', 'afterwards', 'afterward', 'lastly', 'once', 'when',
+    'before', 'always', 'do', 'never', 'ensure', 'make', 'you', 'not', 'leave', 'but', 'so', 'while', 'or',
+    ':', ';'}   # ":" as in "be careful: never...", "Rover: head to..."
 
 
 def _near(d: Descriptor) -> Atom:
@@ -236,6 +302,7 @@ class Step:
     chains: list[list['Step']] = field(default_factory=list)
     formula: Optional[Formula] = None
     avoid_at: list[Descriptor] = field(default_factory=list)
+    once: str = ''   # 'exactly' ("visit a exactly once"), 'plain' ("go to a once, then b"), or ''
 
 
 def render(steps: Sequence[Step]) -> Optional[Formula]:
@@ -294,6 +361,7 @@ def _until_avoid(avoid: Sequence[Descriptor], goal: Formula) -> Formula:
 class _Clause:
     connector: str          # 'seq', 'and', 'pre', 'or'
     tokens: list[str]
+    strict: bool = False    # "..., and only then ...": its goal not before the one before it
 
 
 @dataclass
@@ -316,7 +384,7 @@ class _Task:
         for s in reversed(self._all_steps()):
             if s.kind in ('visit', 'deliver', 'pick'):
                 names = s.targets + s.dests
-                if d in names or (head and any(n.name.split('_')[-1] == head for n in names)):
+                if d in names or (head and any(head in n.name.split('_') for n in names)):
                     return s
         return None
 
@@ -360,16 +428,28 @@ class OfflineTranslator:
         avoid Y" is ``F near[x] & G !near[y]``. ``'goal'`` reads it as the
         drone-planning data set does: Y is avoided at the moment X is reached,
         ``F (near[x] & !near[y])``.
+    once_scope:
+        ``'run'`` (default, the development set's convention): "visit X only once, then Y"
+        allows one visit of X in the whole run. ``'next'`` reads a goal's "once" (and "visit
+        each only once", "no revisiting") in a sequence as lang2ltl's strictly ordered visits
+        do: X is not visited again before the next goal, ``!x U (x U (!x U y))``; a goal
+        with none after it keeps "exactly once".
     """
 
     name = 'offline'
 
-    def __init__(self, avoid_scope: str = 'global', landmarks: Sequence[str] = ()) -> None:
+    def __init__(self, avoid_scope: str = 'global', landmarks: Sequence[str] = (),
+                 once_scope: str = 'run') -> None:
         if avoid_scope not in ('global', 'goal'):
             raise TranslationError(f'avoid_scope must be global or goal, not {avoid_scope!r}',
                                    ErrorCode.INVALID_INPUT)
+        if once_scope not in ('run', 'next'):
+            raise TranslationError(f'once_scope must be run or next, not {once_scope!r}',
+                                   ErrorCode.INVALID_INPUT)
         self.avoid_scope = avoid_scope
+        self.once_scope = once_scope
         self.landmarks = tuple(landmarks)
+        _speller()   # the word list is read once, here, not inside the first translation
 
     def translate(self, instruction: str) -> Translation:
         """Translate one instruction (raises :class:`TranslationError` naming what it cannot place)."""
@@ -383,9 +463,13 @@ class OfflineTranslator:
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         notes: list[str] = []
+        tokens = _correct_spelling(tokens, notes, self.landmarks)
+        tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
+                                                 notes))
         tokens = resolve_list_references(tokens, notes)
-        tokens = apply_corrections(tokens, notes)
-        reader = _Reader(self.avoid_scope, notes, self.landmarks)
+        tokens = apply_exclusions(apply_corrections(tokens, notes), notes)
+        tokens = rewrite_idioms(tokens)
+        reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope)
         try:
             formula = reader.read(tokens)
         except (IndexError, KeyError, ValueError, AttributeError, RecursionError, AssertionError) as e:
@@ -396,6 +480,73 @@ class OfflineTranslator:
         elapsed = time.perf_counter() - started
         return Translation(instruction, formula, self.name, tuple(notes),
                            {'seconds': elapsed, 'tokens': ' '.join(tokens)})
+
+
+# Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
+NEGATIVE_VERBS = frozenset({'ignore', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade', 'miss', 'exit',
+                            'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee', 'circumvent', 'spare',
+                            'leave', 'drop', 'scratch', 'lose', 'pass', 'release', 'free', 'not'})
+# Prepositions after a motion verb that still mean going there ("hover above X", drone phrasing).
+MOTION_PREPS = frozenset({'above', 'below', 'beneath', 'under', 'beside', 'near', 'alongside', 'atop',
+                          'across', 'along', 'outside', 'upon'})
+# Verbs of placing something somewhere ("drape the scarf on the hook"), beyond put/place/leave.
+PLACING_VERBS = frozenset({'hang', 'lay', 'drape', 'tuck', 'slide', 'prop', 'slip', 'slot', 'shove', 'pile',
+                           'stack', 'stow', 'mount', 'rest', 'pop', 'plonk', 'plop', 'sit', 'stand', 'lean',
+                           'rack', 'shelve', 'pin', 'tape', 'clip', 'fold', 'arrange', 'position', 'park'})
+SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bring'}) - FILLERS - {
+    'be', 'need', 'want', 'robot', 'drone', 'hey', 'can', 'could', 'would', 'you', 'i', 'will', 'ahead',
+    'end', 'up', 'please', 'kindly'} | {'make', 'do'}
+
+_SPELLER: Optional[Speller] = None
+_WISH_FIRST = frozenset(w[0] for w in chatter.WISHES)
+
+
+def _speller() -> Speller:
+    """Return the speller, its lexicon the word lists of the rules (built once)."""
+    global _SPELLER
+    if _SPELLER is None:
+        from ltl_instruct.core.language import phrases, text
+        lexicon: set[str] = set()
+        from ltl_instruct.core.language import rewrite
+        for module in (globals(), vars(phrases), vars(text), vars(chatter), vars(rewrite)):
+            for value in module.values():
+                if isinstance(value, frozenset) and all(isinstance(w, str) for w in value):
+                    lexicon |= value
+                elif isinstance(value, tuple) and value and all(isinstance(p, tuple) for p in value):
+                    lexicon |= {w for p in value for w in p if isinstance(w, str)}   # phrase lists
+        lexicon |= set(text.TYPOS.values())
+        core = chatter.CONSTRAINT_WORDS | GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
+            'avoid', 'near', 'away', 'visit', 'between', 'behind', 'after', 'before', 'until', 'then',
+            'never', 'twice', 'once', 'stay', 'keep', 'bring', 'take', 'please'}
+        _SPELLER = Speller(lexicon=lexicon, core=core - {'be', 'i', 'you'})
+    return _SPELLER
+
+
+def _is_word(w: str, listed: bool = False) -> bool:
+    """Whether ``w`` is an English word (an unknown one may be a misspelt place: never left out).
+
+    With ``listed``, only a listed word counts (not one derived from a listed word, such as
+    "quantumly"): words are left out only on that firmer ground.
+    """
+    sp = _speller()
+    if listed:
+        return w in sp.words or w in sp.lexicon or w.isdigit() or not sp.words
+    return sp.known(w) or w.isdigit()
+
+
+def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str]) -> list[str]:
+    """Correct typing slips in words the rules do not know; each correction is noted."""
+    speller = _speller()
+    known = {w for name in landmarks for w in name.replace('_', ' ').split()}
+    out = list(tokens)
+    for k, w in enumerate(tokens):
+        if w in known or len(w) < 4:
+            continue
+        fixed = speller.correct(w)
+        if fixed is not None:
+            out[k] = fixed
+            notes.append(f'read "{w}" as "{fixed}"')
+    return out
 
 
 def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
@@ -417,23 +568,30 @@ def normalize_counts(rest: list[str]) -> list[str]:
     return text.split()
 
 
-def _strip_tails(rest: list[str]) -> tuple[list[str], bool]:
-    """Remove phrases that add nothing ("at all costs") and say whether an order phrase was there."""
-    ordered = False
+def _strip_tails(rest: list[str]) -> tuple[list[str], str]:
+    """Remove phrases that add nothing ("at all costs"), and say which order phrase was there.
+
+    The order is ``''`` (none), ``'sequence'`` ("in that order": one after the other) or
+    ``'strict'`` ("in that strict order": none before the one it follows).
+    """
+    order = ''
     changed = True
     while changed and rest:
         changed = False
-        for tail in NOISE_TAILS + ORDER_TAILS:
+        for tail in STRICT_ORDER_TAILS + NOISE_TAILS + ORDER_TAILS:
             n = len(tail)
             for i in range(len(rest) - n + 1):
                 if tuple(rest[i:i + n]) == tail and (i == 0 or i + n == len(rest)):
-                    ordered = ordered or tail in ORDER_TAILS
+                    if tail in STRICT_ORDER_TAILS:
+                        order = 'strict'
+                    elif tail in ORDER_TAILS:
+                        order = order or 'sequence'
                     rest = rest[:i] + rest[i + n:]
                     changed = True
                     break
             if changed:
                 break
-    return rest, ordered
+    return rest, order
 
 
 def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
@@ -450,8 +608,12 @@ def _find(tokens: Sequence[str], words: Sequence[str], start: int = 0) -> int:
 class _Reader:
     """Reads the clauses of one instruction into a :class:`_Task`."""
 
-    def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = ()) -> None:
+    def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = (),
+                 once_scope: str = 'run') -> None:
+        self.once_scope = once_scope
+        self.no_revisits = False   # "visit each place only once", "no revisiting"
         self.phrases = PhraseParser(landmarks)
+        self.rules = RuleReader(self.phrases)
         self.task = _Task()
         self.avoid_scope = avoid_scope
         self.notes = notes
@@ -464,6 +626,12 @@ class _Reader:
         self.saw_action = False
         self.mentions: list[Descriptor] = []
         self.before_target: Optional[Descriptor] = None
+        self.last_clause: Optional[tuple[list[str], Optional[_Scope]]] = None
+        self.before_strict = False
+        self.insert_before: Optional[Step] = None
+        self.strict_chain = False   # "in that strict order" somewhere in the instruction
+        self.last_goal: Optional[Step] = None   # the last goal clause's step ("before that" refers to it)
+        self.connector = 'and'   # how the goal clause being read joins the one before it
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
@@ -479,6 +647,9 @@ class _Reader:
             raise TranslationError(f'found no action (go, bring, avoid...) in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
         self._repair_avoid_then_visit()
+        if self.strict_chain:
+            self._strict_chain()
+        self._visits_once()
         if self.pending_avoid_at:
             step = self.task.last_step(('visit',))
             if step is not None:
@@ -486,6 +657,44 @@ class _Reader:
             else:
                 self.task.constraints.extend(_never(self.pending_avoid_at))
         return self.task.formula()
+
+    def _visits_once(self) -> None:
+        """Constraints of the goals visited once ("visit a exactly once", "no revisiting"; see once_scope)."""
+        chain = self.task.chain
+        if self.task.repeat > 1:
+            return
+        if self.no_revisits:
+            for st in chain:
+                if st.kind == 'visit' and len(st.targets) == 1:
+                    st.once = 'exactly'
+        for k, st in enumerate(chain):
+            if st.kind != 'visit' or not st.once or len(st.targets) != 1:
+                continue
+            x = _near(st.targets[0])
+            nxt = chain[k + 1] if k + 1 < len(chain) else None
+            if self.once_scope == 'next' and nxt is not None and nxt.kind == 'visit' and \
+                    st.targets[0] not in nxt.targets:
+                # not again before the next goal: !x U (x U (!x U next))
+                reach = _or([_near(t) for t in nxt.targets])
+                self.task.constraints.append(Until(Not(x), Until(x, Until(Not(x), reach))))
+            elif self.once_scope == 'next' and nxt is None and len(chain) > 1:
+                pass   # the last goal of a sequence: nothing comes after it to go back from
+            elif st.once == 'exactly':
+                self.task.constraints.append(exactly(x, 1))
+            prev = chain[k - 1] if k > 0 else None
+            if self.once_scope == 'next' and prev is not None and prev.kind == 'visit' and \
+                    st.targets[0] not in prev.targets:
+                # its one visit comes in its turn: not before the goal before it
+                self.task.constraints.append(Until(Not(x), _or([_near(t) for t in prev.targets])))
+
+    def _strict_chain(self) -> None:
+        """'in that strict order': each goal of the chain only after the one before it."""
+        visits = [st for st in self.task.chain if st.kind == 'visit']
+        for a, b in zip(visits, visits[1:]):
+            for d in b.targets:
+                f = Until(Not(_near(d)), _or([_near(t) for t in a.targets]))
+                if f not in self.task.constraints and d not in a.targets:
+                    self.task.constraints.append(f)
 
     def _repair_avoid_then_visit(self) -> None:
         """Avoid a place that is also a later goal only on the way there.
@@ -545,28 +754,87 @@ class _Reader:
                     self._read_sentence(head)
                 self._read_permission(tokens[p:])
                 return
+        if any(t in RULE_WORDS for t in tokens):
+            goals = [d for st in self.task._all_steps() for d in st.targets + st.dests]
+            rules = self.rules.read(tokens, goals)
+            if rules is not None:
+                # "whenever you pass a, check b": rules over the whole run
+                self.saw_action = True
+                self.task.constraints.extend(rules)
+                return
         scope: Optional[_Scope] = None
         clauses = self._clauses(tokens)
+        if any(c.connector == 'or' for c in clauses[1:]) and clauses[0].connector != 'or' and \
+                not self._is_permission(tokens):
+            # "go to a then b, or go to b then a": one of the routes
+            groups: list[list[_Clause]] = [[]]
+            for c in clauses:
+                if c.connector == 'or' and groups[-1]:
+                    groups.append([_Clause('and', c.tokens)])
+                else:
+                    groups[-1].append(c)
+            self._read_alternative_clauses(groups)
+            return
+        skip = False
         for n, clause in enumerate(clauses):
+            if skip:
+                skip = False
+                continue
             later = [t for c in clauses[n:] for t in c.tokens]
             first = self._strip_fillers(clause.tokens)
+            if self._read_optional(clause.tokens, clauses[n + 1].tokens if n + 1 < len(clauses) else []):
+                skip = n + 1 < len(clauses)
+                continue
             permits = self._is_permission(first) or self._is_permission(clause.tokens)
-            opens = first[:1] in (['if'], ['once'], ['only'])
+            opens = first[:1] in (['if'], ['once']) or first[:2] in (['only', 'if'], ['only', 'once'],
+                                                                     ['only', 'when'], ['only', 'after'])
             if (self.task.chain and permits) or (opens and self._is_permission(later)):
                 self._read_permission(later)
                 return
             scope = self._read_clause(clause, scope)
 
+    def _read_optional(self, tokens: list[str], nxt: list[str]) -> bool:
+        """Read 'you can also stop by X, but no more than once': X is optional, its visits bounded."""
+        words = [t for t in tokens if t not in PUNCT]
+        bound = [t for t in nxt if t not in PUNCT and t not in ('but', 'and', 'though', 'just')][:2]
+        bounded = bound in (['no', 'more'], ['not', 'more'], ['at', 'most'], ['only', 'once'],
+                            ['just', 'once'], ['up', 'to'], ['max'], ['maximum'], ['once'], ['only', 'twice'])
+        if not (_starts(words, 0, ['you', 'can', 'also']) or _starts(words, 0, ['you', 'may', 'also']) or
+                _starts(words, 0, ['you', 'are', 'also', 'allowed', 'to']) or _starts(
+                    words, 0, ['feel', 'free']) or bounded and words[:2] in (['you', 'can'], ['you', 'may'])):
+            return False
+        k = self._skip_event_verbs(words, words.index('also') + 1 if 'also' in words[:3] else 2)
+        nps, _, end = self._np_list(words, k)
+        rest = [t for t in nxt if t not in PUNCT and t not in ('but', 'and', 'though', 'just')]
+        rest = [t for t in words[end:] if t not in ('but', 'though', 'too')] + rest
+        if not nps or rest and not (rest[0] in ('no', 'not', 'at', 'up', 'max', 'maximum') or rest[0] in (
+                'only', 'just') and rest[1:2] == ['once']):
+            return False
+        if rest and rest[0] in ('only', 'just'):
+            rest = ['at', 'most'] + rest[1:]
+        self.saw_action = True
+        targets = [np.descriptor for np in nps]
+        if rest:
+            before = len(self.task.constraints)
+            ok, left = self._read_count(rest, targets)
+            if not ok or left or len(self.task.constraints) == before:
+                raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(words)}"',
+                                       details={'part': ' '.join(rest)})
+        self.notes.append(f'{", ".join(map(str, targets))}: allowed, not required')
+        return True
+
     def _read_alternatives(self, parts: list[list[str]]) -> None:
+        self._read_alternative_clauses([self._clauses(p[1:] if p and p[0] == 'either' else p) for p in parts])
+
+    def _read_alternative_clauses(self, groups: list[list[_Clause]]) -> None:
         self.saw_action = True
         outer = self.task
         chains = []
-        for p in parts:
-            if p and p[0] == 'either':
-                p = p[1:]
+        for group in groups:
             self.task = _Task()
-            for clause in self._clauses(p):
-                self._read_clause(clause, None)
+            scope: Optional[_Scope] = None
+            for clause in group:
+                scope = self._read_clause(clause, scope)
             chains.append([Step('formula', formula=c) for c in self.task.constraints] + self.task.chain)
         self.task = outer
         self.task.chain.append(Step('any', chains=chains))
@@ -577,8 +845,21 @@ class _Reader:
         n = len(tokens)
         while i < n:
             t = tokens[i]
+            if t not in CLAUSE_OPENING_WORDS:
+                clauses[-1].tokens.append(t)   # no boundary can start here (the common case, kept fast)
+                i += 1
+                continue
             boundary = ''
             skip = 0
+            only_then = _starts(tokens, i + 1, ['then']) or _starts(tokens, i + 1, ['after', 'that'])
+            if t == 'only' and only_then:
+                # "go to a, and only then go to b": b after a, and not before it
+                boundary, skip = 'seq', 2 if tokens[i + 1] == 'then' else 3
+                if clauses[-1].tokens:
+                    clauses.append(_Clause('seq', []))
+                clauses[-1].connector, clauses[-1].strict = 'seq', True
+                i += skip
+                continue
             if t == 'then' and (i + 1 >= n or not _starts(tokens, i + 1, [','])):
                 boundary, skip = 'seq', 1
             elif _starts(tokens, i, ['and', 'then']) or _starts(tokens, i, [',', 'then']) or \
@@ -597,12 +878,20 @@ class _Reader:
                 boundary = 'there'
                 skip = 2 if tokens[i + 1] == 'there' else 4
             elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
-                  ) and any(c.tokens for c in clauses) and 'make' not in clauses[-1].tokens and \
+                  ) and (any(c.tokens for c in clauses) or self.task.chain) and \
+                    'sure' not in clauses[-1].tokens and \
                     'visited' not in tokens[i:]:
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
             elif t == 'always' and 0 < i < n - 1 and tokens[i + 1] in ('avoid', 'stay', 'keep') and \
                     tokens[i - 1] not in (',', 'and', 'but', 'while'):
                 boundary, skip = 'and', 0
+                if clauses[-1].tokens:
+                    clauses.append(_Clause('and', []))
+                clauses[-1].tokens.append(t)
+                i += 1
+                continue
+            elif 0 < i < n - 1 and self._opens_run_on(tokens, i):
+                # "go to a do not go to b": a new clause without a comma
                 if clauses[-1].tokens:
                     clauses.append(_Clause('and', []))
                 clauses[-1].tokens.append(t)
@@ -617,15 +906,40 @@ class _Reader:
                 clauses[-1].tokens.append(t)
                 i += 1
                 continue
-            elif t in (',', 'and', 'but', 'so', 'while', 'or') and i > 0:
+            elif t in (',', 'and', 'but', 'so', 'while', 'or', ':') and i > 0:
                 j = i + 1
-                while j < n and tokens[j] in (',', 'and', 'but', 'so'):
+                while j < n and tokens[j] in (',', 'and', 'but', 'so', ':'):
                     j += 1
                 if t == 'while' and j < n and tokens[j] in ('avoiding', 'staying', 'keeping', 'never'):
                     boundary, skip = 'and', 1
+                elif t == ',' and j + 1 < n and tokens[j] in ('can', 'could', 'would', 'will') and \
+                        tokens[j + 1] == 'you':
+                    boundary, skip = 'and', 1   # "I left it by the door, can you go there"
+                elif t in (',', 'and') and self._same_for_lead(tokens, j):
+                    boundary, skip = 'and', j - i
+                elif t in (',', 'and') and j < n and tokens[j] in chatter.ACTIVITY_VERBS and (
+                        j + 1 >= n or tokens[j + 1] in PUNCT or tokens[j + 1] in (
+                            'it', 'them', 'your', 'my', 'down', 'up', 'outside', 'inside', 'around', 'for',
+                            'there', 'here', 'we', 'if', 'whether', 'a', 'and', 'then', 'out', 'by', 'near',
+                            'beside', 'next')):
+                    boundary, skip = 'and', j - i   # "go to the door and knock"
+                elif t in (',', ';') and tokens[j:j + 2] in (
+                        ['the', 'order'], ['any', 'order'], ['in', 'any'], ['in', 'whatever'],
+                        ['order', 'does']):
+                    boundary, skip = 'and', j - i   # "..., the order is up to you"
+                elif t in (',', 'so') and self._starts_statement(tokens, j):
+                    boundary, skip = 'and', j - i   # "be careful, the floor is wet"
+                elif i < 4 and t in (',', ':') and all(is_name_word(tokens, m, m > 0) for m in range(i)) and \
+                        j < n and tokens[j] in STRONG_VERBS | GOAL_VERBS_SEED | {'fly', 'land', 'hover'} and \
+                        self._unknown_verb(tokens, 0) is None and any(tokens[m] in DETS for m in range(j, n)):
+                    # "Rover: head to the creek": the robot addressed by name, not a place
+                    self.notes.append(f'took "{" ".join(tokens[:i])}" as the name of the robot addressed')
+                    clauses[-1].tokens.clear()
+                    boundary, skip = 'and', 1
                 elif t == 'or' and j < n and tokens[j] in GOAL_VERBS | DELIVER_VERBS:
                     boundary, skip = 'or', j - i
-                elif j < n and tokens[j] in CLAUSE_STARTERS and t != 'while' and not (
+                elif j < n and (tokens[j] in CLAUSE_STARTERS or t in (',', 'and') and tokens[j - 1] in (
+                        ',', 'and') and self._unknown_verb(tokens, j) is not None) and t != 'while' and not (
                         tokens[j] in ('at', 'in', 'on', 'twice', 'three', 'exactly', 'order', 'and')
                         and not _starts(tokens, j, ['on', 'the', 'way']) and not _starts(
                             tokens, j, ['on', 'your', 'way'])):
@@ -643,6 +957,37 @@ class _Reader:
             clauses[-1].tokens.append(t)
             i += 1
         return [c for c in clauses if c.tokens]
+
+    def _opens_run_on(self, tokens: list[str], i: int) -> bool:
+        """Whether a prohibition or an obligation starts at ``i`` right after a noun phrase or a count.
+
+        Typed or transcribed instructions often run clauses together ("never go to a never go to
+        b", "visit the den at least once do not go to the hall before the den"); a clause opener
+        right after the end of a phrase starts a new clause.
+        """
+        prev = tokens[i - 1]
+        landmark = any(tuple(tokens[i - len(lm):i]) == lm for lm in self.phrases.landmarks)
+        if not landmark and (prev in NOT_BEFORE_VERB or prev in PUNCT or prev in RUN_ON_NOT_AFTER):
+            return False
+        counted = prev in ('once', 'twice', 'thrice', 'times', 'again')
+        if not (landmark or counted or is_name_word(tokens, i - 1, True)):
+            return False
+        nxt = tokens[i + 1]
+        if tokens[i] == 'do':
+            return nxt in ('not', 'no')
+        if tokens[i] == 'never':
+            return nxt in AVOID_FILLER or nxt in GOAL_VERBS
+        if tokens[i] == 'not':
+            return nxt == 'to'   # "visit a not to visit b before a not to visit c before b"
+        if tokens[i] == 'leave':
+            return nxt in ('and', 'then', ',', 'it', 'there')   # "go to a leave and then come back"
+        if tokens[i] in ('ensure', 'make'):
+            return tokens[i] == 'ensure' or nxt == 'sure'
+        if tokens[i] == 'you':
+            verb = tokens[i + 2] if i + 2 < len(tokens) else ''
+            return nxt in ('must', 'cannot', 'should', 'have', 'need', 'can', 'may', 'are') and (
+                verb in GOAL_VERBS or verb in AVOID_FILLER or verb in ('not', 'never', 'to', 'only'))
+        return False
 
     # ----------------------------------------------------------------- clauses
     def _read_clause(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
@@ -665,6 +1010,14 @@ class _Reader:
         tokens = self._strip_fillers(clause.tokens)
         if not tokens:
             return scope
+        try:
+            return self._read_clause_tokens(clause, tokens, scope)
+        finally:
+            self.last_clause = (tokens, scope)
+
+    def _read_clause_tokens(self, clause: _Clause, tokens: list[str], scope: Optional[_Scope]
+                            ) -> Optional[_Scope]:
+        self.connector = clause.connector
         s = ' '.join(tokens)
         if s.startswith('either way'):
             tokens = tokens[2:]
@@ -675,12 +1028,36 @@ class _Reader:
             if not tokens:
                 return scope
         s = ' '.join(tokens)
-        if s.endswith((' is fine', ' is okay', ' are fine', ' is ok')) or s in IGNORED_CLAUSES or \
+        if 'order' in tokens and (s.startswith(('any order', 'in any order', 'the order does not matter',
+                                                'order does not matter', 'the order is up to you',
+                                                'the order is not important', 'order is up to you',
+                                                'in whatever order', 'whatever order', 'any order works'))
+                                  or s in ('the order is yours', 'you choose the order', 'pick the order')):
+            self._any_order()   # "go to a, then b; any order works": the goals in any order
+            return scope
+        fine = (' is fine', ' is okay', ' are fine', ' is ok', ' will do', ' works', ' is good')
+        if s.endswith(fine) and 'or' in tokens:
+            # "either the left lift or the right lift is fine": a choice of goals
+            tail = next(f.strip().split() for f in fine if s.endswith(f))
+            nps, joiner, end = self._np_list(tokens[:-len(tail)], 0)
+            if joiner == 'or' and end == len(tokens) - len(tail):
+                self.saw_action = True
+                self.task.chain.append(Step('visit', [np.descriptor for np in nps]))
+                return scope
+        if s.endswith(fine) or s in IGNORED_CLAUSES or \
                 s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                               'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
             return scope
+        if tokens == ['visit', 'each', 'place', 'only', 'once']:
+            self.no_revisits = True   # the canonical wording of "no revisiting" (see idioms)
+            return scope
+        if tuple(tokens) in STRICT_ORDER_TAILS:
+            self.strict_chain = True   # "in strictly this order, visit a, then b"
+            return scope
         if s in ('not both', 'but not both', 'not both of them'):
             self._exclusive_or()
+            return scope
+        if self._read_same_for(tokens, scope):
             return scope
         if tokens[0] in ('twice', 'thrice', 'once') or (len(tokens) > 1 and tokens[1] == 'times') or \
                 tokens[0] in ('exactly', 'at') and len(tokens) < 5:
@@ -696,6 +1073,10 @@ class _Reader:
             if _starts(clause.tokens, 0, lead) or _starts(tokens, 0, lead):
                 # sets the scene: the things named are remembered for "it" / "there", not goals
                 body = tokens[len(lead):] if _starts(tokens, 0, lead) else tokens
+                counts = ('several', 'few', 'a', 'couple', 'of')
+                while body and (body[0] in NUMBER_WORDS or body[0] in counts) and len(body) > 1 and \
+                        body[1] not in PUNCT:
+                    body = body[1:]   # "there are two doors, ..."
                 nps, _, _ = self._np_list(body, 0)
                 if nps:
                     self.last_object = nps[-1]
@@ -715,6 +1096,8 @@ class _Reader:
             if tokens[-len(tail):] == tail and len(tokens) > len(tail):
                 tokens = ['visit'] + tokens[:-len(tail)]
                 break
+        if self._read_chatter(tokens, clause.tokens) or self._read_activity(tokens):
+            return scope
         raw = [t for t in clause.tokens if t not in PUNCT]
         first_flag = bool(raw) and (raw[-1] == 'first' or raw[:2] == ['but', 'first'] or (
             raw[0] == 'first' and clause.connector == 'and'))
@@ -731,8 +1114,9 @@ class _Reader:
             first_flag = True
         if self._avoid_start(tokens) is not None and 'first' in tokens[:4] and self.task.chain:
             first_flag = True
+        ordering = tokens[:2] in (['not', 'until'], ['not', 'before'], ['only', 'after'])
         if first_flag and self.task.chain and clause.connector == 'and' and self.conditional is None:
-            if self._avoid_start(tokens) is not None:
+            if self._avoid_start(tokens) is not None and not ordering:
                 self.saw_action = True
                 self._read_avoid(tokens, _Scope('onway'))
                 return scope
@@ -742,17 +1126,39 @@ class _Reader:
             self.only = True
         if tokens[0] == 'before' and len(tokens) > 2:
             k = self._skip_event_verbs(tokens, 1)
+            strict = _starts(tokens, k, ['anywhere', 'near']) or tokens[k:k + 1] == ['near']
+            if strict:   # "before you go anywhere near X": X not until the next goal is reached
+                k += 2 if tokens[k] == 'anywhere' else 1
+                np = self.phrases.parse(tokens, k)
+                if np is not None and np.end == len(tokens):
+                    self.before_target = np.descriptor
+                    self.before_strict = True
+                    return scope
             np = self.phrases.parse(tokens, k)
             if np is not None and np.end == len(tokens) and k > 1:
                 self.before_target = np.descriptor   # the next goal comes first, then this
                 return scope
+            if np is not None and np.end == len(tokens) and not np.pronoun:
+                known = next((st for st in self.task.chain
+                              if st.kind == 'visit' and st.targets == [np.descriptor]), None)
+                if known is not None:   # "go to the porch. before the porch, stop at the mailbox"
+                    self.insert_before = known
+                    return scope
         if self._read_ordering(tokens, clause):
             return scope
         if self._avoid_start(tokens) is not None:
             self.saw_action = True
             if clause.connector == 'there' and scope is None and self.last_place is not None:
                 scope = _Scope('after', self.last_place)   # "once you're there, never go back to Y"
+            elif clause.connector == 'seq' and scope is None and self.task.chain and \
+                    self.task.chain[-1].kind in ('visit', 'deliver') and self.avoid_scope == 'global' and \
+                    'first' not in tokens and not self.phrases.landmarks:
+                # "go to X, and after that stay away from Y": from X on
+                last = self.task.chain[-1]
+                scope = _Scope('after', NounPhrase((last.dests or last.targets)[0], 0, 0, ''))
             self._read_avoid(tokens, scope)
+            return scope
+        if tokens[0] in ('leave', 'exit') and self._read_leave(tokens[1:]):
             return scope
         if tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS or _starts(tokens, 0, ['throw', 'away']):
             if self._read_delivery(tokens, clause):
@@ -761,6 +1167,157 @@ class _Reader:
         self._read_goal(tokens, clause, scope)
         return scope
 
+    def _starts_statement(self, tokens: list[str], j: int) -> bool:
+        """Whether a statement about the scene starts at ``tokens[j]`` ("..., the floor is wet")."""
+        if j >= len(tokens) or tokens[j] not in DETS or self.phrases.landmarks:
+            return False
+        np = self.phrases.parse(tokens, j)
+        end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
+        return np is not None and chatter.is_statement(tokens[j:end], np.end - j)
+
+    def _any_order(self) -> None:
+        """Make the plain visits that end the chain one step, in any order (the person said so)."""
+        chain = self.task.chain
+        k = len(chain)
+        while k > 0 and chain[k - 1].kind == 'visit' and len(chain[k - 1].targets) == 1 and \
+                not chain[k - 1].avoid_until and not chain[k - 1].avoid_after:
+            k -= 1
+        if len(chain) - k >= 2:
+            steps = chain[k:]
+            del chain[k:]
+            chain.append(Step('all', chains=[[st] for st in steps]))
+            self.notes.append('the goals may be visited in any order')
+
+    def _read_activity(self, tokens: list[str]) -> bool:
+        """'go to the sink and wash your hands', 'open it': something done where the robot is, no new goal."""
+        if not tokens or tokens[0] not in chatter.ACTIVITY_VERBS or self.phrases.landmarks or \
+                not self.task.chain:
+            return False
+        rest = tokens[1:]
+        if tokens[0] == 'check' and rest[:1] and rest[0] not in chatter.STATEMENT_SUBJECTS | {'there'}:
+            return False
+        if any(t in DETS and t not in ('your', 'my', 'our', 'his', 'her', 'their') for t in rest) or \
+                chatter.has_constraint_word(rest):
+            return False
+        place = self.task.chain[-1]
+        where = ', '.join(map(str, place.dests or place.targets)) or 'the last place'
+        self.notes.append(f'"{" ".join(tokens)}": done at {where}, no goal of its own')
+        return True
+
+    def _read_chatter(self, tokens: list[str], raw: list[str]) -> bool:
+        """Leave out a clause that asks for nothing: a statement about the scene, filler, a skip.
+
+        The things a statement names stay known for "it" and "there" ("the crate is in the
+        hall, so don't go near it"). Every part left out is noted.
+        """
+        text = ' '.join(tokens)
+        raw = [t for t in raw if t not in PUNCT]
+        while raw and raw[0] in ('and', 'but', 'so', 'because', 'since', 'as') + tuple(chatter.INTERJECTIONS):
+            raw = raw[1:]
+        wish = bool({raw[0] if raw else '', tokens[0]} & _WISH_FIRST) and any(
+            _starts(raw, 0, w) or _starts(tokens, 0, w) for w in chatter.WISHES)
+        if all(t in chatter.INTERJECTIONS or t in PUNCT for t in tokens) or wish and \
+                not chatter.has_constraint_word(tokens):
+            self.notes.append(f'left out "{" ".join(raw) or text}" (asks for nothing)')
+            return True
+        kept = ('leave', 'drop', 'pass', 'release', 'not', 'exit')   # read elsewhere (deliveries, staying)
+        skip = 2 if tokens[:2] in (['leave', 'out'], ['cross', 'off']) else 1
+        if (tokens[0] in NEGATIVE_VERBS and tokens[0] not in kept or skip == 2) and len(tokens) > skip and \
+                tokens[skip] in DETS:
+            nps, _, end = self._np_list(tokens, skip, place=False)
+            if nps and not [t for t in tokens[end:] if t not in PUNCT]:
+                # "skip the hall": nothing to do there (a goal already given is retracted by rewrite)
+                self.notes.append(f'"{text}": no goal there')
+                return True
+        if raw[:2] == ['i', 'mean'] and chatter.is_filler(raw[2:], SKILL_VERBS):
+            self.notes.append(f'left out "{" ".join(raw)}" (emphasis)')   # "and I mean anywhere near it"
+            return True
+        if raw and raw[0] in chatter.STATEMENT_SUBJECTS:
+            tokens, text = raw, ' '.join(raw)   # the subject was stripped as a filler ("i")
+        np_end = 0
+        if tokens[0] in DETS and not (self.phrases.landmarks and self.phrases._landmark(tokens, 0)):
+            np = self.phrases.parse(tokens, 0)
+            np_end = np.end if np is not None else 0
+        if chatter.is_statement(tokens, np_end):
+            named: list[NounPhrase] = []
+            i = 0
+            verb = chatter.statement_verb(tokens, np_end) if np_end else -1
+            if verb > 0:   # the subject ends at its verb ("my keys fell behind the couch")
+                subject = self.phrases.parse(tokens[:verb], 0)
+                if subject is not None:
+                    named.append(subject)
+                i = verb + 1
+            while i < len(tokens):
+                if tokens[i] in DETS and tokens[i] not in ('your', 'my', 'our') or i == 0 and np_end or (
+                        i > 0 and tokens[i - 1] in chatter.PREPOSITIONS and is_name_word(tokens, i, False)):
+                    np = self.phrases.parse(tokens, i)
+                    if np is not None and not np.pronoun and np.end > i:
+                        named.append(np)
+                        i = np.end
+                        continue
+                i += 1
+            if named:
+                self.last_object = named[0] if np_end else named[-1]
+                self.last_place = named[-1]
+                self.phrases.last = self.last_object
+                self.mentions.extend(np.descriptor for np in named)
+            self.notes.append(f'took "{text}" as a description of the scene, not a task')
+            return True
+        return False
+
+    @staticmethod
+    def _same_for_lead(tokens: list[str], i: int) -> int:
+        """Length of a 'the same goes for' lead at ``tokens[i]``, else 0."""
+        if i >= len(tokens) or tokens[i] not in ('the', 'same', 'likewise', 'ditto', 'that', 'this'):
+            return 0
+        for lead in (['the', 'same', 'goes', 'for'], ['same', 'goes', 'for'], ['the', 'same', 'for'],
+                     ['same', 'for'], ['same', 'with'], ['the', 'same', 'with'], ['likewise', 'for'],
+                     ['likewise'], ['ditto', 'for'], ['the', 'same', 'applies', 'to'],
+                     ['same', 'applies', 'to'], ['that', 'goes', 'for'], ['this', 'goes', 'for'],
+                     ['same', 'thing', 'for'], ['the', 'same', 'is', 'true', 'of'], ['same', 'deal', 'with']):
+            if _starts(tokens, i, lead):
+                return len(lead)
+        return 0
+
+    def _read_same_for(self, tokens: list[str], scope: Optional[_Scope]) -> bool:
+        """Read 'the same goes for X', 'same with X', 'likewise X': the last clause again, with X."""
+        k = self._same_for_lead(tokens, 0) or -1
+        if k < 0 or self.last_clause is None:
+            return False
+        nps, _, end = self._np_list(tokens, k, place=False)
+        prev, prev_scope = self.last_clause
+        if not nps or [t for t in tokens[end:] if t not in ('too', 'as', 'well', 'also')]:
+            return False
+        # the last noun phrase (or pronoun) of the last clause is the one replaced
+        timely = ('point', 'time', 'times', 'moment', 'cost', 'costs')   # "at any point" is no referent
+        spans = [i for i in range(len(prev)) if (prev[i] in DETS or prev[i] in ('it', 'them', 'there')) and
+                 not (i + 1 < len(prev) and prev[i + 1] in timely)]
+        if not spans:
+            return False
+        start = spans[-1]
+        old = self.phrases.parse(prev, start)
+        if old is None:
+            return False
+        again = prev[:start] + tokens[k:end] + prev[old.end:]
+        self.notes.append(f'"{" ".join(tokens)}" read as "{" ".join(again)}"')
+        self._read_clause_body(_Clause('and', again), prev_scope)
+        return True
+
+    def _read_leave(self, rest: list[str]) -> bool:
+        """Read 'leave (X)' after a visit of X: be away from it ("go to a, leave, then go to a again")."""
+        last = self.task.last_step(('visit',))
+        if last is None or len(last.targets) != 1:
+            return False
+        target = last.targets[0]
+        if rest and rest not in (['it'], ['there'], ['here']):
+            nps, _, end = self._np_list(rest, 0)
+            if len(nps) != 1 or end != len(rest) or self.task.find_step(nps[0].descriptor) is None:
+                return False
+            target = nps[0].descriptor
+        self.saw_action = True
+        self.task.chain.append(Step('leave', [target]))
+        return True
+
     @staticmethod
     def _strip_fillers(tokens: list[str]) -> list[str]:
         i = 0
@@ -768,7 +1325,7 @@ class _Reader:
         while i < len(tokens) - 1 and (tokens[i] == 'always' and tokens[i + 1] in GOAL_VERBS or (
                 tokens[i] in ORDINALS or tokens[i] in adverbs) and tokens[i + 1] == ','):
             i += 2 if tokens[i + 1] == ',' else 1
-        while i < len(tokens) and (tokens[i] in FILLERS or tokens[i] == ',') and not (
+        while i < len(tokens) and (tokens[i] in FILLERS or tokens[i] in (',', ':')) and not (
                 tokens[i] in ORDINALS and _ordinal_name(tokens, i)):
             if tokens[i] == 'make' and not _starts(tokens, i, ['make', 'sure']):
                 break
@@ -781,11 +1338,14 @@ class _Reader:
             if i < len(tokens) - 1 and tokens[i] == 'always' and tokens[i + 1] in GOAL_VERBS:
                 i += 1
         out = tokens[i:]
-        while out and out[-1] in (',', 'please', 'too', 'now', 'again', 'thanks', 'first', 'instead', 'ok',
-                                  'okay', 'then', 'as', 'well'):
+        while out and (out[-1] in (',', 'please', 'too', 'now', 'again', 'thanks', 'first', 'instead', 'ok',
+                                   'okay', 'then', 'as', 'well', 'after', 'afterwards', 'afterward') or (
+                out[-1] in ('second', 'third', 'fourth', 'fifth') and len(out) > 1 and out[-2] != 'the')):
             if out[-1] == 'well' and len(out) > 1 and out[-2] == 'as':
                 out = out[:-2]
                 continue
+            if out[-1] == 'well':
+                break   # "go to the well"
             out = out[:-1]
         return out
 
@@ -812,10 +1372,26 @@ class _Reader:
             sc, end = self._event_phrase(tokens, 1)
             if sc is not None:
                 return sc, tokens[end:]
+        if tokens[0] in ('until', 'till') and len(tokens) > 1:
+            sc, rest = self._trailing_scope(tokens)   # "until you get there, don't ..."
+            if sc is not None and sc.kind == 'until':
+                return sc, rest
         return None, tokens
 
     def _event_phrase(self, tokens: list[str], i: int) -> tuple[Optional[_Scope], int]:
         """After "once/after/while": the event (reaching X, picking it up, dropping it off, carrying it)."""
+        if tokens[i - 1] == 'while':
+            # "while you've got the bag", "while you have it": carrying
+            h = next((h for h in range(i, min(i + 3, len(tokens))) if tokens[h] in ('have', 'got', 'has')),
+                     -1)
+            if h >= 0 and all(t in ('you', 'have', 'got', 'has', 'still', 'the', 'robot')
+                              for t in tokens[i:h]):
+                h += 1
+                while h < len(tokens) and tokens[h] in ('got', 'still'):
+                    h += 1
+                np = self.phrases.parse(tokens, h)
+                if np is not None:
+                    return _Scope('carry'), np.end
         j = i
         while j < len(tokens) and tokens[j] in ('you', 'have', 'are', 'i', 'it', 'is', 'been', 'the',
                                                 'robot'):
@@ -872,6 +1448,11 @@ class _Reader:
                 step = self.task.last_step(('visit', 'deliver'))
                 return _Scope('after', self.last_place if step else None), k + 1
             k += 1
+        if k == j and tokens[i - 1] in ('after', 'once'):
+            # "after the library, ...": a goal already given, no verb
+            np = self.phrases.parse(tokens, i)
+            if np is not None and not np.pronoun and self.task.find_step(np.descriptor) is not None:
+                return _Scope('after', np), np.end
         if k == j:
             return None, i
         np = self.phrases.parse(tokens, k)
@@ -902,11 +1483,16 @@ class _Reader:
         softeners = ('while', 'and', 'but', 'always', 'also', 'please', 'by', 'just', 'so', 'then')
         while i < len(tokens) - 1 and tokens[i] in softeners:
             i += 1
-        for trig in AVOID_TRIGGERS:
+        for trig in _AVOID_BY_FIRST.get(tokens[i] if i < len(tokens) else '', ()):
             if _starts(tokens, i, trig):
                 k = i + len(trig)
                 if _starts(tokens, k, ['let']):
                     return None
+                if trig[-1] in ('not', 'never') and k + 1 < len(tokens) and \
+                        tokens[k] not in AVOID_FILLER and tokens[k + 1] in AVOID_FILLER and \
+                        tokens[k + 1] not in ('to', 'the') and tokens[k].isalpha() and \
+                        tokens[k] not in STOPWORDS and _is_word(tokens[k]):
+                    k += 1   # a verb the rules do not know: "don't roll anywhere near X"
                 while k < len(tokens) and tokens[k] in AVOID_FILLER:
                     k += 1
                 return k
@@ -923,6 +1509,21 @@ class _Reader:
         rest, _ = _strip_tails([t for t in tokens[end:] if t != ','])
         # "more than once / more than N times" is a count, not an avoidance.
         rest = normalize_counts(rest)
+        if _starts(rest, 0, ['at', 'least']) or _starts(rest, 0, ['at', 'most']):
+            # "do not visit a at least three times": at most two; "... at most two times": three or more
+            n = self._count_word(rest, 2)
+            if n is None:
+                raise TranslationError(f'could not read the count in "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(rest)})
+            for d in targets:
+                if rest[1] == 'least':
+                    self.task.constraints.append(
+                        at_most(_near(d), n[0] - 1) if n[0] > 1 else Always(Not(_near(d))))
+                else:
+                    self.task.chain.extend(
+                        [Step('visit', [d]), Step('leave', [d])] * n[0] + [Step('visit', [d])])
+            self._check_leftover(rest[n[1]:], tokens)
+            return
         if rest and rest[0] == 'exactly' or _starts(rest, 0, ['any', 'fewer', 'than']) or _starts(
                 rest, 0, ['fewer', 'than']) or _starts(rest, 0, ['less', 'than']) or _starts(
                 rest, 0, ['any', 'less', 'than']):
@@ -948,7 +1549,13 @@ class _Reader:
                       for d in targets}
             if all(visits.values()):
                 for d, n_visits in visits.items():   # "visit a twice and never again": exactly that many
-                    self.task.constraints.append(at_most(_near(d), n_visits))
+                    if n_visits == 1:
+                        # "go to a, then b, without returning to a": a once (see once_scope)
+                        step = self.task.find_step(d)
+                        assert step is not None
+                        step.once = 'exactly'
+                    else:
+                        self.task.constraints.append(at_most(_near(d), n_visits))
                 return
         for lead in (['on', 'any', 'more', 'than'], ['on', 'more', 'than'], ['any', 'more', 'than'],
                      ['more', 'than']):
@@ -977,16 +1584,22 @@ class _Reader:
                 step.avoid_until.extend(v.descriptor for v in via)
                 self._check_leftover(rest[vend:], tokens)
                 return
+        if len(rest) > 1 and rest[0] == 'to' and rest[1] in GOAL_VERBS and rest[1] not in (
+                'be', 'you', 'i', 'can', 'could', 'would', 'will', 'then', 'and', 'to', 'up', 'down', 'back'):
+            # "always avoid the cellar to get to the porch": the goal, with the avoidance read as if after it
+            self._read_goal(rest[1:], _Clause('and', rest[1:]), None)
+            rest = []
         local, rest = self._trailing_scope(rest)
         if local is not None:
             scope = local
-        elif scope is None and 'without' in tokens[:k] and 'through' in tokens[:k] and self.task.chain:
-            scope = _Scope('onway')
+        elif scope is None and 'through' in tokens[:k] and len(self.task.chain) == 1 and (
+                {'without', 'avoid', 'avoiding', 'not', 'never'} & set(tokens[:k])):
+            scope = _Scope('onway')   # "go to X, avoid going through Y": on the way to X
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
                     'anymore', 'costs', 'instant', 'moment')
         leftover = [t for t in rest if t not in harmless]
-        if leftover and leftover[0] not in ('when', 'while'):
+        if leftover and leftover[0] not in ('when', 'while') and not self._leave_out(leftover):
             raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(leftover)})
         self._apply_avoid(targets, scope)
@@ -1008,12 +1621,23 @@ class _Reader:
                         'it', 'them', 'up')):
                     return _Scope('until', self.last_object, 'pick'), []
                 event = 'pick' if rest[j] not in ('got', 'gotten', 'get') else 'near'
+            released = ('put', 'dropped', 'delivered', 'placed', 'set', 'released', 'left')
+            if j < len(rest) and rest[j] in released and rest[j + 1:j + 2] in (
+                    ['it'], ['them'], ['down'], ['off']) and self.task.last_step(('deliver',)) is not None:
+                k = j + 1
+                while k < len(rest) and rest[k] in ('it', 'them', 'down', 'off'):
+                    k += 1
+                return _Scope('carry'), rest[k:]   # "until you have put them down": while carrying
             skippable = NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {'picked', 'grabbed', 'up'}
             while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in skippable:
                 j += 1
             nps, _, end = self._np_list(rest, j)
             if nps:
                 return _Scope('until', nps[0], event), rest[end:]
+            if rest[0] in ('until', 'till') and j > 1 and (j == len(rest) or rest[j] in PUNCT) and \
+                    rest[j - 1] in ('arrive', 'arrived', 'get', 'got', 'are', 'reach', 'reached', 'land',
+                                    'landed') and self.last_place is not None:
+                return _Scope('until', self.last_place, event), rest[j:]   # "until you arrive": at the goal
         if _starts(rest, 0, ['on', 'the', 'way']) or _starts(rest, 0, ['on', 'your', 'way']) or \
                 _starts(rest, 0, ['along', 'the', 'way']):
             sc, rem = self._leading_scope(rest)
@@ -1148,7 +1772,9 @@ class _Reader:
                  ' over and over', ' frequent ', ' keep on visiting ', ' indefinitely', ' again and again',
                  ' keep revisiting ', ' continually', ' constantly', ' unlimited ', ' perpetually',
                  ' continue to stop ', ' continue visiting ', ' continue going ', ' not stop ',
-                 ' cannot stop ', ' never stop ', ' keep on ')
+                 ' cannot stop ', ' never stop ', ' keep on ', ' continue moving ', ' continue to visit ',
+                 ' continue to go ', ' keep going between ', ' back and forth ', ' cycle through ',
+                 ' ever stop ', ' cease ', ' always visiting ', ' finite number of times ', ' keep moving ')
         if not any(m in s for m in marks):
             return False
         nps: list[NounPhrase] = []
@@ -1206,7 +1832,7 @@ class _Reader:
                                     ' you are allowed ', ' it is okay to ', ' it is fine to ', ' or stop ',
                                     ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ',
                                     ' or continue ')
-                   ) and ' not ' not in s
+                   ) and ' not ' not in s and ' can only ' not in s
 
     def _read_permission(self, tokens: list[str]) -> None:
         """'...then you can go to Y': an avoidance of Y that was pending ends where the goal is reached."""
@@ -1248,7 +1874,7 @@ class _Reader:
         """'stay on the third floor [while going to X]' -> ``G near[floor]``; '... until Y' -> ``U``."""
         if tokens and tokens[0] in ('while', 'and', 'but', 'by', 'always'):
             tokens = tokens[1:]
-        leads = STAY_WITHIN
+        leads = _STAY_BY_FIRST.get(tokens[0] if tokens else '', ())
         if len(tokens) > 1 and tokens[0] in ('staying', 'remaining', 'keeping', 'stay', 'remain') and \
                 tokens[1] in ('in', 'on', 'within', 'inside'):
             leads = (tuple(tokens[:2]),)
@@ -1383,14 +2009,30 @@ class _Reader:
 
     @staticmethod
     def _skip_event_verbs(s: list[str], k: int) -> int:
-        while k < len(s) and s[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
-                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure'}:
+        while k < len(s) and (s[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
+                'you', 'have', 'i', 'are', 'both', 'robot', 'has', 'make', 'sure', 'first', 'swung', 'flown',
+                'driven', 'ridden', 'run', 'come', 'done'} or (
+                # a participle before a particle or a place: "once you've stopped at X"
+                s[k].endswith(('ed', 'en')) and k + 1 < len(s) and (
+                    s[k + 1] in GOAL_PARTICLES or s[k + 1] in DETS) and s[k] not in STOPWORDS)):
             k += 1
         return k
 
+    def _leave_out(self, rest: Sequence[str]) -> bool:
+        """Leave out words that ask for nothing (no place, skill verb or constraint word), noted."""
+        if not chatter.is_filler(rest, SKILL_VERBS) or not all(
+                _is_word(t, listed=True) for t in rest if t not in PUNCT) or \
+                self.phrases.landmarks and any(
+                self.phrases._landmark(rest, i) is not None for i in range(len(rest))) or self.phrases.parse(
+                [t for t in rest if t not in PUNCT], 0) is not None and rest[0] not in ('is', 'are', 'was'):
+            return False
+        words = ' '.join(t for t in rest if t not in PUNCT)
+        self.notes.append(f'left out "{words}" (asks for nothing)')
+        return True
+
     def _check_leftover(self, rest: list[str], whole: list[str]) -> None:
         rest = [t for t in rest if t not in (',', 'please', 'first', 'too', 'again', 'then')]
-        if rest:
+        if rest and not self._leave_out(rest):
             raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
                                    details={'part': ' '.join(rest)})
 
@@ -1437,45 +2079,67 @@ class _Reader:
         if c is None:
             return False, rest
         n, end = c
-        if _starts(rest, end, ['in', 'a', 'row']):
+        if rest[i] == 'once' and end < len(rest) and rest[end] in ('you', 'i', 'we', 'the', 'it', 'that'):
+            return False, rest   # "once you have been to a": a conjunction, no count
             self.task.repeat = n
             return True, rest[end + 3:]
-        if n == 1 and mode == 'at_least' and i == 0:
-            mode = 'at_least'
+        if self.only and mode == 'at_least' and i == 0:
+            mode = 'exactly'   # "only visit a once"
         for d in targets:
             x = _near(d)
-            if mode == 'at_least':
+            known = self.task.find_step(d)
+            if n == 1 and mode == 'exactly' and known is not None and known.kind == 'visit' and \
+                    known.targets == [d]:
+                known.once = 'exactly'   # "go to a, then b; visit each of them only once"
+                continue
+            if mode == 'exactly' and (known is not None and known.kind == 'deliver' or known is None and (
+                    self.connector == 'and' and self.task.chain and not self.phrases.landmarks)):
+                # "bring X to the pantry, and enter it only once", "put X on Y, and enter the hall only
+                # once": a bound on the whole run, not a step after the others
+                self.task.constraints.append(exactly(x, n))
+                continue
+            if n == 1 and mode in ('exactly', 'at_least') and not (mode == 'at_least' and i > 0):
+                # "visit a exactly once", "go to a once, then b": see once_scope
+                self.task.chain.append(Step('visit', [d], once='exactly' if mode == 'exactly' else 'plain'))
+            elif mode == 'at_least':
                 for k in range(n):
                     if k:
                         self.task.chain.append(Step('leave', [d]))
                     self.task.chain.append(Step('visit', [d]))
             elif mode == 'exactly':
                 self.task.constraints.append(exactly(x, n))
-                self.task.chain.append(Step('visit', [d]))
+                # "bring X to the pantry and only enter it once": a bound, not a step after the others
+                if self.task.find_step(d) is None and (self.connector != 'and' or not self.task.chain):
+                    self.task.chain.append(Step('visit', [d]))
             else:
                 self.task.constraints.append(at_most(x, n))
         return True, rest[end:]
 
     def _read_delivery(self, tokens: list[str], clause: _Clause) -> bool:
         verb = tokens[0]
+        last = self.task.chain[-1] if self.task.chain else None
+        if [t for t in tokens[1:] if t != 'me'] in (['one', 'of', 'them'], ['either', 'of', 'them'],
+                                                    ['one', 'of', 'those'], ['either', 'one']) and \
+                last is not None and last.kind == 'visit' and len(last.targets) > 1:
+            return True   # "either stairs are fine, just take one of them": the choice already given
         k = 1
         implicit_dest: Optional[Descriptor] = None
         binned = verb in ('bin', 'dump', 'chuck') and 'in' not in tokens
-        if verb == 'throw' and 'away' in tokens[:4] or binned:
+        if verb in ('throw', 'toss', 'chuck') and ('away' in tokens[:4] or 'out' in tokens[:2]) or binned:
             implicit_dest = TRASH
-        if _starts(tokens, 0, ['pick', 'up']) or _starts(tokens, 0, ['throw', 'away']) or _starts(
-                tokens, 0, ['throw', 'out']):
+        if _starts(tokens, 0, ['pick', 'up']) or verb in ('throw', 'toss', 'chuck') and tokens[1:2] in (
+                ['away'], ['out']):
             k = 2
         elif tokens[0] == 'get' and _starts(tokens, 1, ['rid', 'of']):
             k, implicit_dest = 3, TRASH
         while k < len(tokens) and tokens[k] in ('me', 'up', 'back', 'off', 'down', 'us'):
             k += 1
         objs, joiner, end = self._np_list(tokens, k, place=False, destination_stops=verb in PUT_VERBS)
-        if not objs:
-            return False
+        if not objs or objs[0].descriptor.name in ('yourself', 'itself', 'over'):
+            return False   # "get yourself over to X" is going there
         rest = tokens[end:]
-        if rest and rest[0] == 'from' and len(objs) == 1:
-            # "the blanket from the closet": where the object is, as a nearness relation
+        if rest and rest[0] in ('from', 'off') and len(objs) == 1:
+            # "the blanket from the closet", "the remote off the couch": where the object is, as nearness
             src = self.phrases.parse(rest, 1, destination_stops=True)
             if src is not None and not src.pronoun:
                 o = objs[0]
@@ -1490,10 +2154,13 @@ class _Reader:
             if rest[0] == 'away' and verb in ('throw', 'toss', 'put'):
                 implicit_dest = TRASH
             rest = rest[1:]
-        if verb in PICK_VERBS and (not rest or rest[0] not in ('to', 'into', 'in', 'on', 'onto', 'at')):
+        if verb in PICK_VERBS and implicit_dest is None and (
+                not rest or rest[0] not in ('to', 'into', 'in', 'on', 'onto', 'at')):
             # a plain pick; a following "and bring it to X" turns it into a delivery.
+            at = len(self.task.chain) - (1 if clause.connector == 'pre' and self.task.chain else 0)
             for o in objs:
-                self.task.chain.append(Step('pick', [o.descriptor]))
+                self.task.chain.insert(at, Step('pick', [o.descriptor]))
+                at += 1
             self._check_leftover(rest, tokens)
             return True
         dests: list[NounPhrase] = []
@@ -1530,6 +2197,9 @@ class _Reader:
         if rest and rest[0] == 'without':
             without, rest = rest, []
         rest = [t for t in rest if t not in (',', 'too', 'please', 'instead', 'as', 'well', 'again')]
+        avoiding: list[str] = []
+        if rest and rest[0] in ('avoiding', 'while') and self._avoid_start(rest) is not None:
+            avoiding, rest = rest, []   # "carry X to Y, avoiding Z on the way": read with the delivery
         if rest and rest[0] in ('while', 'when', 'on', 'along', 'and', 'without'):
             sc, rem = self._trailing_scope(rest)
             if sc is None and rest[0] == 'and':
@@ -1545,12 +2215,16 @@ class _Reader:
                 self._read_avoid(without, _Scope('carry'))
             return True
         steps = [Step('deliver', [o], list(dest_ds)) for o in obj_ds]
-        if len(steps) == 1:
-            self.task.chain.append(steps[0])
+        group = 'any' if joiner == 'or' else 'all'
+        step = steps[0] if len(steps) == 1 else Step(group, chains=[[s] for s in steps])
+        if clause.connector == 'pre' and self.task.chain:
+            self.task.chain.insert(len(self.task.chain) - 1, step)   # "X, but before that, bring Y to Z"
         else:
-            self.task.chain.append(Step('any' if joiner == 'or' else 'all', chains=[[s] for s in steps]))
+            self.task.chain.append(step)
         if without:   # "take it to X without passing Y": while carrying it
             self._read_avoid(without, _Scope('carry'))
+        if avoiding:
+            self._read_avoid(avoiding, None)
         return True
 
     def _read_goal(self, tokens: list[str], clause: _Clause, scope: Optional[_Scope]) -> None:
@@ -1566,11 +2240,40 @@ class _Reader:
                 tokens[k] in ORDINALS and _ordinal_name(tokens, k)) and not (
                 tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)
         ) and not (tokens[k] == 'back' and k + 1 < len(tokens)
-                   and tokens[k + 1] in ('door', 'gate', 'yard', 'room', 'porch')):
+                   and tokens[k + 1] in ('door', 'gate', 'yard', 'room', 'porch')) or (
+                0 < k < len(tokens) and tokens[k] in MOTION_PREPS and tokens[k - 1] in GOAL_VERBS) or (
+                0 < k < len(tokens) and tokens[k] in ('yourself', 'itself')):
             if tokens[k] in ('from', 'through', 'via') and k > 0:
                 patrol_from = True
             k += 1
+        # after "go to" comes the place, not another verb ("go to grandma in the living room")
+        verb_end = self._unknown_verb(tokens, k) if k == 0 or tokens[k - 1] not in GOAL_PARTICLES else None
+        if verb_end is not None:
+            if k == 0 and self._read_unknown_placement(tokens, verb_end, clause):
+                return
+            self.notes.append(f'read "{" ".join(tokens[k:verb_end])}" as going to what follows')
+            k = verb_end
+            self.saw_action = True
+        if k == 0 and len(tokens) > 1 and all(t in GOAL_PARTICLES and t not in ('me', 'there', 'here')
+                                              for t in tokens[1:]) and tokens[0] not in DETS and \
+                tokens[0] not in STOPWORDS and _is_word(tokens[0]) and self.task.chain:
+            self.saw_action = True   # "just pop over (and check it)": to the place named before
+            self.notes.append(f'"{" ".join(tokens)}": going to the place named before')
+            return
+        last = self.task.chain[-1] if self.task.chain else None
+        if (tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
+                           ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these'],
+                           ['one']) or (
+                k > 0 and tokens[k:] == ['there'] and not self.phrases.landmarks)) and \
+                last is not None and last.kind == 'visit' and len(last.targets) > 1:
+            self.saw_action = True   # "just get to one of them": the choice already given
+            return
         nps, joiner, end = self._np_list(tokens, k)
+        if not nps and all(t in GOAL_VERBS or t in GOAL_PARTICLES for t in tokens) and self.task.chain:
+            self.saw_action = True   # "the pallet jack, go": the place was named before the verb
+            return
+        if not nps and self._leave_out(tokens):
+            return   # "be careful", "just so you know"
         if not nps:
             raise TranslationError(f'could not place "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
@@ -1585,7 +2288,10 @@ class _Reader:
                 joiner = 'then'
                 rest = rest[e2:]
         # "X in that order" / "in any order"
-        ordered = ordered_tail
+        ordered = bool(ordered_tail)
+        strict = clause.strict
+        if ordered_tail == 'strict':
+            self.strict_chain = True
         for phrase in (['in', 'that', 'order'], ['in', 'order'], ['in', 'this', 'order'],
                        ['one', 'after', 'the', 'other']):
             if _starts(rest, 0, phrase):
@@ -1601,35 +2307,136 @@ class _Reader:
         if c is not None and _starts(rest, c[1], ['in', 'a', 'row']):
             self.task.repeat = c[0]
             rest = rest[c[1] + 3:]
-        if scope is not None and scope.kind == 'after' and scope.target is not None and not self.task.chain \
-                and self.task.find_step(scope.target.descriptor) is None and not rest:
-            # "once you visit a, you have to visit b": whenever a happens, b follows
-            react = _or([_near(d) for d in targets])
-            self.task.constraints.append(Always(Implies(_near(scope.target.descriptor), Eventually(react))))
-            return
+        if scope is not None and scope.kind == 'after' and scope.target is not None and \
+                self.task.find_step(scope.target.descriptor) is None:
+            # "after you visit a, go to b": a first (a rule when said as one: see reactions)
+            self.task.chain.append(Step('visit', [scope.target.descriptor]))
+        if self.only and rest[:1] == ['once']:
+            rest = ['exactly'] + rest   # "only enter the pantry once"
         counted, rest = self._read_count(rest, targets)
         if counted:
-            if len(rest) > 1 and rest[0] == 'and' and rest[1] in DETS:
+            rest = [t for t in rest if t != ',']
+            if len(rest) > 1 and rest[0] in ('and', 'but') and rest[1] in DETS:
                 self._read_goal(['visit'] + rest[1:], _Clause('seq', rest[1:]), None)
                 return
             self._goal_trailer(rest, tokens, targets)
             return
+        tail: list[Step] = []
         if clause.connector == 'pre' and self.task.chain:
-            last = self.task.chain.pop()
+            # "..., before that, go to X": X before the goal of the clause before
+            chain = self.task.chain
+            k = next((i for i, st in enumerate(chain) if st is self.last_goal), len(chain) - 1)
+            tail, self.task.chain = chain[k:], chain[:k]
             self._add_targets(targets, joiner, ordered)
-            self.task.chain.append(last)
+        elif self.insert_before is not None and self.insert_before in self.task.chain:
+            at = self.task.chain.index(self.insert_before)
+            self._add_targets(targets, joiner, ordered)
+            self.task.chain.insert(at, self.task.chain.pop())
+            self.insert_before = None
         else:
+            before = self.task.last_step(('visit', 'deliver'))
             self._add_targets(targets, joiner, ordered)
+            if strict:
+                self._strict_order(before, targets, joiner)
+        new_step = self.task.chain[-1]
+        self.connector = clause.connector
         if self.before_target is not None:
-            self.task.chain.append(Step('visit', [self.before_target]))
-            self.before_target = None
-            targets = [self.task.chain[-1].targets[0]]
+            if self.before_strict:
+                self.task.constraints.append(Until(Not(_near(self.before_target)), _or(
+                    [_near(t) for t in targets])))
+            known = next((st for st in self.task.chain[:-1] if st.kind == 'visit'
+                          and st.targets == [self.before_target]), None)
+            if known is not None:
+                # "visit b, but before visiting b you must visit a": a moves before that b
+                new = self.task.chain.pop()
+                self.task.chain.insert(self.task.chain.index(known), new)
+            else:
+                self.task.chain.append(Step('visit', [self.before_target]))
+                targets = [self.task.chain[-1].targets[0]]
+            self.before_target, self.before_strict = None, False
         self._goal_trailer(rest, tokens, targets)
+        self.task.chain.extend(tail)
+        self.last_goal = new_step
         if self.conditional is not None:
             self.task.constraints.append(WeakUntil(Not(_near(self.conditional.descriptor)),
                                                    _near(targets[0])))
-            self.task.chain.pop()
+            self.task.chain = [st for st in self.task.chain if st is not new_step]
             self.conditional = None
+
+    def _unknown_verb(self, tokens: list[str], k: int) -> Optional[int]:
+        """Where the place starts after a verb the rules do not know ("hit the mail cart"), else None.
+
+        A word that is no name, number or known verb, followed (after particles) by a
+        determiner or a known landmark, is the verb of an imperative.
+        """
+        if k >= len(tokens):
+            return None
+        w = tokens[k]
+        if self.phrases.landmarks and self.phrases._landmark(tokens, k) is not None:
+            return None
+        if w in DETS or w in NEGATIVE_VERBS or w in STOPWORDS or w in ORDINALS or w in NUMBER_WORDS or \
+                not w.isalpha() or w in chatter.CONSTRAINT_WORDS or w in FILLERS or \
+                w in chatter.INTERJECTIONS or w in DELIVER_VERBS or w in PICK_VERBS or w.endswith('ing'):
+            return None   # an imperative is no gerund ("skipping the hall")
+        j = k + 1
+        while j < len(tokens) and (tokens[j] in GOAL_PARTICLES or tokens[j] in MOTION_PREPS or tokens[j] in (
+                'yourself', 'itself', 'next')) and tokens[j] not in ('there', 'here', 'me', 'from'):
+            j += 1
+        if j == k + 1 and j + 1 < len(tokens) and tokens[j] in ('it', 'them') and tokens[j + 1] in (
+                'on', 'onto', 'in', 'into', 'inside'):
+            return j   # "hang it on the hook"
+        if j < len(tokens) and (tokens[j] in DETS and tokens[j] not in ('any', 'each', 'some') or (
+                self.phrases.landmarks and self.phrases._landmark(tokens, j) is not None)) and (
+                _is_word(w) or j > k + 1 and tokens[j - 1] in ('to', 'into', 'onto', 'towards', 'toward')):
+            return j   # a word that is no English word must at least be followed by "... to the"
+        return None
+
+    def _read_unknown_placement(self, tokens: list[str], j: int, clause: _Clause) -> bool:
+        """'hang the coat on the hook': an unknown verb, an object, a destination: a delivery.
+
+        Only where the words say it is one: "into"/"onto", the object a pronoun ("hang it on"),
+        or a verb of placing; "water the ferns on the porch" is going to the ferns on the porch.
+        """
+        obj = self.phrases.parse(tokens, j, destination_stops=True)
+        if obj is None or obj.end >= len(tokens) or tokens[obj.end] not in (
+                'on', 'onto', 'in', 'into', 'inside'):
+            return False
+        if not (tokens[obj.end] in ('onto', 'into', 'inside') or obj.pronoun or tokens[0] in PLACING_VERBS):
+            return False
+        dest = self.phrases.parse(tokens, obj.end + 1)
+        if dest is None:
+            return False
+        what = self._resolve(obj).descriptor
+        if not self._read_delivery(['put'] + tokens[j:], clause):
+            return False
+        self.notes.append(f'read "{tokens[0]}" as putting {what} at {dest.descriptor}')
+        self.saw_action = True
+        return True
+
+    def _after_goals(self, moved: Step, others: list[Descriptor], again: bool) -> None:
+        """'go to X after Y': Y then X; a Y or an X given as a goal before is that goal, not a new one.
+
+        Unless said again ("go back to X after Y"): then X is visited once more.
+        """
+        chain = self.task.chain
+        known = {tuple(st.targets) for st in chain if st.kind == 'visit'}
+        new = [d for d in others if (d,) not in known]
+        same = next((st for st in chain if st.kind == 'visit' and st.targets == moved.targets), None)
+        if same is not None and moved.kind == 'visit' and not again:
+            # "go to c after b. go to b after a": a goes before the b already given
+            k = chain.index(same)
+            chain[k:k] = [Step('visit', [d]) for d in new]
+            return
+        chain.extend(Step('visit', [d]) for d in new)
+        chain.append(moved)
+
+    def _strict_order(self, before: Optional[Step], targets: list[Descriptor], joiner: str) -> None:
+        """'go to a, and only then go to b': this clause's goals not before the goal before them."""
+        prev = before.targets if before is not None and before.kind == 'visit' else (
+            before.dests if before is not None else [])
+        if prev:
+            for d in targets if joiner == 'or' else targets[:1]:
+                self.task.constraints.append(Until(Not(_near(d)), _or([_near(p) for p in prev])))
 
     def _add_targets(self, targets: list[Descriptor], joiner: str, ordered: bool) -> None:
         if len(targets) == 1 or joiner == 'or':
@@ -1676,15 +2483,23 @@ class _Reader:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(d)), _near(x)))
                 elif only and word == 'after':
-                    self.task.chain.append(moved)   # "X only after Y": F x & (!x U y)
+                    # "X only after Y": F x & (!x U y), X not in sequence after the goals said before it
+                    if self.task.chain and self.connector != 'seq':
+                        self.task.chain = [Step('all', chains=[self.task.chain, [moved]])]
+                    else:
+                        self.task.chain.append(moved)
                     for d in others:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(x)), _near(d)))
+                elif word == 'after':
+                    self._after_goals(moved, others, again=bool({'again', 'back', 'return'} & set(whole)))
                 else:
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                     self.task.chain.append(moved)
                 self._goal_trailer(rest[end:], whole, targets)
                 return
+        if rest[0] == 'always' and len(rest) > 2 and rest[1] in ('passing', 'going', 'moving'):
+            rest = ['by'] + rest[1:]   # "go to X always passing through Y": by passing through Y
         if rest[0] == 'by' and len(rest) > 2:
             j = 2 if rest[1] == 'first' else 1
             if rest[j].endswith('ing') and rest[j] not in ('avoiding', 'staying', 'remaining', 'keeping'):
@@ -1716,5 +2531,16 @@ class _Reader:
             if sc is not None and sc.kind == 'global':
                 self._check_leftover(rem, whole)
                 return
+        last = self.task.chain[-1] if self.task.chain else None
+        if rest[0] in ('if', 'in') and rest[:2] != ['in', 'order'] and last is not None and \
+                last.kind == 'visit' and len(last.targets) > 1:
+            cond = rest[2:] if rest[:2] == ['in', 'case'] else rest[1:]
+            np = self.phrases.parse(cond, 0) if cond and cond[0] in DETS else None
+            if np is not None and chatter.is_statement(cond, np.end):
+                # "the study, or the library if the study is locked": either will do
+                self.notes.append(f'"{" ".join(rest)}": either place will do')
+                return
+        if self._leave_out(rest):
+            return
         raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
                                details={'part': ' '.join(rest)})

@@ -49,6 +49,8 @@ CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piec
 LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('each', 'of'), ('all', 'of'), ('both', 'of'), ('any', 'of'), ('all', 'the', 'following', 'locations'),
     ('the', 'following', 'locations'), ('the', 'following', 'places'), ('all', 'locations'),
+    ('all', 'places'), ('all', 'the', 'places'), ('places',), ('the', 'places'), ('landmarks',),
+    ('all', 'landmarks'),
     ('the', 'locations'), ('locations',), ('all', 'the', 'locations'), ('the', 'following'),
     ('any', 'locations', 'among'), ('any', 'of', 'the', 'locations'), ('none', 'among'), ('none', 'of'),
     ('either', 'one', 'among'), ('one', 'among'), ('any', 'one', 'among'), ('either', 'of'), ('any', 'of'),
@@ -59,6 +61,8 @@ RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
     ('that', 'is', 'right'), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
     ('that', 'sits'), ('that', 'is', 'sitting'), ('that', 'is', 'lying'), ('sitting',), ('located',),
     ('placed',), ('standing',), ('lying',), ('right',), ('just',), ('directly',), ('the', 'one'),
+    ('hanging',), ('resting',), ('leaning',), ('parked',), ('stored',), ('kept',), ('found',),
+    ('that', 'hangs'), ('that', 'sits'), ('that', 'stands'), ('that', 'lies'),
 )
 
 # Words that are never part of a name.
@@ -73,7 +77,9 @@ whichever whatever matter care which else other others until till avoid avoiding
 while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside
-unless except whenever since because though although otherwise
+unless except whenever since because though although otherwise later afterwards afterward means thereafter
+something anything everything nothing someone anyone anymore forever staying keeping steering remaining
+followed remain
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.
@@ -81,6 +87,9 @@ PART_WORDS = frozenset('''
 roof top side front back door entrance exit corner end edge middle center centre bottom base foot gate
 window wall floor lobby steps stairs porch yard garden balcony
 '''.split())
+
+# "location b", "landmark c": a generic noun before a known landmark name
+PLACE_NOUNS = frozenset({'location', 'landmark', 'place', 'waypoint', 'point'})
 
 # Words before "one" that make it a placeholder ("the blue one") rather than a number ("landmark one").
 PLACEHOLDER_ADJECTIVES = frozenset('''
@@ -127,6 +136,8 @@ def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
             if words == ('over',) and i + 1 < len(tokens) and tokens[i + 1] in ('to', 'there', 'here'):
                 continue
             nxt = tokens[i + n] if i + n < len(tokens) else ''
+            if nxt == 'first' and i + n + 1 < len(tokens):
+                nxt = tokens[i + n + 1]   # "by first visiting X"
             if nxt.endswith('ing') and nxt not in ('ceiling', 'building', 'railing', 'painting'):
                 continue  # "by passing through X" is a manner, not a place
             return comparator, i + n
@@ -160,6 +171,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return False
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')
+    if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \
+            nxt not in NUMBER_WORDS and nxt not in ('ones', 'one'):
+        return True   # "the other desk"
     if w in STOPWORDS:
         return False
     if w.endswith('ly') and len(w) > 5 and w not in LY_NOUNS:
@@ -181,7 +195,7 @@ def singular(word: str) -> str:
 def name_of(words: Sequence[str]) -> str:
     """Snake-case name from name words; cardinal number words after a noun become digits."""
     out = []
-    for k, w in enumerate(words):
+    for k, w in enumerate(w.lower() for w in words):   # acronyms ("the IT office") are upper case
         if k > 0 and w in NUMBER_WORDS and w not in ('once', 'twice', 'thrice'):
             w = str(NUMBER_WORDS[w])
         out.append(w)
@@ -189,6 +203,29 @@ def name_of(words: Sequence[str]) -> str:
     if name and not name[0].isalpha():
         name = 'n_' + name
     return name
+
+
+def _attach(d: Descriptor, appositive: Descriptor, same: bool = False) -> Optional[Descriptor]:
+    """``d`` with the relations of ``appositive`` added to the noun inside it that it names again.
+
+    The noun matched is the one named last (deepest first), with the same head word and
+    a name that the appositive's name ends ("tall_cabinet" ... "the cabinet"), and
+    that has no relations of its own; None if there is none. With ``same`` ("the printer
+    by the window, the one left of the desk") the relations are added to ``d`` itself.
+    """
+    if same and d.name == appositive.name:
+        extra = tuple(r for r in appositive.relations if r not in d.relations)
+        return Descriptor(d.name, d.relations + extra)
+    for k, rel in reversed(list(enumerate(d.relations))):
+        for a, arg in reversed(list(enumerate(rel.args))):
+            inner = _attach(arg, appositive)
+            if inner is not None:
+                args = rel.args[:a] + (inner,) + rel.args[a + 1:]
+                rels = d.relations[:k] + (Relation(rel.comparator, args),) + d.relations[k + 1:]
+                return Descriptor(d.name, rels)
+    if d.relations or not (d.name == appositive.name or d.name.endswith('_' + appositive.name)):
+        return None
+    return Descriptor(d.name, appositive.relations)
 
 
 class PhraseParser:
@@ -231,6 +268,8 @@ class PhraseParser:
                 break
         if self.landmarks:
             j = i + 1 if i < len(tokens) and tokens[i] == 'the' else i
+            if j + 1 < len(tokens) and tokens[j] in PLACE_NOUNS and self._landmark(tokens, j + 1) is not None:
+                j += 1   # "location b": the landmark b
             lm = self._landmark(tokens, j)
             if lm is not None:
                 np = NounPhrase(Descriptor(name_of(list(lm))), start, j + len(lm), lm[-1])
@@ -256,6 +295,12 @@ class PhraseParser:
                 if i + 1 < len(tokens) and tokens[i] == 'of' and words[-1] in CONTAINER_WORDS:
                     words.append('of')
                     i += 1
+            sides = (('on', 'the'), ('to', 'the'), ('on', 'your'), ('to', 'your'))
+            if words and tuple(tokens[i:i + 2]) in sides \
+                    and i + 2 < len(tokens) and tokens[i + 2] in ('left', 'right') and (
+                    i + 3 >= len(tokens) or tokens[i + 3] not in ('of', 'side')):
+                words = [tokens[i + 2]] + words   # "the lamp on the left" is the left lamp
+                i += 3
             if words and words[-1] in PART_WORDS and i + 1 < len(tokens) and tokens[i] == 'of' and depth < 8:
                 whole = self.parse(tokens, i + 1, destination_stops, depth + 1)
                 if whole is not None and not whole.descriptor.relations and not whole.pronoun:
@@ -285,7 +330,11 @@ class PhraseParser:
         relations: list[Relation] = []
         while i < len(tokens):
             j = i
-            lead = _relative_lead(tokens, j)
+            if tokens[j] == ',' and j + 1 < len(tokens) and tokens[j + 1] in ('which', 'that') and \
+                    _relative_lead(tokens, j + 1):
+                j += 1   # "the pantry, which is next to the kitchen"
+            lead = _relative_lead(tokens, j) + (j - i)
+            j = i
             if not lead and relations and tokens[j] in ('and', 'but'):
                 lead = 1 + _relative_lead(tokens, j + 1) if match_relation(tokens, j + 1 + _relative_lead(
                     tokens, j + 1)) else 0
@@ -313,8 +362,8 @@ class PhraseParser:
                 i = arg1.end
         np = NounPhrase(Descriptor(name_of(words), tuple(relations)), start, i, head,
                         'one' if one else '')
-        if depth == 0:
-            self.last = np
+        if depth == 0 and not (tokens[start] == words[0] and words[0] in NAME_VERBS):
+            self.last = np   # not a verb tried as a noun ("bring me the blue one": one is not a bring)
         return np
 
     def parse_list(self, tokens: Sequence[str], i: int, destination_stops: bool = False
@@ -340,6 +389,10 @@ class PhraseParser:
             if tokens[j] == ',':
                 j += 1
                 sep = 'and'
+            if tuple(tokens[j:j + 3]) in (('as', 'well', 'as'), ('along', 'with', 'the')) or \
+                    tokens[j:j + 1] == ['plus']:
+                j += 1 if tokens[j] == 'plus' else (3 if tokens[j] == 'as' else 2)   # "X as well as Y"
+                sep = 'and'
             if j < len(tokens) and tokens[j] in ('and', 'or', 'nor'):
                 sep = 'or' if tokens[j] == 'or' else 'and'
                 j += 1
@@ -352,6 +405,13 @@ class PhraseParser:
             nxt = self.parse(tokens, j, destination_stops)
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
+            if sep == 'and' and tokens[i] == ',' and nxt.descriptor.relations and nxt.pronoun in ('', 'one'):
+                # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
+                merged = _attach(phrases[-1].descriptor, nxt.descriptor, nxt.pronoun == 'one')
+                if merged is not None:
+                    phrases[-1] = NounPhrase(merged, phrases[-1].start, nxt.end, phrases[-1].head)
+                    i = nxt.end
+                    continue
             if j < len(tokens) and tokens[j] in NAME_VERBS:
                 break
             phrases.append(nxt)

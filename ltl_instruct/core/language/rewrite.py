@@ -17,15 +17,19 @@ from __future__ import annotations
 from typing import Optional
 
 from ltl_instruct.core.errors import TranslationError
-from ltl_instruct.core.language.phrases import DETERMINERS, NounPhrase, PhraseParser, singular
+from ltl_instruct.core.language import chatter
+from ltl_instruct.core.language.phrases import (
+    DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, NounPhrase, PhraseParser, is_name_word, singular,
+)
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
+from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
-                          'notice'})
+                          'notice', 'find', ','})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
-                       'there', '-'})
-_REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'reverse', 'before', 'after',
-                                    'former', 'latter', 'them', 'all'}
+                       'there', '-', 'are', 'sit', 'stand', 'lie'})
+_REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
+                                    'after', 'former', 'latter', 'them', 'all'}
 
 
 def _np_text(tokens: list[str], np: NounPhrase) -> list[str]:
@@ -39,6 +43,10 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
     """Find the first enumeration of three (or two, with "and") noun phrases, and its category."""
     parser = PhraseParser()
     starts = [0] + [i + 1 for i, t in enumerate(tokens) if t in _LIST_INTROS]
+    # "I left a notebook, a pen and a ruler...": after a pronoun subject and its verb
+    starts += [i + 2 for i, t in enumerate(tokens) if t in ('i', 'we', 'they') and (
+        i == 0 or tokens[i - 1] in PUNCT)]
+    starts.sort()
     for s in starts:
         if s >= len(tokens):
             continue
@@ -49,10 +57,37 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             continue
         # the category before a colon: "three chairs: a red one by the desk, ..."
         category = ''
-        if s >= 2 and tokens[s - 1] == ':':
-            category = singular(tokens[s - 2])
+        if s >= 2 and tokens[s - 1] == ':' or s >= 3 and tokens[s - 1] == ',' and \
+                tokens[s - 3] in NUMBER_WORDS:
+            category = singular(tokens[s - 2])   # "three chairs: a red one...", "two doors, a red one..."
+        elif s >= 2 and tokens[s - 1] == ',':
+            continue
         return s, end, nps, category
     return None
+
+
+_MENTIONED: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('i', 'mentioned'), ('i', 'just', 'mentioned'), ('i', 'said'), ('i', 'listed'), ('i', 'named'),
+    ('i', 'described'), ('i', 'told', 'you', 'about'), ('you', 'saw'), ('we', 'talked', 'about'),
+    ('on', 'the', 'list'), ('in', 'the', 'list'), ('from', 'the', 'list'), ('from', 'before'),
+    ('i', 'listed', 'earlier'), ('i', 'mentioned', 'earlier'), ('i', 'mentioned', 'before'),
+), key=lambda t: -len(t)))
+
+
+def _drop_mentions(tail: list[str]) -> list[str]:
+    """Remove "(that) I mentioned" after a position word: "the second item I mentioned"."""
+    out: list[str] = []
+    i = 0
+    while i < len(tail):
+        out.append(tail[i])
+        i += 1
+        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle') or out[-1] in ORDINALS:
+            j = i + (1 if i < len(tail) and tail[i] in ('that', 'which') else 0)
+            for m in _MENTIONED:
+                if tuple(tail[j:j + len(m)]) == m:
+                    i = j + len(m)
+                    break
+    return out
 
 
 def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
@@ -69,14 +104,33 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     if tail and tail[0] not in PUNCT and any(t in PUNCT for t in tail):
         tail = tail[next(k for k, t in enumerate(tail) if t in PUNCT):]
     if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail):
+        heads = {np.head for np in nps}
+        if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
+                not any(t in NAME_VERBS for t in tokens[:end]):
+            # "a hammer, a saw, a drill: bring the saw to the bench": the list only sets the scene
+            notes.append('list of ' + ', '.join(str(np.descriptor) for np in nps) + ': the scene')
+            return tokens[end + 1:]
+        if category and any(tokens[np.end - 1] == 'one' for np in nps):
+            # "two doors, a red one and a blue one. Go through the blue one": the ones are doors; the
+            # enumeration only sets the scene
+            notes.append(f'"one" read as "{category}"')
+            keep = max((k for k in range(s) if tokens[k] in '.;!?'), default=-1)
+            return tokens[:keep + 1] + [category if t == 'one' and k > 0 and tail[k - 1] not in DETERMINERS
+                                        else t for k, t in enumerate(tail)]
         return tokens
     items = []
+    if nps[-1].descriptor.relations and not any(np.descriptor.relations for np in nps[:-1]):
+        # "a mug, a plate and a bowl on the counter": where they all are, not which bowl
+        rel = next((k for k in range(nps[-1].start + 1, nps[-1].end) if tokens[k] not in DETERMINERS and
+                    not is_name_word(tokens, k, True)), nps[-1].end)
+        nps[-1] = NounPhrase(Descriptor(nps[-1].descriptor.name), nps[-1].start, rel, nps[-1].head)
     for np in nps:
         words = _np_text(tokens, np)
         if category and 'one' in words:
             words = [category if w == 'one' else w for w in words]
         items.append(words)
     used: set[int] = set()
+    tail = _drop_mentions(tail)
 
     def joined(idx: list[int], sep: str = 'and') -> list[str]:
         out: list[str] = []
@@ -96,7 +150,9 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
         if t == 'the' and nxt:
             w = tail[i + 2] if i + 2 < len(tail) else ''
             one = 1 if w in ('one', 'item', 'thing') else 0
-            ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or')
+            # "the second", "the latter twice": no noun follows the position word
+            ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
+                not is_name_word(tail, i + 2, False)
             if nxt in ORDINALS and ends:
                 idx = ORDINALS[nxt] - 1
                 if idx >= n:
@@ -114,7 +170,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += joined(list(range(NUMBER_WORDS[w])))
                 i += 3
                 continue
-            if nxt in ('last', 'latter') and (not w or w in PUNCT or one or w in ('and', 'then', 'to')):
+            if nxt in ('last', 'latter') and ends:
                 out += joined([n - 1])
                 i += 2 + one
                 continue
@@ -130,7 +186,11 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += joined([n // 2])
                 i += 2 + one
                 continue
-            if nxt == 'other' or (nxt == 'rest' and not w):
+            if nxt in ('other', 'others', 'remaining') or (
+                    nxt == 'rest' and (not w or w in PUNCT or w == 'of' or not is_name_word(
+                        tail, i + 2, False))):
+                if nxt == 'rest' and tail[i + 2:i + 4] == ['of', 'them']:
+                    i += 2
                 rest_idx = [k for k in range(n) if k not in used]
                 out += joined(rest_idx)
                 i += 2 + (1 if w in ('two', 'three', 'ones', 'one') else 0)
@@ -181,8 +241,20 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('no', 'wait'), ('oh', 'wait'), ('wait',), ('sorry',), ('er',), ('um',), ('uh',), ('i', 'mean'),
     ('i', 'meant'), ('actually',), ('scratch', 'that'), ('forget',), ('ignore',), ('never', 'mind'),
     ('hmm',), ('make', 'that'), ('correction',), ('oops',), ('rather',), ('no',),
+    ('no', 'sorry'), ('sorry', 'no'), ('no', 'no'), ('erm',), ('uhh',), ('umm',), ('ah',), ('my', 'bad'),
+    ('my', 'mistake'), ('or', 'rather'), ('or', 'actually'), ('or', 'better'), ('on', 'second', 'thought'),
+    ('on', 'second', 'thoughts'), ('come', 'to', 'think', 'of', 'it'), ('change', 'of', 'plan'),
+    ('change', 'of', 'plans'), ('let', 'me', 'rephrase'), ('wait', 'no'), ('hold', 'on'), ('scratch',),
+    ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'),
 ), key=lambda m: -len(m)))
-_CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip'})
+_CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
+                     'leave'})
+# Markers that restate a whole clause ("on second thought, bring it to the couch").
+_RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
+                      'or', 'er', 'erm', 'um', 'uh', 'ah'})
+# Words that start a clause of their own (the verbs of goals and deliveries).
+_VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
+                       'deliver', 'carry', 'return', 'avoid'}
 
 
 def _marker_at(tokens: list[str], i: int) -> int:
@@ -196,6 +268,11 @@ def _marker_at(tokens: list[str], i: int) -> int:
             if m == ('ignore',) and i == 0:
                 return 0
             if m == ('forget',) and i == 0:
+                return 0
+            if m[0] in ('skip', 'omit', 'scratch', 'cross', 'leave') and m != ('scratch', 'that') and (
+                    i == 0 or tokens[i - 1] not in '.;!?'):
+                return 0   # only a sentence of its own cancels ("Scratch the pantry.")
+            if m == ('leave', 'out') and i + 2 < len(tokens) and tokens[i + 2] == 'of':
                 return 0
             return len(m)
     return 0
@@ -219,7 +296,9 @@ def _np_spans(tokens: list[str]) -> list[NounPhrase]:
 
 def _strip_corr(seg: list[str]) -> list[str]:
     while seg and seg[0] in (',', 'i', 'mean', 'meant', 'just', 'wait', 'no', 'actually', 'sorry', 'er',
-                             'um', 'hmm', 'oh', 'make', 'that', 'rather', 'go', 'to', 'do', 'instead'):
+                             'um', 'hmm', 'oh', 'make', 'that', 'rather', 'go', 'to', 'do', 'instead', 'it'):
+        if seg[0] == 'it' and (len(seg) < 2 or seg[1] in PUNCT or seg[1] in ('is', 'was')):
+            break
         if seg[0] == 'that' and len(seg) > 1 and seg[1] == 'is':
             break
         if seg[0] == 'go' and len(seg) > 1 and seg[1] not in ('to',):
@@ -227,13 +306,26 @@ def _strip_corr(seg: list[str]) -> list[str]:
         if seg[0] == 'make' and not (len(seg) > 1 and seg[1] == 'that'):
             break
         seg = seg[1:]
-    while seg and seg[-1] in (',', 'instead', 'please', 'then'):
-        seg = seg[:-1]
+    while seg and seg[-1] in (',', 'instead', 'please', 'then', 'rather') or seg[-2:] in (
+            ['i', 'mean'], ['i', 'meant']):
+        seg = seg[:-2] if seg[-1] in ('mean', 'meant') else seg[:-1]
     return seg
 
 
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
+    if 'it' in new and 'one' in new:
+        # "the chair behind the desk, or rather the one in front of it": it is the desk
+        spans = _np_spans(prev)
+        if spans and spans[-1].descriptor.relations:
+            ref = PhraseParser().parse(prev, spans[-1].start)
+            rel_at = next((k for k in range(spans[-1].start + 1, spans[-1].end) if prev[k] in DETERMINERS),
+                          -1)
+            if ref is not None and rel_at > 0:
+                inner = PhraseParser().parse(prev, rel_at)
+                if inner is not None:
+                    k = new.index('it')
+                    new = new[:k] + prev[rel_at:inner.end] + new[k + 1:]
     parser = PhraseParser()
     np = parser.parse(new, 0)
     if np is None or np.end != len(new):
@@ -241,7 +333,28 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     spans = _np_spans(prev)
     if not spans:
         return None
-    target = next((sp for sp in reversed(spans) if sp.head == np.head), spans[-1])
+    target = next((sp for sp in reversed(spans) if sp.head == np.head), None)
+    if target is None:
+        # a noun inside a phrase: "put the book on the shelf, uh, the top shelf I mean"
+        inner = PhraseParser()
+        for sp in reversed(spans):
+            for p in range(sp.end - 1, sp.start, -1):
+                if prev[p] in DETERMINERS:
+                    sub = inner.parse(prev, p)
+                    if sub is not None and sub.head == np.head and not sub.pronoun:
+                        return prev[:p] + new + prev[sub.end:]
+    if target is None:
+        # no phrase with the same head: one of the same number ("the glasses ... the cups I mean")
+        plural = singular(np.head) != np.head
+        same = [sp for sp in spans if (singular(sp.head) != sp.head) == plural]
+        target = same[-1] if len(same) == 1 and np.pronoun != 'one' else spans[-1]
+        if target.descriptor.relations and np.pronoun != 'one' and not np.descriptor.relations:
+            # "put the book on the desk. I mean the nightstand": the noun named last
+            p = max((p for p in range(target.start + 1, target.end) if prev[p] in DETERMINERS), default=-1)
+            sub = PhraseParser().parse(prev, p) if p > 0 else None
+            if sub is not None and not sub.pronoun and sub.end == target.end and (
+                    singular(sub.head) != sub.head) == plural:
+                return prev[:p] + new + prev[sub.end:]
     new_words = new
     if np.pronoun == 'one' or 'one' in new[:np.end]:
         old = prev[target.start:target.end]
@@ -252,13 +365,18 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
         old_head = [w for w in prev[target.start:target.end] if w not in DETERMINERS]
         k = new.index('one')
         name = []
-        for w in old_head:
-            if w in ('left', 'right', 'behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below',
-                     'by', 'near', 'beside', 'to', 'that', 'which'):
+        for m, w in enumerate(old_head):
+            if w in ('behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below', 'by', 'near',
+                     'beside', 'to', 'that', 'which') or w in ('left', 'right') and \
+                    old_head[m + 1:m + 2] == ['of']:
                 break
             name.append(w)
         adjectives = k > 0 and any(w not in DETERMINERS for w in new[:k])
-        new_words = new[:k] + (name[-1:] if adjectives else name) + new[k + 1:]
+        if adjectives:
+            # "the blue recycling bin ... make that the green one": the new adjective replaces the old
+            while len(name) > 1 and name[0] in PLACEHOLDER_ADJECTIVES:
+                name = name[1:]
+        new_words = new[:k] + name + new[k + 1:]
     start, end = target.start, target.end
     # an either-or group is corrected as a whole ("the sofa or the armchair ... just the sofa")
     for sp in spans:
@@ -289,6 +407,50 @@ def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]
 
 
 _AVOID_WORDS = ('avoid', 'never', 'away', 'clear', 'not', 'off')
+_PREPS = frozenset({'on', 'in', 'into', 'onto', 'at', 'under', 'behind', 'beside', 'by', 'inside', 'near'})
+
+
+_EXCEPT: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('skipping',), ('except',), ('except', 'for'), ('excluding',), ('apart', 'from'), ('other', 'than'),
+    ('but', 'not'), ('leaving', 'out'), ('minus',), ('but', 'skip'), ('but', 'leave', 'out'), ('not',),
+), key=lambda t: -len(t)))
+
+
+def apply_exclusions(tokens: list[str], notes: list[str]) -> list[str]:
+    """Drop a listed goal the same sentence excludes ("the oak, the elm and the pine, but not the elm")."""
+    if not any(t in ('skipping', 'except', 'excluding', 'apart', 'other', 'not', 'leaving', 'minus', 'skip')
+               for t in tokens):
+        return tokens
+    out = list(tokens)
+    i = 0
+    while i < len(out):
+        m = next((m for m in _EXCEPT if tuple(out[i:i + len(m)]) == m), None)
+        if m is None or i == 0 or out[i - 1] not in (',', 'and') and m[0] != 'but':
+            i += 1
+            continue
+        start = i - 1 if out[i - 1] in (',', 'and') else i
+        ex = PhraseParser().parse(out, i + len(m))
+        end = ex.end if ex is not None else i
+        if ex is None or ex.pronoun or (end < len(out) and out[end] not in PUNCT):
+            i += 1
+            continue
+        sent = max((k for k in range(start) if out[k] in '.;!?'), default=-1) + 1
+        listed = [sp for sp in _np_spans(out[sent:start]) if sp.descriptor == ex.descriptor]
+        if not listed:
+            i += 1
+            continue
+        a, b = sent + listed[-1].start, sent + listed[-1].end
+        # the separator before it goes too ("the oak, the elm and the pine")
+        if a > 0 and out[a - 1] in (',', 'and'):
+            a -= 1
+            if out[a - 1:a] == [','] and out[b:b + 1] == ['and']:
+                a -= 1
+        elif out[b:b + 1] in ([','], ['and']):
+            b += 1
+        notes.append(f'{ex.descriptor} left out of the list, as asked')
+        out = out[:a] + out[b:start] + out[end:]
+        i = a
+    return out
 
 
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
@@ -323,9 +485,147 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+_RETRACT: tuple[tuple[str, ...], ...] = (
+    ('do', 'not', 'need', 'to', 'avoid'), ('do', 'not', 'have', 'to', 'avoid'), ('no', 'need', 'to', 'avoid'),
+    ('need', 'not', 'avoid'), ('do', 'not', 'bother', 'avoiding'),
+    ('no', 'need', 'to', 'stay', 'away', 'from'),
+    ('do', 'not', 'need', 'to', 'stay', 'away', 'from'), ('can', 'go', 'near'), ('it', 'is', 'safe'),
+    ('do', 'not', 'worry', 'about'),
+)
+
+
+def _retract_avoidance(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """'..., you don't need to avoid it (after all)': the avoidance of it is dropped from ``prev``."""
+    at = next((k for k in range(len(seg)) for r in _RETRACT if tuple(seg[k:k + len(r)]) == r), -1)
+    if at < 0:
+        return None
+    r = next(r for r in _RETRACT if tuple(seg[at:at + len(r)]) == r)
+    named = PhraseParser().parse(seg, at + len(r))
+    head = named.head if named is not None and not named.pronoun else ''
+    avoid_at = [p for p in range(len(prev)) if prev[p] in _AVOID_WORDS]
+    for p in reversed(avoid_at):
+        spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
+        if spans:
+            notes.append('the avoidance was retracted')
+            kept = [c for c in _split_commas(seg[:at]) + _split_commas(seg[at + len(r):])
+                    if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS]
+            return _remove_clause(prev, p) + [t for c in kept for t in [','] + c]
+    return None
+
+
+def _split_commas(seg: list[str]) -> list[list[str]]:
+    out: list[list[str]] = [[]]
+    for t in seg:
+        if t == ',':
+            out.append([])
+        else:
+            out[-1].append(t)
+    return [c for c in out if c]
+
+
+def _np_end(words: list[str]) -> int:
+    np = PhraseParser().parse(words, 0) if words and words[0] in DETERMINERS else None
+    return np.end if np is not None else 0
+
+
+def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Restate a clause: 'bring the blanket to the bedroom. On second thought, bring it to the couch'."""
+    if not seg or seg[0] not in _VERBS:
+        return None
+    end = len(prev)
+    while end > 0 and prev[end - 1] in PUNCT:
+        end -= 1
+    b = end
+    while b > 0 and not (prev[b - 1] in '.;!?' or prev[b - 1] in (',', 'then', 'and') and prev[b] in _VERBS):
+        b -= 1
+    if b >= end or prev[b] != seg[0]:
+        return None
+    old = prev[b:end]
+    new = list(seg)
+    if any(t in ('it', 'them') for t in new):
+        k = 1
+        while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back'):
+            k += 1
+        obj = PhraseParser().parse(old, k, destination_stops=True)
+        if obj is not None and not obj.pronoun:
+            at = next(j for j, t in enumerate(new) if t in ('it', 'them'))
+            new = new[:at] + old[k:obj.end] + new[at + 1:]
+    notes.append(f'"{" ".join(old).strip(" .")}" replaced by "{" ".join(new)}"')
+    while prev[:b] and prev[b - 1] in (',', 'then', 'and'):
+        b -= 1
+    head = prev[:b]
+    return head + ([','] if head and head[-1] not in PUNCT else []) + new + prev[end:]
+
+
+def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Keep one goal of a list: 'visit the museum and the zoo. Actually, just the zoo'."""
+    words = [t for t in seg if t not in PUNCT]
+    if not words or words[0] not in ('just', 'only'):
+        return None
+    np = PhraseParser().parse(words, 1)
+    if np is None or np.end != len(words) or np.pronoun:
+        return None
+    spans = _np_spans(prev)
+    hit = next((k for k in range(len(spans) - 1, -1, -1) if spans[k].descriptor == np.descriptor), -1)
+    if hit < 0:
+        return None
+    # the list it is in: phrases joined by "," / "and" / "or" only
+    a = b = hit
+    while a > 0 and all(t in (',', 'and', 'or', 'the') for t in prev[spans[a - 1].end:spans[a].start]):
+        a -= 1
+    while b + 1 < len(spans) and all(t in (',', 'and', 'or', 'the')
+                                     for t in prev[spans[b].end:spans[b + 1].start]):
+        b += 1
+    if a == b:
+        return None
+    notes.append(f'only {np.descriptor} kept of that list')
+    return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
+
+
+def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Move a goal first: 'go to the pool, then the gym. Actually, do the gym first'."""
+    words = [t for t in seg if t not in PUNCT]
+    if not words or words[-1] != 'first':
+        return None
+    k = 0
+    while k < len(words) and words[k] in _VERBS | {'do', 'to', 'at', 'by', 'over', 'up'}:
+        k += 1
+    np = PhraseParser().parse(words, k)
+    if np is None or np.end != len(words) - 1 or np.pronoun:
+        return None
+    hit = next((sp for sp in reversed(_np_spans(prev)) if sp.descriptor == np.descriptor), None)
+    if hit is None:
+        return None
+    sent = max((p for p in range(hit.start) if prev[p] in '.;!?'), default=-1) + 1
+    rest = _remove_clause(prev, hit.start, narrow=True)
+    body = rest[sent:]
+    while body and body[0] in (',', 'then', 'and'):
+        body = body[1:]
+    notes.append(f'{np.descriptor} moved first')
+    return rest[:sent] + ['go', 'to'] + words[k:np.end] + [',', 'then'] + body
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
-    while seg and seg[0] in (',', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh'):
-        seg = seg[1:]
+    stripped = True
+    while stripped:   # "hmm, on second thought, ...": markers in a row
+        stripped = False
+        while seg and seg[0] in (',', ':', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh', 'erm',
+                                 'ah'):
+            seg, stripped = seg[1:], True
+        for m in _MARKERS:
+            if len(m) > 1 and tuple(seg[:len(m)]) == m and m[0] not in _CANCEL and m != ('make', 'that'):
+                marker, seg, stripped = m[0], seg[len(m):], True
+                break
+    retracted = _retract_avoidance(prev, seg, notes)
+    if retracted is not None:
+        return retracted
+    if marker in _RESTATE:
+        restated = _restate(prev, seg, notes)
+        if restated is not None:
+            return restated
+    reordered = _first_instead(prev, seg, notes)
+    if reordered is not None:
+        return reordered
     if seg and seg[0] in _CANCEL and marker not in _CANCEL and marker != 'never':
         marker, seg = seg[0], seg[1:]
     s = ' '.join(seg)
@@ -338,7 +638,12 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if seg and seg[0] == 'that' or marker == 'scratch':
             seg = seg[1:] if seg and seg[0] == 'that' else seg
         k = seg.index(',') if ',' in seg else len(seg)
+        k = next((j for j in range(k) if seg[j] in ('and', 'then') and j + 1 < len(seg) and seg[j + 1] in
+                  _VERBS | {'do'}), k)
         target, rest = seg[:k], seg[k + 1:]
+        if seg and seg[0] in _VERBS and seg[0] not in ('drop', 'leave') and marker in (
+                'never', 'forget', 'ignore'):
+            target, rest = [], seg   # "never mind, go to the porch": the last goal is replaced
         tgt = ' '.join(target)
         if any(w in tgt for w in ('avoid', 'avoiding', 'avoidance')):
             pos = next((p for p in range(len(prev) - 1, -1, -1) if prev[p] in _AVOID_WORDS), -1)
@@ -352,7 +657,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append('the count was corrected')
             return count_fix
         if tgt in ('', 'the last thing', 'the last one', 'the last part', 'that last part', 'that', 'it',
-                   'the last bit', 'that last one', 'last thing'):
+                   'the last bit', 'that last one', 'last thing', 'last part', 'that part', 'that last bit',
+                   'last bit', 'the last step', 'that last step', 'the last instruction'):
             spans = _np_spans(prev)
             if not spans:
                 return None
@@ -369,8 +675,13 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return None
         hit = next((sp for sp in reversed(spans)
                     if sp.descriptor == tnp.descriptor or sp.head == tnp.head), None)
+        if hit is None and marker in ('skip', 'omit', 'scratch', 'cross', 'leave'):
+            notes.append(f'"{marker} {tgt}": no goal there')   # nothing given to cancel
+            return prev + ([','] if prev and prev[-1] not in PUNCT and rest else []) + rest
         if hit is None:
             return None
+        if new and chatter.is_statement(new, _np_end(new)):
+            new = []   # "never mind the dog, it is outside": a reason, not a replacement
         if new:
             notes.append(f'"{tgt}" was replaced')
             return prev[:hit.start] + new + prev[hit.end:]
@@ -403,6 +714,21 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     if count_fix is not None:
         notes.append('the count was corrected')
         return count_fix
+    if seg and seg[0] == 'not' and ',' in seg:
+        # "wait, not the kitchen, the dining room"
+        k = seg.index(',')
+        seg = seg[k + 1:] + ['not'] + seg[1:k]
+    if seg and seg[0] in _PREPS and len(seg) > 1:
+        # "put the jar on the table - no, on the counter": the phrase after the same kind of word
+        new_np = PhraseParser().parse(seg, 1)
+        if new_np is not None and new_np.end == len(_strip_corr(seg)) or new_np is not None and not [
+                t for t in seg[new_np.end:] if t not in PUNCT]:
+            for p in range(len(prev) - 1, -1, -1):
+                if prev[p] in _PREPS:
+                    old = PhraseParser().parse(prev, p + 1)
+                    if old is not None and not old.pronoun:
+                        notes.append(f'corrected to "{" ".join(seg[:new_np.end])}"')
+                        return prev[:p] + seg[:new_np.end] + prev[old.end:]
     if 'not' in seg:
         # "the freezer, not the fridge"
         k = seg.index('not')
@@ -415,6 +741,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if hit is not None:
                 notes.append(f'corrected to "{" ".join(new)}"')
                 return prev[:hit.start] + new + prev[hit.end:]
+    only = _only_this(prev, seg, notes)
+    if only is not None:
+        return only
     new = _strip_corr(seg)
     if not new:
         return prev

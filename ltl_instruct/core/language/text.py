@@ -25,6 +25,8 @@ TYPOS: dict[str, str] = {
     'nevr': 'never', 'alway': 'always', 'alwasy': 'always', 'twond': 'second', 'oppposite': 'opposite',
     'ofthe': 'of the', 'tothe': 'to the', 'togo': 'to go', 'dnt': 'do not', 'bak': 'back',
     'visti': 'visit', 'vsit': 'visit', 'vist1': 'visit', 'gp': 'go', 'og': 'go',
+    'util': 'until', 'onest': 'first', 'threerd': 'third', 'landark': 'landmark', 'occations': 'occasions',
+    'occation': 'occasion', 'endlessy': 'endlessly',
 }
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
@@ -41,7 +43,9 @@ ORDINAL_DIGITS: dict[str, str] = {
 
 NUMBER_WORDS: dict[str, int] = {
     'one': 1, 'two': 2, 'three': 3, 'four': 4, 'five': 5, 'six': 6, 'seven': 7, 'eight': 8,
-    'nine': 9, 'ten': 10, 'once': 1, 'twice': 2, 'thrice': 3,
+    'nine': 9, 'ten': 10, 'once': 1, 'twice': 2, 'thrice': 3, 'eleven': 11, 'twelve': 12, 'thirteen': 13,
+    'fourteen': 14, 'fifteen': 15, 'sixteen': 16, 'seventeen': 17, 'eighteen': 18, 'nineteen': 19,
+    'twenty': 20,
 }
 
 ORDINALS: dict[str, int] = {
@@ -51,6 +55,9 @@ ORDINALS: dict[str, int] = {
 
 PUNCT = frozenset(',.;:!?')
 _TOKEN_RE = re.compile(r"[a-z0-9]+|[,.;:!?]")
+# An acronym after a determiner ("the IT office", "the ER") is a name, not the word it spells.
+_ACRONYM_RE = re.compile(
+    r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
 
 
 def tokenize(text: str) -> list[str]:
@@ -67,6 +74,10 @@ def tokenize(text: str) -> list[str]:
         Lower-case tokens; runs of the same punctuation collapse to one, a dash
         between spaces becomes a comma, and typos in :data:`TYPOS` are fixed.
     """
+    acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
+    if acronyms:
+        # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
+        text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))
     s = text.lower().replace('\u2019', "'").replace('\u2018', "'").replace('`', "'")
     s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
     for pattern, repl in CONTRACTIONS:
@@ -74,6 +85,9 @@ def tokenize(text: str) -> list[str]:
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)
     out: list[str] = []
     for tok in _TOKEN_RE.findall(s):
+        if acronyms and tok.startswith('zq'):
+            out.append(tok[2:].upper())
+            continue
         tok = ORDINAL_DIGITS.get(tok, tok)
         words = TYPOS.get(tok, tok).split()
         for w in words:

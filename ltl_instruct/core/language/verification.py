@@ -1,7 +1,9 @@
 """The verification dialog: what a person checks before anything moves, and their answer.
 
-For a :class:`Translation` the person sees the referents it extracted and the
-ordered English subgoals (from :func:`ltl_instruct.core.automaton.english.describe_task`).
+For a :class:`Translation` the person sees the referents it extracted, the
+ordered English subgoals (from :func:`ltl_instruct.core.automaton.english.describe_task`)
+and how the translator read the words (its notes: words left out as chatter, typos
+corrected, verbs read as going somewhere), so nothing it assumed moves the robot unseen.
 They answer yes, or correct it in words, or type a formula directly;
 :func:`classify_reply` says which.
 """
@@ -30,6 +32,7 @@ class Verification:
     avoid: English noun phrases of what is avoided.
     subgoals: ordered English subgoals, then whole-task constraints and notes.
     satisfiable: whether any plan can satisfy the task.
+    reading: the translator's notes on how it read the words ("left out 'for me'").
     """
 
     formula: str
@@ -37,6 +40,7 @@ class Verification:
     avoid: tuple[str, ...]
     subgoals: tuple[str, ...]
     satisfiable: bool
+    reading: tuple[str, ...] = ()
 
     def text(self) -> str:
         """Lines to show the person."""
@@ -46,22 +50,26 @@ class Verification:
         if self.avoid:
             lines.append('Avoid: ' + '; '.join(self.avoid))
         lines.extend(self.subgoals)
+        lines.extend(f'Note: {n}' for n in self.reading)
         lines.append('Is this right? Answer yes, correct it in words, or type a formula (prefix "formula:").')
         return '\n'.join(lines)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""
         return {'formula': self.formula, 'referents': list(self.referents), 'avoid': list(self.avoid),
-                'subgoals': list(self.subgoals), 'satisfiable': self.satisfiable}
+                'subgoals': list(self.subgoals), 'satisfiable': self.satisfiable,
+                'reading': list(self.reading)}
 
 
 def verification_for(translation: Translation | Formula) -> Verification:
     """Build the referents and English subgoals of a translation (the automaton's English)."""
     from ltl_instruct.core.automaton.english import describe_task
     formula = translation.formula if isinstance(translation, Translation) else translation
+    reading = translation.notes if isinstance(translation, Translation) else ()
     desc = describe_task(formula)
     return Verification(desc.formula, desc.referents, desc.avoid,
-                        tuple(desc.subgoals) + tuple(desc.throughout) + tuple(desc.notes), desc.satisfiable)
+                        tuple(desc.subgoals) + tuple(desc.throughout) + tuple(desc.notes), desc.satisfiable,
+                        tuple(reading))
 
 
 @dataclass(frozen=True)

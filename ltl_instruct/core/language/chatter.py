@@ -1,0 +1,295 @@
+"""Chatter: the words around an instruction that ask for nothing, and how to tell them apart.
+
+People frame instructions ("Hi! We've got visitors coming, so..."), add courtesy and
+time words ("for me", "real quick", "this evening"), and describe the scene ("the cat
+keeps knocking things off the counter"). None of it names a goal, a constraint or an
+order, so the offline translator may leave it out, but never silently: every part
+left out is named in the translation's notes, which the verification dialog shows the
+person before the robot moves.
+
+What may be left out is decided by what the words lack, not by a list of sentences:
+
+- a *statement* (:func:`is_statement`): a clause whose subject is not the robot ("I
+  left...", "we have got...", "the sprinkler is off") and that carries no constraint
+  word; the things it names stay known for "it" and "there";
+- *filler* (:func:`is_filler`): words with no place, no skill verb and no constraint
+  word in them ("be careful", "for me", "just so you know");
+- *courtesy and time phrases* at the end of a clause, and lead-ins such as "just so you
+  know," at its start (:func:`strip_courtesy`).
+
+Words that could carry meaning (a negation, an order or time word, a count, a
+place) are never left out: the translator still raises ``TranslationError`` on them.
+"""
+from __future__ import annotations
+
+import re
+from typing import Sequence
+
+from ltl_instruct.core.language.phrases import DETERMINERS, is_name_word, match_relation
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
+
+# Words that change what the robot must do; a part holding one is never left out.
+CONSTRAINT_WORDS = frozenset('''
+not never no avoid avoiding away without except unless before after until till then first last
+once twice thrice times time only always whenever while when if either or nor again more less least
+most exactly stay keep leave instead but forbidden mustn cannot nothing none neither
+'''.split()) | frozenset(NUMBER_WORDS) | frozenset(ORDINALS)
+
+# Subjects that make a clause a statement about the world, not a request to the robot.
+STATEMENT_SUBJECTS = frozenset({'i', 'we', 'they', 'he', 'she', 'it', 'this', 'that', 'someone',
+                                'somebody', 'everyone', 'nobody', 'people'})
+# After such a subject, words that turn the clause into a request after all.
+REQUEST_WORDS = frozenset({'need', 'want', 'would', 'like', 'should', 'must', 'will', 'can', 'could',
+                           'mean', 'meant', 'am', 'wanted', 'needed', 'asked', 'ask', 'expect',
+                           'prefer', 'wish', 'hope', 'd', 'shall', 'may', 'might', 'ought', 'to', 'you'})
+# Finite verbs after a noun-phrase subject ("the cat keeps...", "the gate is...").
+FINITE_VERBS = frozenset('''
+is are was were keeps keep has had seems seem looks look sits sit stands lies lie got gets needs
+belongs goes went broke fell spilled leaks leaked smells tends happens arrive arrives arrived came comes
+dropped jammed stopped started moved died spilt broken overflowed overflows ran runs
+'''.split())
+
+# After "it is": words that make the clause a permission or a demand.
+PERMISSIVE = frozenset({'okay', 'ok', 'fine', 'alright', 'allowed', 'important', 'necessary', 'essential',
+                        'vital', 'crucial', 'required', 'best', 'better', 'safe', 'forbidden', 'not',
+                        'mandatory'})
+
+INTERJECTIONS = frozenset('''
+hi hello hey hiya howdy thanks thank cheers great cool awesome perfect ok okay alright right sure
+please good morning afternoon evening ah oh ahh hmm um uh er erm yo dear buddy pal friend there lot
+much appreciated wonderful brilliant
+'''.split())
+# Clause openings that wish or greet and ask for nothing ("hope you're well", "have a good one").
+WISHES: tuple[tuple[str, ...], ...] = (
+    ('hope',), ('i', 'hope'), ('hoping',), ('have', 'a', 'good'), ('have', 'a', 'nice'), ('good', 'luck'),
+    ('be', 'careful'), ('be', 'quick'), ('be', 'gentle'), ('be', 'quiet'), ('be', 'safe'), ('take', 'care'),
+    ('thanks', 'for'), ('thank', 'you', 'for'), ('sorry', 'to', 'bother'), ('sorry', 'for'),
+)
+
+# Courtesy and time-of-day phrases that end a clause and ask for nothing.
+COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('for', 'me'), ('for', 'us'), ('real', 'quick'), ('quick',), ('asap',), ('as', 'soon', 'as', 'possible'),
+    ('if', 'you', 'can'), ('if', 'you', 'could'), ('if', 'possible'), ('if', 'you', 'would'),
+    ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'), ('when', 'you', 'have', 'a', 'moment'),
+    ('this', 'evening'), ('this', 'morning'), ('this', 'afternoon'), ('tonight',), ('today',),
+    ('right', 'now'), ('now',), ('thanks',), ('thank', 'you'), ('would', 'you'), ('could', 'you'),
+    ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('if', 'you', 'do', 'not', 'mind'),
+    ('when', 'you', 'are', 'free'), ('at', 'some', 'point', 'today'),
+    ('for', 'now'), ('will', 'you'), ('okay',), ('ok',), ('cheers',), ('if', 'you', 'like'),
+    ('if', 'you', 'want'), ('if', 'you', 'wish'), ('if', 'you', 'feel', 'like', 'it'), ('real', 'fast'),
+    ('super', 'quick'), ('super', 'fast'), ('fast',), ('no', 'rush'), ('no', 'hurry'), ('no', 'worries'),
+    ('no', 'matter', 'what'), ('thanks', 'a', 'lot'), ('thanks', 'so', 'much'),
+    ('thank', 'you', 'so', 'much'),
+    ('many', 'thanks'), ('when', 'you', 'are', 'ready'), ('whenever', 'you', 'are', 'ready'),
+    ('in', 'a', 'minute'), ('straight', 'away'), ('under', 'any', 'circumstances'), ('whatever', 'happens'),
+    ('first', 'thing'), ('first', 'thing', 'tomorrow'), ('first', 'thing', 'in', 'the', 'morning'),
+    ('tomorrow',), ('tomorrow', 'morning'), ('tomorrow', 'evening'), ('already',), ('anyway',), ('pronto',),
+    ('and', 'stuff'), ('or', 'something'), ('or', 'whatever'), ('if', 'that', 'is', 'ok'),
+    ('if', 'that', 'is', 'okay'), ('if', 'that', 'is', 'alright'), ('if', 'that', 'is', 'fine'),
+    ('if', 'you', 'would', 'be', 'so', 'kind'), ('if', 'it', 'is', 'not', 'too', 'much', 'trouble'),
+    ('on', 'your', 'way', 'out'), ('on', 'the', 'way', 'out'), ('and', 'back'), ('and', 'back', 'again'),
+    ('there', 'and', 'back'), ('right', 'away'), ('at', 'once'), ('as', 'fast', 'as', 'you', 'can'),
+    ('as', 'quickly', 'as', 'you', 'can'), ('as', 'soon', 'as', 'you', 'can'),
+    ('as', 'quickly', 'as', 'possible'), ('as', 'fast', 'as', 'possible'),
+), key=lambda t: -len(t)))
+_CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
+# Lead-ins that ask for nothing only at the very start (later they take back what came before).
+START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
+# Lead-ins before a comma that announce what follows and ask for nothing themselves.
+LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('fyi',), ('just', 'so', 'you', 'know'), ('so', 'you', 'know'), ('by', 'the', 'way'), ('btw',),
+    ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
+    ('listen',), ('look',), ('hey', 'there'), ('quick', 'one'), ('quick', 'favour'), ('quick', 'favor'),
+    ('one', 'more', 'thing'), ('oh', 'and'), ('also', 'fyi'), ('for', 'the', 'record'), ('well',),
+    ('no', 'rush'), ('no', 'hurry'), ('no', 'worries'), ('no', 'pressure'), ('no', 'problem'),
+    ('whenever', 'you', 'are', 'ready'), ('when', 'you', 'are', 'ready'), ('once', 'you', 'are', 'ready'),
+    ('if', 'you', 'are', 'ready'), ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'),
+    ('if', 'you', 'can'), ('if', 'possible'), ('if', 'you', 'do', 'not', 'mind'), ('in', 'a', 'minute'),
+    ('right',), ('alright', 'then'), ('okay', 'then'), ('ok', 'then'), ('now', 'then'),
+), key=lambda t: -len(t)))
+
+PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',
+                          'past', 'toward', 'towards', 'inside', 'behind', 'under', 'over', 'beside',
+                          'between', 'around', 'with', 'outside', 'across', 'along', 'via', 'up', 'down'})
+
+# Things done where the robot already is ("go to the door and knock"): no goal of their own
+# unless a place follows them ("clean the kitchen" is read as going there).
+ACTIVITY_VERBS = frozenset('''
+wash knock sit stand wait rest look listen open close shut ring check tidy clean dust sweep mop vacuum
+lie kneel pause charge recharge beep watch take stay turn switch unlock lock press push pull make hang
+chill relax idle linger loiter hover
+'''.split()) - {'take', 'push', 'make', 'turn', 'switch', 'stay'}
+
+# Frames around a request that ask for nothing themselves, and what they become.
+FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
+    (r'(^ | [,.;!?] )(?:honestly |so |well )?(?:the )?(?:easiest|best|simplest|quickest|ideal) '
+     r'(?:thing|option|way|plan|move)(?: to do)? (?:would be|is|will be) (?:for you )?(?:to )?', r'\1 '),
+    (r'(^ | [,.;!?] )(?:it would be|it is|it will be|that would be) (?:great|nice|good|lovely|helpful|'
+     r'awesome|ideal|perfect|wonderful) if you (?:could|would|can|will) ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:it is )?(?:time|high time) (?:for you )?to ', r'\1 '),
+    (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:would|could|do|will) you mind ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
+    (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
+     r'get) )', r'\1 '),
+    (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),
+    (r'(^ | [,.;!?] )(?:maybe|perhaps|probably) (?=[a-z])', r'\1 '),
+))
+
+
+def strip_frames(tokens: list[str], notes: list[str]) -> list[str]:
+    """Remove frames around a request ("it would be great if you could ...", "time to ..."), noted."""
+    text = ' ' + ' '.join(tokens) + ' '
+    for pattern, repl in FRAMES:
+        m = pattern.search(text)
+        if m is not None:
+            notes.append(f'left out "{m.group(0).strip(" ,.;!?")}" (asks for nothing)')
+            text = ' ' + ' '.join(pattern.sub(repl, text).split()) + ' '
+    return text.split()
+
+
+# Nouns of time: "this evening" is not a place.
+TIME_NOUNS = frozenset({'evening', 'morning', 'afternoon', 'night', 'week', 'weekend', 'day', 'moment',
+                        'minute', 'second', 'sec', 'today', 'tonight', 'tomorrow', 'now', 'while'})
+
+
+def has_constraint_word(tokens: Sequence[str]) -> bool:
+    """Whether any token is a negation, order, time or count word (not a clock time: "at six")."""
+    return any((t in CONSTRAINT_WORDS or t.isdigit()) and not (
+        (t in NUMBER_WORDS or t.isdigit()) and k > 0 and tokens[k - 1] in ('at', 'around', 'about') and
+        tokens[k + 1:k + 2] not in (['times'], ['time'])) for k, t in enumerate(tokens))
+
+
+def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
+    """Whether a clause describes the world rather than asking the robot for something.
+
+    Parameters
+    ----------
+    tokens:
+        The clause, fillers stripped.
+    np_end:
+        Where a noun phrase at the start of the clause ends (0: none), for
+        noun-phrase subjects ("the cat keeps...").
+    """
+    if not tokens or has_constraint_word(tokens):
+        return False
+    if len(tokens) > 2 and tokens[0] not in DETERMINERS and tokens[1] in (
+            'going', 'coming', 'happening', 'arriving', 'visiting', 'waiting', 'cooking', 'running') and \
+            tokens[0] not in STATEMENT_SUBJECTS | {'you', 'keep', 'stop', 'start', 'go', 'be'} and \
+            is_name_word(tokens, 0, False):
+        return True   # "lots going on today", "guests arriving at noon"
+    if tokens[0] in ('our', 'my', 'his', 'her', 'their') and np_end == 0:
+        # "our in-laws are visiting": a possessive subject the phrase reader did not take
+        f = next((k for k in range(2, min(6, len(tokens))) if tokens[k] in FINITE_VERBS), -1)
+        return f > 0 and tokens[f + 1:f + 2] != ['to']
+    if tokens[0] in STATEMENT_SUBJECTS:
+        if len(tokens) < 2 or tokens[1] in REQUEST_WORDS or (tokens[0] == 'it' and tokens[1] in (
+                'is', 'was') and (len(tokens) < 3 or tokens[2] in PERMISSIVE or 'to' in tokens)) or (
+                tokens[0] in ('this', 'that') and tokens[1] not in FINITE_VERBS):
+            return False   # "it is fine to go ...", "it is important to ...": not a description
+        # "we have to go...", "i have got to...": obligations are requests
+        return not ('to' in tokens[1:4] and tokens[1] in ('have', 'has', 'got', 'am', 'are'))
+    if np_end and tokens[0] in DETERMINERS:
+        # the noun phrase may have swallowed the verb ("the cat keeps knocking...")
+        f = statement_verb(tokens, np_end)   # not "the desk that is by..."
+        return f > 0 and tokens[f + 1:f + 2] != ['to']
+    return False
+
+
+def statement_verb(tokens: Sequence[str], np_end: int) -> int:
+    """Where the verb of a statement with a noun-phrase subject is (-1: none)."""
+    return next((k for k in range(2, np_end + 1) if k < len(tokens) and (tokens[k] in FINITE_VERBS or (
+        # "the kids left their shoes": a verb, not the side of something ("left of", "the left door")
+        tokens[k] == 'left' and tokens[k + 1:k + 2] != ['of'] and tokens[k + 1:k + 2] != [] and
+        tokens[k + 1] in DETERMINERS)) and tokens[k - 1] not in ('that', 'which', 'who', 'is', 'are')), -1)
+
+
+def is_filler(tokens: Sequence[str], known_verbs: frozenset[str]) -> bool:
+    """Whether words carry nothing to do: no place, no skill verb, no constraint word.
+
+    Parameters
+    ----------
+    tokens:
+        The words left over.
+    known_verbs:
+        Verbs of goals, deliveries and picks (a part holding one is an instruction).
+    """
+    words = [t for t in tokens if t not in PUNCT]
+    if not words or has_constraint_word(words) or any(w in known_verbs for w in words):
+        return False
+    for k, w in enumerate(words):
+        nxt = words[k + 1] if k + 1 < len(words) else ''
+        # a determiner, or a preposition before a name word, starts a place ("the it office", "of blue room")
+        if nxt and nxt not in TIME_NOUNS and (w in DETERMINERS or w in PREPOSITIONS and is_name_word(
+                words, k + 1, False)):
+            return False
+        rel = match_relation(words, k)
+        if rel is not None and rel[1] < len(words) and (words[rel[1]] in DETERMINERS or is_name_word(
+                words, rel[1], False)):
+            return False
+    return True
+
+
+def _by_first(phrases: tuple[tuple[str, ...], ...]) -> dict[str, tuple[tuple[str, ...], ...]]:
+    out: dict[str, list[tuple[str, ...]]] = {}
+    for p in phrases:
+        out.setdefault(p[0], []).append(p)
+    return {k: tuple(v) for k, v in out.items()}   # longest first, as in the source
+
+
+_LEADS_BY_FIRST = _by_first(LEADS)
+_COURTESY_BY_FIRST = _by_first(COURTESY)
+
+
+# Timing words a rule may read ("visit b right away after a"): kept where landmarks are named.
+TIMING: frozenset[tuple[str, ...]] = frozenset({('right', 'away'), ('at', 'once'), ('already',),
+                                               ('straight', 'away')})
+# Discourse fillers between commas ("go to the hall, like, now").
+ASIDES: tuple[tuple[str, ...], ...] = (
+    ('like',), ('you', 'know'), ('i', 'guess'), ('basically',), ('i', 'think'), ('honestly',), ('kinda',),
+    ('sort', 'of'), ('i', 'suppose'))   # not "uh", "um": they mark self-corrections
+
+
+def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
+    """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...").
+
+    With ``timing``, phrases that time an event ("right away") are kept for the rules to read.
+    """
+    out: list[str] = []
+    i = 0
+    n = len(tokens)
+    while i < n:
+        hit = 0
+        if i == 0 or tokens[i - 1] in PUNCT:
+            for phrase in _LEADS_BY_FIRST.get(tokens[i], ()) + (START_LEADS if i == 0 else ()):
+                m = len(phrase)
+                if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] in (',', ':'):
+                    notes.append(f'left out "{" ".join(phrase)}" (asks for nothing)')
+                    hit = m + 1
+                    break
+            if hit:
+                i += hit
+                continue
+        if i > 0 and tokens[i - 1] not in DETERMINERS:
+            for phrase in _COURTESY_BY_FIRST.get(tokens[i], ()):
+                m = len(phrase)
+                if tuple(tokens[i:i + m]) == phrase and (i + m >= n or tokens[i + m] in _CLAUSE_END) and not (
+                        timing and phrase in TIMING):
+                    hit = m
+                    break
+        if not hit and i > 0 and tokens[i - 1] == ',':
+            for phrase in ASIDES:
+                m = len(phrase)
+                if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] == ',':
+                    hit = m
+                    break
+        if hit and (hit > 1 or tokens[i] not in ('please', 'okay', 'ok', 'now')):
+            notes.append(f'left out "{" ".join(tokens[i:i + hit])}" (asks for nothing)')
+            i += hit
+            if out and out[-1] == ',' and i < n and tokens[i] == ',':
+                out.pop()   # "don't, under any circumstances, enter": no commas are left
+                i += 1
+            continue
+        out.append(tokens[i])
+        i += 1
+    return out

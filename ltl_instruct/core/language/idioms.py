@@ -1,0 +1,450 @@
+"""Idioms rewritten to the plain phrasing the clause reader knows, before it reads them.
+
+People say the same task many ways: "the maximum number of times you can visit the
+shed is two", "you are allowed at most two visits to the shed" and "visiting the shed
+more than twice is prohibited" all mean "visit the shed at most twice". Rather than
+teach every clause reader each variant, this module rewrites the variants of a
+construction to one canonical phrasing, on each sentence's tokens joined by spaces,
+with regular expressions. Each entry of :data:`RULES` is one construction, named by an
+example of it; they apply in order.
+
+The rewrites only replace wording with an equivalent wording: they never guess a
+referent or drop a word that carries meaning, so what the reader then cannot place
+still raises an error naming it. Every pattern is linear to match (no nested
+repetition), so hostile input cannot make matching slow.
+"""
+from __future__ import annotations
+
+import re
+from typing import Callable, NamedTuple, Union
+
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS
+
+_NUM = r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+)'
+_KIND = r'(?:separate |distinct |different |individual )?'
+_UNIT = r'(?:times?|occasions?|instances?|visits?|passes)'
+# a count: "once", "twice", "three times", "four separate occasions"
+_COUNT = rf'(?:once|twice|thrice|{_NUM} {_KIND}{_UNIT})'
+_ORD = '(?:' + '|'.join(ORDINALS) + ')'
+# words that belong to the frame of a sentence, never to a noun phrase inside it
+_FRAME = (r'then|but|you|is|are|be|once|twice|thrice|more|less|fewer|at|on|for|in|again|must|has|have|'
+          r'should|needs|need|shall|will|can|cannot|may|get|gets|do|not|never|no|until|before|after|when|'
+          r'while|if|unless|whenever|make|sure|ensure|that|to|go|visit|reach|avoid|only')
+_W = rf'(?:(?!(?:and|or|{_FRAME})\b)[a-z0-9_]+)'
+# a noun phrase ("the red room", "a"), and a list of them ("a, b and c"): one bounded repetition
+# each, so that matching stays linear
+_NP = rf'(?:{_W}(?: {_W}){{0,6}})'
+_NPS = rf'(?:{_W}(?: (?:(?!(?:{_FRAME})\b)[a-z0-9_,]+)){{0,12}}?)'
+# connectives that open an event ("until", "as soon as")
+_WHEN = (r'until|till|before|after|once|when|whenever|if|unless|as soon as|every time|each time|any time|'
+         r'anytime|only after|not until')
+# the passive's auxiliaries: "is", "must be", "has to be", "gets"
+_PASSIVE = (r'(?:(?:must|has to|have to|should|needs to|need to|is to|are to|shall|will|can) (?:always )?be|'
+            r'are|is|gets?)')
+# movement verbs, plain, in -ing and as participles ("visit", "visiting", "visited")
+_GO = (r'(?:visit|go to|reach|enter|pass through|go through|move to|travel to|navigate to|get to|'
+       r'make your way to|head to|find|come to|walk to|fly to|drive to)')
+_GOING = (r'(?:visiting|going to|reaching|entering|passing through|going through|moving to|traveling to|'
+          r'travelling to|navigating to|getting to|heading to|finding|coming to|walking to|flying to)')
+_GONE = r'(?:visited|been to|gone to|reached|entered|passed through|gone through|found|arrived at)'
+_BACK = rf'(?:{_GO}|revisit|come back to|return to|go back to)'
+_FORBIDDEN = r'(?:prohibited|forbidden|not allowed|not permitted|banned)'
+_STAY = r'(?:stay|remain|wait|hold (?:your )?position)'
+_SEE = r'(?:visit|see|observe)'
+_HAPPEN = r'(?:occur|happen|hold|appear)'
+
+_PLAIN_AUX = ('is', 'are', 'get', 'gets')
+_PLACES = r'(?:landmarks?|locations?|places?|waypoints?|ones?|goals?|them|rooms?|spots?)'
+# the canonical wording of "no goal visited twice", which the clause reader knows
+_NO_REVISITS = ' , visit each place only once , '
+_CLAUSE_END = r'(?= ,| then| and| finally| only|$)'
+
+_ORDINAL_OF = {'one': 'first', 'two': 'second', 'three': 'third', 'four': 'fourth', 'five': 'fifth',
+               '1': 'first', '2': 'second', '3': 'third', '4': 'fourth', '5': 'fifth'}
+_SMALL = '(?:' + '|'.join(_ORDINAL_OF) + ')'
+
+Replacement = Union[str, Callable[['re.Match[str]'], str]]
+
+
+class Rule(NamedTuple):
+    """One construction: an example of it, the pattern, and the canonical wording."""
+
+    example: str
+    pattern: str
+    replacement: Replacement
+
+
+def _number(word: str) -> int:
+    if word.isdigit():
+        return int(word)
+    return ORDINALS.get(word) or NUMBER_WORDS.get(word, 1)
+
+
+def _count_of(text: str) -> int:
+    """Return the number a count phrase names ("twice" -> 2, "three separate times" -> 3)."""
+    return _number(text.split()[0])
+
+
+def _times(n: int) -> str:
+    return {1: 'once', 2: 'twice'}.get(n, f'{n} times')
+
+
+def _plain(gerund: str) -> str:
+    """Return the plain form of a movement verb in -ing ("going to" -> "go to")."""
+    first, _, rest = gerund.partition(' ')
+    stem = {'visiting': 'visit', 'going': 'go', 'reaching': 'reach', 'entering': 'enter', 'passing': 'pass',
+            'moving': 'move', 'traveling': 'travel', 'travelling': 'travel', 'navigating': 'navigate',
+            'getting': 'get', 'heading': 'head', 'finding': 'find', 'coming': 'come', 'walking': 'walk',
+            'flying': 'fly'}.get(first, first)
+    return f'{stem} {rest}'.strip()
+
+
+def _group(m: 're.Match[str]', name: str) -> str:
+    return m.group(name) or ''
+
+
+def _upto(m: 're.Match[str]') -> str:
+    # "zero times, once or twice": the largest count named is the bound
+    counts = re.findall(rf'(?:once|twice|thrice|{_NUM} times?)', m.group(0))
+    return f'at most {_times(max(_count_of(c) for c in counts))}'
+
+
+def _bound(m: 're.Match[str]') -> str:
+    mode = {'maximum': 'at most', 'max': 'at most', 'minimum': 'at least', 'min': 'at least',
+            'required': 'exactly', 'exact': 'exactly'}[m.group('bound')]
+    return f'visit {m.group("x")} {mode} {_times(_number(m.group("n")))}'
+
+
+def _visits(m: 're.Match[str]') -> str:
+    mode = _group(m, 'mode').strip().replace('only', 'exactly') or ('exactly' if m.group('only') else '')
+    n = 1 if m.group('n') in ('a', 'an', 'single', 'any single') else _number(m.group('n'))
+    return f'visit {m.group("x")} {mode + " " if mode else ""}{_times(n)}'
+
+
+def _locks(m: 're.Match[str]') -> str:
+    return f'visit {m.group("x")} at most {_times(_number(m.group("n")))}'
+
+
+def _wait(m: 're.Match[str]') -> str:
+    # "hold position at a as long as b does not happen": a until b
+    return f'stay at {m.group("y")} until you visit {m.group("x1") or m.group("x2")}'
+
+
+def _repeat(m: 're.Match[str]') -> str:
+    mode = _group(m, 'mode').strip() or 'at least'
+    return f'visit {m.group("x")} {mode} {_times(1 + _number(m.group("n")))}'
+
+
+RULES: tuple[Rule, ...] = (
+    # ---- modal frames said at length: permission, obligation, prohibition
+    Rule('you are not allowed to go there',
+         r'\byou are (?:not|never) (?:allowed|permitted) to\b', 'you cannot'),
+    Rule('it is forbidden to go there', r'\bit is (?:not allowed|forbidden|prohibited) to\b', 'you cannot'),
+    Rule('you are allowed at most two visits',
+         rf'\byou are (?P<neg>not )?(?:allowed|permitted) (?=(?:at least|at most|exactly|only|no more than|'
+         rf'{_NUM}|once|twice) )',
+         lambda m: 'you cannot make ' if m.group('neg') else 'you can make '),
+    Rule('you are allowed to go there', r'\byou are (?:allowed|permitted|good|free|able) to\b', 'you can'),
+    Rule('your task is to go there',
+         r'\b(?:you are required to|your task is to|your job is to|your goal is to|you are supposed to|'
+         r'you are expected to)\b', 'you must'),
+    Rule('you cannot finish the task without visiting X',
+         rf'\b(?:you cannot|you can not|you must not|do not) (?:complete|finish|end) '
+         rf'(?:the task |the mission |your task )?without (?P<verb>{_GOING})\b',
+         lambda m: _plain(m.group('verb'))),
+
+    Rule('go to the lab from the second floor only', rf'\b(?:from|via|through) (?P<x>{_NP}) only\b',
+         r'only through \g<x>'),
+    Rule('start on the third floor, go to the roof', r'^start (?:on|at|in|from)\b', 'go to'),
+    Rule('the 2 nd floor, level two', rf'\b(?:(?P<n>{_SMALL}) (?:st|nd|rd|th) floor|level (?P<m>{_SMALL}))\b',
+         lambda m: f'{_ORDINAL_OF[m.group("n") or m.group("m")]} floor'),
+
+    Rule('after seeing b',
+         r'\b(?P<c>after|before|until|once|when) (?:seeing|observing|visiting|reaching|going to)\b',
+         r'\g<c> you visit'),
+    Rule('when you have the chance', r'\b(?:when|whenever|if) you (?:have|get) (?:the|a) chance\b', ''),
+    Rule('visit a exactly once, you can stay there as long as you like',
+         r'\b(?:and )?you (?:can|may) stay there (?:for any (?:period|amount|length) of time|as long as you '
+         r'(?:like|want))\b', ''),
+    Rule('leave it and never go back', r'\b(?:and |then )*never (?:go|come) back(?: there| to it)?(?= ,|$)',
+         ' , do not revisit it , '),
+    Rule('go to a once again', r'(?<!least )\bonce again\b', 'again'),
+    Rule('visit c, in turn only visit b after a', r'\b(?:,? )?in turn\b', ' , '),
+    Rule('visit a then b while ensuring not to visit b before a',
+         r'\b(?:while|and) (?:ensuring|making sure)\b', ' , '),
+    Rule('once the predecessor is visited you must visit the successor',
+         r'\b(?:once|after|when) (?:the|a|each) predecessor is visited,? you (?:must|have to|should) visit '
+         r'(?:the|its) successor\b', ' , in strict order , '),
+
+    # ---- counts said as ranges
+    Rule('zero times, once or twice',
+         rf'\b(?:zero|0|no) times?(?: ,)?(?: (?:or )?(?:once|twice|thrice|{_NUM} times?)(?: ,)?)+', _upto),
+    Rule('equal or less than twice', r'\bequal (?:to )?or (?:less|fewer) than\b', 'at most'),
+    Rule('equal or more than twice', r'\bequal (?:to )?or (?:more|greater) than\b', 'at least'),
+    Rule('at least twice or more', rf'\bat least (?P<c>{_COUNT}) or more\b', r'at least \g<c>'),
+    Rule('three or fewer times', rf'\b(?P<c>{_NUM}) (?:times )?or (?:fewer|less)(?: times)?\b',
+         lambda m: f'at most {_times(_number(m.group("c")))}'),
+    Rule('twice or fewer times',
+         r'\b(?P<c>once|twice|thrice) or (?:fewer|less)(?: times)?\b', r'at most \g<c>'),
+    Rule('two or more than two times', rf'\b(?P<c>{_NUM}) or more than (?P=c) {_KIND}times?\b',
+         lambda m: f'at least {_times(_number(m.group("c")))}'),
+    Rule('five or more visits to X',
+         rf'\b(?P<c>{_NUM}) or more {_KIND}(?P<u>visits|trips|passes) (?=to |through )',
+         lambda m: f'at least {m.group("c")} {m.group("u")} '),
+    Rule('two or more times', rf'\b(?P<c>{_NUM}) (?:times )?or more(?: {_KIND}{_UNIT})?\b',
+         lambda m: f'at least {_times(_number(m.group("c")))}'),
+    Rule('once or more', r'\b(?P<c>once|twice|thrice) or more(?: times)?\b', r'at least \g<c>'),
+    Rule('exactly twice, no more, no less', r'(?: ,)? no more(?: ,)? (?:and |or |, )?no less\b', ''),
+    Rule('no fewer or greater than twice', r'\b(?:no|any) (?:fewer|less) or (?:any )?(?:more|greater) than\b',
+         'exactly'),
+    Rule('any more or any fewer than twice', r'\b(?:any )?(?:more|greater) or (?:any )?(?:fewer|less) than\b',
+         'exactly'),
+    Rule('at most and at least twice', r'\bat (?:most and at least|least and at most)\b', 'exactly'),
+    Rule('but two times at most', rf'\b(?:but )?(?:only )?(?P<c>{_COUNT}) at (?P<m>most|least)\b',
+         r'at \g<m> \g<c>'),
+    Rule('on at least three separate occasions',
+         rf'\bon (?P<mode>(?:at least|at most|exactly|any more than|more than|any fewer than|fewer than|'
+         rf'less than) )?(?P<c>{_NUM}) {_KIND}(?:occasions?|instances?|times)\b',
+         lambda m: f'{_group(m, "mode").replace("any ", "")}{_times(_number(m.group("c")))}'),
+    Rule('for more than one distinct visit',
+         rf'\bfor (?P<mode>more than |at least |at most |exactly )?(?P<c>{_NUM}) {_KIND}(?:visits?|times)\b',
+         lambda m: f'{_group(m, "mode")}{_times(_number(m.group("c")))}'),
+
+    # ---- counts said with a noun
+    Rule('the maximum number of visits to X is three',
+         rf'\bthe (?P<bound>maximum|max|minimum|min|required|exact) (?:allowable |allowed |permitted )?'
+         rf'(?:number of )?{_KIND}(?:visits|passes|trips) (?:to|through|of|at) (?P<x>{_NP}) '
+         rf'(?:is|are|should be|must be) (?:exactly )?(?P<n>{_NUM}|once|twice)\b', _bound),
+    Rule('the maximum number of times you can visit X is three',
+         rf'\bthe (?P<bound>maximum|max|minimum|min|required) (?:allowable |allowed |permitted )?number of '
+         rf'times (?:that )?you (?:can|must|may|should|are allowed to|have to|need to) {_GO} (?P<x>{_NP}) '
+         rf'(?:is |are )?(?:exactly )?(?P<n>{_NUM}|once|twice)\b', _bound),
+    Rule('do not make any single visit to X', r'\b(?:make|pay) (?:any|a) (?:single )?(?:visits?|trips?) to\b',
+         'visit'),
+    Rule('make at least three separate visits to X',
+         rf'\b(?:make|complete|have|need|pay|do)(?P<only> only)? (?P<mode>(?:at least|at most|exactly|only|'
+         rf'no more than|no fewer than|no less than) )?(?P<n>{_NUM}|a|an|single|any single) {_KIND}'
+         rf'(?:visits?|trips?|passes) (?:to|through|of|at) (?P<x>{_NP})(?= |$)', _visits),
+
+    # ---- counts said as a lock
+    Rule('visiting X twice locks it for future visits',
+         rf'\b(?:{_GOING}|passing through) (?P<x>{_NP}) (?:(?P<n>{_NUM}|twice|thrice|once)(?: times)? |for '
+         rf'the (?P<o>{_ORD}) time )?(?:will )?locks? it(?: for (?:all )?future visits)?\b',
+         lambda m: f'visit {m.group("x")} at most {_times(_number(m.group("o") or m.group("n") or "once"))}'),
+    Rule('once you leave X for the second time you cannot come back to it',
+         rf'\bonce you (?:leave|exit|enter|visit|reach) (?P<x>{_NP}) for the (?P<n>{_ORD}) time (?:, )?'
+         rf'(?:you (?:cannot|can not|can never|must not|may not|should not) (?:come back|return|go back|'
+         rf'reenter|re enter|enter|visit|go)(?: to| into)? it(?: again)?|it is locked(?: for you)?)\b',
+         _locks),
+    Rule('never visit X again after you have visited it three times',
+         rf'\b(?:never|do not|you cannot|you can not) {_BACK} (?P<x>{_NP}) again after (?:you )?'
+         rf'(?:have |haven |had )?{_GONE} (?:it|(?P=x)) (?P<n>{_COUNT})\b',
+         lambda m: f'visit {m.group("x")} at most {_times(_count_of(m.group("n")))}'),
+    Rule('once you reach X you can never visit it again',
+         rf'\bonce you (?:have )?(?:{_GO}|{_GONE}) (?P<x>{_NP}) (?:, )?(?:you (?:can never|cannot|can not|'
+         rf'must never|must not|should never|may not)|never) {_BACK} (?:it|(?P=x)) '
+         rf'(?:again|anymore|any more)\b',
+         r'visit \g<x> at most once'),
+    Rule('visiting X more than twice is prohibited',
+         rf'^(?P<verb>{_GOING}) (?P<rest>.+?) (?:is|are) {_FORBIDDEN}$',
+         lambda m: f'do not {_plain(m.group("verb"))} {m.group("rest")}'),
+    Rule('go to X more or less than twice is prohibited',
+         rf'^(?P<verb>{_GO}) (?P<rest>.+?) (?:is|are) {_FORBIDDEN}$',
+         r'do not \g<verb> \g<rest>'),
+    Rule('go to X then leave it and repeat this two more times',
+         rf'\b{_GO} (?P<x>{_NP})(?: ,)?(?: and)?(?: then)? leave(?: (?P=x)| it)?(?: and)*(?: then)? '
+         rf'repeat(?: this| that| it)? (?P<mode>exactly |at least )?(?P<n>{_NUM}|once) more(?: times?)?\b',
+         _repeat),
+    Rule('at least twice, leaving in between',
+         r'\b(?:while |by )?leaving(?: (?:its region|the region|it|there))? in between\b', ''),
+    Rule('each time you must leave before coming back',
+         r'\b(?:and )?each time you (?:must|have to|should) leave before coming back\b', ''),
+    Rule('stop visiting it anymore', rf'\bstop (?P<verb>{_GOING}) (?P<x>it|{_NP}) (?:anymore|any more)\b',
+         lambda m: f'do not {_plain(m.group("verb"))} {m.group("x")} anymore'),
+
+    # ---- no revisits: "visit each location only once", "no revisiting", "without returning to X"
+    Rule('visit each landmark only once',
+         rf'(?:\byou can |\band |\bwhile )?(?:only )?(?:visit|visiting|go to|going to) (?:each|every|all)'
+         rf'(?: of the| the| of)? {_PLACES} (?:only )?(?:exactly )?(?:once|one time|a single time)\b',
+         _NO_REVISITS),
+    Rule('no revisiting is allowed',
+         r'\b(?:and |but )?no revisit(?:ing|s)? (?:is |are )?(?:allowed|permitted)(?: here)?\b',
+         _NO_REVISITS),
+    Rule('without returning to previously visited locations',
+         rf'\bwithout (?:any )?(?:repetitions?|repeating|revisits|(?:skipping or )?revisiting any(?: one)? '
+         rf'of them|(?:revisiting|returning to) (?:any )?previously visited {_PLACES})\b', _NO_REVISITS),
+    Rule('repeated visits are not permitted',
+         r'\b(?:and )?repeated visits are not (?:permitted|allowed)\b', _NO_REVISITS),
+    Rule('once you leave any location you cannot return to it',
+         rf'\bonce you leave any {_PLACES} you cannot (?:return|go back|come back) to it\b', _NO_REVISITS),
+    Rule('never return to a previous location you have been to',
+         rf'\b(?:along the (?:path|way) )?(?:make sure to |ensure to |and )?(?:do not|never|not) '
+         rf'(?:return|go back|come back|revisit)(?: to)? (?:the |any )?(?:previous(?:ly visited)?|earlier) '
+         rf'{_PLACES}(?: (?:that )?you (?:have )?(?:been to|visited))?(?: while heading to the next)?\b',
+         _NO_REVISITS),
+    Rule('do not revisit any of the locations before completing the task',
+         r'\b(?:make sure to |ensure to )?(?:do not|not|never) revisit any(?: one)? of (?:them|the locations|'
+         r'the places)(?: once after you have been there| before completing the task| after you have been '
+         r'there)?\b', _NO_REVISITS),
+    Rule('you cannot revisit a before completing the task',
+         rf'\b(?:also )?(?:you cannot|you can not|you must not|do not|never|not|(?:ensure|make sure) '
+         rf'(?:to not|not to)) (?:revisit|return to|go back to|come back to) (?P<x>{_NPS})(?: again)?'
+         rf'(?: before (?:completing|finishing) (?:the )?(?:remaining )?tasks?)?{_CLAUSE_END}',
+         r' , do not revisit \g<x> , '),
+    Rule('while visiting a and b only once',
+         rf'\b(?:while |and )(?:only )?visiting (?P<x>{_NPS}) (?:only )?(?:once|one time)(?= |$)',
+         r' , visit \g<x> only once , '),
+    Rule('go to b without returning to a',
+         rf'\b(?:(?:but )?without|(?:, )?(?:or|and|nor)) (?:returning|going back|coming back|revisiting|'
+         rf'revisit|return|go back|come back)(?: to)? (?P<x>{_NPS}){_CLAUSE_END}',
+         r' , do not revisit \g<x> , '),
+    Rule('go to b without going to a again', rf'\bwithout {_GOING} (?P<x>{_NPS}) again{_CLAUSE_END}',
+         r' , do not revisit \g<x> , '),
+    Rule('without skipping any of them', r'\bwithout skipping any(?: one)?(?: of them)?\b', ''),
+    Rule('a followed by visiting b', rf'\bfollowed by {_GOING}\b', 'followed by'),
+    Rule('a, then visiting b', rf'\bthen (?P<verb>{_GOING})\b', lambda m: f'then {_plain(m.group("verb"))}'),
+    Rule('make sure not to visit waypoints out of turn',
+         r'\b(?:make sure|ensure)(?: not)? to (?:not )?visit (?:waypoints|locations|places|them) out of '
+         r'(?:turn|order)\b', ' , in strict order , '),
+
+    Rule('make sure to go there', r'\b(?:be sure|make sure|ensure|remember)(?: that)?(?: you)? to\b', ''),
+
+    # ---- passive goals and avoidances
+    Rule('the shed must be visited',
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?P<aux>{_PASSIVE}) '
+         rf'(?:all |both |each )?(?:visited|reached|entered)(?= |$)',
+         lambda m: f'{m.group("pre")}{"" if m.group("aux") in _PLAIN_AUX else "you must "}visit '
+                   f'{m.group("x")}'),
+    Rule('the shed must be avoided',
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?:always )?{_PASSIVE} '
+         rf'(?:always )?avoided(?= |$)', r'\g<pre>avoid \g<x>'),
+
+    Rule('never let the alarm hold',
+         rf'\bnever let (?P<x>{_NPS}) (?:hold true|hold|happen|occur|be true|become '
+         rf'true|be visited)(?= |$)', r'never visit \g<x>'),
+    Rule('the alarm must never hold',
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) '
+         rf'(?:must |should |can |will |shall )?'
+         rf'(?:never|not) (?:hold true|holds true|hold|holds|happen|happens|occur|occurs|be true|become true)'
+         rf'(?= |$)',
+         r'\g<pre>never visit \g<x>'),
+
+    Rule('any visit to the shed is not allowed',
+         rf'\b(?:any |a )?(?:single )?(?:visits?|trips?) (?:to|through) '
+         rf'(?P<x>{_NPS}) (?:is|are) {_FORBIDDEN}(?= |$)', r'you cannot visit \g<x>'),
+    Rule('the shed can never be visited',
+         rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?|\bbut )(?P<x>{_NPS}) '
+         rf'(?:can never|cannot|can not|must not|must never|should not|should never|may not|may never|'
+         rf'shall not) '
+         rf'(?:be )?(?:visited|reached|'
+         rf'entered|approached)(?= |$)', r'\g<pre>you cannot visit \g<x>'),
+
+    # ---- events said of the place
+    Rule('until the gate is reached',
+         rf'\b(?P<c>{_WHEN}) (?P<x>{_NPS}) (?:is|are|has been|have been|gets|get|was|were) '
+         rf'(?:all |both |each |first |successfully )?(?:visited|reached|seen|observed|entered|encountered|'
+         rf'detected|found|true|spotted)(?= |$)', r'\g<c> you visit \g<x>'),
+    Rule('once the alarm occurs',
+         rf'\b(?P<c>{_WHEN}) (?P<x>{_NPS}) (?:occurs|happens|holds|holds true|is true|becomes true|'
+         rf'has occurred|has occured|has happened|appears|shows up)(?= |$)', r'\g<c> you visit \g<x>'),
+    Rule('after you observe X',
+         rf'\b(?P<c>{_WHEN}|sure|ensure|that) you (?:have |had )?(?:see|saw|seen|observe|observed|encounter|'
+         rf'encountered|spot|spotted|notice|noticed|detect|detected)\b', r'\g<c> you visit'),
+
+    # ---- conditions on order: "visit b only if you have been to a", "do not visit b if you have not seen a"
+    Rule('only if you have been to X',
+         rf'(?<!\band )\bonly if you (?:have |had )?(?:already |first )?(?:{_GONE}|{_GO})\b',
+         'only after you visit'),
+    Rule('if you have not been to X', rf'\bif you (?:have not|haven not|did not|have never|had not) (?:yet )?'
+         rf'(?:{_GONE}|{_GO})\b', 'unless you visit'),
+
+    Rule('only visit b if you already visited a',
+         rf'\bonly (?P<v>{_GO}) (?P<x>{_NPS}) if you (?:have |had )?(?:already |first )?(?:{_GONE}|{_GO})\b',
+         r'\g<v> \g<x> only after you visit'),
+    Rule('do not stop until you visit a and b', r'\b(?:do not|never) stop until you visit\b', 'visit'),
+
+    # ---- prohibitions said before their end: "until you have seen b, you cannot go to a"
+    Rule('until you see b, you cannot go to a',
+         rf'^(?P<u>(?:until|till) you (?:have |had )?(?:{_GONE}|{_GO}) {_NPS})(?: ,)? (?P<neg>(?:you cannot|'
+         rf'you can not|you must not|'
+         rf'do not|never|you should not|you may not)) (?P<v>{_GO}) (?P<y>{_NPS})$',
+         r'\g<neg> \g<v> \g<y> \g<u>'),
+    Rule('seeing b unlocks a',
+         rf'^(?:{_GOING}|seeing|observing|visiting) (?P<x>{_NPS}) unlocks (?P<y>{_NPS})$',
+         r'do not visit \g<y> until you visit \g<x>'),
+
+    # ---- waiting somewhere until something happens: all become "stay at Y until you visit X"
+    Rule('until you see b, stay at a',
+         rf'^(?:until|till) you visit (?P<x>{_NPS})(?: ,)? (?:you must |you should |please )?'
+         rf'(?P<stay>{_STAY} (?:at|in|on)|(?:do not|never|you cannot) (?:leave|exit)) (?P<y>{_NPS})$',
+         r'\g<stay> \g<y> until you visit \g<x>'),
+    Rule('you can leave a after b is seen, otherwise stay at a',
+         rf'^(?:once you visit (?P<x1>{_NPS})(?: ,)? )?(?:you can |you may |feel free to |then )*leave'
+         rf'(?: {_NP})?(?: after you visit (?P<x2>{_NPS}))?(?: ,)? otherwise {_STAY} (?:at|in|on) '
+         rf'(?P<y>{_NPS})$',
+         lambda m: _wait(m) if m.group('x1') or m.group('x2') else m.group(0)),
+    Rule('hold position at a for as long as b does not occur',
+         rf'^{_STAY} (?:at|in|on) (?P<y>{_NPS}) (?:for )?as long as (?:you do not {_SEE} (?P<x1>{_NPS})|'
+         rf'(?P<x2>{_NPS}) (?:does|do) not {_HAPPEN})$', _wait),
+    Rule('as long as you do not see b, do not leave a',
+         rf'^as long as (?:you do not {_SEE} (?P<x1>{_NPS})(?: happen| occur)?|(?P<x2>{_NPS}) (?:does|do) '
+         rf'not {_HAPPEN})(?: ,)? (?:do not|never|you cannot) (?:leave|exit) (?P<y>{_NPS})$', _wait),
+    Rule('you cannot go anywhere from a unless you see b',
+         rf'\b(?:you cannot|you can not|do not|never) (?:go|move|leave)(?: to)? (?:anywhere(?: else)?|'
+         rf'any other places?|other places?|elsewhere) from (?P<y>{_NPS}) (?:unless|until|before) '
+         rf'(?:you visit (?P<x1>{_NPS})|having (?P<x2>{_NPS}) (?:observed|seen|visited))$', _wait),
+
+    # ---- order said at length
+    Rule('in no particular order',
+         r'\b(?:but )?(?:it can be done )?in (?:no (?:specific|particular)|an? (?:arbitrary|random)|any|'
+         r'whatever|whichever|arbitrary|random) (?:order|sequence)(?: you (?:like|want|prefer|choose))?\b',
+         'in any order'),
+    Rule('there can be other places in between',
+         r'\bthere (?:can|may|could|might) be other (?:locations|landmarks|places|waypoints|stops|rooms) '
+         r'in between\b', ''),
+    Rule('in some sequence', r'\bin some (?:sequence|order)\b', ''),
+    Rule('each must be followed by the next',
+         r'\beach (?:one )?(?:must|should|has to) be followed by the next(?: one)?\b', 'in order'),
+    Rule('a followed by b which is then to be followed by c',
+         r'\b(?:, )?which (?:is|are) (?:then )?(?:to be )?followed by\b', 'followed by'),
+    Rule('go to four locations a, b, c and d',
+         rf'\b(?P<head>all |the following |all the following |these |all of the )?(?:{_NUM}) '
+         rf'(?P<what>locations|places|landmarks|rooms|spots|waypoints)(?: :)?(?= |$)', r'\g<head>\g<what>'),
+    Rule('go to one of a and b and then to the other',
+         rf'\b(?:go to|visit|pick) one (?:of|from|among) (?P<x>{_NP}) and (?P<y>{_NP})(?: ,)? (?:go there )?'
+         rf'(?:and )?then (?:go |head |move )?to the other(?: one)?\b', r'visit \g<x> and \g<y>'),
+
+    # ---- repetition said at length: "again and again", "with no limits", "at any point in time, visit a"
+    Rule('visit a again and again', r'\b(?:again and again|over and over(?: again)?|with no limits?|without '
+         r'(?:any )?limits?|time after time|all the time)\b', 'repeatedly'),
+    Rule('at any point in time you must visit a at least once in the future',
+         rf'\b(?:make sure )?(?:at any point in time|at every point in time|at all times|at any time)(?: ,)? '
+         rf'(?:you (?:will |must |should |have to )?|ensure that you (?:will )?|'
+         rf'make sure (?:that )?you (?:will )?)?'
+         rf'(?:visit|go to|reach) (?P<x>{_NPS}) at least once (?:in the future|after|afterwards|later)\b',
+         r'visit \g<x> repeatedly'),
+)
+
+_SENTENCE_ENDS = frozenset('.;!?')
+_COMPILED = tuple((re.compile(r.pattern), r.replacement) for r in RULES)
+
+
+def rewrite_idioms(tokens: list[str]) -> list[str]:
+    """Rewrite each sentence's idioms to their canonical phrasing (see :data:`RULES`)."""
+    out: list[str] = []
+    start = 0
+    for i, t in enumerate(tokens + ['.']):
+        if t in _SENTENCE_ENDS:
+            out.extend(_rewrite_sentence(tokens[start:i]))
+            out.extend(tokens[i:i + 1])
+            start = i + 1
+    return out
+
+
+def _rewrite_sentence(words: list[str]) -> list[str]:
+    if not words:
+        return []
+    text = ' '.join(words)
+    for pattern, replacement in _COMPILED:
+        text = pattern.sub(replacement, text)
+    return text.split()

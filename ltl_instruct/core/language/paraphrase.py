@@ -1,0 +1,122 @@
+"""Paraphrases rewritten to the one phrasing the clause reader knows, before it reads.
+
+Many ways of saying the same thing map to one form, so the rules that read a form
+need not know every way to say it:
+
+- finishing a step: "when you're done there", "once finished", "after you're through
+  with that" -> ``then``;
+- passes and trips: "make three passes over X", "do two laps around X" -> "go over X
+  three times";
+- counts: "once and only once", "one time only" -> ``exactly once``;
+- looking at a place: "have a look at", "take a peek at", "go see", "pay a visit to"
+  -> ``visit``; "check whether X is closed" -> "check X is closed" (the rest is left
+  to the reader, which leaves out words that ask for nothing, noted);
+- emphasis inside avoidance: "stay well away from", "keep right away from" -> "stay
+  away from";
+- goals stated as a fact: "your goal is X", "the destination is X" -> "go to X".
+
+Each rewrite works on the token list; none adds a place or a constraint that the
+words did not name.
+"""
+from __future__ import annotations
+
+import re
+
+from ltl_instruct.core.language.phrases import PhraseParser
+
+_DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |it is |that is |'
+         r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
+         r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)')
+
+_REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
+    # "go to a . when you are done there , head to b" -> "go to a . then head to b"
+    (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
+    (r' (?:exactly )?once and only once ', ' exactly once '),
+    (r' (?:from then on|from that point on|from there on|thereafter|from that moment on|after this) ',
+     ' after that '),
+    (r' from now on ', ' '),
+    (r'(^ | [.;!?] )you (?:may|can|are allowed to|are permitted to|should) only ', r'\1 only '),
+    (r' (?:under no circumstances|on no account|at no point|at no time)'
+     r'(?: should you| must you| are you to)? ',
+     ' never '),
+    (r' (?:pick|choose|select) (?:either|one of) ', ' go to either '),
+    (r' (?:one time|1 time) (?:and one time )?only ', ' exactly once '),
+    (r' once only ', ' exactly once '),
+    (r'(?<!exactly) ((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|thrice) '
+     r'(?:, )?'
+     r'(?:but |and )?no more(?: than that| and no less| , no less)?(?= [,.;!?]|$| $)', r' exactly \1'),
+    (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
+     r'(?:at|in|inside|around|over) ', ' visit '),
+    (r' (?:pay|make) a (?:quick )?(?:visit|trip) to ', ' visit '),
+    (r' (?:check|see|find out|look|make sure|verify|confirm) (?:whether|if) ', ' check '),
+    (r' (?:check|see|look) that ', ' check '),
+    # "make sure the door is shut": a state to check there (not "make sure you never...")
+    (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=(?:the|my|your|our) (?:\w+ ){1,3}(?:is|are) '
+     r'(?!never|not|visited|reached|avoided|always)\w)', ' check '),
+    # "check the cat is in the laundry room": the place where it is
+    (r' check (?:the |my |our |your )(?:\w+ ){1,3}(?:is|are) (?:still )?(?:in|at|inside|on|by|near|next to) '
+     r'(?=(?:the|a|an|my|your|our) )', ' check '),
+    (r' (?:pay|give) (the|a|an|my|your|our) ((?:\w+ ){1,4})a (?:quick |short |good |brief )?'
+     r'(?:visit|check|look|once over|sweep|glance|inspection) ', r' visit \1 \2'),
+    (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
+    (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
+    (r' from there , ', ' after that , '),
+    (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
+    (r' (?:wait|stand|sit|park) (?:by|near|next to|beside) (?=(?:the|a|my|your|our) )', ' go to '),
+    (r' check there (?:is|are) (?:any |some |a |an )?(?:\w+ ){1,2}(?:in|on|at|inside) '
+     r'(?=(?:the|a|an|my|your|our) )', ' check '),
+    # "first stop, the bakery. last stop, the florist": the order of the stops
+    (r'(^ | [,.;!?] )(first|second|third|fourth|fifth|next) (?:stop|destination|place|location|port of call) '
+     r'(?:is |will be )?(?:, |: )?', r'\1 \2 , '),
+    (r'(^ | [,.;!?] )(?:last|final) (?:stop|destination|place|location|port of call) '
+     r'(?:is |will be )?(?:, |: )?', r'\1 finally '),
+    (r' what (?:i|we) (?:need|want|would like)(?: you to do)? is (?:for you )?(?:to )?', ' '),
+    (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
+    (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
+     r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
+    (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:goal|destination|target|aim|objective|end point|'
+     r'endpoint|final destination|job|task|mission) (?:is|will be|:) '
+     r'(?:to (?:go to |reach |get to |visit )?)?',
+     r'\1 go to '),
+))
+
+_PASS_RE = re.compile(r'(^| )(?:make|do|take|fly|run|perform|complete) (one|two|three|four|five|six|seven|'
+                      r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
+                      r'(?:passes|pass|trips|trip|laps|lap|rounds|round|sweeps|sweep|runs|run|loops|loop|'
+                      r'flyovers|flyover|visits|visit|circuits|circuit) '
+                      r'(?:over|to|by|past|around|round|of|through|across|above|at)? ?')
+
+
+def paraphrase(tokens: list[str]) -> list[str]:
+    """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
+    text = ' ' + ' '.join(tokens) + ' '
+    if not any(w in text for w in (' done', ' finish', ' through', ' ready', ' once ', ' time ', ' look',
+                                   ' peek', ' peep', ' glance', ' gander', ' visit', ' trip', ' see ',
+                                   ' check', ' whether', ' if ', ' away', ' clear', ' off', ' out',
+                                   ' goal', ' destination', ' target', ' aim', ' objective', ' end',
+                                   ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
+                                   ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
+                                   ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
+                                   ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location',
+                                   ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ')):
+        return tokens
+    for pattern, repl in _REWRITES:
+        text = pattern.sub(repl, text)
+    out = text.split()
+    return _passes(out)
+
+
+def _passes(tokens: list[str]) -> list[str]:
+    """'make three passes over the farm' -> 'go over the farm three times'."""
+    text = ' '.join(tokens)
+    m = _PASS_RE.search(text)
+    if m is None:
+        return tokens
+    before = text[:m.start()].split()
+    after = text[m.end():].split()
+    np = PhraseParser().parse(after, 0)
+    if np is None:
+        return tokens
+    count = m.group(2)
+    times = ['once'] if count in ('a', 'an', 'a single', 'one', '1') else [count, 'times']
+    return before + ['go', 'over'] + after[:np.end] + times + _passes(after[np.end:])

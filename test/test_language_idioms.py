@@ -1,0 +1,123 @@
+"""Offline translator: idioms (counts said at length, passives, events) read as their plain phrasing."""
+from __future__ import annotations
+
+import time
+
+import pytest
+
+from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.language.idioms import rewrite_idioms
+from ltl_instruct.core.language.offline import OfflineTranslator, at_least, at_most, exactly
+from ltl_instruct.core.language.text import tokenize
+from ltl_instruct.core.spec import near, parse_formula
+
+T = OfflineTranslator()
+
+# Sentences written for these tests (not from any data set), with the formula each must be equivalent to.
+COUNTS = [
+    ('The maximum number of times you can visit the pantry is two.', at_most(near('pantry'), 2)),
+    ('You are allowed at most three visits to the garage.', at_most(near('garage'), 3)),
+    ('Visiting the nursery more than once is prohibited.', at_most(near('nursery'), 1)),
+    ('You can check the oven zero times, once or twice.', at_most(near('oven'), 2)),
+    ('Go to the mailbox equal or more than three times.', at_least(near('mailbox'), 3)),
+    ('Make at least two separate visits to the greenhouse.', at_least(near('greenhouse'), 2)),
+    ('Visit the porch exactly twice, no more, no less.', exactly(near('porch'), 2)),
+    ('Never go to the cellar again after you have visited it twice.', at_most(near('cellar'), 2)),
+    ('Once you leave the lab for the third time, you cannot come back to it.', at_most(near('lab'), 3)),
+    ('Go to the shed, then leave it and repeat this two more times.', at_least(near('shed'), 3)),
+    ('You are not allowed to enter the garage more than twice.', at_most(near('garage'), 2)),
+    ('You cannot visit the pond three or more times.', at_most(near('pond'), 2)),
+    ('You must not visit the pond at least three times.', at_most(near('pond'), 2)),
+    ('The minimum number of visits to the barn is three.', at_least(near('barn'), 3)),
+    ('Visiting the attic twice locks it for future visits.', at_most(near('attic'), 2)),
+    ('You need at least two distinct visits to the library.', at_least(near('library'), 2)),
+    ('Check the crib on at most two separate occasions.', at_most(near('crib'), 2)),
+    ('Visit the well at least twice while leaving it in between.', at_least(near('well'), 2)),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', COUNTS, ids=[c[0][:40] for c in COUNTS])
+def test_counts_said_at_length(instruction: str, gold: object) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, gold), f'{instruction!r} -> {got.formula}'
+
+
+PHRASINGS = [
+    ('The back door must be visited.', 'F near[back_door]'),
+    ('The wet floor has to be avoided.', 'G !near[wet_floor]'),
+    ('Make sure the shed and the barn are both visited.', 'F near[shed] & F near[barn]'),
+    ('Do not go into the office until the printer has been visited.', '!near[office] U near[printer]'),
+    ('Stay out of the garden until the gate is reached.', '!near[garden] U near[gate]'),
+    ('You are required to go to the lobby.', 'F near[lobby]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', PHRASINGS, ids=[c[0][:40] for c in PHRASINGS])
+def test_passives_and_frames(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+def test_rewrites_keep_sentences_and_plain_text() -> None:
+    assert rewrite_idioms(tokenize('Go to the den. Then go to the hall!')) == tokenize(
+        'Go to the den. Then go to the hall!')
+    assert rewrite_idioms([]) == []
+    assert rewrite_idioms(tokenize('visit a two or more times')) == ['visit', 'a', 'at', 'least', 'twice']
+
+
+def test_rewrites_stay_fast_on_long_hostile_input() -> None:
+    text = ' '.join(['the red room is'] * 120 + ['visited'])
+    started = time.perf_counter()
+    rewrite_idioms(tokenize(text))
+    assert time.perf_counter() - started < 0.5
+
+
+WAITING_AND_ORDER = [
+    ('Wait at the door as long as the courier does not appear.', 'near[door] U near[courier]'),
+    ('As long as you do not see the courier, do not leave the porch.', 'near[porch] U near[courier]'),
+    ('You can leave the lobby after the guard is seen, otherwise stay at the lobby.',
+     'near[lobby] U near[guard]'),
+    ('You cannot go anywhere from the dock unless you see the boat.', 'near[dock] U near[boat]'),
+    ('Until you see the boat, stay at the dock.', 'near[dock] U near[boat]'),
+    ('Visit the pantry, the cellar and the attic in no particular order.',
+     'F near[pantry] & F near[cellar] & F near[attic]'),
+    ('Go to one of the shed and the barn and then to the other.', 'F near[shed] & F near[barn]'),
+    ('Patrol between the gate and the yard again and again.', 'G F near[gate] & G F near[yard]'),
+    ('Keep going back and forth between the kitchen and the den.', 'G F near[kitchen] & G F near[den]'),
+    ('Do not stop until the bins and the racks are all visited.', 'F near[bins] & F near[racks]'),
+    ('Visit the lab, then the office; there can be other places in between.',
+     'F (near[lab] & F near[office])'),
+    ('Go to the gate, and move on to the lab once you have been to the gate.',
+     'F (near[gate] & F near[lab])'),
+    ('Visit all four places: the gate, the shed, the barn and the pond.',
+     'F near[gate] & F near[shed] & F near[barn] & F near[pond]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', WAITING_AND_ORDER, ids=[c[0][:40] for c in WAITING_AND_ORDER])
+def test_waiting_order_and_repetition_said_at_length(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+STAYING = [
+    # staying within a region said many ways
+    ('Go to the charging pad and remain within the lab.', 'F near[charging_pad] & G near[lab]'),
+    ('Fly to the tower staying on the east side.', 'F near[tower] & G near[east_side]'),
+    ('Go to the kiosk by only moving in the atrium.', 'F near[kiosk] & G near[atrium]'),
+    ('Without stepping outside of the garden, go to the bench.', 'F near[bench] & G near[garden]'),
+    ('Go to the bench without ever leaving the garden.', 'F near[bench] & G near[garden]'),
+    ('Go to the bench only through the garden.', 'F near[bench] & G near[garden]'),
+    # on the way, first, typed ordinals
+    ('Go to the attic while avoiding going through the nursery.', '!near[nursery] U near[attic]'),
+    ('Go to the study by first visiting the hall.', 'F (near[hall] & F near[study])'),
+    ('Go to the study, but make sure to go to the hall first.', 'F (near[hall] & F near[study])'),
+    ('Start on the roof, then go to the 2 nd floor.', 'F (near[roof] & F near[second_floor])'),
+    ('Go to level three.', 'F near[third_floor]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', STAYING, ids=[c[0][:40] for c in STAYING])
+def test_staying_within_and_on_the_way(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'

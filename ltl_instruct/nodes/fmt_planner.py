@@ -198,7 +198,7 @@ class FmtPlannerNode(Node):
 
 
 def _request_id(text: str) -> str:
-    """The ``request_id`` of a plan_request payload, or '' when it has none (or is not JSON)."""
+    """Return the ``request_id`` of a plan_request payload ('' when it has none or is not JSON)."""
     try:
         d = json.loads(text)
     except (ValueError, RecursionError):

@@ -130,7 +130,7 @@ class Automaton:
         return len(self._states)
 
     def state_formula(self, s: int) -> Formula:
-        """The progressed formula (obligation on the rest of the trace) state ``s`` stands for."""
+        """Return the progressed formula (obligation on the rest of the trace) state ``s`` stands for."""
         return self._states[s]
 
     def edges_from(self, s: int) -> tuple[Edge, ...]:
@@ -182,7 +182,7 @@ class Automaton:
 
     # -- running
     def step(self, s: int, letter: AbstractSet[Atom]) -> int:
-        """The state after reading ``letter`` (the set of atoms true at this step) in ``s``."""
+        """Return the state after reading ``letter`` (the set of atoms true at this step) in ``s``."""
         if sum(1 for a in letter if a.is_event) > 1:
             raise ValueError('a letter holds at most one event (pick or release): '
                              + ', '.join(sorted(a.key for a in letter if a.is_event)))
@@ -206,7 +206,7 @@ class Automaton:
 
     def accepting_paths(self, max_paths: int = 64,
                         max_length: Optional[int] = None) -> list[tuple[Edge, ...]]:
-        """Simple edge paths from the initial state to acceptance, shortest first.
+        """Return simple edge paths from the initial state to acceptance, shortest first.
 
         Self-loops are left out (they are the "allowed" part of each step); paths
         stop at the first accepting state, never pass the sink, and never revisit
@@ -352,7 +352,7 @@ def equivalent(f: Formula | str, g: Formula | str) -> bool:
 
 
 def distinguishing_pair(a: Automaton, b: Automaton) -> Optional[tuple[int, int]]:
-    """A reachable product state (after >= 1 letter) where exactly one accepts, or None."""
+    """Find a reachable product state (after >= 1 letter) where exactly one accepts, or None."""
     start = [(ea.dst, eb.dst) for ea in a.edges_from(a.initial) for eb in b.edges_from(b.initial)
              if _cubes_meet(ea.guard, eb.guard)]
     seen = set(start)

@@ -95,7 +95,7 @@ class TaskDescription:
     path: tuple[int, ...] = field(default=(), compare=False)
 
     def text(self) -> str:
-        """The whole description as lines a person reads."""
+        """Return the whole description as lines a person reads."""
         lines = [f'Task: {self.formula}']
         if self.referents:
             lines.append('Referents: ' + '; '.join(self.referents))
@@ -148,7 +148,7 @@ def forbidden_atoms(aut: Automaton, state: int, goal: Optional[Cube] = None) -> 
 
 
 def choose_path(aut: Automaton) -> Optional[tuple[Edge, ...]]:
-    """The path to acceptance explained to the person: one skill per step where possible."""
+    """Choose the path to acceptance explained to the person: one skill per step where possible."""
     paths = aut.accepting_paths(max_paths=64)
     if not paths:
         return None
@@ -156,7 +156,7 @@ def choose_path(aut: Automaton) -> Optional[tuple[Edge, ...]]:
 
 
 def describe_task(task: Union[Formula, str, Automaton]) -> TaskDescription:
-    """Referents and English subgoals of a task (formula text, AST, or automaton)."""
+    """Describe a task: its referents and English subgoals (formula text, AST, or automaton)."""
     aut = task if isinstance(task, Automaton) else compile_automaton(task)
     f = aut.formula
     referents = tuple(describe_descriptor(d) for d in referents_of(f))

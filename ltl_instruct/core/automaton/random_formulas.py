@@ -24,7 +24,7 @@ def default_atoms(n: int, events: bool = False) -> tuple[Atom, ...]:
 
 
 def random_formula(rng: random.Random, atoms: Sequence[Atom], size: int = 6) -> Formula:
-    """A random formula with about ``size`` operators over ``atoms`` (all operators used)."""
+    """Return a random formula with about ``size`` operators over ``atoms`` (all operators used)."""
     if size <= 0:
         r = rng.random()
         if r < 0.05:

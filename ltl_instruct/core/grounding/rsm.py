@@ -105,7 +105,7 @@ class ReferentMap:
         return g.instances if g else ()
 
     def get(self, descriptor: str) -> Optional[Grounding]:
-        """The grounding of a descriptor, or None."""
+        """Return the grounding of a descriptor, or None."""
         return self.groundings.get(descriptor)
 
     def to_dict(self) -> dict[str, Any]:

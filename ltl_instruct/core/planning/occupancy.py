@@ -204,7 +204,7 @@ class PlanningWorld:
         return best
 
     def _boxes_over(self, lo: Sequence[float], hi: Sequence[float]) -> Sequence[int]:
-        """Indices of the boxes that may overlap the (x, y) rectangle lo..hi (a superset)."""
+        """Return indices of the boxes that may overlap the (x, y) rectangle lo..hi (a superset)."""
         cell, nx, ny = self._cell
         x0, y0 = self._cell_of(lo[0], lo[1], cell, nx, ny)
         x1, y1 = self._cell_of(hi[0], hi[1], cell, nx, ny)

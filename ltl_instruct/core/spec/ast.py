@@ -175,7 +175,7 @@ class Atom(Formula):
 
 
 def near(name: Union[str, Descriptor]) -> Atom:
-    """Shorthand: ``near('sofa')`` is the atom ``near[sofa]``."""
+    """Build the near-atom of a name or descriptor (``'sofa'`` gives ``near[sofa]``)."""
     return Atom('near', (name if isinstance(name, Descriptor) else Descriptor(name),))
 
 
@@ -194,6 +194,7 @@ class Not(Formula):
         return self._hash
 
     def children(self) -> tuple[Formula, ...]:
+        """Direct sub-formulas."""
         return (self.operand,)
 
 

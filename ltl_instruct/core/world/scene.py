@@ -116,7 +116,7 @@ class Scene:
         raise KeyError(object_id)
 
     def blocking_boxes(self) -> tuple[Box, ...]:
-        """Static geometry the robot must not enter (before inflation).
+        """Return the static geometry the robot must not enter (before inflation).
 
         For a ground robot: obstacles and every sized object that is not passable.
         For a drone: obstacles and sized objects whose top reaches the altitude band.
@@ -133,7 +133,7 @@ class Scene:
         return tuple(boxes)
 
     def to_dict(self) -> dict[str, Any]:
-        """A dict in the scene-file format (round-trips through :func:`scene_from_dict`)."""
+        """Return a dict in the scene-file format (round-trips through :func:`scene_from_dict`)."""
         d: dict[str, Any] = {
             'name': self.name,
             'bounds': {'min': list(self.bounds_min), 'max': list(self.bounds_max)},

@@ -193,14 +193,23 @@ def test_cli_train_eval(tmp_path, capsys):
     assert result['city'] == 'testville' and result['model']['n'] == result['test_instructions'] > 0
     assert cli_main(['parser', 'eval', '--city', 'testville', '--data', str(tmp_path), '--model', model]) == 0
     assert 'baseline' in capsys.readouterr().out
-    # restarts: the kept run is the one with the best training reward
+    # restarts: four seeds probed by successive halving (one epoch, the better two one more),
+    # the best by training reward trained on; the kept run's log goes on from its probes
     assert cli_main(['parser', 'train', '--city', 'testville', '--data', str(tmp_path), '--out', model,
-                     '--epochs', '1', '--threads', '1', '--quiet', '--restarts', '2']) == 0
+                     '--epochs', '3', '--threads', '1', '--quiet', '--restarts', '4',
+                     '--probe-epochs', '1']) == 0
     info = ParserBundle.load(model).info
-    rewards = info['final_reward_per_restart']
-    assert len(rewards) == 2 and info['chosen_seed'] == int(rewards[1] > rewards[0])
-    assert cli_main(['parser', 'train', '--city', 'testville', '--data', str(tmp_path), '--out', model,
-                     '--restarts', '0']) == 2
+    first, second = info['probe_rounds']
+    assert len(first) == 4 and len(second) == 2
+    kept = sorted(first, key=lambda k: (-first[k], int(k)))[:2]
+    assert sorted(second) == sorted(kept)
+    best = min(second, key=lambda k: (-second[k], int(k)))
+    assert info['chosen_seed'] == int(best)
+    log = info['training']
+    assert log['epochs_run'] == 3 and log['mean_reward_per_epoch'][1] == second[best]
+    for bad in (['--restarts', '0'], ['--probe-epochs', '-1']):
+        assert cli_main(['parser', 'train', '--city', 'testville', '--data', str(tmp_path), '--out', model,
+                         *bad]) == 2
     # bad input: exit status 2 with a typed error
     assert cli_main(['parser', 'eval', '--city', 'nowhere', '--data', str(tmp_path), '--model', model]) == 2
     assert cli_main(['parser', 'eval', '--city', 'testville', '--data', str(tmp_path),

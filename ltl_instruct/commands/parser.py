@@ -34,8 +34,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     train.add_argument('--time-limit', type=float, default=None,
                        help='seconds after which no new epoch starts (default 1080)')
     train.add_argument('--seed', type=int, default=0, help='random seed (default 0)')
-    train.add_argument('--restarts', type=int, default=2,
-                       help='train from this many seeds, keep the best by training reward (default 2)')
+    train.add_argument('--restarts', type=int, default=4,
+                       help='probe this many seeds, train on the one with the best training reward '
+                            '(default 4)')
+    train.add_argument('--probe-epochs', type=int, default=4,
+                       help='epochs per round of successive halving over the seeds (default 4; '
+                            '0: one seed, no probing)')
     train.add_argument('--quiet', action='store_true', help='no per-epoch progress')
     eval_.add_argument('--model', required=True, help='model file written by "parser train"')
     eval_.add_argument('--json', action='store_true', help='print one JSON object')
@@ -56,7 +60,7 @@ def _train(args: argparse.Namespace) -> int:
     config = TrainingConfig(**overrides)
     progress = None if args.quiet else (lambda line: print(line, file=sys.stderr, flush=True))
     bundle = train_city(args.data, args.city, config, threads=args.threads, progress=progress,
-                        restarts=args.restarts)
+                        restarts=args.restarts, probe_epochs=args.probe_epochs)
     bundle.save(args.out)
     info = bundle.info
     print(f"trained {args.city}: {info['train_instructions']} instructions "

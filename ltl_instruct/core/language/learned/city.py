@@ -14,49 +14,71 @@ from ltl_instruct.core.language.learned.evaluation import evaluate
 from ltl_instruct.core.language.learned.model import GoalBaseline, ParserConfig, WordVocabulary
 from ltl_instruct.core.language.learned.programs import OutputVocabulary
 from ltl_instruct.core.language.learned.training import (
-    TrainingConfig, new_parser, train_baseline, train_parser,
+    ParserTrainer, RewardCache, TrainingConfig, epoch_message, new_parser, train_baseline,
 )
 
 
 def train_city(data_dir: str, city: str, config: TrainingConfig = TrainingConfig(),
                parser_config: ParserConfig = ParserConfig(), threads: int = 2,
-               progress: Optional[Callable[[str], None]] = None, restarts: int = 2) -> ParserBundle:
+               progress: Optional[Callable[[str], None]] = None, restarts: int = 4,
+               probe_epochs: int = 4) -> ParserBundle:
     """Train the parser and the baseline on the city's training split; returns the bundle.
 
-    With ``restarts`` > 1, the parser is trained from seeds ``seed, seed + 1, ...``
-    (each within ``time_limit_s / restarts``) and the run with the highest mean
-    top-beam reward on the training data in its last epoch is kept: training on
-    trajectories alone sometimes settles on spurious programs, and its own reward
-    shows it (no test data is used to choose).
+    Training on trajectories alone sometimes settles on spurious programs, and the
+    run's own training reward shows it, though only after several epochs (the rewards
+    of good and stuck seeds are alike for the first three or four). So seeds are
+    chosen by successive halving: ``restarts`` parsers (seeds ``seed, seed + 1, ...``)
+    are trained ``probe_epochs`` epochs each, the better half by mean top-beam training
+    reward in its last epoch is trained ``probe_epochs`` more, and so on until one is
+    left, which is trained on to ``config.epochs`` (all within ``config.time_limit_s``).
+    No test data is used to choose. The seeds share one reward cache.
     """
     if restarts < 1:
         raise InvalidInputError(f'restarts must be at least 1, got {restarts}')
+    if probe_epochs < 0:
+        raise InvalidInputError(f'probe_epochs must be at least 0, got {probe_epochs}')
     torch.set_num_threads(max(1, threads))
     started = time.monotonic()
     data = load_city(data_dir, city)
     train, test = split_train_test(data)
     lmap = data.landmark_map(train)
     words = WordVocabulary.build([d.instruction for d in train])
-    runs = []
-    for r in range(restarts):
-        run_config = dataclasses.replace(config, seed=config.seed + r,
-                                         time_limit_s=config.time_limit_s / restarts)
-        parser = new_parser(words, OutputVocabulary(lmap.props), parser_config, run_config.seed)
-        log = train_parser(parser, words, train, lmap, run_config, progress)
-        final = log.mean_reward_per_epoch[-1] if log.mean_reward_per_epoch else 0.0
-        runs.append((final, r, parser, log))
-    final, best, parser, log = max(runs, key=lambda run: (run[0], -run[1]))
+    out_vocab = OutputVocabulary(lmap.props)
+    rewards = RewardCache(out_vocab, lmap)
+    alive = []
+    for r in range(restarts if probe_epochs > 0 else 1):
+        run_config = dataclasses.replace(config, seed=config.seed + r)
+        alive.append(ParserTrainer(new_parser(words, out_vocab, parser_config, run_config.seed),
+                                   words, train, lmap, run_config, rewards))
+
+    def train_to(trainer: ParserTrainer, epochs: int) -> None:
+        while trainer.log.epochs_run < min(epochs, config.epochs) \
+                and time.monotonic() - started <= config.time_limit_s:
+            trainer.run_epoch()
+            if progress:
+                progress(epoch_message(trainer, started))
+
+    rounds: list[dict[int, float]] = []
+    target = 0
+    while len(alive) > 1:
+        target += probe_epochs
+        for trainer in alive:
+            train_to(trainer, target)
+        rounds.append({t.config.seed: t.last_reward for t in alive})
+        alive = sorted(alive, key=lambda t: (-t.last_reward, t.config.seed))[:(len(alive) + 1) // 2]
+    chosen = alive[0]
+    train_to(chosen, config.epochs)
     baseline = GoalBaseline(words.size, lmap.num_landmarks)
     train_baseline(baseline, words, train, config.baseline_epochs, config.seed)
     info = {'city': city, 'train_instructions': len(train), 'test_instructions': len(test),
             'train_trajectories': len({d.path for d in train}),
             'test_trajectories': len({d.path for d in test}),
-            'skipped_rows': data.skipped_rows, 'training': log.to_dict(),
-            'training_config': dict(config.__dict__), 'restarts': restarts,
-            'chosen_seed': config.seed + best,
-            'final_reward_per_restart': [run[0] for run in runs],
+            'skipped_rows': data.skipped_rows, 'training': chosen.log.to_dict(),
+            'training_config': dict(config.__dict__), 'restarts': restarts if probe_epochs > 0 else 1,
+            'probe_epochs': probe_epochs, 'chosen_seed': chosen.config.seed,
+            'probe_rounds': [{str(k): v for k, v in r.items()} for r in rounds],
             'total_seconds': time.monotonic() - started}
-    return ParserBundle(lmap, words, parser, baseline, info)
+    return ParserBundle(lmap, words, chosen.model, baseline, info)
 
 
 def evaluate_city(data_dir: str, city: str, bundle: ParserBundle, threads: int = 2) -> dict:

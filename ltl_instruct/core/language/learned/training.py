@@ -126,29 +126,46 @@ def encode_instructions(words: WordVocabulary, demos: Sequence[Demonstration]) -
     return [words.encode(d.instruction) for d in demos]
 
 
-def train_parser(model: SemanticParser, words: WordVocabulary, demos: Sequence[Demonstration],
+class ParserTrainer:
+    """Trains one parser epoch by epoch, so that several seeds can be probed and one continued.
+
+    Holds everything a run carries from one epoch to the next: the optimiser, the
+    sampling generator and the per-example memory of rewarded programs. Rewards are
+    a pure function of (program, trajectory), so several trainers may share one
+    :class:`RewardCache`.
+    """
+
+    def __init__(self, model: SemanticParser, words: WordVocabulary, demos: Sequence[Demonstration],
                  landmark_map: LandmarkMap, config: TrainingConfig = TrainingConfig(),
-                 progress: Optional[Callable[[str], None]] = None) -> TrainingLog:
-    """Train ``model`` in place on (instruction, trajectory) pairs; returns the log."""
-    torch.manual_seed(config.seed)
-    rng = np.random.default_rng(config.seed)
-    rewards = RewardCache(model.out_vocab, landmark_map)
-    optimiser = torch.optim.Adam(model.parameters(), lr=config.learning_rate)
-    word_ids = encode_instructions(words, demos)
-    memory: list[dict[tuple[int, ...], float]] = [{} for _ in demos]
-    log = TrainingLog()
-    started = time.monotonic()
-    for epoch in range(config.epochs):
-        if time.monotonic() - started > config.time_limit_s:
-            break
-        order = rng.permutation(len(demos))
+                 rewards: Optional[RewardCache] = None) -> None:
+        torch.manual_seed(config.seed)
+        self.model = model
+        self.demos = demos
+        self.config = config
+        self.rng = np.random.default_rng(config.seed)
+        self.rewards = rewards if rewards is not None else RewardCache(model.out_vocab, landmark_map)
+        self.optimiser = torch.optim.Adam(model.parameters(), lr=config.learning_rate)
+        self.word_ids = encode_instructions(words, demos)
+        self.memory: list[dict[tuple[int, ...], float]] = [{} for _ in demos]
+        self.log = TrainingLog()
+
+    @property
+    def last_reward(self) -> float:
+        """Mean top-beam reward over the training data in the last epoch (0 before any)."""
+        return self.log.mean_reward_per_epoch[-1] if self.log.mean_reward_per_epoch else 0.0
+
+    def run_epoch(self) -> None:
+        """One pass over the demonstrations in a random order, minibatch by minibatch."""
+        model, config, demos, memory, rewards = self.model, self.config, self.demos, self.memory, self.rewards
+        started = time.monotonic()
+        order = self.rng.permutation(len(demos))
         total_reward, hits = 0.0, 0
         model.train()
         for lo in range(0, len(order), config.batch):
             idx = [int(i) for i in order[lo:lo + config.batch]]
-            words_t, lengths = pad_batch([word_ids[i] for i in idx])
+            words_t, lengths = pad_batch([self.word_ids[i] for i in idx])
             states, mask = model.encode(words_t, lengths)
-            beams = model.beam_search(states.detach(), mask, config.beam, config.epsilon, rng)
+            beams = model.beam_search(states.detach(), mask, config.beam, config.epsilon, self.rng)
             programs: list[tuple[int, ...]] = []
             owners: list[int] = []
             weights: list[float] = []
@@ -180,21 +197,40 @@ def train_parser(model: SemanticParser, words: WordVocabulary, demos: Sequence[D
                 total = torch.zeros(len(idx)).index_add(0, owner_t, q)
                 q = q / total[owner_t]
             loss = -(q * logp).sum() / len(idx)
-            optimiser.zero_grad()
+            self.optimiser.zero_grad()
             loss.backward()
             torch.nn.utils.clip_grad_norm_(model.parameters(), 5.0)
-            optimiser.step()
-        log.epochs_run = epoch + 1
+            self.optimiser.step()
+        log = self.log
+        log.epochs_run += 1
+        log.seconds += time.monotonic() - started
         log.mean_reward_per_epoch.append(total_reward / max(1, len(demos)))
         log.hit_rate_per_epoch.append(hits / max(1, len(demos)))
+        log.reward_cache_entries = len(rewards._first)
+        model.eval()
+
+
+def train_parser(model: SemanticParser, words: WordVocabulary, demos: Sequence[Demonstration],
+                 landmark_map: LandmarkMap, config: TrainingConfig = TrainingConfig(),
+                 progress: Optional[Callable[[str], None]] = None) -> TrainingLog:
+    """Train ``model`` in place on (instruction, trajectory) pairs; returns the log."""
+    trainer = ParserTrainer(model, words, demos, landmark_map, config)
+    started = time.monotonic()
+    for epoch in range(config.epochs):
+        if time.monotonic() - started > config.time_limit_s:
+            break
+        trainer.run_epoch()
         if progress:
-            progress(f'epoch {epoch + 1}: mean top-beam reward {log.mean_reward_per_epoch[-1]:.3f}, '
-                     f'examples with a rewarded program {log.hit_rate_per_epoch[-1]:.3f}, '
-                     f'{time.monotonic() - started:.0f} s')
-    log.seconds = time.monotonic() - started
-    log.reward_cache_entries = len(rewards._first)
-    model.eval()
-    return log
+            progress(epoch_message(trainer, started))
+    return trainer.log
+
+
+def epoch_message(trainer: ParserTrainer, started: float) -> str:
+    """The progress line after an epoch."""
+    log = trainer.log
+    return (f'seed {trainer.config.seed} epoch {log.epochs_run}: mean top-beam reward '
+            f'{log.mean_reward_per_epoch[-1]:.3f}, examples with a rewarded program '
+            f'{log.hit_rate_per_epoch[-1]:.3f}, {time.monotonic() - started:.0f} s')
 
 
 def train_baseline(baseline: GoalBaseline, words: WordVocabulary, demos: Sequence[Demonstration],

@@ -172,3 +172,29 @@ CHAINED = [
 def test_orderings_chained_and_said_first(instruction: str, gold: str) -> None:
     got = T.translate(instruction)
     assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+EVERYDAY = [
+    ('Put the plate in the sink and the cup in the dishwasher.',
+     'F (near[plate] & F (pick[plate] & F (near[sink] & F release[plate, sink]))) & '
+     'F (near[cup] & F (pick[cup] & F (near[dishwasher] & F release[cup, dishwasher])))'),
+    ('After you drop off the package at the front desk, go to the elevator.',
+     'F (near[package] & F (pick[package] & F (near[front_desk] & F (release[package, front_desk] & '
+     'F near[elevator]))))'),
+    ('Go to the fridge, then the oven. Actually, go to the oven first.', 'F (near[oven] & F near[fridge])'),
+    ('Go to the fridge, then the oven, but go to the sink first.',
+     'F (near[sink] & F (near[fridge] & F near[oven]))'),
+    ('Go to the living room and wait there until the guard is seen.',
+     'F (near[living_room] & (near[living_room] U near[guard]))'),
+    ('Either fly over the lake or over the forest, but not both.',
+     '(F near[lake] & G !near[forest]) | (F near[forest] & G !near[lake])'),
+    ('Keep patrolling the hallway and the lobby.', 'G F near[hallway] & G F near[lobby]'),
+    ('Go to the balcony, but you can only enter the bedroom once.',
+     'F near[balcony] & !F (near[bedroom] & F (!near[bedroom] & F near[bedroom]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', EVERYDAY, ids=[c[0][:40] for c in EVERYDAY])
+def test_everyday_phrasings(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'

@@ -292,6 +292,7 @@ class Step:
     formula: Optional[Formula] = None
     avoid_at: list[Descriptor] = field(default_factory=list)
     once: str = ''   # 'exactly' ("visit a exactly once"), 'plain' ("go to a once, then b"), or ''
+    hold_until: list[Descriptor] = field(default_factory=list)   # "wait there until Y": x U y once there
 
 
 def render(steps: Sequence[Step]) -> Optional[Formula]:
@@ -314,7 +315,8 @@ def render(steps: Sequence[Step]) -> Optional[Formula]:
         return Eventually(_and(Not(_near(s.targets[0])), tail))
     if s.kind == 'visit':
         core: Formula = _or([_near(t) for t in s.targets])
-        body = _and(core, *[Not(_near(d)) for d in s.avoid_at], *_never(s.avoid_after), tail)
+        held = [Until(core, _near(d)) for d in s.hold_until]
+        body = _and(core, *held, *[Not(_near(d)) for d in s.avoid_at], *_never(s.avoid_after), tail)
     elif s.kind == 'pick':
         obj = s.targets[0]
         body = _and(_near(obj), Eventually(_and(Atom('pick', (obj,)), *_never(s.after_pick_avoid), tail)))
@@ -351,6 +353,7 @@ class _Clause:
     connector: str          # 'seq', 'and', 'pre', 'or'
     tokens: list[str]
     strict: bool = False    # "..., and only then ...": its goal not before the one before it
+    first: bool = False     # "..., go to X first": X before the goals given so far
 
 
 @dataclass
@@ -866,6 +869,8 @@ class _Reader:
         s = ' '.join(tokens)
         if s.startswith('either way'):
             tokens = tokens[2:]
+        elif len(tokens) > 2 and tokens[0] == 'either' and tokens[1] in GOAL_VERBS:
+            tokens = tokens[1:]   # "either fly over the lake or over the forest": the list says 'or'
         new_scope, tokens = self._leading_scope(tokens)
         if new_scope is not None:
             scope = new_scope
@@ -941,7 +946,7 @@ class _Reader:
                 self.saw_action = True
                 self._read_avoid(tokens, _Scope('onway'))
                 return scope
-            clause = _Clause('pre', clause.tokens)
+            clause = _Clause('pre', clause.tokens, first=True)
         if tokens[0] == 'only' and len(tokens) > 1 and tokens[1] in GOAL_VERBS | DELIVER_VERBS:
             tokens = tokens[1:]
             self.only = True
@@ -1400,7 +1405,8 @@ class _Reader:
                  ' continue to stop ', ' continue visiting ', ' continue going ', ' not stop ',
                  ' cannot stop ', ' never stop ', ' keep on ', ' continue moving ', ' continue to visit ',
                  ' continue to go ', ' keep going between ', ' back and forth ', ' cycle through ',
-                 ' ever stop ', ' cease ', ' always visiting ', ' finite number of times ', ' keep moving ')
+                 ' ever stop ', ' cease ', ' always visiting ', ' finite number of times ', ' keep moving ',
+                 ' keep patrolling ', ' continue patrolling ')
         if not any(m in s for m in marks):
             return False
         nps: list[NounPhrase] = []
@@ -1504,6 +1510,16 @@ class _Reader:
         if len(tokens) > 1 and tokens[0] in ('staying', 'remaining', 'keeping', 'stay', 'remain') and \
                 tokens[1] in ('in', 'on', 'within', 'inside'):
             leads = (tuple(tokens[:2]),)
+        if len(tokens) > 3 and tokens[0] in ('wait', 'stay', 'remain') and tokens[1] in ('there', 'here') \
+                and tokens[2] in ('until', 'till'):
+            # "go to the hall and wait there until you see the guard": at the goal, until then
+            step = self.task.last_step(('visit',))
+            j = self._skip_event_verbs(tokens, 3)
+            more, _, e2 = self._np_list(tokens, j)
+            if step is None or not more or e2 != len(tokens):
+                return False
+            step.hold_until.append(more[0].descriptor)
+            return True
         for lead in leads:
             if _starts(tokens, 0, lead):
                 nps, _, end = self._np_list(tokens, len(lead))
@@ -1698,7 +1714,7 @@ class _Reader:
         for d in targets:
             x = _near(d)
             known = self.task.find_step(d)
-            if n == 1 and mode == 'exactly' and known is not None and known.kind == 'visit' and \
+            if n == 1 and mode in ('exactly', 'at_most') and known is not None and known.kind == 'visit' and \
                     known.targets == [d]:
                 known.once = 'exactly'   # "go to a, then b; visit each of them only once"
                 continue
@@ -1718,6 +1734,26 @@ class _Reader:
         return True, rest[end:]
 
     def _read_delivery(self, tokens: list[str], clause: _Clause) -> bool:
+        """Read a delivery, and a second one said with the verb left out.
+
+        "Put the plate in the sink and the cup in the dishwasher": both, in either order.
+        """
+        dests = ('in', 'on', 'into', 'onto', 'to', 'at', 'inside')
+        if tokens[0] in PUT_VERBS | {'bring', 'take', 'carry', 'move', 'deliver'}:
+            for k in range(2, len(tokens) - 3):
+                if tokens[k] == 'and' and tokens[k + 1] in DETS and \
+                        any(t in dests for t in tokens[1:k]) and any(t in dests for t in tokens[k + 2:]):
+                    n = len(self.task.chain)
+                    if not (self._read_delivery_one(tokens[:k], clause) and
+                            self._read_delivery_one(tokens[:1] + tokens[k + 1:], clause)):
+                        return False
+                    if len(self.task.chain) == n + 2:   # both, in either order
+                        first, second = self.task.chain[n:]
+                        self.task.chain[n:] = [Step('all', chains=[[first], [second]])]
+                    return True
+        return self._read_delivery_one(tokens, clause)
+
+    def _read_delivery_one(self, tokens: list[str], clause: _Clause) -> bool:
         verb = tokens[0]
         k = 1
         implicit_dest: Optional[Descriptor] = None
@@ -1877,10 +1913,17 @@ class _Reader:
             self._goal_trailer(rest, tokens, targets)
             return
         tail: list[Step] = []
+        same = next((st for st in self.task.chain if st.kind == 'visit' and st.targets == targets), None)
+        if clause.first and same is not None and len(targets) == 1 and not rest:
+            # "go to the fridge, then the oven. actually, go to the oven first": the oven moves first
+            self.task.chain = [same] + [st for st in self.task.chain if st is not same]
+            self.last_goal = same
+            return
         if clause.connector == 'pre' and self.task.chain:
             # "..., before that, go to X": X before the goal of the clause before
             chain = self.task.chain
-            k = next((i for i, st in enumerate(chain) if st is self.last_goal), len(chain) - 1)
+            k = 0 if clause.first else next((i for i, st in enumerate(chain) if st is self.last_goal),
+                                            len(chain) - 1)   # "..., but go to X first": before them all
             tail, self.task.chain = chain[k:], chain[:k]
             self._add_targets(targets, joiner, ordered)
         else:

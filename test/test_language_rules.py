@@ -198,3 +198,12 @@ EVERYDAY = [
 def test_everyday_phrasings(instruction: str, gold: str) -> None:
     got = T.translate(instruction)
     assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+def test_words_a_reading_would_drop_are_named() -> None:
+    # the patrol reading keeps only places: a sentence with more in it is not one
+    with pytest.raises(TranslationError) as e:
+        T.translate('move the arm back and forth sorting the yellow balls')
+    assert 'sorting' in e.value.message
+    got = T.translate('Go to the gate and finish by going to the war memorial.')
+    assert equivalent(got.formula, parse_formula('F (near[gate] & F near[war_memorial])'))

@@ -158,6 +158,9 @@ RULES: tuple[Rule, ...] = (
 
     Rule('go to the lab from the second floor only', rf'\b(?:from|via|through) (?P<x>{_NP}) only\b',
          r'only through \g<x>'),
+    Rule('and finish by going to the gate',
+         rf'\b(?:and )?(?:finish|end|end up|conclude|wrap up) by {_GOING}\b',
+         lambda m: f'and finally {_plain(m.group(0).split(" by ", 1)[1])}'),
     Rule('start on the third floor, go to the roof', r'^start (?:on|at|in|from)\b', 'go to'),
     Rule('the 2 nd floor, level two', rf'\b(?:(?P<n>{_SMALL}) (?:st|nd|rd|th) floor|level (?P<m>{_SMALL}))\b',
          lambda m: f'{_ORDINAL_OF[m.group("n") or m.group("m")]} floor'),

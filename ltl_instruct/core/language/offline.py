@@ -33,8 +33,6 @@ from ltl_instruct.core.spec import (
     Always, And, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Or, Relation, Until, WeakUntil,
 )
 
-STOP_AFTER_THE = frozenset({'next', 'very', 'same', 'moment', 'time', 'following', 'other', 'end'})
-
 MAX_INSTRUCTION_CHARS = 2000
 
 AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -57,7 +55,7 @@ AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
 AVOID_FILLER = frozenset('''
 go ever drive fly walk move come get pass bump touch run head enter step visit stop cross approach
 land anywhere back near close to by into in over through past on onto around at the area of again
-even going passing touching knock hit disturb wake anywhere let yourself be into enter visiting
+even going passing touching knock hit disturb wake anywhere let yourself be into enter visiting follow
 entering navigate navigating reaching reach move moving travel traveling travelling stepping step
 walking fly flying driving going ever allowed permitted to first
 '''.split()) - {'the'} | {'revisit', 'revisiting', 'reenter'}
@@ -110,6 +108,17 @@ NOT_BEFORE_VERB = frozenset({'you', 'i', 'we', 'to', 'must', 'should', 'please',
                              'good', 'instead', 'rather', 'ahead', 'directly', 'straight', 'immediately',
                              'single', 'any', 'every', 'each', 'no'}) | \
     GOAL_VERBS_SEED
+
+# Words a patrol instruction may say besides its places ("keep going back and forth between a and b").
+PATROL_WORDS = GOAL_VERBS | GOAL_PARTICLES | FILLERS | frozenset('''
+do not never ever don and or between of a number times often all each every them these locations places
+landmarks rooms must should have has to you are is being allowed with no limits limit any order around circle
+circling loop looping cycle exploring explore patrol patrolling visiting going moving traveling travelling
+flying driving walking stopping stop cease quit until told otherwise always keep continue on over again while
+without make sure ensure can cannot an the arbitrary continuously endlessly finite forever forth frequent
+frequently future indefinitely infinite infinitely least once perpetually point repeatedly specific time
+visited prohibited in
+'''.split())
 
 # Words that may open a trigger of a rule ("whenever", "as soon as", "visiting a means...").
 RULE_WORDS = frozenset({'whenever', 'time', 'anytime', 'if', 'soon', 'after', 'once', 'when', 'moment',
@@ -913,7 +922,7 @@ class _Reader:
         if self._is_permission(tokens):
             self._read_permission(tokens)
             return scope
-        if self._read_patrol(tokens) or self._read_reaction(tokens):
+        if self._read_patrol(tokens):
             self.saw_action = True
             return scope
         if self._read_passive_avoid(tokens):
@@ -1419,42 +1428,13 @@ class _Reader:
                     nps.extend(found)
                     i = end
                     continue
+            if tokens[i] not in PATROL_WORDS and not any(tokens[i] in m.split() for m in marks):
+                return False   # words the patrol reading would drop: leave them to the other readers
             i += 1
         if not nps:
             return False
         for np in nps:
             self.task.constraints.append(Always(Eventually(_near(np.descriptor))))
-        return True
-
-    def _read_reaction(self, tokens: list[str]) -> bool:
-        """'whenever you visit a, go to b (immediately after)' -> ``G (a -> F b)`` / ``G (a -> X b)``."""
-        s = ' '.join(tokens)
-        lead = ('whenever', 'every time', 'each time', 'anytime', 'any time')
-        if not (s.startswith(lead) or ' whenever ' in s or ' every time ' in s or 'immediately after' in s
-                or 'right after' in s or 'at the next' in s or 'the next time instant' in s):
-            return False
-        names: list[Descriptor] = []
-        order: list[int] = []
-        for i in range(len(tokens)):
-            is_landmark = bool(self.phrases.landmarks) and self.phrases._landmark(tokens, i) is not None
-            is_the = tokens[i] == 'the' and i + 1 < len(tokens) and tokens[i + 1] not in STOP_AFTER_THE
-            if is_landmark or is_the:
-                np = self.phrases.parse(tokens, i)
-                if np is not None and np.descriptor not in names and not np.pronoun:
-                    names.append(np.descriptor)
-                    order.append(i)
-        if len(names) != 2:
-            return False
-        # the trigger is the place after whenever/after/once; the reaction is the other one
-        trig_words = ('whenever', 'time', 'after', 'once', 'if')
-        first, second = names
-        k = order[0]
-        if not any(w in tokens[max(0, k - 5):k] for w in trig_words):
-            first, second = second, first
-        immediate = any(w in s for w in ('immediately', 'right after', 'next time', 'at once',
-                                         'directly after', 'right away', 'very next'))
-        react: Formula = Next(_near(second)) if immediate else Eventually(_near(second))
-        self.task.constraints.append(Always(Implies(_near(first), react)))
         return True
 
     @staticmethod

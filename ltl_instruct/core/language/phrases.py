@@ -76,7 +76,7 @@ while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside
 unless except whenever since because though although otherwise later afterwards afterward means thereafter
-followed remain remaining staying keeping
+followed remain remaining staying keeping forth
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.

@@ -2,9 +2,11 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ltl_instruct.core.automaton import equivalent
-from ltl_instruct.core.errors import TranslationError
+from ltl_instruct.core.errors import ErrorCode, LtlInstructError, TranslationError
 from ltl_instruct.core.language.offline import OfflineTranslator
 from ltl_instruct.core.spec import parse_formula
 
@@ -207,3 +209,23 @@ def test_words_a_reading_would_drop_are_named() -> None:
     assert 'sorting' in e.value.message
     got = T.translate('Go to the gate and finish by going to the war memorial.')
     assert equivalent(got.formula, parse_formula('F (near[gate] & F near[war_memorial])'))
+
+
+RULE_VOCAB = ['whenever', 'as', 'soon', 'you', 'visit', 'the', 'door', 'a', 'b', 'go', 'to', 'must', 'right',
+              'after', 'before', 'that', 'once', 'only', 'then', 'leave', 'never', 'again', 'each', 'place',
+              'exactly', 'twice', 'at', 'most', 'strict', 'order', 'in', 'if', 'and', 'or', 'not', 'until',
+              'is', 'visited', 'means', 'stay', 'there', 'wait', 'as', 'long', 'does', 'occur', 'maximum',
+              'number', 'of', 'visits', 'three', 'zero', 'times', 'without', 'returning', ',', '.', 'first',
+              'later']
+
+
+@settings(max_examples=300, derandomize=True, deadline=None)
+@given(st.lists(st.sampled_from(RULE_VOCAB), min_size=1, max_size=25))
+def test_word_salad_of_rules_gives_a_formula_or_a_typed_error(words: list[str]) -> None:
+    for translator in (T, OfflineTranslator(landmarks=('a', 'b'), once_scope='next')):
+        try:
+            t = translator.translate(' '.join(words))
+        except LtlInstructError as e:
+            assert e.code != ErrorCode.INTERNAL_ERROR, e.message
+            continue
+        assert t.formula is not None and str(t.formula)

@@ -191,6 +191,14 @@ EVERYDAY = [
     ('Either fly over the lake or over the forest, but not both.',
      '(F near[lake] & G !near[forest]) | (F near[forest] & G !near[lake])'),
     ('Keep patrolling the hallway and the lobby.', 'G F near[hallway] & G F near[lobby]'),
+    ('Go to the park, stay there until the dog is seen, and then go home.',
+     'F (near[park] & (near[park] U (near[dog] & F near[home])))'),
+    ('When you get to the kitchen, grab a spoon and bring it to the table.',
+     'F (near[kitchen] & F (near[spoon] & F (pick[spoon] & F (near[table] & F release[spoon, table]))))'),
+    ('Deliver the letter to the mailbox only after you have visited the post office.',
+     'F (near[post_office] & F (near[letter] & F (pick[letter] & F (near[mailbox] & '
+     'F release[letter, mailbox]))))'),
+    ('The drone must survey the field, then it must land at the base.', 'F (near[field] & F near[base])'),
     ('Go to the balcony, but you can only enter the bedroom once.',
      'F near[balcony] & !F (near[bedroom] & F (!near[bedroom] & F near[bedroom]))'),
 ]

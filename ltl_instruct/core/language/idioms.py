@@ -161,6 +161,10 @@ RULES: tuple[Rule, ...] = (
     Rule('and finish by going to the gate',
          rf'\b(?:and )?(?:finish|end|end up|conclude|wrap up) by {_GOING}\b',
          lambda m: f'and finally {_plain(m.group(0).split(" by ", 1)[1])}'),
+    Rule('the drone must survey the field, then it must land',
+         r'(?P<pre>^|, |\bthen |\band )(?:the )?(?:robot|drone|it) (?:must|should|has to|needs to|will|'
+         r'shall) ',
+         r'\g<pre>'),
     Rule('start on the third floor, go to the roof', r'^start (?:on|at|in|from)\b', 'go to'),
     Rule('the 2 nd floor, level two', rf'\b(?:(?P<n>{_SMALL}) (?:st|nd|rd|th) floor|level (?P<m>{_SMALL}))\b',
          lambda m: f'{_ORDINAL_OF[m.group("n") or m.group("m")]} floor'),

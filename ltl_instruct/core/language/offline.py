@@ -625,6 +625,11 @@ class _Reader:
             return scope
         if tokens[0] in ('leave', 'exit') and self._read_leave(tokens[1:]):
             return scope
+        if (tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS) and scope is not None and \
+                scope.kind == 'after' and scope.target is not None and \
+                self.task.find_step(scope.target.descriptor) is None:
+            # "when you get to the kitchen, grab a spoon": the kitchen first
+            self.task.chain.append(Step('visit', [scope.target.descriptor]))
         if tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS or _starts(tokens, 0, ['throw', 'away']):
             if self._read_delivery(tokens, clause):
                 self.saw_action = True
@@ -1094,7 +1099,7 @@ class _Reader:
                                     ' you are allowed ', ' it is okay to ', ' it is fine to ', ' or stop ',
                                     ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ',
                                     ' or continue ')
-                   ) and ' not ' not in s and ' can only ' not in s
+                   ) and ' not ' not in s and ' can only ' not in s and ' there until ' not in s
 
     def _read_permission(self, tokens: list[str]) -> None:
         """'...then you can go to Y': an avoidance of Y that was pending ends where the goal is reached."""
@@ -1462,6 +1467,13 @@ class _Reader:
             if sc is None and rest[0] == 'and':
                 pass
             rest = rem
+        if rest[:1] in (['after'], ['once']) or rest[:2] == ['only', 'after']:
+            # "deliver the letter to the mailbox (only) after you have visited the post office": that first
+            k = self._skip_event_verbs(rest, 2 if rest[0] == 'only' else 1)
+            first, _, end = self._np_list(rest, k)
+            if first and end == len(rest):
+                self.task.chain.extend(Step('visit', [np.descriptor]) for np in first)
+                rest = []
         self._check_leftover(rest, tokens)
         # "pick up X and put it on Y": the pick step becomes the delivery.
         obj_ds = [o.descriptor for o in objs]

@@ -119,8 +119,12 @@ def render(steps: Sequence[Step]) -> Optional[Formula]:
         return Eventually(conjoin(Not(near_atom(s.targets[0])), tail))
     if s.kind == 'visit':
         core: Formula = disjoin([near_atom(t) for t in s.targets])
-        held = [Until(core, near_atom(d)) for d in s.hold_until]
-        body = conjoin(core, *held, *[Not(near_atom(d)) for d in s.avoid_at], *never_all(s.avoid_after), tail)
+        if s.hold_until:
+            # "wait there until Y, then ...": at X until Y, and the rest after Y
+            until = conjoin(near_atom(s.hold_until[0]), tail)
+            assert until is not None
+            tail = Until(core, until)
+        body = conjoin(core, *[Not(near_atom(d)) for d in s.avoid_at], *never_all(s.avoid_after), tail)
     elif s.kind == 'pick':
         obj = s.targets[0]
         picked = conjoin(Atom('pick', (obj,)), *never_all(s.after_pick_avoid), tail)

@@ -37,11 +37,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--timeout', type=float, default=30.0, help='llm backend: per-request timeout [s]')
     parser.add_argument('--avoid-scope', choices=('global', 'goal'), default='global',
                         help='offline backend: "go to X and avoid Y" as G !Y (global) or at X only (goal)')
+    parser.add_argument('--once-scope', choices=('run', 'next'), default='run',
+                        help='offline backend: "visit X only once, then Y" for the whole run (run) or until '
+                             'Y (next, lang2ltl\'s strictly ordered visits)')
 
 
 def _options(args: argparse.Namespace) -> dict[str, Any]:
     if args.backend == 'offline':
-        return {'avoid_scope': args.avoid_scope}
+        return {'avoid_scope': args.avoid_scope, 'once_scope': getattr(args, 'once_scope', 'run')}
     if args.backend == 'learned':
         return {'model_path': args.model_path}
     opts: dict[str, Any] = {'timeout_s': args.timeout}

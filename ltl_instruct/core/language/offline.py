@@ -18,18 +18,29 @@ know, followed by a place, is read as going there; each of these is named in the
 translation's notes, which the verification dialog shows. Whatever else the rules
 cannot place, and any leftover word that could carry meaning (a place, a negation, an
 order word), raises :class:`TranslationError` naming the words left over.
+
+The word lists live in :mod:`ltl_instruct.core.language.lexicon`, the task model (steps, their
+formula, the count builders) in :mod:`ltl_instruct.core.language.task`, idioms rewritten to
+plain phrasing in :mod:`ltl_instruct.core.language.idioms`, and rules over the whole run
+("whenever X, Y") in :mod:`ltl_instruct.core.language.reactions`.
 """
 from __future__ import annotations
 
 import re
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
 from ltl_instruct.core.language import chatter
 from ltl_instruct.core.language.base import Translation
 from ltl_instruct.core.language.idioms import rewrite_idioms
+from ltl_instruct.core.language.lexicon import (
+    AVOID_BY_FIRST_WORD as _AVOID_BY_FIRST, AVOID_FILLER, CLAUSE_OPENING_WORDS, CLAUSE_STARTERS,
+    DELIVER_VERBS, EVENT_WORDS, FILLERS, GOAL_PARTICLES, GOAL_VERBS, GOAL_VERBS_SEED, IGNORED_CLAUSES,
+    NOISE_TAILS, NOT_BEFORE_VERB, ORDER_TAILS, PATROL_WORDS, PICK_VERBS, PUT_VERBS, RULE_WORDS,
+    RUN_ON_NOT_AFTER, STAY_BY_FIRST_WORD as _STAY_BY_FIRST, STRICT_ORDER_TAILS, STRONG_VERBS, TRASH,
+)
 from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
     DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
@@ -37,324 +48,16 @@ from ltl_instruct.core.language.phrases import (
 from ltl_instruct.core.language.reactions import RuleReader
 from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
 from ltl_instruct.core.language.spelling import Speller
+from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders are part of this API)
+    Step, Task as _Task, at_least, at_most, conjoin as _and, disjoin as _or, exactly, near_atom as _near,
+    never_all as _never, render, until_avoid as _until_avoid,
+)
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
-    Always, And, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Or, Relation, Until, WeakUntil,
+    Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
 )
-
-STOP_AFTER_THE = frozenset({'next', 'very', 'same', 'moment', 'time', 'following', 'other', 'end'})
 
 MAX_INSTRUCTION_CHARS = 2000
-
-AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
-    ('avoid',), ('stay', 'away', 'from'), ('keep', 'away', 'from'), ('keep', 'off'), ('stay', 'off'),
-    ('stay', 'clear', 'of'), ('steer', 'clear', 'of'), ('keep', 'clear', 'of'), ('stay', 'out', 'of'),
-    ('keep', 'out', 'of'), ('do', 'not'), ('never',), ('not',), ('keep', 'your', 'distance', 'from'),
-    ('stay', 'far', 'from'), ('keep', 'far', 'from'), ('without', 'going'), ('without', 'passing'),
-    ('without', 'touching'), ('stay', 'away'), ('keep', 'away'), ('and', 'not'), ('but', 'not'),
-    ('avoiding',), ('while', 'avoiding'), ('no',), ('shun',), ('always', 'avoid'), ('always', 'avoiding'),
-    ('without',), ('always', 'stay', 'away', 'from'), ('go', 'anywhere', 'but'), ('go', 'anywhere', 'except'),
-    ('anywhere', 'but'), ('anywhere', 'except'), ('go', 'anywhere', 'other', 'than'),
-    ('while', 'staying', 'away', 'from'), ('keep', 'avoiding'), ('bypass',),
-    ('keep', 'staying', 'away', 'from'),
-    ('keep', 'away', 'from'), ('while', 'keeping', 'away', 'from'),
-    ('staying', 'away', 'from'), ('keeping', 'away', 'from'), ('you', 'cannot'), ('you', 'can', 'not'),
-    ('staying', 'clear', 'of'), ('keeping', 'clear', 'of'), ('steering', 'clear', 'of'),
-    ('you', 'must', 'not'), ('you', 'should', 'not'), ('must', 'not'), ('cannot',), ('should', 'not'),
-), key=lambda t: -len(t)))
-
-# After "do not"/"never": verbs and particles to skip before the avoided noun phrase.
-AVOID_FILLER = frozenset('''
-go ever drive fly walk move come get pass bump touch run head enter step visit stop cross approach
-land anywhere back near close to by into in over through past on onto around at the area of again
-even going passing touching knock hit disturb wake anywhere let yourself be into enter visiting
-entering navigate navigating reaching reach move moving travel traveling travelling stepping step
-walking fly flying driving going ever allowed permitted to first
-'''.split()) - {'the'} | {'revisit', 'revisiting', 'reenter'}
-
-# Gerunds and participles of movement, skipped between "until"/"after"/"before" and the place.
-EVENT_WORDS = frozenset('''
-reached visited arrived checked passed gone been going visiting reaching seen see got gotten made
-landed surveyed at there enter entering entered navigating navigated moving moved traveling
-travelling travelled heading headed arriving touching touched stepping stepped walking walked flying
-flew driving drove getting coming came returning returned finding found observing observe observed
-hitting hit after pass cross crossed crossing visit go enter reach get arrive passing going travelling
-traveling moving
-'''.split())
-
-GOAL_VERBS_SEED = frozenset({'go', 'do', 'make', 'let', 'come', 'get', 'stop'})
-
-GOAL_VERBS = frozenset('''
-go goes head visit navigate move drive fly walk run come return check find locate reach get stop
-swing make proceed travel survey inspect do continue advance report going heading navigating moving
-travelling traveling flying driving walking visiting reaching land charge stand hover approach enter
-circle pass explore search look patrol wander roll arrive be need want please robot drone hey can
-could would you i will just also then now first next lastly finally and so okay kindly go ahead end
-up
-'''.split())
-GOAL_PARTICLES = frozenset('''
-to over by at for on out back in into through past up down your way off around toward towards inside
-there from onto me quickly straight directly
-'''.split())
-FILLERS = frozenset('''
-sometime sometimes
-please pls hey robot drone can could would you will just also then now first next lastly finally and
-so okay kindly i need want like to be sure make remember also yes alright right well oh hmm um er
-but eventually must have should ensure required that certainly definitely simply
-'''.split())
-DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
-                           'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',
-                           'stash', 'store', 'push', 'relocate', 'chuck'})
-PUT_VERBS = frozenset({'put', 'place', 'leave', 'drop', 'set', 'toss', 'throw', 'stick', 'stash', 'store',
-                       'dump', 'chuck'})
-PICK_VERBS = frozenset({'pick', 'grab', 'fetch', 'collect', 'get', 'retrieve', 'lift'})
-TRASH = Descriptor('trash_can')
-
-NOT_BEFORE_VERB = frozenset({'you', 'i', 'we', 'to', 'must', 'should', 'please', 'and', 'then', 'or', ',',
-                             'can', 'will', 'would', 'could', 'not', 'also', 'just', 'first', 'never',
-                             'always',
-                             'finally', 'lastly', 'next', 'once', 'let', 'robot', 'drone', 'hey', 'sometime',
-                             'eventually', 'but', 'so', 'afterwards', 'need', 'want', 'only', 'cannot',
-                             'may', 'might', 'shall', 'do', 'does', 'did', 'allowed', 'able', 'have', 'has',
-                             'had', 'ever', 'dont', 'permitted', 'supposed', 'required', 'free', 'ok', 'okay',
-                             'good', 'instead', 'rather', 'ahead', 'directly', 'straight', 'immediately',
-                             'single', 'any', 'every', 'each', 'no'}) | \
-    GOAL_VERBS_SEED
-
-# Words that may open a trigger of a rule ("whenever", "as soon as", "visiting a means...").
-RULE_WORDS = frozenset({'whenever', 'time', 'anytime', 'if', 'soon', 'after', 'once', 'when', 'moment',
-                        'before', 'means', 'later', 'future', 'afterwards', 'afterward', 'immediately'})
-
-# Words after which a clause opener ("do not", "never", "you must") does not start a new clause.
-RUN_ON_NOT_AFTER = frozenset({'and', 'or', 'but', 'then', 'that', 'so', 'if', 'when', 'because', 'where',
-                              'which', 'who', 'what', 'why', 'how', 'as', 'the', 'a', 'an', 'to', 'of', 'for',
-                              'until', 'before', 'after', 'while', 'unless', 'whenever'})
-
-STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})
-
-# Trailing phrases that add nothing to the task ("at all costs", "on your travels").
-NOISE_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
-    ('at', 'all', 'costs'), ('on', 'your', 'travels'), ('the', 'order', 'is', 'not', 'important'),
-    ('there', 'can', 'be', 'other', 'locations', 'in', 'between'), ('sometime',), ('at', 'some', 'point'),
-    ('order', 'is', 'not', 'important'), ('in', 'any', 'order', 'required'), ('required',),
-    ('the', 'order', 'does', 'not', 'matter'), ('in', 'no', 'particular', 'order'), ('eventually',),
-    ('at', 'least', 'once'), ('at', 'any', 'time'), ('at', 'any', 'instant'), ('ever',),
-    ('as', 'many', 'times', 'as', 'you', 'want'), ('as', 'many', 'times', 'as', 'you', 'like'),
-    ('as', 'often', 'as', 'you', 'want'), ('as', 'often', 'as', 'you', 'like'), ('in', 'the', 'future'),
-), key=lambda t: -len(t)))
-ORDER_TAILS: tuple[tuple[str, ...], ...] = (
-    ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),
-    ('in', 'the', 'given', 'order'), ('in', 'the', 'same', 'order'), ('in', 'this', 'order'),
-    ('in', 'that', 'order'), ('in', 'order'), ('one', 'after', 'the', 'other'),
-    ('in', 'the', 'order', 'given'),
-)
-# "in that strict order", "without visiting any out of turn": no goal may come before the one it follows.
-STRICT_ORDER_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
-    ('in', 'that', 'specific', 'order'), ('in', 'this', 'strict', 'order'), ('in', 'that', 'strict', 'order'),
-    ('in', 'this', 'specific', 'order'), ('in', 'strict', 'order'), ('in', 'strictly', 'this', 'order'),
-    ('in', 'strictly', 'that', 'order'), ('strictly', 'in', 'this', 'order'),
-    ('strictly', 'in', 'that', 'order'),
-    ('strictly', 'in', 'order'), ('in', 'the', 'exact', 'order'), ('in', 'exactly', 'that', 'order'),
-    ('in', 'exactly', 'this', 'order'), ('in', 'that', 'exact', 'order'), ('in', 'this', 'exact', 'order'),
-    ('in', 'the', 'following', 'strict', 'order'), ('in', 'strict', 'sequence'),
-    ('follow', 'this', 'strict', 'order'), ('in', 'this', 'exact', 'sequence'),
-    ('in', 'that', 'exact', 'sequence'), ('in', 'that', 'exact', 'order'),
-    ('make', 'sure', 'not', 'to', 'visit', 'waypoints', 'out', 'of', 'turn'),
-    ('make', 'sure', 'not', 'to', 'visit', 'locations', 'out', 'of', 'turn'),
-    ('ensure', 'to', 'not', 'visit', 'locations', 'out', 'of', 'turn'),
-    ('ensure', 'to', 'not', 'visit', 'waypoints', 'out', 'of', 'turn'),
-    ('without', 'visiting', 'any', 'out', 'of', 'turn'), ('never', 'out', 'of', 'turn'),
-    ('not', 'out', 'of', 'turn'),
-), key=lambda t: -len(t)))
-
-IGNORED_CLAUSES = frozenset({
-    'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
-    'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',
-    'thank you', 'okay', 'in that order', 'in order', 'whichever is closer', 'it does not matter which',
-    'your choice', 'up to you', 'i do not mind which', 'start', 'start up', 'go ahead', 'stop', 'stop there',
-    'and stop', 'then stop', 'stay there', 'stop moving', 'finish', 'be done', 'done', 'and be done',
-    'first', 'second', 'third', 'fourth', 'fifth', 'secondly', 'thirdly', 'firstly', 'next', 'lastly',
-    'finally', 'then', 'after that', 'afterwards', 'land', 'land there', 'and land', 'then land'})
-
-# "stay on the third floor", "do not leave the red room": the robot stays within a region.
-STAY_WITHIN: tuple[tuple[str, ...], ...] = tuple(sorted((
-    ('cannot', 'leave'), ('must', 'not', 'leave'), ('not', 'leave'), ('should', 'not', 'leave'),
-    ('stay', 'in'), ('stay', 'on'), ('stay', 'within'), ('stay', 'inside'), ('remain', 'in'),
-    ('remain', 'on'), ('remain', 'within'), ('remain', 'inside'), ('do', 'not', 'leave'),
-    ('never', 'leave'), ('do', 'not', 'exit'), ('do', 'not', 'navigate', 'away', 'from'),
-    ('do', 'not', 'move', 'away', 'from'), ('never', 'move', 'outside', 'of'),
-    ('never', 'go', 'outside', 'of'), ('do', 'not', 'go', 'outside', 'of'), ('without', 'leaving'),
-    ('without', 'exiting'), ('only', 'stepping', 'in'), ('by', 'only', 'stepping', 'in'),
-    ('always', 'stay', 'in'), ('always', 'stay', 'on'), ('always', 'remain', 'in'),
-    ('always', 'remain', 'on'), ('never', 'exit'), ('do', 'not', 'step', 'out', 'of'),
-    ('never', 'step', 'out', 'of'), ('stay', 'at'), ('remain', 'at'), ('do', 'not', 'leave', 'from'),
-    ('you', 'cannot', 'leave'), ('you', 'can', 'not', 'leave'), ('you', 'must', 'not', 'leave'),
-    ('keep', 'going', 'on'), ('wait', 'at'), ('wait', 'in'), ('stay', 'put', 'at'),
-    ('are', 'not', 'allowed', 'to', 'leave'), ('do', 'not', 'move', 'outside', 'of'),
-    ('only', 'walk', 'in'), ('while', 'staying', 'in'), ('while', 'staying', 'on'),
-    ('while', 'remaining', 'in'), ('while', 'remaining', 'on'), ('staying', 'on'), ('staying', 'in'),
-    ('staying', 'within'), ('remaining', 'on'), ('remaining', 'in'), ('remaining', 'within'),
-    ('by', 'only', 'navigating', 'within'), ('by', 'only', 'navigating', 'in'),
-    ('by', 'only', 'moving', 'in'), ('by', 'only', 'moving', 'within'), ('only', 'navigating', 'within'),
-    ('only', 'moving', 'in'), ('without', 'stepping', 'outside', 'of'), ('without', 'stepping', 'outside'),
-    ('without', 'ever', 'leaving'), ('without', 'stepping', 'out', 'of'), ('never', 'leaving'),
-    ('only', 'through'), ('by', 'staying', 'in'), ('by', 'staying', 'on'), ('by', 'staying', 'within'),
-), key=lambda t: -len(t)))
-
-CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
-    'only', 'not', 'never', 'do', 'stay', 'keep', 'avoid', 'on', 'once', 'after', 'before', 'while',
-    'if', 'either', 'also', 'just', 'first', 'but', 'when', 'until', 'whatever', 'finally', 'no', 'steer',
-    'along', 'take', 'fly', 'survey', 'drive', 'land', 'stop', 'swing', 'make', 'patrol', 'charge', 'hover',
-    'whichever', 'order', 'in', 'twice', 'three', 'exactly', 'at', 'and', 'then', 'eventually', 'sometime',
-    'afterwards', 'afterward', 'later', 'ensure'}) - {
-    'be', 'robot', 'drone', 'hey', 'okay', 'kindly', 'so', 'now', 'lastly', 'up', 'end', 'ahead', 'i',
-    'you', 'can', 'could', 'would', 'will', 'need', 'want', 'please'} | {'i', 'you', 'please'}
-
-
-def _by_first_word(phrases: Sequence[tuple[str, ...]]) -> dict[str, tuple[tuple[str, ...], ...]]:
-    """Index phrases by their first word, keeping their order (longest first where sorted so)."""
-    out: dict[str, list[tuple[str, ...]]] = {}
-    for p in phrases:
-        out.setdefault(p[0], []).append(p)
-    return {k: tuple(v) for k, v in out.items()}
-
-
-_AVOID_BY_FIRST = _by_first_word(AVOID_TRIGGERS)
-_STAY_BY_FIRST = _by_first_word(STAY_WITHIN)
-# Every word at which _clauses may see a clause boundary.
-CLAUSE_OPENING_WORDS = STRONG_VERBS | {
-    'only', 'then', 'and', ',', 'after', 'finally', 'afterwards', 'afterward', 'lastly', 'once', 'when',
-    'before', 'always', 'do', 'never', 'ensure', 'make', 'you', 'not', 'leave', 'but', 'so', 'while', 'or',
-    ':', ';'}   # ":" as in "be careful: never...", "Rover: head to..."
-
-
-def _near(d: Descriptor) -> Atom:
-    return Atom('near', (d,))
-
-
-def _and(*parts: Optional[Formula]) -> Optional[Formula]:
-    items: list[Formula] = []
-    for p in parts:
-        if p is None:
-            continue
-        items.extend(p.operands if isinstance(p, And) else (p,))
-    if not items:
-        return None
-    return items[0] if len(items) == 1 else And(tuple(items))
-
-
-def _or(parts: Sequence[Formula]) -> Formula:
-    items: list[Formula] = []
-    for p in parts:
-        items.extend(p.operands if isinstance(p, Or) else (p,))
-    return items[0] if len(items) == 1 else Or(tuple(items))
-
-
-def _never(ds: Sequence[Descriptor]) -> list[Formula]:
-    return [Always(Not(_near(d))) for d in ds]
-
-
-def at_least(x: Formula, n: int, tail: Optional[Formula] = None) -> Formula:
-    """``n`` separate visits of ``x`` (then ``tail``): ``F (x & F (!x & F (x ...)))``."""
-    body: Optional[Formula] = tail
-    for k in range(n):
-        body = Eventually(_and(x, body)) if body is not None else Eventually(x)
-        if k < n - 1:
-            body = Eventually(And((Not(x), body)))
-    assert body is not None
-    return body
-
-
-def at_most(x: Formula, n: int) -> Formula:
-    """At most ``n`` separate visits of ``x`` (the development set's convention for n = 1)."""
-    body: Formula = Always(Not(x))
-    for k in range(n):
-        inner = WeakUntil(x, body if k == 0 else And((Not(x), body)))
-        body = WeakUntil(Not(x), And((x, inner)))
-    return body
-
-
-def exactly(x: Formula, n: int) -> Formula:
-    """Exactly ``n`` separate visits of ``x``."""
-    body: Formula = Until(Not(x), And((x, WeakUntil(x, Always(Not(x))))))
-    for _ in range(n - 1):
-        body = Until(Not(x), And((x, Until(x, And((Not(x), body))))))
-    return body
-
-
-@dataclass
-class Step:
-    """One step of a chain (a sequence of things to do, in order).
-
-    kind: ``visit`` (targets are alternatives), ``leave`` (be away from the target),
-    ``deliver`` (pick ``targets[0]``, release at one of ``dests``), ``pick``,
-    ``all``/``any`` (sub-chains, all of them in any order / one of them), ``formula``.
-    """
-
-    kind: str
-    targets: list[Descriptor] = field(default_factory=list)
-    dests: list[Descriptor] = field(default_factory=list)
-    avoid_until: list[Descriptor] = field(default_factory=list)
-    avoid_after: list[Descriptor] = field(default_factory=list)
-    carry_avoid: list[Descriptor] = field(default_factory=list)
-    after_pick_avoid: list[Descriptor] = field(default_factory=list)
-    after_release_avoid: list[Descriptor] = field(default_factory=list)
-    chains: list[list['Step']] = field(default_factory=list)
-    formula: Optional[Formula] = None
-    avoid_at: list[Descriptor] = field(default_factory=list)
-    once: str = ''   # 'exactly' ("visit a exactly once"), 'plain' ("go to a once, then b"), or ''
-
-
-def render(steps: Sequence[Step]) -> Optional[Formula]:
-    """Return the formula of a chain of steps: each step eventually, the rest after it."""
-    if not steps:
-        return None
-    s, rest = steps[0], list(steps[1:])
-    if s.kind == 'all':
-        # "A and B, then C": C after both
-        parts = [render(list(c) + rest) for c in s.chains]
-        return _and(*parts)
-    if s.kind == 'any':
-        alts = [render(list(c) + rest) for c in s.chains]
-        return _or([a for a in alts if a is not None])
-    tail = render(rest)
-    if s.kind == 'formula':
-        assert s.formula is not None
-        return _and(tail, s.formula)   # the goals print first; the meaning is the same
-    if s.kind == 'leave':
-        return Eventually(_and(Not(_near(s.targets[0])), tail))
-    if s.kind == 'visit':
-        core: Formula = _or([_near(t) for t in s.targets])
-        body = _and(core, *[Not(_near(d)) for d in s.avoid_at], *_never(s.avoid_after), tail)
-    elif s.kind == 'pick':
-        obj = s.targets[0]
-        body = _and(_near(obj), Eventually(_and(Atom('pick', (obj,)), *_never(s.after_pick_avoid), tail)))
-    else:
-        obj = s.targets[0]
-        arrivals = []
-        for d in s.dests:
-            rel = _and(Atom('release', (obj, d)), *_never(s.after_release_avoid), tail)
-            arrive = _and(_near(d), Eventually(rel))
-            assert arrive is not None
-            if s.carry_avoid:
-                arrivals.append(_until_avoid(s.carry_avoid, arrive))
-            else:
-                arrivals.append(Eventually(arrive))
-        picked = _and(Atom('pick', (obj,)), *_never(s.after_pick_avoid), _or(arrivals))
-        body = _and(_near(obj), Eventually(picked) if picked is not None else None)
-    assert body is not None
-    if s.avoid_until:
-        if s.kind == 'visit':
-            reach = _until_avoid(s.avoid_until, core)
-            return reach if body == core else And((reach, Eventually(body)))
-        return _until_avoid(s.avoid_until, body)
-    return Eventually(body)
-
-
-def _until_avoid(avoid: Sequence[Descriptor], goal: Formula) -> Formula:
-    guard = _and(*[Not(_near(d)) for d in avoid])
-    assert guard is not None
-    return Until(guard, goal)
 
 
 @dataclass
@@ -362,6 +65,7 @@ class _Clause:
     connector: str          # 'seq', 'and', 'pre', 'or'
     tokens: list[str]
     strict: bool = False    # "..., and only then ...": its goal not before the one before it
+    first: bool = False     # "..., go to X first": X before the goals given so far
 
 
 @dataclass
@@ -369,50 +73,6 @@ class _Scope:
     kind: str = 'global'   # global, until, onway, after, carry, after_pick, after_release
     target: Optional[NounPhrase] = None
     event: str = 'near'    # for until: near / pick / release
-
-
-class _Task:
-    """Mutable builder of chains and constraints while the clauses are read."""
-
-    def __init__(self) -> None:
-        self.chain: list[Step] = []
-        self.constraints: list[Formula] = []
-        self.repeat = 1
-        self.chain_at: Optional[int] = None   # constraints printed before the goals (an until read with them)
-
-    def find_step(self, d: Descriptor, head: str = '') -> Optional[Step]:
-        for s in reversed(self._all_steps()):
-            if s.kind in ('visit', 'deliver', 'pick'):
-                names = s.targets + s.dests
-                if d in names or (head and any(head in n.name.split('_') for n in names)):
-                    return s
-        return None
-
-    def _all_steps(self) -> list[Step]:
-        out: list[Step] = []
-
-        def walk(steps: Sequence[Step]) -> None:
-            for s in steps:
-                out.append(s)
-                for c in s.chains:
-                    walk(c)
-        walk(self.chain)
-        return out
-
-    def last_step(self, kinds: tuple[str, ...] = ('visit', 'deliver', 'pick', 'all', 'any')
-                  ) -> Optional[Step]:
-        for s in reversed(self.chain):
-            if s.kind in kinds:
-                return s
-        return None
-
-    def formula(self) -> Formula:
-        chain = self.chain * self.repeat
-        at = len(self.constraints) if self.chain_at is None else self.chain_at
-        f = _and(*self.constraints[:at], render(chain), *self.constraints[at:])
-        if f is None:
-            raise TranslationError('the instruction names nothing to do and nothing to avoid')
-        return f
 
 
 class OfflineTranslator:
@@ -505,10 +165,9 @@ def _speller() -> Speller:
     """Return the speller, its lexicon the word lists of the rules (built once)."""
     global _SPELLER
     if _SPELLER is None:
-        from ltl_instruct.core.language import phrases, text
+        from ltl_instruct.core.language import lexicon as words, phrases, rewrite, text
         lexicon: set[str] = set()
-        from ltl_instruct.core.language import rewrite
-        for module in (globals(), vars(phrases), vars(text), vars(chatter), vars(rewrite)):
+        for module in (globals(), vars(words), vars(phrases), vars(text), vars(chatter), vars(rewrite)):
             for value in module.values():
                 if isinstance(value, frozenset) and all(isinstance(w, str) for w in value):
                     lexicon |= value
@@ -1021,6 +680,8 @@ class _Reader:
         s = ' '.join(tokens)
         if s.startswith('either way'):
             tokens = tokens[2:]
+        elif len(tokens) > 2 and tokens[0] == 'either' and tokens[1] in GOAL_VERBS:
+            tokens = tokens[1:]   # "either fly over the lake or over the forest": the list says 'or'
         new_scope, tokens = self._leading_scope(tokens)
         if new_scope is not None:
             scope = new_scope
@@ -1085,7 +746,7 @@ class _Reader:
         if self._is_permission(tokens):
             self._read_permission(tokens)
             return scope
-        if self._read_patrol(tokens) or self._read_reaction(tokens):
+        if self._read_patrol(tokens):
             self.saw_action = True
             return scope
         if self._read_passive_avoid(tokens):
@@ -1120,7 +781,7 @@ class _Reader:
                 self.saw_action = True
                 self._read_avoid(tokens, _Scope('onway'))
                 return scope
-            clause = _Clause('pre', clause.tokens)
+            clause = _Clause('pre', clause.tokens, first=True)
         if tokens[0] == 'only' and len(tokens) > 1 and tokens[1] in GOAL_VERBS | DELIVER_VERBS:
             tokens = tokens[1:]
             self.only = True
@@ -1160,6 +821,11 @@ class _Reader:
             return scope
         if tokens[0] in ('leave', 'exit') and self._read_leave(tokens[1:]):
             return scope
+        if (tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS) and scope is not None and \
+                scope.kind == 'after' and scope.target is not None and \
+                self.task.find_step(scope.target.descriptor) is None:
+            # "when you get to the kitchen, grab a spoon": the kitchen first
+            self.task.chain.append(Step('visit', [scope.target.descriptor]))
         if tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS or _starts(tokens, 0, ['throw', 'away']):
             if self._read_delivery(tokens, clause):
                 self.saw_action = True
@@ -1774,7 +1440,8 @@ class _Reader:
                  ' continue to stop ', ' continue visiting ', ' continue going ', ' not stop ',
                  ' cannot stop ', ' never stop ', ' keep on ', ' continue moving ', ' continue to visit ',
                  ' continue to go ', ' keep going between ', ' back and forth ', ' cycle through ',
-                 ' ever stop ', ' cease ', ' always visiting ', ' finite number of times ', ' keep moving ')
+                 ' ever stop ', ' cease ', ' always visiting ', ' finite number of times ', ' keep moving ',
+                 ' keep patrolling ', ' continue patrolling ')
         if not any(m in s for m in marks):
             return False
         nps: list[NounPhrase] = []
@@ -1787,42 +1454,13 @@ class _Reader:
                     nps.extend(found)
                     i = end
                     continue
+            if tokens[i] not in PATROL_WORDS and not any(tokens[i] in m.split() for m in marks):
+                return False   # words the patrol reading would drop: leave them to the other readers
             i += 1
         if not nps:
             return False
         for np in nps:
             self.task.constraints.append(Always(Eventually(_near(np.descriptor))))
-        return True
-
-    def _read_reaction(self, tokens: list[str]) -> bool:
-        """'whenever you visit a, go to b (immediately after)' -> ``G (a -> F b)`` / ``G (a -> X b)``."""
-        s = ' '.join(tokens)
-        lead = ('whenever', 'every time', 'each time', 'anytime', 'any time')
-        if not (s.startswith(lead) or ' whenever ' in s or ' every time ' in s or 'immediately after' in s
-                or 'right after' in s or 'at the next' in s or 'the next time instant' in s):
-            return False
-        names: list[Descriptor] = []
-        order: list[int] = []
-        for i in range(len(tokens)):
-            is_landmark = bool(self.phrases.landmarks) and self.phrases._landmark(tokens, i) is not None
-            is_the = tokens[i] == 'the' and i + 1 < len(tokens) and tokens[i + 1] not in STOP_AFTER_THE
-            if is_landmark or is_the:
-                np = self.phrases.parse(tokens, i)
-                if np is not None and np.descriptor not in names and not np.pronoun:
-                    names.append(np.descriptor)
-                    order.append(i)
-        if len(names) != 2:
-            return False
-        # the trigger is the place after whenever/after/once; the reaction is the other one
-        trig_words = ('whenever', 'time', 'after', 'once', 'if')
-        first, second = names
-        k = order[0]
-        if not any(w in tokens[max(0, k - 5):k] for w in trig_words):
-            first, second = second, first
-        immediate = any(w in s for w in ('immediately', 'right after', 'next time', 'at once',
-                                         'directly after', 'right away', 'very next'))
-        react: Formula = Next(_near(second)) if immediate else Eventually(_near(second))
-        self.task.constraints.append(Always(Implies(_near(first), react)))
         return True
 
     @staticmethod
@@ -1832,7 +1470,7 @@ class _Reader:
                                     ' you are allowed ', ' it is okay to ', ' it is fine to ', ' or stop ',
                                     ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ',
                                     ' or continue ')
-                   ) and ' not ' not in s and ' can only ' not in s
+                   ) and ' not ' not in s and ' can only ' not in s and ' there until ' not in s
 
     def _read_permission(self, tokens: list[str]) -> None:
         """'...then you can go to Y': an avoidance of Y that was pending ends where the goal is reached."""
@@ -1878,6 +1516,16 @@ class _Reader:
         if len(tokens) > 1 and tokens[0] in ('staying', 'remaining', 'keeping', 'stay', 'remain') and \
                 tokens[1] in ('in', 'on', 'within', 'inside'):
             leads = (tuple(tokens[:2]),)
+        if len(tokens) > 3 and tokens[0] in ('wait', 'stay', 'remain') and tokens[1] in ('there', 'here') \
+                and tokens[2] in ('until', 'till'):
+            # "go to the hall and wait there until you see the guard": at the goal, until then
+            step = self.task.last_step(('visit',))
+            j = self._skip_event_verbs(tokens, 3)
+            more, _, e2 = self._np_list(tokens, j)
+            if step is None or not more or e2 != len(tokens):
+                return False
+            step.hold_until.append(more[0].descriptor)
+            return True
         for lead in leads:
             if _starts(tokens, 0, lead):
                 nps, _, end = self._np_list(tokens, len(lead))
@@ -2088,7 +1736,7 @@ class _Reader:
         for d in targets:
             x = _near(d)
             known = self.task.find_step(d)
-            if n == 1 and mode == 'exactly' and known is not None and known.kind == 'visit' and \
+            if n == 1 and mode in ('exactly', 'at_most') and known is not None and known.kind == 'visit' and \
                     known.targets == [d]:
                 known.once = 'exactly'   # "go to a, then b; visit each of them only once"
                 continue
@@ -2116,6 +1764,26 @@ class _Reader:
         return True, rest[end:]
 
     def _read_delivery(self, tokens: list[str], clause: _Clause) -> bool:
+        """Read a delivery, and a second one said with the verb left out.
+
+        "Put the plate in the sink and the cup in the dishwasher": both, in either order.
+        """
+        dests = ('in', 'on', 'into', 'onto', 'to', 'at', 'inside')
+        if tokens[0] in PUT_VERBS | {'bring', 'take', 'carry', 'move', 'deliver'}:
+            for k in range(2, len(tokens) - 3):
+                if tokens[k] == 'and' and tokens[k + 1] in DETS and \
+                        any(t in dests for t in tokens[1:k]) and any(t in dests for t in tokens[k + 2:]):
+                    n = len(self.task.chain)
+                    if not (self._read_delivery_one(tokens[:k], clause) and
+                            self._read_delivery_one(tokens[:1] + tokens[k + 1:], clause)):
+                        return False
+                    if len(self.task.chain) == n + 2:   # both, in either order
+                        first, second = self.task.chain[n:]
+                        self.task.chain[n:] = [Step('all', chains=[[first], [second]])]
+                    return True
+        return self._read_delivery_one(tokens, clause)
+
+    def _read_delivery_one(self, tokens: list[str], clause: _Clause) -> bool:
         verb = tokens[0]
         last = self.task.chain[-1] if self.task.chain else None
         if [t for t in tokens[1:] if t != 'me'] in (['one', 'of', 'them'], ['either', 'of', 'them'],
@@ -2205,6 +1873,13 @@ class _Reader:
             if sc is None and rest[0] == 'and':
                 pass
             rest = rem
+        if rest[:1] in (['after'], ['once']) or rest[:2] == ['only', 'after']:
+            # "deliver the letter to the mailbox (only) after you have visited the post office": that first
+            k = self._skip_event_verbs(rest, 2 if rest[0] == 'only' else 1)
+            first, _, end = self._np_list(rest, k)
+            if first and end == len(rest):
+                self.task.chain.extend(Step('visit', [np.descriptor]) for np in first)
+                rest = []
         self._check_leftover(rest, tokens)
         # "pick up X and put it on Y": the pick step becomes the delivery.
         obj_ds = [o.descriptor for o in objs]
@@ -2322,10 +1997,17 @@ class _Reader:
             self._goal_trailer(rest, tokens, targets)
             return
         tail: list[Step] = []
+        same = next((st for st in self.task.chain if st.kind == 'visit' and st.targets == targets), None)
+        if clause.first and same is not None and len(targets) == 1 and not rest:
+            # "go to the fridge, then the oven. actually, go to the oven first": the oven moves first
+            self.task.chain = [same] + [st for st in self.task.chain if st is not same]
+            self.last_goal = same
+            return
         if clause.connector == 'pre' and self.task.chain:
             # "..., before that, go to X": X before the goal of the clause before
             chain = self.task.chain
-            k = next((i for i, st in enumerate(chain) if st is self.last_goal), len(chain) - 1)
+            k = 0 if clause.first else next((i for i, st in enumerate(chain) if st is self.last_goal),
+                                            len(chain) - 1)   # "..., but go to X first": before them all
             tail, self.task.chain = chain[k:], chain[:k]
             self._add_targets(targets, joiner, ordered)
         elif self.insert_before is not None and self.insert_before in self.task.chain:

@@ -79,7 +79,7 @@ fine enough again cannot cant dont one along throughout entire whole during with
 always directly immediately ever never by near behind between above under below beneath beside
 unless except whenever since because though although otherwise later afterwards afterward means thereafter
 something anything everything nothing someone anyone anymore forever staying keeping steering remaining
-followed remain
+followed remain forth
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.
@@ -87,6 +87,9 @@ PART_WORDS = frozenset('''
 roof top side front back door entrance exit corner end edge middle center centre bottom base foot gate
 window wall floor lobby steps stairs porch yard garden balcony
 '''.split())
+
+# Prepositions said again before the next alternative of a list ("over the lake or over the forest").
+LIST_PREPOSITIONS = frozenset({'to', 'over', 'through', 'past', 'into', 'onto', 'towards', 'toward', 'by'})
 
 # "location b", "landmark c": a generic noun before a known landmark name
 PLACE_NOUNS = frozenset({'location', 'landmark', 'place', 'waypoint', 'point'})
@@ -402,6 +405,9 @@ class PhraseParser:
                 break
             if j < len(tokens) and tokens[j] in ('then', 'after', 'finally', 'also'):
                 break
+            if sep == 'or' and j + 1 < len(tokens) and tokens[j] in LIST_PREPOSITIONS and i > 0 and \
+                    tokens[phrases[0].start - 1] == tokens[j]:
+                j += 1   # "over the lake or over the forest": the preposition said again
             nxt = self.parse(tokens, j, destination_stops)
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break

@@ -619,13 +619,13 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     retracted = _retract_avoidance(prev, seg, notes)
     if retracted is not None:
         return retracted
+    reordered = _first_instead(prev, seg, notes)   # before a restatement: "actually, go to X first"
+    if reordered is not None:
+        return reordered
     if marker in _RESTATE:
         restated = _restate(prev, seg, notes)
         if restated is not None:
             return restated
-    reordered = _first_instead(prev, seg, notes)
-    if reordered is not None:
-        return reordered
     if seg and seg[0] in _CANCEL and marker not in _CANCEL and marker != 'never':
         marker, seg = seg[0], seg[1:]
     s = ' '.join(seg)

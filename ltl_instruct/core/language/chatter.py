@@ -137,6 +137,48 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
 ))
 
 
+# Nouns that name a list of tasks, not a place: a heading before a colon ("Morning routine:").
+TASK_NOUNS = frozenset('''
+routine routines plan plans task tasks errand errands job jobs chore chores instruction instructions agenda
+itinerary mission missions schedule steps step program programme todo list checklist rundown
+orders assignment assignments duty duties workflow procedure protocol today tonight
+morning afternoon evening plan rules rule note notes reminder reminders request requests
+'''.split())
+
+
+# Verbs that open a command, not a heading ("go to these in this order: ...").
+_COMMANDS = frozenset({'go', 'visit', 'head', 'bring', 'take', 'put', 'do', 'move', 'drive', 'fly', 'walk',
+                       'get', 'fetch', 'carry', 'deliver', 'survey', 'patrol', 'avoid', 'stop', 'swing'})
+# A heading that changes the plan given before is a self-correction ("Change of plan: ..."), read later.
+_CHANGES = frozenset({'change', 'changed', 'correction', 'update', 'updated', 'new', 'revised', 'actually',
+                      'instead', 'wait', 'sorry', 'amended', 'different'})
+
+
+def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
+    """Remove a heading before a colon that opens a sentence ("Morning routine for you, robot: ..."), noted.
+
+    A heading names the list of tasks that follows (a word of :data:`TASK_NOUNS`) and holds no
+    constraint word; a list of places before a colon ("the shelf, the cabinet: ...") is no heading.
+    """
+    out: list[str] = []
+    i = 0
+    n = len(tokens)
+    while i < n:
+        if i == 0 or tokens[i - 1] in '.;!?':
+            c = next((k for k in range(i, min(n, i + 9)) if tokens[k] in PUNCT and tokens[k] != ','), -1)
+            head = tokens[i:c] if c > i and tokens[c] == ':' else []
+            if head and c + 1 < n and any(w in TASK_NOUNS for w in head) and not carries_constraint(head) \
+                    and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
+                        w in DETERMINERS and k > 0 and head[k - 1] in (',', 'and', 'or')
+                        for k, w in enumerate(head)):
+                notes.append(f'left out the heading "{" ".join(t for t in head if t != ",")}:"')
+                i = c + 1
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 def strip_frames(tokens: list[str], notes: list[str]) -> list[str]:
     """Remove frames around a request ("it would be great if you could ...", "time to ..."), noted."""
     text = ' ' + ' '.join(tokens) + ' '
@@ -158,6 +200,24 @@ def has_constraint_word(tokens: Sequence[str]) -> bool:
     return any((t in CONSTRAINT_WORDS or t.isdigit()) and not (
         (t in NUMBER_WORDS or t.isdigit()) and k > 0 and tokens[k - 1] in ('at', 'around', 'about') and
         tokens[k + 1:k + 2] not in (['times'], ['time'])) for k, t in enumerate(tokens))
+
+
+# After "keep" / "stay": words that make it a constraint ("keep away", "stay off"); "keep an eye
+# on", "stay calm" ask for nothing about places.
+_KEEP_CONSTRAINT = frozenset({'away', 'off', 'clear', 'out', 'far', 'back', 'your', 'well', 'in', 'on',
+                              'within', 'inside', 'at', 'there', 'here', 'put', 'behind', 'outside', 'right',
+                              'to', 'going', 'moving', 'visiting'})
+
+
+def carries_constraint(tokens: Sequence[str]) -> bool:
+    """Whether words hold a negation, an avoid or stay verb, an order or a count word.
+
+    As :func:`has_constraint_word`, but "keep" and "stay" count only where they constrain where
+    the robot goes ("keep away from", "stay in"), not in "keep an eye out", "stay calm".
+    """
+    words = [t for k, t in enumerate(tokens) if not (
+        t in ('keep', 'stay') and (k + 1 >= len(tokens) or tokens[k + 1] not in _KEEP_CONSTRAINT))]
+    return has_constraint_word(words) or 'avoid' in words or any(w.startswith('avoid') for w in words)
 
 
 def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:

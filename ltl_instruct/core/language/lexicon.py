@@ -64,7 +64,7 @@ FILLERS = frozenset('''
 sometime sometimes
 please pls hey robot drone can could would you will just also then now first next lastly finally and
 so okay kindly i need want like to be sure make remember also yes alright right well oh hmm um er
-but eventually must have should ensure required that certainly definitely simply
+but eventually must have should ensure required that certainly definitely simply though although
 '''.split())
 DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
                            'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',
@@ -181,7 +181,7 @@ CLAUSE_STARTERS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
     'if', 'either', 'also', 'just', 'first', 'but', 'when', 'until', 'whatever', 'finally', 'no', 'steer',
     'along', 'take', 'fly', 'survey', 'drive', 'land', 'stop', 'swing', 'make', 'patrol', 'charge', 'hover',
     'whichever', 'order', 'in', 'twice', 'three', 'exactly', 'at', 'and', 'then', 'eventually', 'sometime',
-    'afterwards', 'afterward', 'later', 'ensure'}) - {
+    'afterwards', 'afterward', 'later', 'ensure', 'though', 'although'}) - {
     'be', 'robot', 'drone', 'hey', 'okay', 'kindly', 'so', 'now', 'lastly', 'up', 'end', 'ahead', 'i',
     'you', 'can', 'could', 'would', 'will', 'need', 'want', 'please'} | {'i', 'you', 'please'}
 

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
-from ltl_instruct.core.language import chatter
+from ltl_instruct.core.language import chatter, orders
 from ltl_instruct.core.language.base import Translation
 from ltl_instruct.core.language.idioms import rewrite_idioms
 from ltl_instruct.core.language.lexicon import (
@@ -124,9 +124,10 @@ class OfflineTranslator:
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         notes: list[str] = []
         tokens = _correct_spelling(tokens, notes, self.landmarks)
+        tokens = chatter.strip_headings(tokens, notes) if ':' in tokens else tokens
         tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
                                                  notes))
-        tokens = resolve_list_references(tokens, notes)
+        tokens = orders.apply_reverse(resolve_list_references(tokens, notes), notes)
         tokens = apply_exclusions(apply_corrections(tokens, notes), notes)
         tokens = rewrite_idioms(tokens)
         reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope)
@@ -176,7 +177,8 @@ def _speller() -> Speller:
         lexicon |= set(text.TYPOS.values())
         core = chatter.CONSTRAINT_WORDS | GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {
             'avoid', 'near', 'away', 'visit', 'between', 'behind', 'after', 'before', 'until', 'then',
-            'never', 'twice', 'once', 'stay', 'keep', 'bring', 'take', 'please'}
+            'never', 'twice', 'once', 'stay', 'keep', 'bring', 'take', 'please', 'order', 'sequence',
+            'reverse', 'whichever', 'either', 'times', 'least', 'most', 'exactly'}
         _SPELLER = Speller(lexicon=lexicon, core=core - {'be', 'i', 'you'})
     return _SPELLER
 
@@ -237,13 +239,13 @@ def _strip_tails(rest: list[str]) -> tuple[list[str], str]:
     changed = True
     while changed and rest:
         changed = False
-        for tail in STRICT_ORDER_TAILS + NOISE_TAILS + ORDER_TAILS:
+        for tail in STRICT_ORDER_TAILS + NOISE_TAILS + ORDER_TAILS + orders.ORDER_TAILS:
             n = len(tail)
             for i in range(len(rest) - n + 1):
                 if tuple(rest[i:i + n]) == tail and (i == 0 or i + n == len(rest)):
                     if tail in STRICT_ORDER_TAILS:
                         order = 'strict'
-                    elif tail in ORDER_TAILS:
+                    elif tail in ORDER_TAILS or tail in orders.ORDER_TAILS:
                         order = order or 'sequence'
                     rest = rest[:i] + rest[i + n:]
                     changed = True
@@ -290,6 +292,9 @@ class _Reader:
         self.insert_before: Optional[Step] = None
         self.strict_chain = False   # "in that strict order" somewhere in the instruction
         self.last_goal: Optional[Step] = None   # the last goal clause's step ("before that" refers to it)
+        # the goals of the last "X after Y" read, and the ones they come after ("and not a second earlier")
+        self.last_after: Optional[tuple[list[Descriptor], list[Descriptor]]] = None
+        self.stated_goals: list[Descriptor] = []   # goals of "X comes after Y" (for "go to both")
         self.connector = 'and'   # how the goal clause being read joins the one before it
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
@@ -439,6 +444,9 @@ class _Reader:
             if skip:
                 skip = False
                 continue
+            if clause.connector == 'purpose' and not chatter.carries_constraint(clause.tokens):
+                self.notes.append(f'left out "so {" ".join(clause.tokens)}" (says why, asks for nothing)')
+                continue
             later = [t for c in clauses[n:] for t in c.tokens]
             first = self._strip_fillers(clause.tokens)
             if self._read_optional(clause.tokens, clauses[n + 1].tokens if n + 1 < len(clauses) else []):
@@ -571,6 +579,12 @@ class _Reader:
                     j += 1
                 if t == 'while' and j < n and tokens[j] in ('avoiding', 'staying', 'keeping', 'never'):
                     boundary, skip = 'and', 1
+                elif t in ('so', ',') and tokens[j - 1] == 'so' and (tokens[j:j + 1] == ['that'] or (
+                        tokens[j:j + 1] in (['you'], ['i'], ['we'], ['they'], ['it'], ['nobody'],
+                                            ['everyone']) and j + 1 < n and tokens[j + 1] in (
+                            'can', 'could', 'will', 'may', 'might', 'are', 'have', 'do', 'would', 'get',
+                            'know'))):
+                    boundary, skip = 'purpose', j - i   # "..., so you can keep an eye on the door"
                 elif t == ',' and j + 1 < n and tokens[j] in ('can', 'could', 'would', 'will') and \
                         tokens[j + 1] == 'you':
                     boundary, skip = 'and', 1   # "I left it by the door, can you go there"
@@ -705,6 +719,10 @@ class _Reader:
                 self.saw_action = True
                 self.task.chain.append(Step('visit', [np.descriptor for np in nps]))
                 return scope
+        if s.startswith(('because ', 'since ', 'so that ', 'as ')) and not chatter.has_constraint_word(
+                    tokens[1:]) and len(tokens) > 2:
+            self.notes.append(f'left out "{" ".join(clause.tokens)}" (says why, asks for nothing)')
+            return scope
         if s.endswith(fine) or s in IGNORED_CLAUSES or \
                 s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                               'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
@@ -715,6 +733,8 @@ class _Reader:
         if tuple(tokens) in STRICT_ORDER_TAILS:
             self.strict_chain = True   # "in strictly this order, visit a, then b"
             return scope
+        if orders.is_strict_marker(tokens) and self._strict_last():
+            return scope   # "go to X once you have been to Y, and not a second earlier"
         if s in ('not both', 'but not both', 'not both of them'):
             self._exclusive_or()
             return scope
@@ -749,7 +769,7 @@ class _Reader:
         if self._read_patrol(tokens):
             self.saw_action = True
             return scope
-        if self._read_passive_avoid(tokens):
+        if self._read_passive_avoid(tokens) or self._read_order_statement(tokens):
             self.saw_action = True
             return scope
         for tail in (['are', 'all', 'visited'], ['are', 'visited'], ['is', 'visited'], ['are', 'reached'],
@@ -1023,10 +1043,18 @@ class _Reader:
                 rest = tokens[len(lead):]
                 if _starts(rest, 0, ['from', 'there']):
                     rest = rest[2:]
+                elif rest[:1] in (['from'], ['between']):
+                    leg = self._leg(rest)   # "on the way from X to Y": avoided between the two
+                    if leg is not None:
+                        return leg
+                back = rest[:1] == ['back'] and rest[1:2] in (['to'], ['towards'])
+                if back:
+                    rest = rest[1:]   # "on the way back to X": to X again
                 if rest and rest[0] in ('to', 'towards', 'toward'):
                     np = self.phrases.parse(rest, 1)
                     if np is not None:
-                        return _Scope('onway', self._resolve(np, place=True)), rest[np.end:]
+                        return _Scope('onway', self._resolve(np, place=True), 'back' if back else 'near'), \
+                            rest[np.end:]
                 if rest and rest[0] == 'there':
                     return _Scope('onway'), rest[1:]
                 if rest and rest[0] == 'back':
@@ -1043,6 +1071,25 @@ class _Reader:
             if sc is not None and sc.kind == 'until':
                 return sc, rest
         return None, tokens
+
+    def _leg(self, rest: list[str]) -> Optional[tuple[_Scope, list[str]]]:
+        """Read 'from X to Y' / 'between X and Y' after "on the way": the leg of the route to Y after X.
+
+        X and Y are goals (given before, or added here in that order); what is avoided on the
+        leg is avoided from X until Y is reached.
+        """
+        src = self.phrases.parse(rest, 1)
+        if src is None or src.end >= len(rest) or rest[src.end] not in (
+                ('and',) if rest[0] == 'between' else ('to', 'towards', 'toward')):
+            return None
+        dst = self.phrases.parse(rest, src.end + 1)
+        if dst is None:
+            return None
+        src, dst = self._resolve(src, place=True), self._resolve(dst, place=True)
+        if self.task.find_step(src.descriptor) is None:
+            self.task.chain.append(Step('visit', [src.descriptor]))
+        self.last_place = dst
+        return _Scope('onway', dst), rest[dst.end:]
 
     def _event_phrase(self, tokens: list[str], i: int) -> tuple[Optional[_Scope], int]:
         """After "once/after/while": the event (reaching X, picking it up, dropping it off, carrying it)."""
@@ -1066,13 +1113,19 @@ class _Reader:
             return None, i
         w = tokens[j]
         if w in ('going', 'navigating', 'heading', 'travelling', 'traveling', 'walking', 'flying', 'driving',
-                 'moving') and tokens[i - 1] in ('while', 'when'):
+                 'moving', 'returning', 'coming', 'getting', 'making') and \
+                tokens[i - 1] in ('while', 'when') and (
+                    w not in ('returning', 'coming', 'getting', 'making') or
+                    tokens[j + 1:j + 2] in (['to'], ['back'], ['your'])):
             k = j + 1
-            while k < len(tokens) and tokens[k] in GOAL_PARTICLES:
+            back = w in ('returning', 'coming') or tokens[k:k + 1] == ['back']
+            while k < len(tokens) and (tokens[k] in GOAL_PARTICLES or
+                                       tokens[k] == 'way' and tokens[k - 1] == 'your'):
                 k += 1
             np = self.phrases.parse(tokens, k)
             if np is not None:
-                return _Scope('onway', self._resolve(np, place=True), 'while'), np.end
+                # "while returning to the hall": on the way to it (again, if it was a goal before)
+                return _Scope('onway', self._resolve(np, place=True), 'back' if back else 'while'), np.end
         if w in ('carrying', 'holding', 'transporting', 'bringing', 'taking', 'moving', 'returning'):
             k = j + 1
             np = self.phrases.parse(tokens, k)
@@ -1352,6 +1405,8 @@ class _Reader:
             step: Optional[Step]
             if scope is not None and scope.target is not None:
                 step = self.task.find_step(scope.target.descriptor)
+                if step is not None and scope.event == 'back' and step is not self.task.last_step(('visit',)):
+                    step = None   # "on the way back to X" after other goals: X once more
                 if step is None:
                     step = Step('visit', [scope.target.descriptor])
                     self.task.chain.append(step)
@@ -1408,6 +1463,21 @@ class _Reader:
                 self.pending_avoid_at.extend(targets)
             return
         self.task.constraints.extend(_never(targets))
+
+    def _read_order_statement(self, tokens: list[str]) -> bool:
+        """Read 'X comes after Y' (both goals, X not before Y); 'X comes before Y' the other way."""
+        found = orders.order_statement(tokens, self.phrases)
+        if found is None:
+            return False
+        x, word, y = found
+        later, earlier = (x, y) if word == 'after' else (y, x)
+        if self.task.find_step(later.descriptor) is None:
+            # "F x & (!x U y)", the dev set's "x only after y" (the until makes y required)
+            self.task.constraints.append(Eventually(_near(later.descriptor)))
+        self.task.constraints.append(Until(Not(_near(later.descriptor)), _near(earlier.descriptor)))
+        self.stated_goals += [later.descriptor, earlier.descriptor]
+        self.last_place = later
+        return True
 
     def _read_passive_avoid(self, tokens: list[str]) -> bool:
         """Read passive avoidance: 'a and b cannot be visited', 'none of a, b are visited'."""
@@ -1936,6 +2006,13 @@ class _Reader:
             self.notes.append(f'"{" ".join(tokens)}": going to the place named before')
             return
         last = self.task.chain[-1] if self.task.chain else None
+        if tokens[k:] in (['both'], ['both', 'of', 'them'], ['them', 'both'], ['all', 'of', 'them'],
+                          ['them', 'all'], ['each', 'of', 'them'], ['all', 'three'], ['all', 'four'],
+                          ['each'], ['them']) and \
+                k > 0 and len([st for st in self.task.chain if st.kind in ('visit', 'deliver', 'all')]) + \
+                len(self.stated_goals) > 1:
+            self.saw_action = True   # "the bench comes after the hood; go to both": the goals already given
+            return
         if (tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
                            ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these'],
                            ['one']) or (
@@ -1956,6 +2033,11 @@ class _Reader:
             self.saw_action = True
         rest, ordered_tail = _strip_tails([t for t in tokens[end:] if t != ','])
         targets = [np.descriptor for np in nps]
+        r0, r1 = orders.find_phrase(rest, orders.REVERSE)
+        if r0 == 0 and len(targets) > 1 and joiner != 'or':
+            # "visit a, b and c in reverse order": c, then b, then a
+            targets, ordered_tail, rest = targets[::-1], 'sequence', rest[r1:]
+            self.notes.append('the goals are visited in reverse order')
         if patrol_from and rest and rest[0] == 'to':
             more, _, e2 = self._np_list(rest, 1)
             if more:
@@ -2095,6 +2177,25 @@ class _Reader:
         self.saw_action = True
         return True
 
+    def _strict_last(self) -> bool:
+        """'..., and not a second earlier': the goal said to come after another is not reached before it.
+
+        The pair is the last "X after Y" read, else the last two goals of the chain.
+        """
+        if self.last_after is not None:
+            later, earlier = self.last_after
+        else:
+            visits = [st for st in self.task.chain if st.kind == 'visit']
+            if len(visits) < 2:
+                return False
+            earlier, later = visits[-2].targets, visits[-1].targets
+        for x in later:
+            f = Until(Not(_near(x)), _or([_near(d) for d in earlier]))
+            if f not in self.task.constraints and x not in earlier:
+                self.task.constraints.append(f)
+        self.notes.append(f'{", ".join(map(str, later))} not before {", ".join(map(str, earlier))}')
+        return True
+
     def _after_goals(self, moved: Step, others: list[Descriptor], again: bool) -> None:
         """'go to X after Y': Y then X; a Y or an X given as a goal before is that goal, not a new one.
 
@@ -2175,6 +2276,7 @@ class _Reader:
                             self.task.constraints.append(Until(Not(_near(x)), _near(d)))
                 elif word == 'after':
                     self._after_goals(moved, others, again=bool({'again', 'back', 'return'} & set(whole)))
+                    self.last_after = (list(targets), others)
                 else:
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                     self.task.chain.append(moved)

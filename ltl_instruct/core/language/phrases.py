@@ -56,6 +56,12 @@ LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('either', 'one', 'among'), ('one', 'among'), ('any', 'one', 'among'), ('either', 'of'), ('any', 'of'),
 ), key=lambda t: -len(t)))
 
+# List heads that make a list a choice ("either of the red door and the blue door").
+CHOICE_HEADS: tuple[tuple[str, ...], ...] = (
+    ('either', 'of'), ('any', 'of'), ('one', 'of'), ('any', 'one', 'of'), ('either', 'one', 'of'),
+    ('whichever', 'of'), ('one', 'among'), ('any', 'one', 'among'), ('either', 'one', 'among'),
+    ('any', 'locations', 'among'), ('any', 'of', 'the', 'locations'))
+
 # Words that introduce a relative clause before a relation ("that's on", "which is behind").
 RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
     ('that', 'is', 'right'), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
@@ -378,7 +384,9 @@ class PhraseParser:
         (phrases, joiner, end): joiner is ``'and'``, ``'or'`` or ``''`` for a single phrase.
         """
         joiner = ''
-        if i < len(tokens) and tokens[i] in ('either', 'both'):
+        # "either of X and Y", "any one of X, Y and Z": one of them, however they are joined
+        choice = any(tuple(tokens[i:i + len(h)]) == h for h in CHOICE_HEADS)
+        if i < len(tokens) and tokens[i] in ('either', 'both') and tokens[i + 1:i + 2] != ['of']:
             i += 1
         phrases: list[NounPhrase] = []
         first = self.parse(tokens, i, destination_stops)
@@ -423,4 +431,6 @@ class PhraseParser:
             phrases.append(nxt)
             joiner = sep if sep == 'or' or not joiner else joiner
             i = nxt.end
+        if choice and len(phrases) > 1:
+            joiner = 'or'
         return phrases, joiner, i

@@ -25,9 +25,10 @@ from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
-                          'notice', 'find', ','})
+                          'notice', 'find', ',', 'from', 'among', 'options', 'choices'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
-                       'there', '-', 'are', 'sit', 'stand', 'lie'})
+                       'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
+                       'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near'})
 _REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
                                     'after', 'former', 'latter', 'them', 'all'}
 
@@ -147,13 +148,18 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     while i < len(tail):
         t = tail[i]
         nxt = tail[i + 1] if i + 1 < len(tail) else ''
+        if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (tail[i + 2] in ORDINALS or tail[i + 2] in (
+                'last', 'middle')) and (i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in (
+                'and', 'then', 'or')):
+            tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
+            nxt = tail[i + 1]
         if t == 'the' and nxt:
             w = tail[i + 2] if i + 2 < len(tail) else ''
             one = 1 if w in ('one', 'item', 'thing') else 0
             # "the second", "the latter twice": no noun follows the position word
             ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
                 not is_name_word(tail, i + 2, False)
-            if nxt in ORDINALS and ends:
+            if nxt in ORDINALS and ends and not (nxt == 'first' and w in NUMBER_WORDS and w != 'one'):
                 idx = ORDINALS[nxt] - 1
                 if idx >= n:
                     raise TranslationError(f'"the {nxt}" points past the end of a list of {n}',
@@ -161,12 +167,12 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += joined([idx])
                 i += 2 + one
                 continue
-            if nxt == 'last' and w in ('two', 'three'):
+            if nxt == 'last' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
                 k = NUMBER_WORDS[w]
                 out += joined(list(range(n - k, n)))
                 i += 3
                 continue
-            if nxt == 'first' and w in ('two', 'three'):
+            if nxt == 'first' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
                 out += joined(list(range(NUMBER_WORDS[w])))
                 i += 3
                 continue

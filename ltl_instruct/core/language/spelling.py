@@ -147,7 +147,7 @@ class Speller:
         out: Optional[str] = None
         if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word) and self.core:
             core = sorted(c for c, kind in _slips(word)
-                          if c in self.core and kind in ('swap', 'double', 'missing'))
+                          if c in self.core and kind in ('swap', 'double', 'missing', 'sound'))
             if core:
                 self._cache[word] = core[0]
                 return core[0]

@@ -79,6 +79,12 @@ def tokenize(text: str) -> list[str]:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))
     s = text.lower().replace('\u2019', "'").replace('\u2018', "'").replace('`', "'")
+    # a list written as lines or bullets: each line, "1)", "(2)", "3." or bullet opens a clause
+    s = re.sub(r'(^|[\s:;,])\(?\d{1,2}\)(?=\s)', r'\1 , ', s)
+    s = re.sub(r'(^|[:;,.!?\n]\s*)\d{1,2}\.(?=\s)', r'\1 , ', s)
+    s = re.sub(r'(^|\n)\s*[-*\u2022\u25cf\u25aa]+\s', r'\1 , ', s)
+    s = re.sub(r'(?<![.;:!?,\s])[ \t]*\n', ' . ', s)
+    s = re.sub(r'[\u2022\u25cf\u25aa]', ' , ', s)
     s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)

@@ -89,3 +89,75 @@ LISTS = [
 @pytest.mark.parametrize('instruction,gold', LISTS, ids=[c[0][:30] for c in LISTS])
 def test_list_positions_in_mixtures(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+CHOICES = [
+    ('Whichever is nearer, the red gate or the blue gate, go there and avoid the pond either way.',
+     '(F near[red_gate] | F near[blue_gate]) & G !near[pond]'),
+    ('Either of the three is fine: the den, the loft, or the study.',
+     'F near[den] | F near[loft] | F near[study]'),
+    ('I need the stapler. There is one on the desk and one on the shelf; go to whichever you like.',
+     'F near[stapler::isabove(desk)] | F near[stapler::isabove(shelf)]'),
+    ('Go to the bakery or the deli. If you end up at the deli, keep away from the freezer.',
+     'F near[bakery] | (F near[deli] & G !near[freezer])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CHOICES, ids=[c[0][:30] for c in CHOICES])
+def test_choices_and_what_binds_one_of_them(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+MIXED = [
+    ('After you have been to the pantry, go on to the cellar, and stay away from the stove throughout.',
+     'F (near[pantry] & F near[cellar]) & G !near[stove]'),
+    ('Head to the lab. Once you reach the lab, avoid the sink, then go to the desk, and never ever touch '
+     'the fridge.',
+     'F (near[lab] & G !near[sink] & F near[desk]) & G !near[fridge]'),
+    ('Go to the barn, then the silo, and the whole time keep off the grass because it is wet.',
+     'F (near[barn] & F near[silo]) & G !near[grass]'),
+    ('Go to the gym and then the pool; do that whole loop twice.',
+     'F (near[gym] & F (near[pool] & F (near[gym] & F near[pool])))'),
+    ('Start by visiting the lobby, then the library, and finish up by dropping by the cafe.',
+     'F (near[lobby] & F (near[library] & F near[cafe]))'),
+    ('Grab the wrench, go to the van, and keep clear of the ramp until you have the wrench.',
+     'F (near[wrench] & F (pick[wrench] & F near[van])) & (!near[ramp] U pick[wrench])'),
+    ('Go to the porch and the garage, but make sure you have been to the shed before the garage.',
+     'F near[porch] & F near[garage] & (!near[garage] U near[shed])'),
+    ('Your destination this morning is the greenhouse.', 'F near[greenhouse]'),
+    ('Your task today is to bring the mug to the sink.',
+     'F (near[mug] & F (pick[mug] & F (near[sink] & F release[mug, sink])))'),
+    ('Fly over the dam, then land at the base when you are done.', 'F (near[dam] & F near[base])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', MIXED, ids=[c[0][:30] for c in MIXED])
+def test_mixtures_of_kinds(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+CORRECTIONS = [
+    ('Go to the desk and avoid the heater. Oops, I meant avoid the radiator, not the heater.',
+     'F near[desk] & G !near[radiator]'),
+    ('Go to the fountain twice. No wait, exactly once.',
+     '!near[fountain] U (near[fountain] & (near[fountain] W G !near[fountain]))'),
+    ('Go to the den, then the hall, then the attic. Actually no, skip the attic and go to the loft instead.',
+     'F (near[den] & F (near[hall] & F near[loft]))'),
+    ('Go to the bench, then the pond, um, actually make that the gazebo instead of the pond.',
+     'F (near[bench] & F near[gazebo])'),
+    ('Put the vase on the table, sorry, on the shelf, and avoid the cat bed.',
+     'F (near[vase] & F (pick[vase] & F (near[shelf] & F release[vase, shelf]))) & G !near[cat_bed]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CORRECTIONS, ids=[c[0][:30] for c in CORRECTIONS])
+def test_self_corrections_inside_mixtures(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_slips_in_short_words_and_compounds_are_corrected() -> None:
+    notes = _check('Put the towl in the hamper. Then survey the cornfeild.',
+                   'F (near[towel] & F (pick[towel] & F (near[hamper] & F (release[towel, hamper] & '
+                   'F near[cornfield]))))')
+    assert any('towl' in n for n in notes) and any('cornfeild' in n for n in notes), notes
+    _check('Go to the deli counter.', 'F near[deli_counter]')

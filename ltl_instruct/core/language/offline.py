@@ -43,7 +43,7 @@ from ltl_instruct.core.language.lexicon import (
 )
 from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
+    DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word, match_relation,
 )
 from ltl_instruct.core.language.reactions import RuleReader
 from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
@@ -58,6 +58,17 @@ from ltl_instruct.core.spec import (
 )
 
 MAX_INSTRUCTION_CHARS = 2000
+
+# Words that put an avoidance over the whole run, whatever scope the sentence opened with.
+GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('throughout',), ('the', 'whole', 'time'), ('at', 'all', 'times'), ('the', 'entire', 'time'), ('ever',),
+    ('at', 'any', 'point'), ('at', 'any', 'time'), ('all', 'the', 'time'), ('the', 'whole', 'way'),
+    ('for', 'the', 'whole', 'run'), ('during', 'the', 'whole', 'task'), ('no', 'matter', 'what'),
+    ('at', 'no', 'point'), ('the', 'whole', 'trip'), ('the', 'entire', 'trip'), ('the', 'entire', 'way'),
+    ('throughout', 'the', 'task'), ('throughout', 'the', 'trip'), ('always',), ('in', 'general'),
+    ('no', 'matter', 'which'), ('either', 'way'), ('in', 'any', 'case'), ('regardless',),
+), key=lambda t: -len(t)))
+_GLOBAL_FIRST = frozenset(m[0] for m in GLOBAL_MARKERS)
 
 
 @dataclass
@@ -295,6 +306,7 @@ class _Reader:
         # the goals of the last "X after Y" read, and the ones they come after ("and not a second earlier")
         self.last_after: Optional[tuple[list[Descriptor], list[Descriptor]]] = None
         self.stated_goals: list[Descriptor] = []   # goals of "X comes after Y" (for "go to both")
+        self.scene: list[Descriptor] = []   # the things a "there is ..." clause named last
         self.connector = 'and'   # how the goal clause being read joins the one before it
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
@@ -418,7 +430,7 @@ class _Reader:
                     self._read_sentence(head)
                 self._read_permission(tokens[p:])
                 return
-        if any(t in RULE_WORDS for t in tokens):
+        if any(t in RULE_WORDS for t in tokens) and not self._conditional_alternative(tokens):
             goals = [d for st in self.task._all_steps() for d in st.targets + st.dests]
             rules = self.rules.read(tokens, goals)
             if rules is not None:
@@ -588,6 +600,10 @@ class _Reader:
                 elif t == ',' and j + 1 < n and tokens[j] in ('can', 'could', 'would', 'will') and \
                         tokens[j + 1] == 'you':
                     boundary, skip = 'and', 1   # "I left it by the door, can you go there"
+                elif t in (',', 'and') and j < n and tokens[j] in _GLOBAL_FIRST and tokens[j] not in (
+                        'always', 'ever') and orders.phrase_at(tokens, j, GLOBAL_MARKERS) > 0 and \
+                        self._avoid_start(tokens[orders.phrase_at(tokens, j, GLOBAL_MARKERS):]) is not None:
+                    boundary, skip = 'and', j - i   # "..., and the whole time keep off the lawn"
                 elif t in (',', 'and') and self._same_for_lead(tokens, j):
                     boundary, skip = 'and', j - i
                 elif t in (',', 'and') and j < n and tokens[j] in chatter.ACTIVITY_VERBS and (
@@ -702,6 +718,10 @@ class _Reader:
             tokens = self._strip_fillers(tokens)
             if not tokens:
                 return scope
+        elif scope is not None and scope.kind != 'global' and self._avoid_start(tokens) is not None and \
+                orders.find_phrase(tokens, GLOBAL_MARKERS)[0] >= 0:
+            # "after X, go to Y, and keep away from Z throughout": the whole run, not only after X
+            scope = None
         s = ' '.join(tokens)
         if 'order' in tokens and (s.startswith(('any order', 'in any order', 'the order does not matter',
                                                 'order does not matter', 'the order is up to you',
@@ -733,6 +753,11 @@ class _Reader:
         if tuple(tokens) in STRICT_ORDER_TAILS:
             self.strict_chain = True   # "in strictly this order, visit a, then b"
             return scope
+        times = orders.repeat_count(clause.tokens) if self.task.chain else None
+        if times is not None and self.task.repeat == 1:
+            self.task.repeat = times   # "go to a, then b; do that whole round twice"
+            self.notes.append(f'the whole route is done {times} times')
+            return scope
         if orders.is_strict_marker(tokens) and self._strict_last():
             return scope   # "go to X once you have been to Y, and not a second earlier"
         if s in ('not both', 'but not both', 'not both of them'):
@@ -756,12 +781,13 @@ class _Reader:
                 body = tokens[len(lead):] if _starts(tokens, 0, lead) else tokens
                 counts = ('several', 'few', 'a', 'couple', 'of')
                 while body and (body[0] in NUMBER_WORDS or body[0] in counts) and len(body) > 1 and \
-                        body[1] not in PUNCT:
-                    body = body[1:]   # "there are two doors, ..."
+                        body[1] not in PUNCT and not (body[0] == 'one' and match_relation(body, 1)):
+                    body = body[1:]   # "there are two doors, ..." (not "there is one on the desk")
                 nps, _, _ = self._np_list(body, 0)
                 if nps:
                     self.last_object = nps[-1]
                     self.mentions.extend(np.descriptor for np in nps)
+                    self.scene = [np.descriptor for np in nps]
                     return scope
         if self._is_permission(tokens):
             self._read_permission(tokens)
@@ -1037,6 +1063,11 @@ class _Reader:
 
     def _leading_scope(self, tokens: list[str]) -> tuple[Optional[_Scope], list[str]]:
         """Scope phrases that open a clause: "on the way to X,", "once you've reached X,", "after ..."."""
+        g1 = orders.phrase_at(tokens, 0, GLOBAL_MARKERS) if tokens[0] in _GLOBAL_FIRST else -1
+        if g1 > 0 and len(tokens) > g1 and tokens[0] not in ('always', 'ever') and self._avoid_start(
+                tokens[g1 + (tokens[g1] == ','):]) is not None:
+            rest = tokens[g1:]   # "the whole time, keep off the lawn": over the whole run
+            return _Scope('global'), rest[1:] if rest[:1] == [','] else rest
         for lead in (['on', 'the', 'way'], ['on', 'your', 'way'], ['along', 'the', 'way'],
                      ['on', 'its', 'way']):
             if _starts(tokens, 0, lead):
@@ -1317,6 +1348,15 @@ class _Reader:
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
                     'anymore', 'costs', 'instant', 'moment')
+        g0, g1 = orders.find_phrase(rest, GLOBAL_MARKERS)
+        while g0 >= 0:   # "no matter which", "either way", "in any case"
+            rest = rest[:g0] + rest[g1:]
+            g0, g1 = orders.find_phrase(rest, GLOBAL_MARKERS)
+        reason = next((k for k, t in enumerate(rest) if k > 0 and t in ('because', 'since', 'cause', 'as')),
+                      -1)
+        if reason >= 0 and not chatter.carries_constraint(rest[reason + 1:]):
+            self.notes.append(f'left out "{" ".join(rest[reason:])}" (says why, asks for nothing)')
+            rest = rest[:reason]
         leftover = [t for t in rest if t not in harmless]
         if leftover and leftover[0] not in ('when', 'while') and not self._leave_out(leftover):
             raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
@@ -1348,9 +1388,19 @@ class _Reader:
                     k += 1
                 return _Scope('carry'), rest[k:]   # "until you have put them down": while carrying
             skippable = NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {'picked', 'grabbed', 'up'}
+            holding = bool({'have', 'has'} & set(rest[1:j])) and not {'been', 'reached'} & set(
+                rest[1:j + 1]) or rest[j:j + 1] in (['holding'], ['hold'])
+            skippable |= {'holding', 'hold'}
             while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in skippable:
                 j += 1
-            nps, _, end = self._np_list(rest, j)
+            nps, _, end = self._np_list(rest, j, place=False)
+            held = next((d for st in self.task._all_steps() if st.kind in ('pick', 'deliver')
+                         for d in st.targets if nps and d.name == nps[0].descriptor.name),
+                        None) if holding else None
+            if held is not None and event == 'near':
+                # "until you have the keys": until they are picked up (the keys named before)
+                return _Scope('until', NounPhrase(held, nps[0].start, nps[0].end, nps[0].head), 'pick'), \
+                    rest[end:]
             if nps:
                 return _Scope('until', nps[0], event), rest[end:]
             if rest[0] in ('until', 'till') and j > 1 and (j == len(rest) or rest[j] in PUNCT) and \
@@ -1632,18 +1682,40 @@ class _Reader:
             chains.append([Step('formula', formula=f) for f in _never(others)] + [Step('visit', [d])])
         step.kind, step.targets, step.chains = 'any', [], chains
 
+    def _conditional_alternative(self, tokens: list[str]) -> bool:
+        """Whether a sentence opens "if you go to X, ..." with X one of the alternatives just given.
+
+        "Go to the den or the hall. If you go to the hall, avoid the rug": the avoidance binds
+        that alternative only (read by :meth:`_read_conditional`), not a rule over the run.
+        """
+        last = self.task.last_step(('visit',))
+        if last is None or len(last.targets) < 2:
+            return False
+        k = 1 if tokens[:1] in (['but'], ['and'], ['so'], ['though']) else 0
+        if tokens[k:k + 2] != ['if', 'you']:
+            return False
+        j = self._skip_event_verbs(tokens, k + 2)
+        while j < len(tokens) and tokens[j] in ('choose', 'pick', 'decide', 'opt', 'on', 'for', 'with',
+                                                'end'):
+            j += 1
+        np = self.phrases.parse(tokens, j)
+        return np is not None and self._resolve(np, place=True).descriptor in last.targets
+
     def _read_conditional(self, tokens: list[str]) -> None:
         """Read 'if you go into X at all, check Y first' as ``!near[x] W near[y]``."""
         j = 1
         while j < len(tokens) and tokens[j] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
-                'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already'}:
+                'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already',
+                'end', 'opt', 'settle', 'with'}:
             j += 1
         np = self.phrases.parse(tokens, j)
         if np is None:
             raise TranslationError(f'could not place the condition "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
         rest = [t for t in tokens[np.end:] if t not in ('at', 'all')]
-        if 'choose' in tokens[:j] or 'pick' in tokens[:j] or 'decide' in tokens[:j]:
+        last = self.task.last_step(('visit',))
+        if 'choose' in tokens[:j] or 'pick' in tokens[:j] or 'decide' in tokens[:j] or (
+                last is not None and len(last.targets) > 1 and np.descriptor in last.targets):
             # "if you choose X, avoid Y": the avoidance binds only that alternative.
             rest = self._strip_fillers(rest)
             step = self.task.last_step(('visit',))
@@ -2013,12 +2085,22 @@ class _Reader:
                 len(self.stated_goals) > 1:
             self.saw_action = True   # "the bench comes after the hood; go to both": the goals already given
             return
-        if (tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
-                           ['one', 'of', 'those'], ['either', 'one'], ['either'], ['one', 'of', 'these'],
-                           ['one']) or (
-                k > 0 and tokens[k:] == ['there'] and not self.phrases.landmarks)) and \
+        pick_one = tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],
+                                  ['one', 'of', 'those'], ['either', 'one'], ['either'],
+                                  ['one', 'of', 'these'], ['one']) or tokens[k:k + 1] == ['whichever'] and \
+            not chatter.carries_constraint(tokens[k + 1:])
+        if (pick_one or (k > 0 and tokens[k:] == ['there'] and not self.phrases.landmarks)) and \
                 last is not None and last.kind == 'visit' and len(last.targets) > 1:
             self.saw_action = True   # "just get to one of them": the choice already given
+            return
+        if pick_one and k > 0 and len(self.scene) > 1:
+            # "there's one on the desk and one on the shelf; go to whichever you want"
+            self.saw_action = True
+            if last is not None and last.kind == 'visit' and len(last.targets) == 1 and all(
+                    d.name == last.targets[0].name for d in self.scene):
+                self.task.chain.pop()   # "I need the charger" said first: the choice says which one
+            self.task.chain.append(Step('visit', list(self.scene)))
+            self.notes.append(f'any one of {", ".join(map(str, self.scene))} will do')
             return
         nps, joiner, end = self._np_list(tokens, k)
         if not nps and all(t in GOAL_VERBS or t in GOAL_PARTICLES for t in tokens) and self.task.chain:
@@ -2260,8 +2342,10 @@ class _Reader:
                     self.task.chain.append(moved)
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                 elif word == 'before':
-                    # "A before B" is "B only after A": F b & (!b U a) (the U makes a required)
-                    self.task.chain.extend(Step('visit', [d]) for d in others)
+                    # "A before B" is "B only after A": F b & (!b U a) (the U makes a required); a B
+                    # given as a goal before is that goal
+                    self.task.chain.extend(Step('visit', [d]) for d in others
+                                           if self.task.find_step(d) is None)
                     for d in others:
                         for x in targets:
                             self.task.constraints.append(Until(Not(_near(d)), _near(x)))

@@ -15,6 +15,7 @@ Each function works on a token list and says what it found; none adds a place.
 """
 from __future__ import annotations
 
+import re
 from typing import Optional, Sequence
 
 from ltl_instruct.core.language.phrases import NounPhrase, PhraseParser
@@ -153,3 +154,39 @@ def order_statement(tokens: Sequence[str], parser: PhraseParser
     if y is None or y.pronoun or [t for t in tokens[y.end:] if t not in (',', 'too', 'though')]:
         return None
     return x, word, y
+
+
+def phrase_at(tokens: Sequence[str], i: int, phrases: Sequence[tuple[str, ...]]) -> int:
+    """Return where the first of ``phrases`` that starts at ``tokens[i]`` ends, or -1."""
+    for p in phrases:
+        if tuple(tokens[i:i + len(p)]) == p:
+            return i + len(p)
+    return -1
+
+
+_REPEAT_RE = re.compile(
+    r'^(?:and |then |, )*(?:do|repeat|run|redo|go through|complete|make|perform) '
+    r'(?:(?:that|this|it|the|whole|entire|all|of|everything|thing|round|loop|route|circuit|sequence|course|'
+    r'trip|tour|lap|run|cycle|set|routine|same|again) )*'
+    r'(twice|thrice|(?:one|two|three|four|five|\d+) (?:times|more times|times over)|again|once more|one '
+    r'more time|'
+    r'a second time|twice over)(?: (?:in a row|over|in total|altogether|total))?(?: please)?$')
+
+
+def repeat_count(tokens: Sequence[str]) -> Optional[int]:
+    """How many times in all "do that whole round twice", "repeat it three times", "do it all again" ask for.
+
+    "again", "once more" and "a second time" mean twice in all; "repeat it twice" is read as
+    twice in all, as people say it. None where the clause is not such a request.
+    """
+    m = _REPEAT_RE.match(' '.join(t for t in tokens if t != ','))
+    if m is None:
+        return None
+    w = m.group(1).split()[0]
+    if w in ('again', 'once', 'one', 'a') and m.group(1) not in ('one times',):
+        return 2
+    counts = {'twice': 2, 'thrice': 3, 'two': 2, 'three': 3, 'four': 4, 'five': 5}
+    n = counts.get(w) or (int(w) if w.isdigit() else 0)
+    if 'more' in m.group(1):
+        n += 1   # "do it two more times": three in all
+    return n if 1 < n <= 10 else None

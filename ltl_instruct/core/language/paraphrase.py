@@ -29,6 +29,9 @@ _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |
          r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)')
 
 _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
+    # "land at the pad when you are done": the last step is last anyway
+    (rf' (?:, )?{_DONE}(?: (?:with )?(?:everything|all (?:that|of that|of it)|the rest))?'
+     r' (?=[.;!?] |$)', ' '),
     # "go to a . when you are done there , head to b" -> "go to a . then head to b"
     (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
     (r' (?:exactly )?once and only once ', ' exactly once '),
@@ -61,6 +64,34 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
     (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
     (r' from there , ', ' after that , '),
+    # "make sure you have been to X before Y": X is a goal (before Y)
+    (r' (?:make sure|be sure|ensure) (?:that )?(?:you )?(?:have |already )*(?:been to|been by|visited|'
+     r'gone to|stopped at|stopped by|passed by|swung by|checked) '
+     r'(?![^,.;!?]* before (?:that|doing that|then) )', ' visit '),
+    # "whichever is closer, the a or the b, go there": the choice is the person's reason, not a place
+    (r'(^ | [,.;!?] | and | then | to )(go to |head to |visit |to )?whichever (?:one )?'
+     r'(?:is |s |of them is |of the two is )?'
+     r'(?:closer|closest|nearer|nearest|easier|quicker|faster|more convenient|handier|free|open|emptier|'
+     r'less busy|shorter)(?: to you| for you| of the two)?(?: , | : | - )?', r'\1 \2'),
+    # "any of the three will do: a, b, or c"
+    (r'(^ | [.;!?] )(?:any|either|one|any one) (?:one )?of (?:the |these |those |them )?'
+     r'(?:two |three |four |five )?(?:will do|is fine|works|is ok|is okay|would be fine|would do|are fine|'
+     r'would work|is good) (?:: |, )?'
+     r'(?:go to |visit )?', r'\1 go to any of '),
+    (r'(^ | [.;!?] )(?:go to|visit|pick|choose|head to) (?:any|one|either) (?:one )?of (?:these|those|'
+     r'the following|them|the two|the three|the four|these places|these spots)(?: places| spots| locations)?'
+     r' (?::|,) ', r'\1 go to any of '),
+    # "start by going to X", "begin with X", "finish up by dropping by Y": the first and the last step
+    (r'(^ | [,.;!?] | and | then )(?:start|begin|kick off|kick things off) (?:off )?(?:by|with) '
+     r'(going|heading|visiting|checking|stopping|swinging|flying|driving|walking|making|picking|grabbing|'
+     r'bringing|taking|getting|fetching|dropping|popping) ', r'\1 first \2 '),
+    (r'(^ | [,.;!?] | and | then )(?:start|begin|kick off|kick things off) (?:off )?(?:with|at) '
+     r'(?=(?:the|a|an|my|your|our) )', r'\1 first go to '),
+    (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:by|with) '
+     r'(going|heading|visiting|checking|stopping|swinging|flying|driving|walking|making|picking|grabbing|'
+     r'bringing|taking|getting|fetching|dropping|popping|landing) ', r'\1 finally \2 '),
+    (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:with|at) '
+     r'(?=(?:the|a|an|my|your|our) )', r'\1 finally go to '),
     (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
     (r' (?:wait|stand|sit|park) (?:by|near|next to|beside) (?=(?:the|a|my|your|our) )', ' go to '),
     (r' check there (?:is|are) (?:any |some |a |an )?(?:\w+ ){1,2}(?:in|on|at|inside) '
@@ -74,8 +105,14 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
     (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
      r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
-    (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:goal|destination|target|aim|objective|end point|'
-     r'endpoint|final destination|job|task|mission) (?:is|will be|:) '
+    # "your job today is to bring the cup to the sink": the request itself
+    (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:first |next |final |last |main |only |new |one )?'
+     r'(?:goal|job|task|mission|aim|objective|assignment)(?: for (?:today|tonight|now|the day))?'
+     r'(?: today| tonight| now| here)? (?:is|will be) to (?!go to |reach |get to |visit )', r'\1 '),
+    (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:first |next |final |last |main |only |new |one )?'
+     r'(?:goal|destination|target|aim|objective|end point|'
+     r'endpoint|final destination|job|task|mission|stop)(?: for (?:today|tonight|now|the day|this morning))?'
+     r'(?: today| tonight| now| this morning| this afternoon| this evening| here)? (?:is|will be|:) '
      r'(?:to (?:go to |reach |get to |visit )?)?',
      r'\1 go to '),
 ))
@@ -85,6 +122,16 @@ _PASS_RE = re.compile(r'(^| )(?:make|do|take|fly|run|perform|complete) (one|two|
                       r'(?:passes|pass|trips|trip|laps|lap|rounds|round|sweeps|sweep|runs|run|loops|loop|'
                       r'flyovers|flyover|visits|visit|circuits|circuit) '
                       r'(?:over|to|by|past|around|round|of|through|across|above|at)? ?')
+
+
+_GERUNDS = {'going': 'go', 'heading': 'head', 'visiting': 'visit', 'checking': 'check', 'stopping': 'stop',
+            'swinging': 'swing', 'flying': 'fly', 'driving': 'drive', 'walking': 'walk', 'making': 'make',
+            'picking': 'pick', 'grabbing': 'grab', 'bringing': 'bring', 'taking': 'take', 'getting': 'get',
+            'fetching': 'fetch', 'dropping': 'drop', 'popping': 'pop', 'landing': 'land'}
+# "drop by the porch", "pop in at the shop": a visit, not a delivery
+_DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to) (?=(?:the|a|an|my|your|'
+                         r'our) )')
+_GERUND_RE = re.compile(r' (first|finally) (' + '|'.join(_GERUNDS) + ') ')
 
 
 def paraphrase(tokens: list[str]) -> list[str]:
@@ -98,10 +145,14 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
                                    ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
                                    ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location',
-                                   ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ')):
+                                   ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ',
+                                   ' start', ' begin', ' kick', ' finish', ' end ', ' wrap', ' whichever',
+                                   ' any ', ' either ', ' one of ', ' drop ', ' duck ', ' nip ', ' pop ')):
         return tokens
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)
+    text = _GERUND_RE.sub(lambda m: f' {m.group(1)} {_GERUNDS[m.group(2)]} ', text)
+    text = _DROP_BY_RE.sub(' visit ', text)
     out = text.split()
     return _passes(out)
 

@@ -615,8 +615,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
         stripped = False
-        while seg and seg[0] in (',', ':', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh', 'erm',
-                                 'ah'):
+        while seg and (seg[0] in (',', ':', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh', 'erm',
+                                  'ah', 'oops') or seg[0] == 'no' and seg[1:2] == [',']):
             seg, stripped = seg[1:], True
         for m in _MARKERS:
             if len(m) > 1 and tuple(seg[:len(m)]) == m and m[0] not in _CANCEL and m != ('make', 'that'):
@@ -727,18 +727,29 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     if seg and seg[0] in _PREPS and len(seg) > 1:
         # "put the jar on the table - no, on the counter": the phrase after the same kind of word
         new_np = PhraseParser().parse(seg, 1)
-        if new_np is not None and new_np.end == len(_strip_corr(seg)) or new_np is not None and not [
-                t for t in seg[new_np.end:] if t not in PUNCT]:
+        after = seg[new_np.end:] if new_np is not None else []
+        if new_np is not None and (new_np.end == len(_strip_corr(seg)) or not [
+                t for t in after if t not in PUNCT] or after[:1] == [','] and len(after) > 2 and (
+                after[1] in _VERBS or after[1] in ('and', 'then', 'but'))):
             for p in range(len(prev) - 1, -1, -1):
                 if prev[p] in _PREPS:
                     old = PhraseParser().parse(prev, p + 1)
                     if old is not None and not old.pronoun:
                         notes.append(f'corrected to "{" ".join(seg[:new_np.end])}"')
-                        return prev[:p] + seg[:new_np.end] + prev[old.end:]
+                        return prev[:p] + seg[:new_np.end] + prev[old.end:] + (
+                            after if [t for t in after if t not in PUNCT] else [])
+    for k in range(len(seg) - 1):
+        if seg[k:k + 2] in (['instead', 'of'], ['rather', 'than']):
+            seg = seg[:k] + ['not'] + seg[k + 2:]   # "the garden instead of the porch"
+            break
     if 'not' in seg:
         # "the freezer, not the fridge"
         k = seg.index('not')
         new, old = _strip_corr(seg[:k]), seg[k + 1:]
+        while new and new[0] in _VERBS | {'to', 'at', 'by', 'over', 'from', 'go', 'away', 'clear', 'of',
+                                          'stay', 'keep'}:
+            new = new[1:]   # "I meant avoid the radiator, not the fan": the verb is the one said before
+        old = [t for t in old if t not in PUNCT]
         parser = PhraseParser()
         onp, nnp = parser.parse(old, 0), parser.parse(new, 0) if new else None
         if onp is not None and nnp is not None and nnp.end == len(new):
@@ -760,16 +771,29 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     return None
 
 
+_COUNT_MODS: tuple[tuple[str, ...], ...] = (
+    ('at', 'least'), ('at', 'most'), ('exactly',), ('only',), ('just',), ('no', 'more', 'than'),
+    ('not', 'more', 'than'), ('no', 'less', 'than'), ('up', 'to'), ('precisely',))
+
+
 def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
+    """'visit X twice. no wait, exactly once': the count said before is replaced (with its modifier)."""
     counts = ('once', 'twice', 'thrice')
+    words = [t for t in seg if t not in PUNCT]
     new = next((k for k, w in enumerate(seg) if w in counts or (w in NUMBER_WORDS and k + 1 < len(seg)
                                                                 and seg[k + 1] == 'times')), -1)
-    if new < 0 or not ({'enough', 'instead', 'is', 'make', 'only', 'just'} & set(seg)):
+    bare = bool(words) and (words[-1] in counts or words[-1] == 'times') and len(words) <= 4
+    said = {'enough', 'instead', 'is', 'make', 'only', 'just', 'exactly', 'least', 'most'} & set(seg)
+    if new < 0 or not (said or bare):
         return None
-    new_words = seg[new:new + (1 if seg[new] in counts else 2)]
+    mod = next((m for m in _COUNT_MODS if tuple(seg[new - len(m):new]) == m), ())
+    new_words = list(mod) + seg[new:new + (1 if seg[new] in counts else 2)]
     for p in range(len(prev) - 1, -1, -1):
-        if prev[p] in counts:
-            return prev[:p] + new_words + prev[p + 1:]
-        if prev[p] == 'times' and p > 0 and prev[p - 1] in NUMBER_WORDS:
-            return prev[:p - 1] + new_words + prev[p + 1:]
+        end = p + 1 if prev[p] in counts else (p + 1 if prev[p] == 'times' and p > 0 and
+                                               prev[p - 1] in NUMBER_WORDS else -1)
+        if end < 0:
+            continue
+        start = p if prev[p] in counts else p - 1
+        old_mod = next((m for m in _COUNT_MODS if tuple(prev[start - len(m):start]) == m), ())
+        return prev[:start - len(old_mod)] + new_words + prev[end:]
     return None

@@ -26,7 +26,7 @@ TYPOS: dict[str, str] = {
     'ofthe': 'of the', 'tothe': 'to the', 'togo': 'to go', 'dnt': 'do not', 'bak': 'back',
     'visti': 'visit', 'vsit': 'visit', 'vist1': 'visit', 'gp': 'go', 'og': 'go',
     'util': 'until', 'onest': 'first', 'threerd': 'third', 'landark': 'landmark', 'occations': 'occasions',
-    'occation': 'occasion', 'endlessy': 'endlessly',
+    'occation': 'occasion', 'endlessy': 'endlessly', 'whichevers': 'whichever is',
 }
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (

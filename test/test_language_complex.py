@@ -8,6 +8,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.errors import TranslationError
 from ltl_instruct.core.language.offline import OfflineTranslator
 from ltl_instruct.core.spec import parse_formula
 
@@ -161,3 +162,70 @@ def test_slips_in_short_words_and_compounds_are_corrected() -> None:
                    'F near[cornfield]))))')
     assert any('towl' in n for n in notes) and any('cornfeild' in n for n in notes), notes
     _check('Go to the deli counter.', 'F near[deli_counter]')
+
+
+def test_a_clause_no_rule_reads_is_guessed_as_going_there_and_shown_as_a_warning() -> None:
+    from ltl_instruct.core.language.verification import verification_for
+    got = T.translate('Go to the shed and cool down at the hammock, and keep away from the hives.')
+    gold = parse_formula('F (near[shed] & F near[hammock]) & G !near[hives]')
+    assert equivalent(got.formula, gold), got.formula
+    assert got.extra['unread'] and 'cool down at the hammock' in got.extra['unread'][0]
+    text = verification_for(got).text()
+    assert 'Warning: could not read "cool down at the hammock"' in text
+    assert text.count('cool down at the hammock') == 1   # a warning, not also a note
+
+
+def test_a_clause_with_no_place_that_no_rule_reads_is_left_out_with_a_warning() -> None:
+    got = T.translate('Go to the porch and smile politely at everyone, then go to the gate.')
+    assert equivalent(got.formula, parse_formula('F (near[porch] & F near[gate])')), got.formula
+    assert any('left it out' in w for w in got.extra['unread']), got.extra
+
+
+@pytest.mark.parametrize('instruction', [
+    'Go to the porch, and never cool down at the hammock.',   # a negation: never guessed at
+    'Go to the porch, then twice cool down at the hammock.',   # a count
+    'Cool down at the hammock.',   # nothing else: the instruction does not stand on its own
+])
+def test_clauses_with_constraint_words_or_alone_still_raise(instruction: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(instruction)
+
+
+ROUND_TWO = [
+    ('Take off from the helipad, circle the barn, and land back on the helipad.',
+     'F (near[barn] & F near[helipad])'),
+    ('Check the vault, but do not set foot in it until you have picked up the badge on the desk.',
+     'F (near[badge::isabove(desk)] & F (pick[badge::isabove(desk)] & F near[vault])) & '
+     '(!near[vault] U pick[badge::isabove(desk)])'),
+    ('Walk to the garage, then come back here to the kitchen.', 'F (near[garage] & F near[kitchen])'),
+    ('Go to the pier, and stay away from the boat ramp, it is slippery.',
+     'F near[pier] & G !near[boat_ramp]'),
+    ('First the bakery, next the bank, last the florist.',
+     'F (near[bakery] & F (near[bank] & F near[florist]))'),
+    ('Survey zone A twice, then zone B.',
+     'F (near[zone_a] & F (!near[zone_a] & F (near[zone_a] & F near[zone_b])))'),
+    ('Pick one of the two benches, the one by the pond or the one by the oak, and avoid the geese.',
+     '(F near[bench::isnextto(pond)] | F near[bench::isnextto(oak)]) & G !near[geese]'),
+    ('The mug, the jar and the bowl are on the shelf. Go to the jar, then the bowl, and avoid the mug.',
+     'F (near[jar] & F near[bowl]) & G !near[mug]'),
+    ('There are two crates by the door: a red one and a blue one. Go to the blue one.', 'F near[blue_crate]'),
+    ('Go to the den, then the loft, then the attic. Wait, swap the loft and the attic.',
+     'F (near[den] & F (near[attic] & F near[loft]))'),
+    ('Bring the mug to the desk, then the plate to the desk too. Oh wait, the plate goes to the sink.',
+     'F (near[mug] & F (pick[mug] & F (near[desk] & F (release[mug, desk] & '
+     'F (near[plate] & F (pick[plate] & F (near[sink] & F release[plate, sink])))))))'),
+    ('Go to the kiosk beside the gate, then the bench by the pond, and on the way to the bench avoid '
+     'the mud.',
+     'F (near[kiosk::isnextto(gate)] & (!near[mud] U near[bench::isnextto(pond)]))'),
+    ('Go to the den only after the hall. Sorry, I got that backwards: the hall only after the den.',
+     'F near[hall] & (!near[hall] U near[den])'),
+    ('Visit the barn and the silo, but the silo only after the barn.',
+     'F near[barn] & F near[silo] & (!near[silo] U near[barn])'),
+    ('Fly to the mast, and return to base.', 'F (near[mast] & F near[base])'),
+    ('Do not take the lift before you have signed in at the desk.', '!near[lift] U near[desk]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_TWO, ids=[c[0][:30] for c in ROUND_TWO])
+def test_second_round_constructions(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

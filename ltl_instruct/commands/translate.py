@@ -16,6 +16,7 @@ from typing import Any, Callable, Optional
 
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
 from ltl_instruct.core.language import BACKENDS, Translation, make_translator, verification_for
+from ltl_instruct.core.language.verification import warnings_of
 from ltl_instruct.core.language.datasets import iter_instructions
 from ltl_instruct.core.language.verification import classify_reply
 
@@ -68,6 +69,9 @@ def record(t: Translation) -> dict[str, Any]:
         out['subgoals_error'] = e.to_dict()
     if t.notes:
         out['notes'] = list(t.notes)
+    warnings = warnings_of(t)
+    if warnings:
+        out['warnings'] = list(warnings)   # parts it could not read (guessed at or left out)
     return out
 
 
@@ -91,8 +95,11 @@ def run(args: argparse.Namespace) -> int:
         print(f"avoid:     {', '.join(r['avoid'])}")
     for line in r['subgoals']:
         print(f'  {line}')
+    for warning in r.get('warnings', []):
+        print(f'WARNING: {warning}')
     for note in r.get('notes', []):
-        print(f'note: {note}')
+        if note not in r.get('warnings', []):
+            print(f'note: {note}')
     return 0
 
 

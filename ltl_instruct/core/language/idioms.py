@@ -308,7 +308,7 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?:while |and )(?:only )?visiting (?P<x>{_NPS}) (?:only )?(?:once|one time)(?= |$)',
          r' , visit \g<x> only once , '),
     Rule('go to b without returning to a',
-         rf'\b(?:(?:but )?without|(?:, )?(?:or|and|nor)) (?:returning|going back|coming back|revisiting|'
+         rf'\b(?:(?:but )?without|(?:, )?(?:or|nor)) (?:returning|going back|coming back|revisiting|'
          rf'revisit|return|go back|come back)(?: to)? (?P<x>{_NPS}){_CLAUSE_END}',
          r' , do not revisit \g<x> , '),
     Rule('go to b without going to a again', rf'\bwithout {_GOING} (?P<x>{_NPS}) again{_CLAUSE_END}',

@@ -33,7 +33,7 @@ go ever drive fly walk move come get pass bump touch run head enter step visit s
 land anywhere back near close to by into in over through past on onto around at the area of again
 even going passing touching knock hit disturb wake anywhere let yourself be into enter visiting follow
 entering navigate navigating reaching reach move moving travel traveling travelling stepping step
-walking fly flying driving going ever allowed permitted to first
+walking fly flying driving going ever allowed permitted to first foot use ride wander stray drift take
 '''.split()) - {'the'} | {'revisit', 'revisiting', 'reenter'}
 
 # Gerunds and participles of movement, skipped between "until"/"after"/"before" and the place.

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
-from ltl_instruct.core.language import chatter, orders
+from ltl_instruct.core.language import chatter, fallback, orders
 from ltl_instruct.core.language.base import Translation
 from ltl_instruct.core.language.idioms import rewrite_idioms
 from ltl_instruct.core.language.lexicon import (
@@ -150,8 +150,11 @@ class OfflineTranslator:
                                    f'{e}); please report it', ErrorCode.INTERNAL_ERROR,
                                    {'instruction': instruction}) from e
         elapsed = time.perf_counter() - started
-        return Translation(instruction, formula, self.name, tuple(notes),
-                           {'seconds': elapsed, 'tokens': ' '.join(tokens)})
+        extra: dict[str, object] = {'seconds': elapsed, 'tokens': ' '.join(tokens)}
+        if reader.unread:
+            # clauses guessed at or left out: the verification dialog shows these as warnings, first
+            extra['unread'] = [u.note() for u in reader.unread]
+        return Translation(instruction, formula, self.name, tuple(notes), extra)
 
 
 # Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
@@ -307,6 +310,9 @@ class _Reader:
         self.last_after: Optional[tuple[list[Descriptor], list[Descriptor]]] = None
         self.stated_goals: list[Descriptor] = []   # goals of "X comes after Y" (for "go to both")
         self.scene: list[Descriptor] = []   # the things a "there is ..." clause named last
+        self.unread: list[fallback.Unread] = []   # clauses the rules could not read (guessed or left out)
+        self.read_parts = 0   # clauses and sentences read by the rules
+        self.last_deliver_verb = ''   # for a delivery with the verb left out ("..., then the cup to X")
         self.connector = 'and'   # how the goal clause being read joins the one before it
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
@@ -314,7 +320,10 @@ class _Reader:
     # ----------------------------------------------------------------- structure
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
-            self._read_sentence(sentence)
+            self._read_part(_Clause('and', sentence), None, sentence=True)
+        if self.unread and not self.read_parts:
+            # nothing but clauses it could not read: the instruction does not stand on its own
+            raise TranslationError(self.unread[0].reason, details={'part': self.unread[0].words})
         if not self.saw_action and self.mentions and not self.task.chain:
             # "there's a box behind the couch." alone: nothing to do
             raise TranslationError(f'found no action (go, bring, avoid...) in "{" ".join(tokens)}"',
@@ -391,6 +400,59 @@ class _Reader:
             # from the start until that goal: "b not before a" (as the ordered-visit patterns read it)
             k = self.task.constraints.index(g)
             self.task.constraints[k] = Until(Not(_near(d)), _or([_near(t) for t in nxt.targets]))
+
+    def _read_part(self, clause: _Clause, scope: Optional[_Scope], sentence: bool = False
+                   ) -> Optional[_Scope]:
+        """Read a clause (or a whole sentence); one the rules cannot read degrades (see fallback).
+
+        Returns the scope that carries to the next clause.
+        """
+        unread = len(self.unread)
+        if not fallback.may_degrade(clause.tokens):
+            out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
+            self.read_parts += not sentence or len(self.unread) == unread
+            return out
+        snap = fallback.Snapshot(self, self.notes)
+        try:
+            out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
+            # a sentence counts as read where none of its clauses had to be guessed or left out
+            self.read_parts += not sentence or len(self.unread) == unread
+            return out
+        except TranslationError as e:
+            snap.restore()
+            self._degrade(clause, scope, e)
+            return scope
+
+    def _degrade(self, clause: _Clause, scope: Optional[_Scope], error: TranslationError) -> None:
+        """Guess that a clause the rules cannot read means going to the places it ends in, or leave it out.
+
+        A clause of two parts joined by "and" or a comma ("go to the porch and cool down by the
+        bench") is first read in its parts: the part the rules read stays read.
+        """
+        for k in range(len(clause.tokens) - 2, 1, -1):
+            if clause.tokens[k] in ('and', ',') and clause.tokens[k + 1] not in DETS:
+                snap = fallback.Snapshot(self, self.notes)
+                try:
+                    self._read_clause(_Clause(clause.connector, clause.tokens[:k]), scope)
+                except TranslationError:
+                    snap.restore()
+                    continue
+                self._read_part(_Clause('and', clause.tokens[k + 1:]), scope)
+                return
+        words = [t for t in clause.tokens if t not in PUNCT]
+        start = fallback.salvage_places(words, self.phrases)
+        action = 'left out'
+        if start is not None:
+            snap = fallback.Snapshot(self, self.notes)
+            try:   # the places, read as the goal of the clause (its connector kept: "then ...")
+                self._read_clause(_Clause(clause.connector, ['visit'] + words[start:]), scope)
+                action = 'guessed'
+                self.saw_action = True
+            except TranslationError:
+                snap.restore()
+        unread = fallback.Unread(' '.join(words), action, error.message)
+        self.unread.append(unread)
+        self.notes.append(unread.note())
 
     @staticmethod
     def _sentences(tokens: list[str]) -> list[list[str]]:
@@ -470,7 +532,7 @@ class _Reader:
             if (self.task.chain and permits) or (opens and self._is_permission(later)):
                 self._read_permission(later)
                 return
-            scope = self._read_clause(clause, scope)
+            scope = self._read_part(clause, scope)
 
     def _read_optional(self, tokens: list[str], nxt: list[str]) -> bool:
         """Read 'you can also stop by X, but no more than once': X is optional, its visits bounded."""
@@ -867,6 +929,14 @@ class _Reader:
             return scope
         if tokens[0] in ('leave', 'exit') and self._read_leave(tokens[1:]):
             return scope
+        if self.last_deliver_verb and tokens[0] in DETS and self.task.chain and \
+                self.task.chain[-1].kind == 'deliver' and clause.connector in ('seq', 'and'):
+            obj = self.phrases.parse(tokens, 0, destination_stops=True)
+            verb = [self.last_deliver_verb]
+            if obj is not None and not obj.pronoun and obj.end < len(tokens) and tokens[obj.end] in (
+                    'to', 'into', 'in', 'on', 'onto') and self._read_delivery(verb + tokens, clause):
+                self.saw_action = True   # "bring the mug to the sink, then the spoon to the drawer"
+                return scope
         if (tokens[0] in DELIVER_VERBS or tokens[0] in PICK_VERBS) and scope is not None and \
                 scope.kind == 'after' and scope.target is not None and \
                 self.task.find_step(scope.target.descriptor) is None:
@@ -880,7 +950,13 @@ class _Reader:
         return scope
 
     def _starts_statement(self, tokens: list[str], j: int) -> bool:
-        """Whether a statement about the scene starts at ``tokens[j]`` ("..., the floor is wet")."""
+        """Whether a statement about the scene starts at ``tokens[j]`` ("the floor is wet", "it's wet")."""
+        if j < len(tokens) and tokens[j] in ('it', 'they', 'that', 'this', 'he', 'she') and \
+                not self.phrases.landmarks:
+            end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
+            return tokens[j + 1:j + 2] in (['is'], ['are'], ['was'], ['were'], ['gets'], ['has'],
+                                           ['looks']) and \
+                chatter.is_statement(tokens[j:end]) and end - j <= 6
         if j >= len(tokens) or tokens[j] not in DETS or self.phrases.landmarks:
             return False
         np = self.phrases.parse(tokens, j)
@@ -950,6 +1026,9 @@ class _Reader:
         if tokens[0] in DETS and not (self.phrases.landmarks and self.phrases._landmark(tokens, 0)):
             np = self.phrases.parse(tokens, 0)
             np_end = np.end if np is not None else 0
+            listed, _, list_end = self.phrases.parse_list(tokens, 0)
+            if len(listed) > 1 and list_end < len(tokens) and tokens[list_end] in chatter.FINITE_VERBS:
+                np_end = list_end   # "the lamp, the clock and the radio are on the dresser"
         if chatter.is_statement(tokens, np_end):
             named: list[NounPhrase] = []
             i = 0
@@ -1391,7 +1470,10 @@ class _Reader:
             holding = bool({'have', 'has'} & set(rest[1:j])) and not {'been', 'reached'} & set(
                 rest[1:j + 1]) or rest[j:j + 1] in (['holding'], ['hold'])
             skippable |= {'holding', 'hold'}
-            while j < len(rest) and rest[j] not in ('there', 'here') and rest[j] in skippable:
+            while j < len(rest) and rest[j] not in ('there', 'here') and (rest[j] in skippable or (
+                    # a participle before a place: "until you have circled the island", "signed in at"
+                    rest[j].endswith('ed') and rest[j] not in STOPWORDS and j + 1 < len(rest) and (
+                        rest[j + 1] in DETS or rest[j + 1] in GOAL_PARTICLES))):
                 j += 1
             nps, _, end = self._np_list(rest, j, place=False)
             held = next((d for st in self.task._all_steps() if st.kind in ('pick', 'deliver')
@@ -1419,6 +1501,17 @@ class _Reader:
                 return sc, rest[end:]
         return None, rest
 
+    def _find_goal(self, d: Descriptor) -> Optional[Step]:
+        """Find the step of goal ``d``; a plain name ("the bench") finds the goal it names ("the bench by X").
+
+        Only where one goal has that name.
+        """
+        step = self.task.find_step(d)
+        if step is None and not d.relations:
+            step = next((st for st in reversed(self.task._all_steps()) if st.kind in ('visit', 'deliver') and
+                         len({t.name for t in st.targets + st.dests} & {d.name}) == 1), None)
+        return step
+
     def _apply_avoid(self, targets: list[Descriptor], scope: Optional[_Scope]) -> None:
         if self.choice is not None:
             step = self.task.last_step(('visit',))
@@ -1438,6 +1531,9 @@ class _Reader:
                 d = known.targets[0]  # "the landmark" names the goal already given
             if scope.event == 'pick':
                 self.task.constraints.append(_until_avoid(targets, Atom('pick', (d,))))
+                if self.task.find_step(d) is None:
+                    # "don't go in until you've picked up the torch": picking it up is part of the task, first
+                    self.task.chain.insert(0, Step('pick', [d]))
             else:
                 self.task.constraints.append(_until_avoid(targets, _near(d)))
                 if self.task.find_step(d) is None and not self.task.chain:
@@ -1454,7 +1550,7 @@ class _Reader:
         if kind == 'onway':
             step: Optional[Step]
             if scope is not None and scope.target is not None:
-                step = self.task.find_step(scope.target.descriptor)
+                step = self._find_goal(scope.target.descriptor)
                 if step is not None and scope.event == 'back' and step is not self.task.last_step(('visit',)):
                     step = None   # "on the way back to X" after other goals: X once more
                 if step is None:
@@ -1927,6 +2023,8 @@ class _Reader:
 
     def _read_delivery_one(self, tokens: list[str], clause: _Clause) -> bool:
         verb = tokens[0]
+        if verb in DELIVER_VERBS:
+            self.last_deliver_verb = verb
         last = self.task.chain[-1] if self.task.chain else None
         if [t for t in tokens[1:] if t != 'me'] in (['one', 'of', 'them'], ['either', 'of', 'them'],
                                                     ['one', 'of', 'those'], ['either', 'one']) and \
@@ -2046,16 +2144,29 @@ class _Reader:
 
     def _read_goal(self, tokens: list[str], clause: _Clause, scope: Optional[_Scope]) -> None:
         k = 0
-        if _starts(tokens, 0, ['take', 'off']):
+        if _starts(tokens, 0, ['take', 'off']) or _starts(tokens, 0, ['lift', 'off']):
             k = 2
+            if tokens[k:k + 1] == ['from']:
+                # "take off from the pad": where the flight starts, not a goal
+                src = self.phrases.parse(tokens, k + 1)
+                if src is not None:
+                    self.notes.append(f'"{" ".join(tokens[:src.end])}": the start, not a goal')
+                    k = src.end
             while k < len(tokens) and tokens[k] in ('and', ','):
                 k += 1
+            if k == len(tokens):
+                return
         patrol_from = False
         if _starts(tokens, 0, ['go', 'to', 'or', 'through']):
             k = 4
-        while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES) and not (
+        while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES or
+                                   tokens[k] == 'here') and not (
                 tokens[k] in ORDINALS and _ordinal_name(tokens, k)) and not (
-                tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or tokens[k + 1] not in DETS)
+                tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or
+                                                    tokens[k + 1] not in DETS) and not (
+                    # "come back here to the living room": the place is the one named after
+                    tokens[k + 1:k + 2] in (['to'], ['at'], ['in'], ['into']) and tokens[k + 2:k + 3] and
+                    tokens[k + 2] in DETS)
         ) and not (tokens[k] == 'back' and k + 1 < len(tokens)
                    and tokens[k + 1] in ('door', 'gate', 'yard', 'room', 'porch')) or (
                 0 < k < len(tokens) and tokens[k] in MOTION_PREPS and tokens[k - 1] in GOAL_VERBS) or (
@@ -2323,6 +2434,8 @@ class _Reader:
             return
         only, self.only = self.only, False
         r0 = rest[1:] if rest[0] in ('while', 'and', 'but', 'by', 'then') else rest
+        if r0 and r0[0] in DETS and self._read_order_statement(r0):
+            return   # "visit the barn and the shed, but the shed only after the barn"
         if self._read_stay_within(r0) or (r0 is not rest and self._read_stay_within(rest)):
             return
         if rest[0] == 'only':

@@ -121,6 +121,7 @@ _ORDER_VERBS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('has', 'to', 'be'), ('needs', 'to', 'be'), ('will', 'come'), ('must', 'happen'), ('should', 'happen'),
     ('happens',), ('is', 'visited'), ('gets', 'visited'), ('must', 'be', 'visited'),
     ('should', 'be', 'visited'), ('comes', 'only'), ('is', 'only'), ('only', 'comes'),
+    ('only',), ('not',), ('but', 'only'), ('and', 'only'), ('but', 'not'), ('and', 'not'),
 ), key=lambda t: -len(t)))
 
 
@@ -150,6 +151,8 @@ def order_statement(tokens: Sequence[str], parser: PhraseParser
     if k >= len(tokens) or tokens[k] not in ('after', 'before'):
         return None
     word = tokens[k]
+    if 'not' in verb:   # "the shed not before the barn": after it
+        word = 'after' if word == 'before' else 'before'
     y = parser.parse(tokens, k + 1)
     if y is None or y.pronoun or [t for t in tokens[y.end:] if t not in (',', 'too', 'though')]:
         return None

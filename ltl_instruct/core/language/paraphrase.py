@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import re
 
-from ltl_instruct.core.language.phrases import PhraseParser
+from ltl_instruct.core.language.phrases import PhraseParser, singular
 
 _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |it is |that is |'
          r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
@@ -64,6 +64,13 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
     (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
     (r' from there , ', ' after that , '),
+    # "first the tower, next the mast, last the silo": the last stop
+    (r'(^ | [,.;!?] | and | then )(?:last|last of all|and last) (?:, )?(?=(?:the|a|an|my|your|our) )',
+     r'\1 finally '),
+    # "until you have dropped by X": visited it
+    (r' (have|you|having|after|until|before|once) '
+     r'(?:dropped|popped|swung|stopped|called|looked|checked|come) '
+     r'(?:by|in at|in on|into|over to|at) (?=(?:the|a|an|my|your|our) )', r' \1 visited '),
     # "make sure you have been to X before Y": X is a goal (before Y)
     (r' (?:make sure|be sure|ensure) (?:that )?(?:you )?(?:have |already )*(?:been to|been by|visited|'
      r'gone to|stopped at|stopped by|passed by|swung by|checked) '
@@ -134,6 +141,23 @@ _DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to
 _GERUND_RE = re.compile(r' (first|finally) (' + '|'.join(_GERUNDS) + ') ')
 
 
+_GROUP_RE = re.compile(r' (?:pick|choose|select|go to|visit|use|head to|take) '
+                       r'(?:one of|either of|any of|one among) '
+                       r'(?:the|these|those) (?:two|three|four|five) (\w+) (?:, |: )')
+
+
+def _one_of_group(text: str) -> str:
+    """'pick one of the two sinks, the one by the window or the one by the door': go to either sink."""
+    m = _GROUP_RE.search(text)
+    if m is None:
+        return text
+    noun = singular(m.group(1))
+    end = min((text.find(p, m.end()) for p in (' . ', ' ; ', ' ! ', ' ? ') if text.find(p, m.end()) >= 0),
+              default=len(text))
+    body = text[m.end():end].replace('the one ', f'the {noun} ').replace(' a one ', f' a {noun} ')
+    return text[:m.start()] + ' go to either ' + body + text[end:]
+
+
 def paraphrase(tokens: list[str]) -> list[str]:
     """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
     text = ' ' + ' '.join(tokens) + ' '
@@ -147,8 +171,11 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location',
                                    ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ',
                                    ' start', ' begin', ' kick', ' finish', ' end ', ' wrap', ' whichever',
-                                   ' any ', ' either ', ' one of ', ' drop ', ' duck ', ' nip ', ' pop ')):
+                                   ' any ', ' either ', ' one of ', ' drop ', ' duck ', ' nip ', ' pop ',
+                                   ' last ', ' dropped', ' popped', ' swung', ' stopped', ' called',
+                                   ' looked', ' come ')):
         return tokens
+    text = _one_of_group(text)
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)
     text = _GERUND_RE.sub(lambda m: f' {m.group(1)} {_GERUNDS[m.group(2)]} ', text)

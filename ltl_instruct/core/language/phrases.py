@@ -22,7 +22,7 @@ RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
     (('between',), 'isbetween'), (('in', 'between'), 'isbetween'),
     (('on', 'top', 'of'), 'isabove'), (('on', 'the', 'top', 'of'), 'isabove'), (('on',), 'isabove'),
     (('onto',), 'isabove'), (('above',), 'isabove'), (('over',), 'isabove'), (('atop',), 'isabove'),
-    (('sitting', 'on'), 'isabove'), (('under',), 'isbelow'), (('underneath',), 'isbelow'),
+    (('under',), 'isbelow'), (('underneath',), 'isbelow'),
     (('below',), 'isbelow'), (('beneath',), 'isbelow'),
     (('to', 'the', 'left', 'of'), 'isleftof'), (('left', 'of'), 'isleftof'),
     (('on', 'the', 'left', 'of'), 'isleftof'), (('to', 'left', 'of'), 'isleftof'),

@@ -61,6 +61,10 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         if s >= 2 and tokens[s - 1] == ':' or s >= 3 and tokens[s - 1] == ',' and \
                 tokens[s - 3] in NUMBER_WORDS:
             category = singular(tokens[s - 2])   # "three chairs: a red one...", "two doors, a red one..."
+            q = next((q for q in range(s - 2, max(-1, s - 8), -1) if tokens[q] in NUMBER_WORDS), -1)
+            counted = parser.parse(tokens, q + 1) if q >= 0 else None
+            if counted is not None and counted.end <= s - 1:
+                category = singular(counted.head)   # "three bins by the gate: a green one, ..."
         elif s >= 2 and tokens[s - 1] == ',':
             continue
         return s, end, nps, category
@@ -588,6 +592,60 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
     return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
 
 
+def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Swap two goals: 'go to a, then b, then c. wait, swap b and c' -> 'go to a, then c, then b'."""
+    words = [t for t in seg if t not in PUNCT]
+    if not words or words[0] not in ('swap', 'switch', 'flip', 'exchange', 'reverse', 'interchange'):
+        return None
+    k = 1
+    while k < len(words) and words[k] in ('the', 'order', 'of', 'around', 'round'):
+        k += 1
+    nps, _, end = PhraseParser().parse_list(words, k)
+    if len(nps) != 2 or [t for t in words[end:] if t not in ('around', 'round', 'please', 'instead')]:
+        return None
+    spans = _np_spans(prev)
+    hits = [next((sp for sp in reversed(spans) if sp.descriptor == np.descriptor or sp.head == np.head), None)
+            for np in nps]
+    if hits[0] is None or hits[1] is None or hits[0].start == hits[1].start:
+        return None
+    a, b = sorted(hits, key=lambda sp: sp.start)
+    notes.append(f'{nps[0].descriptor} and {nps[1].descriptor} swapped')
+    return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
+
+
+_GOES = (('goes',), ('should', 'go'), ('belongs',), ('needs', 'to', 'go'), ('has', 'to', 'go'), ('go',),
+         ('must', 'go'), ('is', 'for'), ('is', 'going'))
+
+
+def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Change a destination: 'bring the mug to the desk. wait, the mug goes to the sink': to the sink."""
+    words = [t for t in seg if t not in PUNCT]
+    if not words or words[0] not in DETERMINERS:
+        return None
+    parser = PhraseParser()
+    at = next((k for k in range(1, len(words)) if any(tuple(words[k:k + len(v)]) == v for v in _GOES)), -1)
+    obj = parser.parse(words[:at], 0, destination_stops=True) if at > 0 else None
+    if obj is None or obj.pronoun or obj.end != at:
+        return None   # (the verb found first: the parser would take "goes" into the name)
+    verb = next(v for v in _GOES if tuple(words[at:at + len(v)]) == v)
+    k = at + len(verb)
+    if k >= len(words) or words[k] not in _PREPS | {'to'}:
+        return None
+    dest = parser.parse(words, k + 1)
+    if dest is None or dest.end != len(words):
+        return None
+    hit = next((sp for sp in reversed(_np_spans(prev))
+                if sp.descriptor == obj.descriptor or sp.head == obj.head),
+               None)
+    if hit is None or hit.end >= len(prev) or prev[hit.end] not in _PREPS | {'to'}:
+        return None
+    old = parser.parse(prev, hit.end + 1)
+    if old is None or old.pronoun:
+        return None
+    notes.append(f'{obj.descriptor} goes to {dest.descriptor} instead')
+    return prev[:hit.end + 1] + words[k + 1:dest.end] + prev[old.end:]
+
+
 def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Move a goal first: 'go to the pool, then the gym. Actually, do the gym first'."""
     words = [t for t in seg if t not in PUNCT]
@@ -625,6 +683,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     retracted = _retract_avoidance(prev, seg, notes)
     if retracted is not None:
         return retracted
+    swapped = _swap(prev, seg, notes) or _goes_to(prev, seg, notes)
+    if swapped is not None:
+        return swapped
     reordered = _first_instead(prev, seg, notes)   # before a restatement: "actually, go to X first"
     if reordered is not None:
         return reordered
@@ -706,7 +767,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                     prev = _remove_clause(prev, sp.start)
                     break
         return prev + ([','] if prev and prev[-1] not in PUNCT else []) + rest
-    if 'other way' in s or 'reverse' in s or 'opposite order' in s:
+    if 'other way' in s or 'reverse' in s or 'opposite order' in s or 'backward' in s or 'wrong way' in s or \
+            'mixed up' in s or 'mixed that up' in s or 'wrong order' in s or 'mixed them up' in s:
         spans = _np_spans(prev)
         if len(spans) < 2:
             return None

@@ -60,6 +60,10 @@ _ACRONYM_RE = re.compile(
     r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
 
 
+# A capital letter after a word names something ("field A", "Gate B"): not the article "a".
+_LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
+
+
 def tokenize(text: str) -> list[str]:
     """Normalise an instruction and split it into word and punctuation tokens.
 
@@ -75,6 +79,7 @@ def tokenize(text: str) -> list[str]:
         between spaces becomes a comma, and typos in :data:`TYPOS` are fixed.
     """
     acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
+    acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
     if acronyms:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))

@@ -446,7 +446,20 @@ RULES: tuple[Rule, ...] = (
 )
 
 _SENTENCE_ENDS = frozenset('.;!?')
-_COMPILED = tuple((re.compile(r.pattern), r.replacement) for r in RULES)
+
+
+def _literal_words(pattern: str) -> frozenset[str]:
+    """Every word the pattern spells out, outside negative lookaheads.
+
+    A match always contains at least one of them (each rule spells out a word it needs), so a
+    sentence with none of them cannot match: the rule is skipped without running the regex.
+    """
+    text = re.sub(r'\(\?!\(\?:[^)]*\)\\b\)', ' ', pattern)   # the words a noun phrase may not be
+    text = re.sub(r'\\[a-zA-Z]|\(\?P<\w+>|\(\?P=\w+\)|\\g<\w+>', ' ', text)   # escapes and group names
+    return frozenset(re.findall(r'[a-z]+', text))
+
+
+_COMPILED = tuple((re.compile(r.pattern), r.replacement, _literal_words(r.pattern)) for r in RULES)
 
 
 def rewrite_idioms(tokens: list[str]) -> list[str]:
@@ -465,6 +478,12 @@ def _rewrite_sentence(words: list[str]) -> list[str]:
     if not words:
         return []
     text = ' '.join(words)
-    for pattern, replacement in _COMPILED:
-        text = pattern.sub(replacement, text)
+    present = set(words)
+    for pattern, replacement, needs in _COMPILED:
+        if present.isdisjoint(needs):
+            continue   # none of the words it spells out: it cannot match
+        new = pattern.sub(replacement, text)
+        if new != text:
+            text = new
+            present = set(text.split())
     return text.split()

@@ -229,3 +229,42 @@ ROUND_TWO = [
 @pytest.mark.parametrize('instruction,gold', ROUND_TWO, ids=[c[0][:30] for c in ROUND_TWO])
 def test_second_round_constructions(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+ROUND_THREE = [
+    ('Before anything else, grab the wrench and take it to the van.',
+     'F (near[wrench] & F (pick[wrench] & F (near[van] & F release[wrench, van])))'),
+    ('Visit either the red lamp or the blue lamp, and whichever one you pick, visit it twice.',
+     'F (near[red_lamp] & F (!near[red_lamp] & F near[red_lamp])) | '
+     'F (near[blue_lamp] & F (!near[blue_lamp] & F near[blue_lamp]))'),
+    ('Go to the shed and the barn, but the barn only once you have been to the shed.',
+     'F near[shed] & F near[barn] & (!near[barn] U near[shed])'),
+    ('The cellar has to come before the attic, and the roof after the attic.',
+     'F near[attic] & (!near[attic] U near[cellar]) & F near[roof] & (!near[roof] U near[attic])'),
+    ('Go to the den, then the hall. On the way to the hall avoid the rug, no wait, avoid the lamp instead.',
+     'F (near[den] & (!near[lamp] U near[hall]))'),
+    ('Pick the north exit or the south exit, and if you take the south one, keep away from the bins.',
+     'F near[north_exit] | (F near[south_exit] & G !near[bins])'),
+    ('Either bring the tray to the kitchen or to the porch.',
+     'F (near[tray] & F (pick[tray] & (F (near[kitchen] & F release[tray, kitchen]) | '
+     'F (near[porch] & F release[tray, porch]))))'),
+    ('Grab the torch or the lantern and take it to the shed.',
+     'F (near[torch] & F (pick[torch] & F (near[shed] & F release[torch, shed]))) | '
+     'F (near[lantern] & F (pick[lantern] & F (near[shed] & F release[lantern, shed])))'),
+    ('Carry the crate to the van, and after you set it down, keep away from the ramp.',
+     'F (near[crate] & F (pick[crate] & F (near[van] & F (release[crate, van] & G !near[ramp]))))'),
+    ('Go to the pond or the lawn, then the shed; either way, do not cross the road.',
+     'F ((near[pond] | near[lawn]) & F near[shed]) & G !near[road]'),
+    ('Go to the swing or the slide, but avoid the puddle in both cases.',
+     '(F near[swing] | F near[slide]) & G !near[puddle]'),
+    ('Find the keys that are probably under the sofa.', 'F near[keys::isbelow(sofa)]'),
+    ('Go to the cafe, but only after you have been to either the bank or the shop.',
+     'F near[cafe] & (!near[cafe] U (near[bank] | near[shop]))'),
+    ('Before you go to the roof, check the boiler, and then go to the roof.',
+     'F (near[boiler] & F near[roof])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_THREE, ids=[c[0][:30] for c in ROUND_THREE])
+def test_third_round_constructions(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

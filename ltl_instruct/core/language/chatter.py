@@ -137,6 +137,8 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('at', 'your', 'convenience'), ('when', 'convenient'), ('first', 'of', 'all'), ('to', 'start'),
     ('to', 'begin'), ('to', 'begin', 'with'), ('for', 'starters'), ('okay', 'so'), ('ok', 'so'), ('so',),
     ('alright', 'so'), ('right', 'so'), ('hey', 'robot'), ('hi', 'robot'), ('robot',), ('drone',),
+    ('before', 'anything', 'else'), ('first', 'things', 'first'), ('before', 'you', 'do', 'anything', 'else'),
+    ('to', 'start', 'with'), ('to', 'start', 'off'), ('for', 'a', 'start'),
 ), key=lambda t: -len(t)))
 
 PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',

@@ -67,6 +67,10 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('at', 'no', 'point'), ('the', 'whole', 'trip'), ('the', 'entire', 'trip'), ('the', 'entire', 'way'),
     ('throughout', 'the', 'task'), ('throughout', 'the', 'trip'), ('always',), ('in', 'general'),
     ('no', 'matter', 'which'), ('either', 'way'), ('in', 'any', 'case'), ('regardless',),
+    ('in', 'both', 'cases'), ('in', 'either', 'case'), ('whichever', 'you', 'choose'),
+    ('whichever', 'you', 'pick'),
+    ('whichever', 'one', 'you', 'choose'), ('whichever', 'one', 'you', 'pick'), ('either', 'way', 'round'),
+    ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whichever', 'it', 'is'),
 ), key=lambda t: -len(t)))
 _GLOBAL_FIRST = frozenset(m[0] for m in GLOBAL_MARKERS)
 
@@ -309,6 +313,7 @@ class _Reader:
         # the goals of the last "X after Y" read, and the ones they come after ("and not a second earlier")
         self.last_after: Optional[tuple[list[Descriptor], list[Descriptor]]] = None
         self.stated_goals: list[Descriptor] = []   # goals of "X comes after Y" (for "go to both")
+        self.before_added: Optional[Step] = None   # the goal "before you go to X, ..." added
         self.scene: list[Descriptor] = []   # the things a "there is ..." clause named last
         self.unread: list[fallback.Unread] = []   # clauses the rules could not read (guessed or left out)
         self.read_parts = 0   # clauses and sentences read by the rules
@@ -421,6 +426,12 @@ class _Reader:
         except TranslationError as e:
             snap.restore()
             self._degrade(clause, scope, e)
+            return scope
+        except (IndexError, KeyError, ValueError, AttributeError, AssertionError) as e:
+            # a rule that fails on these words: the words are treated as unread, not the instruction
+            snap.restore()
+            self._degrade(clause, scope, TranslationError(f'the rules failed on "{" ".join(clause.tokens)}" '
+                                                          f'({type(e).__name__})'))
             return scope
 
     def _degrade(self, clause: _Clause, scope: Optional[_Scope], error: TranslationError) -> None:
@@ -772,6 +783,11 @@ class _Reader:
         s = ' '.join(tokens)
         if s.startswith('either way'):
             tokens = tokens[2:]
+            if not tokens:
+                return scope
+        if tokens[0] == 'either' and len(tokens) > 2 and 'or' in tokens and \
+                tokens[1] in DELIVER_VERBS | PICK_VERBS | STRONG_VERBS:
+            tokens = tokens[1:]   # "either bring the mail to the study or to the kitchen": the "or" says it
         elif len(tokens) > 2 and tokens[0] == 'either' and tokens[1] in GOAL_VERBS:
             tokens = tokens[1:]   # "either fly over the lake or over the forest": the list says 'or'
         new_scope, tokens = self._leading_scope(tokens)
@@ -820,6 +836,8 @@ class _Reader:
             self.task.repeat = times   # "go to a, then b; do that whole round twice"
             self.notes.append(f'the whole route is done {times} times')
             return scope
+        if orders.phrase_at(tokens, 0, GLOBAL_MARKERS) == len(tokens):
+            return scope   # "whichever one you pick, ...": the choice is the person's
         if orders.is_strict_marker(tokens) and self._strict_last():
             return scope   # "go to X once you have been to Y, and not a second earlier"
         if s in ('not both', 'but not both', 'not both of them'):
@@ -1142,6 +1160,8 @@ class _Reader:
 
     def _leading_scope(self, tokens: list[str]) -> tuple[Optional[_Scope], list[str]]:
         """Scope phrases that open a clause: "on the way to X,", "once you've reached X,", "after ..."."""
+        if not tokens:
+            return None, tokens
         g1 = orders.phrase_at(tokens, 0, GLOBAL_MARKERS) if tokens[0] in _GLOBAL_FIRST else -1
         if g1 > 0 and len(tokens) > g1 and tokens[0] not in ('always', 'ever') and self._avoid_start(
                 tokens[g1 + (tokens[g1] == ','):]) is not None:
@@ -1217,7 +1237,7 @@ class _Reader:
                     return _Scope('carry'), np.end
         j = i
         while j < len(tokens) and tokens[j] in ('you', 'have', 'are', 'i', 'it', 'is', 'been', 'the',
-                                                'robot'):
+                                                'robot', 'they', 'we', 'has', 'was', 'were', 'that'):
             j += 1
         if j >= len(tokens):
             return None, i
@@ -1255,7 +1275,9 @@ class _Reader:
                 end += 1
             return _Scope('after_pick'), end
         if w in ('dropped', 'delivered', 'released', 'put', 'placed', 'left', 'drop', 'deliver', 'dropping',
-                 'delivering'):
+                 'delivering', 'set', 'unloaded', 'handed', 'stashed', 'stored', 'loaded', 'placing',
+                 'putting',
+                 'setting', 'leaving', 'unloading'):
             k = j + 1
             np = self.phrases.parse(tokens, k)
             end = np.end if np is not None else k
@@ -1612,17 +1634,18 @@ class _Reader:
 
     def _read_order_statement(self, tokens: list[str]) -> bool:
         """Read 'X comes after Y' (both goals, X not before Y); 'X comes before Y' the other way."""
-        found = orders.order_statement(tokens, self.phrases)
+        found = orders.order_statements(tokens, self.phrases)
         if found is None:
             return False
-        x, word, y = found
-        later, earlier = (x, y) if word == 'after' else (y, x)
-        if self.task.find_step(later.descriptor) is None:
-            # "F x & (!x U y)", the dev set's "x only after y" (the until makes y required)
-            self.task.constraints.append(Eventually(_near(later.descriptor)))
-        self.task.constraints.append(Until(Not(_near(later.descriptor)), _near(earlier.descriptor)))
-        self.stated_goals += [later.descriptor, earlier.descriptor]
-        self.last_place = later
+        for x, word, y in found:
+            later, earlier = (x, y) if word == 'after' else (y, x)
+            if self.task.find_step(later.descriptor) is None and Eventually(
+                    _near(later.descriptor)) not in self.task.constraints:
+                # "F x & (!x U y)", the dev set's "x only after y" (the until makes y required)
+                self.task.constraints.append(Eventually(_near(later.descriptor)))
+            self.task.constraints.append(Until(Not(_near(later.descriptor)), _near(earlier.descriptor)))
+            self.stated_goals += [later.descriptor, earlier.descriptor]
+            self.last_place = later
         return True
 
     def _read_passive_avoid(self, tokens: list[str]) -> bool:
@@ -1792,7 +1815,7 @@ class _Reader:
             return False
         j = self._skip_event_verbs(tokens, k + 2)
         while j < len(tokens) and tokens[j] in ('choose', 'pick', 'decide', 'opt', 'on', 'for', 'with',
-                                                'end'):
+                                                'end', 'take', 'use', 'up', 'at', 'go', 'to', 'select'):
             j += 1
         np = self.phrases.parse(tokens, j)
         return np is not None and self._resolve(np, place=True).descriptor in last.targets
@@ -1802,7 +1825,7 @@ class _Reader:
         j = 1
         while j < len(tokens) and tokens[j] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
                 'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already',
-                'end', 'opt', 'settle', 'with'}:
+                'end', 'opt', 'settle', 'with', 'take', 'use', 'select'}:
             j += 1
         np = self.phrases.parse(tokens, j)
         if np is None:
@@ -1873,10 +1896,14 @@ class _Reader:
                 self.task.chain.insert(self.task.chain.index(prev), Step('pick', [obj.descriptor]))
                 self._check_leftover(s[obj.end:], s)
                 return True
-            nps, _, end = self._np_list(s, k)
+            nps, joiner, end = self._np_list(s, k)
             if not nps:
                 return False
             for x in prev.targets:
+                if joiner == 'or':   # "only after you've been to either the bank or the post office"
+                    reach = _or([_near(p.descriptor) for p in nps])
+                    self.task.constraints.append(Until(Not(_near(x)), reach))
+                    continue
                 for np in nps:
                     self.task.constraints.append(Until(Not(_near(x)), _near(np.descriptor)))
             self._check_leftover(s[end:], s)
@@ -2066,6 +2093,16 @@ class _Reader:
                 not rest or rest[0] not in ('to', 'into', 'in', 'on', 'onto', 'at')):
             # a plain pick; a following "and bring it to X" turns it into a delivery.
             at = len(self.task.chain) - (1 if clause.connector == 'pre' and self.task.chain else 0)
+            if joiner == 'or' and verb in ('pick', 'choose', 'select') and tokens[1:2] != ['up']:
+                # "pick the east stairs or the west stairs": a choice of goals, nothing picked up
+                self.task.chain.insert(at, Step('visit', [o.descriptor for o in objs]))
+                self.notes.append(f'"{verb}" read as choosing where to go')
+                self._check_leftover(rest, tokens)
+                return True
+            if joiner == 'or':   # "grab the torch or the lantern": one of them
+                self.task.chain.insert(at, Step('any', chains=[[Step('pick', [o.descriptor])] for o in objs]))
+                self._check_leftover(rest, tokens)
+                return True
             for o in objs:
                 self.task.chain.insert(at, Step('pick', [o.descriptor]))
                 at += 1
@@ -2128,6 +2165,12 @@ class _Reader:
             last.kind, last.dests = 'deliver', list(dest_ds)
             if without:
                 self._read_avoid(without, _Scope('carry'))
+            return True
+        if last is not None and last.kind == 'any' and len(objs) == 1 and \
+                tokens[k] in ('it', 'them', 'that') and all(len(c) == 1 and c[0].kind == 'pick'
+                                                            for c in last.chains):
+            for c in last.chains:   # "grab the torch or the lantern and take it to the tent": whichever
+                c[0].kind, c[0].dests = 'deliver', list(dest_ds)
             return True
         steps = [Step('deliver', [o], list(dest_ds)) for o in obj_ds]
         group = 'any' if joiner == 'or' else 'all'
@@ -2263,6 +2306,17 @@ class _Reader:
             self.task.chain.append(Step('visit', [scope.target.descriptor]))
         if self.only and rest[:1] == ['once']:
             rest = ['exactly'] + rest   # "only enter the pantry once"
+        choice = self.task.chain[-1] if self.task.chain else None
+        if tokens[k:k + 1] in (['it'], ['there'], ['that'], ['them']) and choice is not None and \
+                choice.kind == 'visit' and len(choice.targets) > 1 and targets[0] in choice.targets:
+            c = self._count_word([t for t in rest if t != ','], 0)
+            if c is not None and c[0] > 1:
+                # "go to the tall lamp or the short one, and visit it twice": whichever, twice
+                self.task.chain[-1] = Step('any', chains=[
+                    [st for _ in range(c[0]) for st in (Step('leave', [d]), Step('visit', [d]))][1:]
+                    for d in choice.targets])
+                self._goal_trailer([t for t in rest if t != ','][c[1]:], tokens, targets)
+                return
         counted, rest = self._read_count(rest, targets)
         if counted:
             rest = [t for t in rest if t != ',']
@@ -2272,6 +2326,12 @@ class _Reader:
             self._goal_trailer(rest, tokens, targets)
             return
         tail: list[Step] = []
+        if self.before_added is not None and self.task.chain and self.task.chain[-1] is self.before_added \
+                and self.before_added.targets == targets and clause.connector in ('seq', 'and'):
+            # "before you go to the roof, check the boiler, and then go to the roof": that roof
+            self.before_added = None
+            self._goal_trailer(rest, tokens, targets)
+            return
         same = next((st for st in self.task.chain if st.kind == 'visit' and st.targets == targets), None)
         if clause.first and same is not None and len(targets) == 1 and not rest:
             # "go to the fridge, then the oven. actually, go to the oven first": the oven moves first
@@ -2310,6 +2370,7 @@ class _Reader:
             else:
                 self.task.chain.append(Step('visit', [self.before_target]))
                 targets = [self.task.chain[-1].targets[0]]
+                self.before_added = self.task.chain[-1]
             self.before_target, self.before_strict = None, False
         self._goal_trailer(rest, tokens, targets)
         self.task.chain.extend(tail)

@@ -128,35 +128,70 @@ _ORDER_VERBS: tuple[tuple[str, ...], ...] = tuple(sorted((
 _VERB_FIRST = frozenset(v[0] for v in _ORDER_VERBS)
 
 
-def order_statement(tokens: Sequence[str], parser: PhraseParser
+# Words between "after"/"once" and the place: "once you've been to the garage".
+_EVENT_SKIP = frozenset({'you', 'have', 'been', 'to', 'visited', 'reached', 'gone', 'seen', 'checked', 'at',
+                         'got', 'gotten', 'stopped', 'by', 'the', 'robot', 'has', 'is', 'are', 'done',
+                         'finished', 'with', 'passed', 'through', 'surveyed', 'arrived', 'in'})
+
+
+def order_statement(tokens: Sequence[str], parser: PhraseParser, verbless: bool = False
                     ) -> Optional[tuple[NounPhrase, str, NounPhrase]]:
     """Read "X comes after Y" / "X must come before Y": ``(X, 'after' or 'before', Y)``, else None.
 
-    The whole clause must be the statement (a trailing "too", "of course" aside).
+    "X only once you've been to Y" and "X not until Y" are "after". The whole clause must be
+    the statement (a trailing "too" aside). With ``verbless``, "the sauna after the pool" is one
+    too (a verb said in the clause before: "the gym has to come before the pool, and the
+    sauna after the pool").
     """
     if not tokens or tokens[0] not in ('the', 'a', 'an', 'my', 'your', 'our'):
         return None
     # the subject ends where the verb starts (the parser would take "comes" into the name)
     at = next((k for k in range(1, min(len(tokens), 12)) if tokens[k] in _VERB_FIRST and any(
         tuple(tokens[k:k + len(v)]) == v for v in _ORDER_VERBS)), -1)
+    verb: tuple[str, ...] = ()
+    if at < 0 and verbless:
+        at = next((k for k in range(1, min(len(tokens), 12)) if tokens[k] in ('after', 'before')), -1)
+    elif at >= 0:
+        verb = next(v for v in _ORDER_VERBS if tuple(tokens[at:at + len(v)]) == v)
     if at < 0:
         return None
     x = parser.parse(list(tokens[:at]), 0)
     if x is None or x.pronoun or x.end != at:
         return None
-    verb = next(v for v in _ORDER_VERBS if tuple(tokens[at:at + len(v)]) == v)
     k = at + len(verb)
     if k < len(tokens) and tokens[k] in ('right', 'just', 'only', 'directly', 'always', 'sometime'):
         k += 1
-    if k >= len(tokens) or tokens[k] not in ('after', 'before'):
+    if k >= len(tokens) or tokens[k] not in ('after', 'before', 'once', 'when', 'until') or \
+            tokens[k] == 'until' and 'not' not in verb or \
+            tokens[k] in ('once', 'when') and 'only' not in verb:
         return None
-    word = tokens[k]
-    if 'not' in verb:   # "the shed not before the barn": after it
+    word = 'after' if tokens[k] in ('once', 'when', 'until') else tokens[k]
+    if 'not' in verb and tokens[k] != 'until':   # "the shed not before the barn": after it
         word = 'after' if word == 'before' else 'before'
-    y = parser.parse(tokens, k + 1)
+    k += 1
+    while k < len(tokens) and tokens[k] in _EVENT_SKIP and tokens[k] != 'the':
+        k += 1
+    y = parser.parse(tokens, k)
     if y is None or y.pronoun or [t for t in tokens[y.end:] if t not in (',', 'too', 'though')]:
         return None
     return x, word, y
+
+
+def order_statements(tokens: Sequence[str], parser: PhraseParser
+                     ) -> Optional[list[tuple[NounPhrase, str, NounPhrase]]]:
+    """Read one order statement, or several joined by "and" ("X before Y, and Z after Y"), else None."""
+    one = order_statement(tokens, parser)
+    if one is not None:
+        return [one]
+    for k in range(2, len(tokens) - 3):
+        if tokens[k] == 'and' or tokens[k] == ',' and tokens[k + 1] in ('the', 'and'):
+            j = k + 1 + (tokens[k + 1] == 'and')
+            head = order_statement(tokens[:k], parser)
+            if head is not None:
+                tail = order_statement(tokens[j:], parser, verbless=True)
+                if tail is not None:
+                    return [head, tail]
+    return None
 
 
 def phrase_at(tokens: Sequence[str], i: int, phrases: Sequence[tuple[str, ...]]) -> int:

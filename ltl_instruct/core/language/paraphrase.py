@@ -64,6 +64,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
     (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
     (r' from there , ', ' after that , '),
+    # "the remote that's probably under the cushion": where it is, hedged
+    (r' (that is|which is|that are|which are|is|are) (?:probably|maybe|possibly|likely|usually|currently|'
+     r'still|normally|hopefully|typically|most likely|likely still|often|sometimes) '
+     r'(?=(?:on|under|in|behind|next|by|near|beside|between|above|below|beneath|to the|in front|sitting|'
+     r'lying|standing|left|right) )', r' \1 '),
     # "first the tower, next the mast, last the silo": the last stop
     (r'(^ | [,.;!?] | and | then )(?:last|last of all|and last) (?:, )?(?=(?:the|a|an|my|your|our) )',
      r'\1 finally '),
@@ -173,7 +178,10 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' start', ' begin', ' kick', ' finish', ' end ', ' wrap', ' whichever',
                                    ' any ', ' either ', ' one of ', ' drop ', ' duck ', ' nip ', ' pop ',
                                    ' last ', ' dropped', ' popped', ' swung', ' stopped', ' called',
-                                   ' looked', ' come ')):
+                                   ' looked', ' come ', ' probably', ' maybe', ' possibly', ' likely',
+                                   ' usually', ' currently', ' still', ' normally', ' hopefully',
+                                   ' typically',
+                                   ' often', ' sometimes')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:

@@ -105,7 +105,8 @@ PLACEHOLDER_ADJECTIVES = frozenset('''
 red blue green yellow orange purple pink brown black white grey gray silver gold golden big small large little
 tall short long round square other same left right near far front back upper lower top bottom middle new old
 wooden metal plastic glass open closed empty full clean dirty dark light first second third last closest
-nearest farthest furthest next previous main
+nearest farthest furthest next previous main north south east west northern southern eastern western inner
+outer side central rear upstairs downstairs spare tiny huge heavy light narrow wide broken new older newer
 '''.split())
 
 LY_NOUNS = frozenset({'family', 'assembly', 'supply', 'jelly', 'belly', 'trolley', 'pulley', 'valley',

@@ -548,6 +548,9 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     b = end
     while b > 0 and not (prev[b - 1] in '.;!?' or prev[b - 1] in (',', 'then', 'and') and prev[b] in _VERBS):
         b -= 1
+    if b < end and prev[b] != seg[0]:
+        # "on the way to the hall avoid the stairs, no wait, avoid the door": the verb said again
+        b = next((p for p in range(end - 1, b, -1) if prev[p] == seg[0] and seg[0] == 'avoid'), b)
     if b >= end or prev[b] != seg[0]:
         return None
     old = prev[b:end]

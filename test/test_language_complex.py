@@ -268,3 +268,38 @@ ROUND_THREE = [
 @pytest.mark.parametrize('instruction,gold', ROUND_THREE, ids=[c[0][:30] for c in ROUND_THREE])
 def test_third_round_constructions(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+ROUND_FOUR = [
+    ('Remember to take the bowl (the one with the blue rim) to the sink.',
+     'F (near[bowl] & F (pick[bowl] & F (near[sink] & F release[bowl, sink])))'),
+    ('Circle the silo 3 times and then RTB.',
+     'F (near[silo] & F (!near[silo] & F (near[silo] & F (!near[silo] & F (near[silo] & F near[base])))))'),
+    ('Go to either the gym or the pool, exactly once.', 'F near[gym] | F near[pool]'),
+    ('Visit the kitchin, then the livingroom.', 'F (near[kitchen] & F near[living_room])'),
+    ('On the shelf: a jar of jam, a loaf of bread and a tin of soup. Put the second thing in the bin.',
+     'F (near[loaf_of_bread] & F (pick[loaf_of_bread] & F (near[bin] & F release[loaf_of_bread, bin])))'),
+    ('Avoid the lab unless you have already been to the airlock.', '!near[lab] U near[airlock]'),
+    ('Visit the well twice and the barn once, and avoid the goats.',
+     'F (near[well] & F (!near[well] & F near[well])) & F near[barn] & G !near[goats]'),
+    ('Toss the old flyers. No, actually, put them in the recycling bin.',
+     'F (near[old_flyers] & F (pick[old_flyers] & F (near[recycling_bin] & '
+     'F release[old_flyers, recycling_bin])))'),
+    ('Could you find my wallet? I think it is on the shelf next to the door.',
+     'F near[wallet::isabove(shelf::isnextto(door))]'),
+    ('Go to the deli and the bakery, in any order, but finish at the florist.',
+     'F (near[deli] & F near[florist]) & F (near[bakery] & F near[florist])'),
+    ('Go to the shed and avoid the hoses. Actually you can go near the hoses, just avoid the mower.',
+     'F near[shed] & G !near[mower]'),
+    ('Go to whichever table is free - the one by the bar or the one by the window.',
+     'F near[table::isnextto(bar)] | F near[table::isnextto(window)]'),
+    ('Visit the north gate, then the south gate, and do not go to the south gate before the north gate.',
+     'F (near[north_gate] & F near[south_gate]) & (!near[south_gate] U near[north_gate])'),
+    ('Go to the sink. Once you reach the sink, keep away from the stove, and never touch the knives at all.',
+     'F (near[sink] & G !near[stove]) & G !near[knives]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_FOUR, ids=[c[0][:30] for c in ROUND_FOUR])
+def test_fourth_round_constructions(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -25,7 +25,9 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
-from ltl_instruct.core.language.phrases import DETERMINERS, is_name_word, match_relation
+from ltl_instruct.core.language.phrases import (
+    DETERMINERS, PLACEHOLDER_ADJECTIVES, is_name_word, match_relation,
+)
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 
 # Words that change what the robot must do; a part holding one is never left out.
@@ -212,6 +214,23 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+_PAREN_RE = re.compile(r'\(([^()]{0,200})\)')
+
+
+def strip_parentheticals(text: str, notes: list[str]) -> str:
+    """Leave out asides in parentheses ("the mug (the one with the chipped handle)"), noted.
+
+    An aside holding a constraint word ("(but never the red one)") is read as a clause instead.
+    """
+    def aside(m: re.Match[str]) -> str:
+        words = re.findall(r"[a-z0-9']+", m.group(1).lower())
+        if carries_constraint(words) or words[:1] in (['then'], ['and']):
+            return f', {m.group(1)} ,'
+        notes.append(f'left out "({m.group(1).strip()})" (an aside)')
+        return ' '
+    return _PAREN_RE.sub(aside, text) if '(' in text else text
+
+
 def strip_frames(tokens: list[str], notes: list[str]) -> list[str]:
     """Remove frames around a request ("it would be great if you could ...", "time to ..."), noted."""
     text = ' ' + ' '.join(tokens) + ' '
@@ -249,7 +268,8 @@ def carries_constraint(tokens: Sequence[str]) -> bool:
     the robot goes ("keep away from", "stay in"), not in "keep an eye out", "stay calm".
     """
     words = [t for k, t in enumerate(tokens) if not (
-        t in ('keep', 'stay') and (k + 1 >= len(tokens) or tokens[k + 1] not in _KEEP_CONSTRAINT))]
+        t in ('keep', 'stay') and (k + 1 >= len(tokens) or tokens[k + 1] not in _KEEP_CONSTRAINT)) and not (
+        t == 'one' and k > 0 and tokens[k - 1] in DETERMINERS | PLACEHOLDER_ADJECTIVES)]   # "the red one"
     return has_constraint_word(words) or 'avoid' in words or any(w.startswith('avoid') for w in words)
 
 

@@ -70,7 +70,7 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('in', 'both', 'cases'), ('in', 'either', 'case'), ('whichever', 'you', 'choose'),
     ('whichever', 'you', 'pick'),
     ('whichever', 'one', 'you', 'choose'), ('whichever', 'one', 'you', 'pick'), ('either', 'way', 'round'),
-    ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whichever', 'it', 'is'),
+    ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whichever', 'it', 'is'), ('at', 'all'),
 ), key=lambda t: -len(t)))
 _GLOBAL_FIRST = frozenset(m[0] for m in GLOBAL_MARKERS)
 
@@ -134,10 +134,10 @@ class OfflineTranslator:
             raise LimitExceededError(f'the instruction is {len(instruction)} characters long; '
                                      f'the limit is {MAX_INSTRUCTION_CHARS}')
         started = time.perf_counter()
-        tokens = tokenize(instruction)
+        notes: list[str] = []
+        tokens = tokenize(chatter.strip_parentheticals(instruction, notes))
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
-        notes: list[str] = []
         tokens = _correct_spelling(tokens, notes, self.landmarks)
         tokens = chatter.strip_headings(tokens, notes) if ':' in tokens else tokens
         tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
@@ -1035,6 +1035,8 @@ class _Reader:
                 # "skip the hall": nothing to do there (a goal already given is retracted by rewrite)
                 self.notes.append(f'"{text}": no goal there')
                 return True
+        if self._read_whereabouts(raw):
+            return True
         if raw[:2] == ['i', 'mean'] and chatter.is_filler(raw[2:], SKILL_VERBS):
             self.notes.append(f'left out "{" ".join(raw)}" (emphasis)')   # "and I mean anywhere near it"
             return True
@@ -1073,6 +1075,44 @@ class _Reader:
             self.notes.append(f'took "{text}" as a description of the scene, not a task')
             return True
         return False
+
+    def _read_whereabouts(self, raw: list[str]) -> bool:
+        """Read 'I think they're on the nightstand': where the thing just named is, refining that goal.
+
+        "Find my glasses. I think they're on the nightstand next to the bed" is the glasses on
+        the nightstand; the person's hedge ("I think", "probably") is noted.
+        """
+        k = 0
+        for lead in (['i', 'think'], ['i', 'believe'], ['i', 'guess'], ['pretty', 'sure'],
+                     ['i', 'am', 'pretty', 'sure'], ['probably'], ['maybe'], ['i', 'suspect']):
+            if _starts(raw, 0, lead):
+                k = len(lead)
+                break
+        if raw[k:k + 1] not in (['it'], ['they']) or raw[k + 1:k + 2] not in (['is'], ['are'], ['should']):
+            return False
+        k += 2 if raw[k + 1] != 'should' else 3
+        while k < len(raw) and raw[k] in ('probably', 'still', 'somewhere', 'maybe', 'likely', 'just',
+                                          'lying', 'sitting', 'left', 'now', 'usually', 'right'):
+            k += 1
+        rel = match_relation(raw, k)
+        step = self.task.chain[-1] if self.task.chain else None
+        if rel is None or step is None or step.kind not in ('visit', 'pick', 'deliver') or \
+                len(step.targets) != 1 or step.targets[0].relations:
+            return False
+        where = self.phrases.parse(raw, rel[1])
+        if where is None or where.pronoun or where.end != len(raw):
+            return False
+        old = step.targets[0]
+        new = Descriptor(old.name, (Relation(rel[0], (where.descriptor,)),))
+        step.targets = [new]
+        for name in ('last_object', 'last_place'):
+            np = getattr(self, name)
+            if np is not None and np.descriptor == old:
+                setattr(self, name, NounPhrase(new, np.start, np.end, np.head))
+        if self.phrases.last is not None and self.phrases.last.descriptor in (old, where.descriptor):
+            self.phrases.last = self.last_object
+        self.notes.append(f'"{" ".join(raw)}": {old} read as {new}')
+        return True
 
     @staticmethod
     def _same_for_lead(tokens: list[str], i: int) -> int:
@@ -1472,7 +1512,8 @@ class _Reader:
         if rest[0] == 'until' or rest[0] == 'before' or _starts(rest, 0, ['unless']):
             j = 1
             while j < len(rest) and rest[j] in ('you', 'have', 'i', 'we', 'are', 'been', 'the', 'robot',
-                                                'has', 'after', 'finally', 'first', 'successfully'):
+                                                'has', 'after', 'finally', 'first', 'successfully', 'already',
+                                                'just', 'actually'):
                 j += 1
             event = 'near'
             if j < len(rest) and rest[j] in ('got', 'gotten', 'picked', 'grabbed', 'collected', 'fetched',
@@ -1548,7 +1589,8 @@ class _Reader:
         kind = scope.kind if scope is not None else 'global'
         if kind == 'until' and scope is not None and scope.target is not None:
             d = scope.target.descriptor
-            known = self.task.find_step(d, scope.target.head)
+            # "the landmark" names the goal given before; "the west gate" is no "east gate"
+            known = self.task.find_step(d, scope.target.head if d.name == scope.target.head else '')
             if known is not None and d not in known.targets + known.dests and known.targets:
                 d = known.targets[0]  # "the landmark" names the goal already given
             if scope.event == 'pick':
@@ -1603,7 +1645,8 @@ class _Reader:
                 step.after_release_avoid.extend(targets)
                 return
         if kind == 'after' and scope is not None and scope.target is not None:
-            step = self.task.find_step(scope.target.descriptor, scope.target.head)
+            step = self.task.find_step(scope.target.descriptor, scope.target.head
+                                       if scope.target.descriptor.name == scope.target.head else '')
             if step is None and not self.task.chain:
                 # no goal to hang it on: "once you have visited a, avoid b" holds whenever a happens
                 a = _near(scope.target.descriptor)
@@ -2307,21 +2350,37 @@ class _Reader:
         if self.only and rest[:1] == ['once']:
             rest = ['exactly'] + rest   # "only enter the pantry once"
         choice = self.task.chain[-1] if self.task.chain else None
-        if tokens[k:k + 1] in (['it'], ['there'], ['that'], ['them']) and choice is not None and \
-                choice.kind == 'visit' and len(choice.targets) > 1 and targets[0] in choice.targets:
-            c = self._count_word([t for t in rest if t != ','], 0)
-            if c is not None and c[0] > 1:
+        again = tokens[k:k + 1] in (['it'], ['there'], ['that'], ['them']) and choice is not None and \
+            choice.kind == 'visit' and len(choice.targets) > 1 and targets[0] in choice.targets
+        if again or joiner == 'or' and len(targets) > 1:
+            words = [t for t in rest if t != ',']
+            if words[:1] in (['exactly'], ['just'], ['only']) and words[1:2] == ['once']:
+                words = words[1:]
+            c = self._count_word(words, 0)
+            if c is not None:
                 # "go to the tall lamp or the short one, and visit it twice": whichever, twice
-                self.task.chain[-1] = Step('any', chains=[
-                    [st for _ in range(c[0]) for st in (Step('leave', [d]), Step('visit', [d]))][1:]
-                    for d in choice.targets])
-                self._goal_trailer([t for t in rest if t != ','][c[1]:], tokens, targets)
+                options = choice.targets if again and choice is not None else targets
+                chains = [[st for _ in range(c[0]) for st in (Step('leave', [d]), Step('visit', [d]))][1:]
+                          for d in options]
+                step = Step('any', chains=chains) if c[0] > 1 else Step('visit', list(options))
+                if again:
+                    self.task.chain[-1] = step
+                else:
+                    self.task.chain.append(step)
+                self._goal_trailer(words[c[1]:], tokens, targets)
                 return
+        n0 = len(self.task.chain)
         counted, rest = self._read_count(rest, targets)
         if counted:
             rest = [t for t in rest if t != ',']
             if len(rest) > 1 and rest[0] in ('and', 'but') and rest[1] in DETS:
+                # "visit the fountain twice and the statue once": both, each its own count
+                head, steps = self.task.chain[:n0], self.task.chain[n0:]
+                self.task.chain = []
                 self._read_goal(['visit'] + rest[1:], _Clause('seq', rest[1:]), None)
+                more = self.task.chain
+                both = [Step('all', chains=[steps, more])] if steps and more else steps + more
+                self.task.chain = head + both
                 return
             self._goal_trailer(rest, tokens, targets)
             return

@@ -64,6 +64,15 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
     (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
     (r' from there , ', ' after that , '),
+    (r'(^ | [,.;!?] | and | then | also )(?:please )?(?:do not forget to|remember to|be sure to|'
+     r'try to|you will need to|you will want to) '
+     r'(?!not |never |avoid|stay |keep |go near|touch )', r'\1 '),
+    # "go to whichever bench is free - the one by the pond or the one by the oak"
+    (r' (?:go to |head to |visit |use )?whichever (\w+) (?:is |s )?(?:free|closer|nearer|open|empty|'
+     r'available|'
+     r'quicker|easier|closest|nearest) (?:, |: )(?=the one )', r' go to either \1 '),
+    # "..., but finish at the florist"
+    (r' but (?:finish|end) (?:up )?(?:at|by|with|in) (?=(?:the|a|an|my|your|our) )', ' , finally go to '),
     # "the remote that's probably under the cushion": where it is, hedged
     (r' (that is|which is|that are|which are|is|are) (?:probably|maybe|possibly|likely|usually|currently|'
      r'still|normally|hopefully|typically|most likely|likely still|often|sometimes) '
@@ -180,7 +189,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' last ', ' dropped', ' popped', ' swung', ' stopped', ' called',
                                    ' looked', ' come ', ' probably', ' maybe', ' possibly', ' likely',
                                    ' usually', ' currently', ' still', ' normally', ' hopefully',
-                                   ' typically',
+                                   ' typically', ' forget', ' remember', ' be sure', ' try ', ' will need',
+                                   ' will want', ' should', ' need to', ' have to', ' must', ' free',
                                    ' often', ' sometimes')):
         return tokens
     text = _one_of_group(text)

@@ -43,7 +43,8 @@ DESTINATION_PREPS = frozenset({'on', 'onto', 'in', 'into', 'at', 'to', 'over', '
 # "a pair of boots", "a bag of chips": 'of' stays inside the name after these.
 CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piece', 'set', 'bunch',
                              'stack', 'glass', 'jar', 'pile', 'bowl', 'plate', 'pack', 'packet', 'roll',
-                             'sheet', 'slice'})
+                             'sheet', 'slice', 'loaf', 'carton', 'tub', 'bar', 'basket', 'bucket', 'crate',
+                             'tray', 'tin', 'mug', 'pot', 'jug', 'sack', 'case', 'bundle', 'ream', 'tube'})
 
 # "each of a, b and c", "the following locations a, b": words before the names themselves.
 LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((

@@ -517,8 +517,9 @@ def _retract_avoidance(prev: list[str], seg: list[str], notes: list[str]) -> Opt
         spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
-            kept = [c for c in _split_commas(seg[:at]) + _split_commas(seg[at + len(r):])
-                    if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS]
+            parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
+                     for c in _split_commas(seg[:at]) + _split_commas(seg[at + len(r):])]
+            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS]
             return _remove_clause(prev, p) + [t for c in kept for t in [','] + c]
     return None
 
@@ -538,6 +539,10 @@ def _np_end(words: list[str]) -> int:
     return np.end if np is not None else 0
 
 
+_DELIVERY = frozenset({'put', 'place', 'bring', 'take', 'throw', 'toss', 'move', 'carry', 'deliver', 'drop',
+                       'leave', 'set', 'stash', 'store', 'dump'})
+
+
 def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Restate a clause: 'bring the blanket to the bedroom. On second thought, bring it to the couch'."""
     if not seg or seg[0] not in _VERBS:
@@ -551,13 +556,15 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     if b < end and prev[b] != seg[0]:
         # "on the way to the hall avoid the stairs, no wait, avoid the door": the verb said again
         b = next((p for p in range(end - 1, b, -1) if prev[p] == seg[0] and seg[0] == 'avoid'), b)
-    if b >= end or prev[b] != seg[0]:
+    if b < end and prev[b] != seg[0] and prev[b] in _DELIVERY and seg[0] in _DELIVERY:
+        pass   # "throw away the papers. no, actually, put them in the recycling bin": the delivery again
+    elif b >= end or prev[b] != seg[0]:
         return None
     old = prev[b:end]
     new = list(seg)
     if any(t in ('it', 'them') for t in new):
         k = 1
-        while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back'):
+        while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back', 'away', 'out'):
             k += 1
         obj = PhraseParser().parse(old, k, destination_stops=True)
         if obj is not None and not obj.pronoun:

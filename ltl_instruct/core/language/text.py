@@ -26,7 +26,11 @@ TYPOS: dict[str, str] = {
     'ofthe': 'of the', 'tothe': 'to the', 'togo': 'to go', 'dnt': 'do not', 'bak': 'back',
     'visti': 'visit', 'vsit': 'visit', 'vist1': 'visit', 'gp': 'go', 'og': 'go',
     'util': 'until', 'onest': 'first', 'threerd': 'third', 'landark': 'landmark', 'occations': 'occasions',
-    'occation': 'occasion', 'endlessy': 'endlessly', 'whichevers': 'whichever is',
+    'occation': 'occasion', 'endlessy': 'endlessly', 'whichevers': 'whichever is', 'rtb': 'return to base',
+    'kitchin': 'kitchen', 'livingroom': 'living room', 'diningroom': 'dining room', 'frontdoor': 'front door',
+    'backdoor': 'back door', 'laundryroom': 'laundry room', 'guestroom': 'guest room',
+    'frontyard': 'front yard',
+    'bathroon': 'bathroom', 'bedrom': 'bedroom', 'hallwya': 'hallway', 'garagae': 'garage',
 }
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (

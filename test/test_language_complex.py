@@ -303,3 +303,47 @@ ROUND_FOUR = [
 @pytest.mark.parametrize('instruction,gold', ROUND_FOUR, ids=[c[0][:30] for c in ROUND_FOUR])
 def test_fourth_round_constructions(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+ROUND_FIVE = [
+    ('Survey the dam, then the weir, staying clear of the power lines the entire flight.',
+     'F (near[dam] & F near[weir]) & G !near[power_lines]'),
+    ('Go to the barn; the silo is off limits.', 'F near[barn] & G !near[silo]'),
+    ('Go to the den and the attic is dangerous.', 'F near[den] & G !near[attic]'),
+    ('Head to the gym, and while you are on your way to the gym, do not pass the pool. Then go to the '
+     'cafe.',
+     '(!near[pool] U near[gym]) & F (near[gym] & F near[cafe])'),
+    ('Either the red crate or the blue crate, visit one of them twice, and keep away from the forklift.',
+     '(F (near[red_crate] & F (!near[red_crate] & F near[red_crate])) | '
+     'F (near[blue_crate] & F (!near[blue_crate] & F near[blue_crate]))) & G !near[forklift]'),
+    ('Swing by the kiosk 2x, then head to the gate.',
+     'F (near[kiosk] & F (!near[kiosk] & F (near[kiosk] & F near[gate])))'),
+    ('Grab the hat and the scarf and bring them both to the hall.',
+     'F (near[hat] & F (pick[hat] & F (near[hall] & F release[hat, hall]))) & '
+     'F (near[scarf] & F (pick[scarf] & F (near[hall] & F release[scarf, hall])))'),
+    ('Go to the bench by the pond, or if it is taken, the bench by the oak.',
+     'F near[bench::isnextto(pond)] | F near[bench::isnextto(oak)]'),
+    ('Please go to the cellar; it is important that you stay away from the boiler.',
+     'F near[cellar] & G !near[boiler]'),
+    ('Go to the den, grab a book... no, just go to the den, then the study.',
+     'F (near[den] & F near[study])'),
+    ('Land on the roof of the barn, after flying over the field next to the creek.',
+     'F (near[field::isnextto(creek)] & F near[barn_roof])'),
+    ('Go to the bank without passing the school.', '!near[school] U near[bank]'),
+    ('Go to the porch, then the shed, no, the garage, then the gate.',
+     'F (near[porch] & F (near[garage] & F near[gate]))'),
+    ('Go to the gym and avoid the pool. Sorry, I meant avoid the sauna.', 'F near[gym] & G !near[sauna]'),
+    ('Check the back door at least 3 times but never go outside to the garden.',
+     'F (near[back_door] & F (!near[back_door] & F (near[back_door] & F (!near[back_door] & '
+     'F near[back_door])))) & G !near[garden]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ROUND_FIVE, ids=[c[0][:30] for c in ROUND_FIVE])
+def test_fifth_round_constructions(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_avoid_words_in_a_clause_no_rule_reads_are_never_dropped() -> None:
+    with pytest.raises(TranslationError):
+        T.translate('Go to the den, and steer well around the vase on the mantel.')

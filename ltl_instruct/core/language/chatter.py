@@ -32,6 +32,7 @@ from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 
 # Words that change what the robot must do; a part holding one is never left out.
 CONSTRAINT_WORDS = frozenset('''
+limits bounds forbidden prohibited banned dangerous unsafe hazardous restricted
 not never no avoid avoiding away without except unless before after until till then first last
 once twice thrice times time only always whenever while when if either or nor again more less least
 most exactly stay keep leave instead but forbidden mustn cannot nothing none neither
@@ -159,6 +160,8 @@ chill relax idle linger loiter hover
 FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
     (r'(^ | [,.;!?] )(?:honestly |so |well )?(?:the )?(?:easiest|best|simplest|quickest|ideal) '
      r'(?:thing|option|way|plan|move)(?: to do)? (?:would be|is|will be) (?:for you )?(?:to )?', r'\1 '),
+    (r'(^ | [,.;!?] )(?:it is|it would be) (?:really |very |super |extremely )?(?:important|vital|crucial|'
+     r'essential|critical|key|imperative) (?:that )?(?:you )?(?:to )?', r'\1 '),
     (r'(^ | [,.;!?] )(?:it would be|it is|it will be|that would be) (?:great|nice|good|lovely|helpful|'
      r'awesome|ideal|perfect|wonderful) if you (?:could|would|can|will) ', r'\1 '),
     (r'(^ | [,.;!?] )(?:it is )?(?:time|high time) (?:for you )?to ', r'\1 '),

@@ -66,10 +66,20 @@ class Unread:
         return f'could not read "{self.words}" and left it out: check nothing is missing'
 
 
+# Words that may mean keeping away from a place, or holding at one, in words the rules do not read
+# ("staying clear of X", "X is off limits", "steer around Y"): a clause holding one is never dropped.
+_RISKY = frozenset('''
+clear away off limits bounds forbidden prohibited banned restricted dangerous danger hazard hazardous unsafe
+careful steer staying keeping dodge dodging bypass bypassing skip skipping evade evading avoid avoiding
+avoidance except excluding unless without remain remaining wait waiting hold holding stop stopping stay keep
+out outside beyond around toward towards careful risky blocked closed
+'''.split())
+
+
 def may_degrade(tokens: Sequence[str]) -> bool:
     """Whether a clause the rules could not read may be guessed at or left out (see the module docstring)."""
     words = [t for t in tokens if t not in PUNCT]
-    return bool(words) and not chatter.carries_constraint(words)
+    return bool(words) and not chatter.carries_constraint(words) and not _RISKY & set(words)
 
 
 def salvage_places(words: Sequence[str], parser: PhraseParser) -> Optional[int]:

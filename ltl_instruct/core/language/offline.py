@@ -71,7 +71,12 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('whichever', 'you', 'pick'),
     ('whichever', 'one', 'you', 'choose'), ('whichever', 'one', 'you', 'pick'), ('either', 'way', 'round'),
     ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whichever', 'it', 'is'), ('at', 'all'),
-), key=lambda t: -len(t)))
+) + tuple(lead + ('the', whole, what) for lead in ((), ('during',), ('throughout',), ('for',))
+          for whole in ('whole', 'entire')
+          for what in ('time', 'way', 'trip', 'flight', 'route', 'mission', 'run', 'task', 'journey', 'drive',
+                       'walk', 'tour', 'job', 'day', 'night')) + tuple(
+    ('during', 'the', what) for what in ('flight', 'trip', 'mission', 'task', 'run', 'route', 'tour')),
+    key=lambda t: -len(t)))
 _GLOBAL_FIRST = frozenset(m[0] for m in GLOBAL_MARKERS)
 
 
@@ -677,6 +682,8 @@ class _Reader:
                         'always', 'ever') and orders.phrase_at(tokens, j, GLOBAL_MARKERS) > 0 and \
                         self._avoid_start(tokens[orders.phrase_at(tokens, j, GLOBAL_MARKERS):]) is not None:
                     boundary, skip = 'and', j - i   # "..., and the whole time keep off the lawn"
+                elif t in (',', 'and') and j < n and tokens[j] in DETS and self._starts_off_limits(tokens, j):
+                    boundary, skip = 'and', j - i   # "go to the den and the hall is off limits"
                 elif t in (',', 'and') and self._same_for_lead(tokens, j):
                     boundary, skip = 'and', j - i
                 elif t in (',', 'and') and j < n and tokens[j] in chatter.ACTIVITY_VERBS and (
@@ -794,6 +801,14 @@ class _Reader:
         if new_scope is not None:
             scope = new_scope
             tokens = self._strip_fillers(tokens)
+            if not tokens and new_scope.kind == 'after' and new_scope.target is not None and \
+                    clause.tokens[:1] in (['after'], ['once']) and self.task.chain and \
+                    self.task.chain[-1].kind == 'visit' and \
+                    self._find_goal(new_scope.target.descriptor) is None:
+                # "land on the roof, after flying over the park": the park first
+                moved = self.task.chain.pop()
+                self._after_goals(moved, [new_scope.target.descriptor], again=False)
+                return None
             if not tokens:
                 return scope
         elif scope is not None and scope.kind != 'global' and self._avoid_start(tokens) is not None and \
@@ -966,6 +981,17 @@ class _Reader:
                 return scope
         self._read_goal(tokens, clause, scope)
         return scope
+
+    _OFF_LIMITS = frozenset({'limits', 'bounds', 'forbidden', 'prohibited', 'banned', 'restricted',
+                             'dangerous', 'unsafe', 'hazardous', 'hazard'})
+
+    def _starts_off_limits(self, tokens: list[str], j: int) -> bool:
+        """Whether "X is off limits" (or forbidden, dangerous...) starts at ``tokens[j]``."""
+        if not self._OFF_LIMITS & set(tokens[j:]):
+            return False
+        np = self.phrases.parse(tokens, j)
+        return np is not None and tokens[np.end:np.end + 1] in (['is'], ['are']) and bool(
+            self._OFF_LIMITS & set(tokens[np.end + 1:np.end + 5]))
 
     def _starts_statement(self, tokens: list[str], j: int) -> bool:
         """Whether a statement about the scene starts at ``tokens[j]`` ("the floor is wet", "it's wet")."""
@@ -1282,6 +1308,14 @@ class _Reader:
         if j >= len(tokens):
             return None, i
         w = tokens[j]
+        if tokens[i - 1] in ('while', 'when') and tokens[j:j + 2] in (['on', 'your'], ['on', 'the']) and \
+                tokens[j + 2:j + 4] in (['way', 'to'], ['way', 'towards'], ['way', 'back']):
+            # "while you're on your way to the lab, don't pass the cafeteria"
+            k = j + 4 if tokens[j + 3] != 'back' or tokens[j + 4:j + 5] != ['to'] else j + 5
+            np = self.phrases.parse(tokens, k)
+            if np is not None:
+                return _Scope('onway', self._resolve(np, place=True), 'back' if 'back' in tokens[j:k] else
+                              'while'), np.end
         if w in ('going', 'navigating', 'heading', 'travelling', 'traveling', 'walking', 'flying', 'driving',
                  'moving', 'returning', 'coming', 'getting', 'making') and \
                 tokens[i - 1] in ('while', 'when') and (
@@ -1500,8 +1534,12 @@ class _Reader:
             rest = rest[:reason]
         leftover = [t for t in rest if t not in harmless]
         if leftover and leftover[0] not in ('when', 'while') and not self._leave_out(leftover):
-            raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
-                                   details={'part': ' '.join(leftover)})
+            if not self._tail_clause(rest):
+                raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(leftover)})
+            self._apply_avoid(targets, scope)   # "..., and the pond is off limits": a clause of its own
+            self._read_tail(rest)
+            return
         self._apply_avoid(targets, scope)
 
     def _trailing_scope(self, rest: list[str]) -> tuple[Optional[_Scope], list[str]]:
@@ -1698,6 +1736,16 @@ class _Reader:
         if not nps:
             return False
         rest = tokens[end:]
+        hedges = ('strictly', 'totally', 'completely', 'absolutely', 'always', 'to', 'you', 'for', 'now',
+                  'today', 'a', 'zone', 'area')
+        if rest[:1] in (['is'], ['are']) and [t for t in rest[1:] if t not in hedges] in (
+                ['off', 'limits'], ['out', 'of', 'bounds'], ['forbidden'], ['prohibited'], ['banned'],
+                ['restricted'], ['dangerous'], ['unsafe'], ['hazardous'], ['not', 'allowed'], ['no', 'go'],
+                ['not', 'safe'], ['closed'], ['not', 'permitted'], ['a', 'hazard'], ['hazard']):
+            self.task.constraints.extend(_never([np.descriptor for np in nps]))   # "the pond is off limits"
+            names = ', '.join(str(n.descriptor) for n in nps)
+            self.notes.append(f'"{" ".join(tokens)}": kept away from {names}')
+            return True
         neg = ('cannot', 'never', 'not')
         if not (none and rest[:1] in (['are'], ['is'], ['can'], ['should'], ['must']) or
                 any(w in rest[:3] for w in neg) and rest[:1] != ['is'] and rest and rest[0] in (
@@ -1987,10 +2035,29 @@ class _Reader:
         return True
 
     def _check_leftover(self, rest: list[str], whole: list[str]) -> None:
+        if self._tail_clause(rest):
+            self._read_tail(rest)   # "..., and the pond is off limits": a clause the splitter did not see
+            return
         rest = [t for t in rest if t not in (',', 'please', 'first', 'too', 'again', 'then')]
         if rest and not self._leave_out(rest):
             raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
                                    details={'part': ' '.join(rest)})
+
+    _TAIL_LEADS = ('and', 'but', 'then', 'so', 'also', 'plus')
+
+    def _tail_clause(self, rest: list[str]) -> bool:
+        """Whether words left after a reading open a clause of their own ("and the pond is off limits")."""
+        words = [t for t in rest if t != ',']
+        return len(words) > 2 and words[0] in self._TAIL_LEADS and words[1] not in ('then', 'only') and (
+            words[1] in DETS or words[1] in CLAUSE_STARTERS or self._unknown_verb(words, 1) is not None)
+
+    def _read_tail(self, rest: list[str]) -> None:
+        """Read the clause :meth:`_tail_clause` found, as a clause of the sentence."""
+        words = [t for t in rest if t != ',']
+        connector = 'seq' if words[0] == 'then' else 'and'
+        while words and words[0] in self._TAIL_LEADS:
+            words = words[1:]
+        self._read_clause(_Clause(connector, words), None)
 
     def _count_word(self, tokens: list[str], i: int) -> Optional[tuple[int, int]]:
         """Return the count at ``tokens[i]`` (once, twice, three times) and where it ends."""
@@ -2113,6 +2180,8 @@ class _Reader:
         while k < len(tokens) and tokens[k] in ('me', 'up', 'back', 'off', 'down', 'us'):
             k += 1
         objs, joiner, end = self._np_list(tokens, k, place=False, destination_stops=verb in PUT_VERBS)
+        if tokens[k:k + 1] == ['them'] and tokens[end:end + 1] in (['both'], ['all']):
+            end += 1   # "bring them both to the door"
         if not objs or objs[0].descriptor.name in ('yourself', 'itself', 'over'):
             return False   # "get yourself over to X" is going there
         rest = tokens[end:]
@@ -2201,6 +2270,18 @@ class _Reader:
                 self.task.chain.extend(Step('visit', [np.descriptor]) for np in first)
                 rest = []
         self._check_leftover(rest, tokens)
+        picks = []
+        for st in reversed(self.task.chain):
+            if st.kind != 'pick':
+                break
+            picks.insert(0, st)
+        if len(picks) > 1 and tokens[k:k + 1] == ['them']:
+            # "grab the umbrella and the raincoat and bring them both to the door": each delivered there
+            del self.task.chain[len(self.task.chain) - len(picks):]
+            for st in picks:
+                st.kind, st.dests = 'deliver', list(dest_ds)
+            self.task.chain.append(Step('all', chains=[[st] for st in picks]))
+            return True
         # "pick up X and put it on Y": the pick step becomes the delivery.
         obj_ds = [o.descriptor for o in objs]
         last = self.task.chain[-1] if self.task.chain else None
@@ -2286,6 +2367,17 @@ class _Reader:
                                   ['one', 'of', 'those'], ['either', 'one'], ['either'],
                                   ['one', 'of', 'these'], ['one']) or tokens[k:k + 1] == ['whichever'] and \
             not chatter.carries_constraint(tokens[k + 1:])
+        c = self._count_word(tokens, k + 3) if tokens[k:k + 3] in (
+            ['one', 'of', 'them'], ['either', 'of', 'them'], ['one', 'of', 'those'],
+            ['any', 'of', 'them']) else None
+        if c is not None and c[1] == len(tokens) and last is not None and last.kind == 'visit' and \
+                len(last.targets) > 1:
+            # "either the blue bin or the red bin: visit one of them twice"
+            self.saw_action = True
+            self.task.chain[-1] = Step('any', chains=[
+                [st for _ in range(c[0]) for st in (Step('leave', [d]), Step('visit', [d]))][1:]
+                for d in last.targets]) if c[0] > 1 else last
+            return
         if (pick_one or (k > 0 and tokens[k:] == ['there'] and not self.phrases.landmarks)) and \
                 last is not None and last.kind == 'visit' and len(last.targets) > 1:
             self.saw_action = True   # "just get to one of them": the choice already given
@@ -2625,7 +2717,13 @@ class _Reader:
                     return
         if self._avoid_start(rest) is not None or rest[0] in ('while', 'avoiding', 'without'):
             if self._avoid_start(rest) is not None:
-                self._read_avoid(rest, None)
+                # "go to the bank without passing the school": not on the way there (the dev set's
+                # conventions; the drone set reads it at the goal, see avoid_scope)
+                onway = rest[0] == 'without' and rest[1:2] in (['passing'], ['going'], ['crossing']) and \
+                    self.avoid_scope == 'global' and not self.phrases.landmarks and \
+                    bool(self.task.chain) and \
+                    self.task.chain[-1].kind == 'visit'
+                self._read_avoid(rest, _Scope('onway') if onway else None)
                 return
         if rest[0] in ('while', 'on', 'along', 'when', 'until'):
             sc, rem = self._trailing_scope(rest)
@@ -2642,6 +2740,9 @@ class _Reader:
                 self.notes.append(f'"{" ".join(rest)}": either place will do')
                 return
         if self._leave_out(rest):
+            return
+        if self._tail_clause(rest):
+            self._read_tail(rest)
             return
         raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
                                details={'part': ' '.join(rest)})

@@ -114,7 +114,14 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:with|at) '
      r'(?=(?:the|a|an|my|your|our) )', r'\1 finally go to '),
     (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
-    (r' (?:wait|stand|sit|park) (?:by|near|next to|beside) (?=(?:the|a|my|your|our) )', ' go to '),
+    (r'(?<! the)(?<! a)(?<! my)(?<! your)(?<! our)(?<! car) (?:wait|stand|sit|park) '
+     r'(?:by|near|next to|beside) '
+     r'(?=(?:the|a|my|your|our) )', ' go to '),
+    # "the chair by the window, or if it's taken, the chair by the door": either will do
+    (r' (?:, )?or (?:, )?if (?:it|that|this|the \w+|they) (?:is|are|s|happens to be) (?:already )?'
+     r'(?:taken|busy|occupied|'
+     r'locked|closed|full|blocked|unavailable|not free|not available|in use|out of order|shut|not open|empty)'
+     r'(?: , | )', ' or '),
     (r' check there (?:is|are) (?:any |some |a |an )?(?:\w+ ){1,2}(?:in|on|at|inside) '
      r'(?=(?:the|a|an|my|your|our) )', ' check '),
     # "first stop, the bakery. last stop, the florist": the order of the stops

@@ -261,7 +261,7 @@ _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', '
                      'leave'})
 # Markers that restate a whole clause ("on second thought, bring it to the couch").
 _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
-                      'or', 'er', 'erm', 'um', 'uh', 'ah'})
+                      'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my'})
 # Words that start a clause of their own (the verbs of goals and deliveries).
 _VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
                        'deliver', 'carry', 'return', 'avoid'}
@@ -485,6 +485,13 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         after = out[stop:]
         marker = out[i]
         result = _correct(prev, marker, seg, notes)
+        cut = next((k for k in range(1, len(seg) - 1)
+                    if seg[k] == ',' and seg[k + 1] in ('then', 'and', 'but')), -1)
+        if result is None and cut > 0:
+            # "then the scanner, no, the fax machine, then my desk": the correction ends at the clause
+            result = _correct(prev, marker, seg[:cut], notes)
+            if result is not None:
+                result = result + seg[cut:]
         if result is None:
             # not a correction we understand: drop the marker word and read on
             out = prev + ([','] if prev and prev[-1] not in PUNCT else []) + seg + after
@@ -562,6 +569,10 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
         return None
     old = prev[b:end]
     new = list(seg)
+    for k in range(1, len(new) - 1):
+        if new[k:k + 2] in (['instead', 'of'], ['rather', 'than']) or new[k] == 'not' and new[k - 1] == ',':
+            new = new[:k - (new[k - 1] == ',')]   # "I meant avoid X, not the fan": what it replaces
+            break
     if any(t in ('it', 'them') for t in new):
         k = 1
         while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back', 'away', 'out'):
@@ -696,6 +707,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     swapped = _swap(prev, seg, notes) or _goes_to(prev, seg, notes)
     if swapped is not None:
         return swapped
+    if seg[:1] in (['just'], ['simply']) and len(seg) > 1 and seg[1] in _VERBS and marker in _RESTATE:
+        # "go to the kitchen, grab a snack... no, just go to the kitchen, then the hall": the sentence again
+        start = max((k for k in range(len(prev)) if prev[k] in '.;!?'), default=-1) + 1
+        notes.append(f'"{" ".join(prev[start:])}" replaced by "{" ".join(seg[1:])}"')
+        return prev[:start] + seg[1:]
     reordered = _first_instead(prev, seg, notes)   # before a restatement: "actually, go to X first"
     if reordered is not None:
         return reordered

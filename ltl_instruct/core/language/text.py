@@ -95,6 +95,7 @@ def tokenize(text: str) -> list[str]:
     s = re.sub(r'(?<![.;:!?,\s])[ \t]*\n', ' . ', s)
     s = re.sub(r'[\u2022\u25cf\u25aa]', ' , ', s)
     s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
+    s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)

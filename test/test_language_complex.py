@@ -347,3 +347,25 @@ def test_fifth_round_constructions(instruction: str, gold: str) -> None:
 def test_avoid_words_in_a_clause_no_rule_reads_are_never_dropped() -> None:
     with pytest.raises(TranslationError):
         T.translate('Go to the den, and steer well around the vase on the mantel.')
+
+
+LOCATIONS = [
+    ('Go to the box in the closet.', 'F near[box]'),
+    ('Bring the cup in the kitchen to the table.',
+     'F (near[cup] & F (pick[cup] & F (near[table] & F release[cup, table])))'),
+    ('Go to the plant at the end of the hallway, and avoid the rug in the corner of the room.',
+     'F near[plant] & G !near[rug]'),
+    ('Put the cup in the sink.', 'F (near[cup] & F (pick[cup] & F (near[sink] & F release[cup, sink])))'),
+    ('Go to the chair across from the sofa.', 'F near[chair::isinfrontof(sofa)]'),
+    ('Visit the den, the hall and the loft in this strict order.',
+     'F (near[den] & F (near[hall] & F near[loft])) & (!near[hall] U near[den]) & '
+     '(!near[loft] U near[hall])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', LOCATIONS, ids=[c[0][:30] for c in LOCATIONS])
+def test_where_a_thing_is_is_no_part_of_its_name(instruction: str, gold: str) -> None:
+    notes = _check(instruction, gold)
+    if ' in the ' in instruction and 'Put' not in instruction and 'order' not in instruction or \
+            'end of' in instruction:
+        assert any('not part of its name' in n for n in notes), notes

@@ -43,7 +43,8 @@ from ltl_instruct.core.language.lexicon import (
 )
 from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word, match_relation,
+    DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word, location_phrase,
+    match_relation,
 )
 from ltl_instruct.core.language.reactions import RuleReader
 from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
@@ -1431,7 +1432,7 @@ class _Reader:
             raise TranslationError(f'could not place what to avoid in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
         targets = [np.descriptor for np in nps]
-        rest, _ = _strip_tails([t for t in tokens[end:] if t != ','])
+        rest, _ = _strip_tails(self._drop_location([t for t in tokens[end:] if t != ','], nps))
         # "more than once / more than N times" is a count, not an avoidance.
         rest = normalize_counts(rest)
         if _starts(rest, 0, ['at', 'least']) or _starts(rest, 0, ['at', 'most']):
@@ -1601,6 +1602,14 @@ class _Reader:
             if sc is not None:
                 return sc, rest[end:]
         return None, rest
+
+    def _drop_location(self, rest: list[str], nps: Sequence[NounPhrase]) -> list[str]:
+        """Leave out where the things just named are ("the box in the closet": the box), noted."""
+        end = location_phrase(rest, 0, self.phrases) if nps else -1
+        if end < 0:
+            return rest
+        self.notes.append(f'"{" ".join(rest[:end])}": where {nps[-1].descriptor} is, not part of its name')
+        return rest[end:]
 
     def _find_goal(self, d: Descriptor) -> Optional[Step]:
         """Find the step of goal ``d``; a plain name ("the bench") finds the goal it names ("the bench by X").
@@ -2185,6 +2194,10 @@ class _Reader:
         if not objs or objs[0].descriptor.name in ('yourself', 'itself', 'over'):
             return False   # "get yourself over to X" is going there
         rest = tokens[end:]
+        loc = location_phrase(rest, 0, self.phrases)
+        destined = 0 < loc < len(rest) and rest[loc] in ('to', 'into', 'onto', 'on', 'in', 'inside', 'over')
+        if loc > 0 and (verb not in PUT_VERBS or rest[0] not in ('in', 'inside', 'within') or destined):
+            rest = self._drop_location(rest, objs)   # "bring the cup in the kitchen to the table"
         if rest and rest[0] in ('from', 'off') and len(objs) == 1:
             # "the blanket from the closet", "the remote off the couch": where the object is, as nearness
             src = self.phrases.parse(rest, 1, destination_stops=True)
@@ -2402,7 +2415,7 @@ class _Reader:
                                    details={'part': ' '.join(tokens)})
         if k > 0 or clause.connector in ('seq', 'pre', 'or'):
             self.saw_action = True
-        rest, ordered_tail = _strip_tails([t for t in tokens[end:] if t != ','])
+        rest, ordered_tail = _strip_tails(self._drop_location([t for t in tokens[end:] if t != ','], nps))
         targets = [np.descriptor for np in nps]
         r0, r1 = orders.find_phrase(rest, orders.REVERSE)
         if r0 == 0 and len(targets) > 1 and joiner != 'or':

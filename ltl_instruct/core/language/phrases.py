@@ -35,6 +35,8 @@ RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
     (('next', 'to'), 'isnextto'), (('by',), 'isnextto'), (('beside',), 'isnextto'),
     (('besides',), 'isnextto'), (('near',), 'isnextto'), (('close', 'to'), 'isnextto'),
     (('adjacent', 'to'), 'isnextto'), (('nearby',), 'isnextto'),
+    (('across', 'from'), 'isinfrontof'), (('opposite',), 'isinfrontof'), (('opposite', 'to'), 'isinfrontof'),
+    (('facing',), 'isinfrontof'),
 ), key=lambda p: -len(p[0])))
 
 # Destination prepositions: in "put X on Y" they end the object, they are not relations.
@@ -436,3 +438,42 @@ class PhraseParser:
         if choice and len(phrases) > 1:
             joiner = 'or'
         return phrases, joiner, i
+
+
+# Nouns after "in" that name no place ("in this strict order", "in a row", "in any case").
+_NOT_PLACES = frozenset({'order', 'sequence', 'turn', 'row', 'way', 'case', 'fact', 'addition', 'time',
+                         'general', 'advance', 'total', 'particular', 'reverse', 'meantime', 'end', 'future',
+                         'morning',
+                         'evening', 'afternoon', 'night', 'process', 'hurry', 'moment', 'minute', 'manner'})
+# Parts of a place where a thing is ("at the end of the hall", "in the corner of the room").
+_PART_OF_PLACE = frozenset({'end', 'far', 'top', 'bottom', 'corner', 'side', 'edge', 'foot', 'head', 'middle',
+                            'center', 'centre', 'back', 'front', 'rear', 'entrance', 'near'})
+
+
+def location_phrase(tokens: Sequence[str], i: int, parser: 'PhraseParser') -> int:
+    """Where a phrase saying *where* a thing is ends ("in the closet", "at the end of the hall"), or -1.
+
+    No comparator says "inside" ("isin" is none of ours), so such a phrase names where to
+    look, not which thing: the translator reads the thing without it (and notes so).
+    """
+    if i >= len(tokens):
+        return -1
+    w = tokens[i]
+    if w in ('upstairs', 'downstairs', 'outside', 'outdoors', 'indoors'):
+        return i + 1
+    if w == 'down' and tokens[i + 1:i + 2] == ['the'] and \
+            tokens[i + 2:i + 3] in (['hall'], ['hallway'], ['corridor']):
+        return i + 3
+    k = i
+    if w in ('in', 'at', 'on') and tokens[i + 1:i + 2] == ['the'] and i + 3 < len(tokens) and \
+            tokens[i + 2] in _PART_OF_PLACE and tokens[i + 3] in ('of', 'end'):
+        k = i + 4 if tokens[i + 3] == 'of' else (i + 5 if tokens[i + 4:i + 5] == ['of'] else -1)
+        if k < 0:
+            return -1
+    elif w in ('in', 'inside', 'within') and i + 1 < len(tokens) and tokens[i + 1] in DETERMINERS and \
+            not _NOT_PLACES & set(tokens[i + 1:i + 5]):
+        k = i + 1
+    else:
+        return -1
+    np = parser.parse(tokens, k)
+    return np.end if np is not None and not np.pronoun else -1

@@ -55,7 +55,7 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
 )
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
-    Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
+    Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil, referents_of,
 )
 
 MAX_INSTRUCTION_CHARS = 2000
@@ -1603,6 +1603,14 @@ class _Reader:
                 return sc, rest[end:]
         return None, rest
 
+    def _goals_named(self) -> set[Descriptor]:
+        """Every place named as a goal or in an order so far ("go to both", "visit all three")."""
+        names = {d for st in self.task._all_steps() for d in st.targets + st.dests}
+        for c in self.task.constraints:
+            if not isinstance(c, Always):
+                names.update(referents_of(c))
+        return names | set(self.stated_goals)
+
     def _drop_location(self, rest: list[str], nps: Sequence[NounPhrase]) -> list[str]:
         """Leave out where the things just named are ("the box in the closet": the box), noted."""
         end = location_phrase(rest, 0, self.phrases) if nps else -1
@@ -2372,8 +2380,7 @@ class _Reader:
         if tokens[k:] in (['both'], ['both', 'of', 'them'], ['them', 'both'], ['all', 'of', 'them'],
                           ['them', 'all'], ['each', 'of', 'them'], ['all', 'three'], ['all', 'four'],
                           ['each'], ['them']) and \
-                k > 0 and len([st for st in self.task.chain if st.kind in ('visit', 'deliver', 'all')]) + \
-                len(self.stated_goals) > 1:
+                k > 0 and len(self._goals_named()) > 1:
             self.saw_action = True   # "the bench comes after the hood; go to both": the goals already given
             return
         pick_one = tokens[k:] in (['one', 'of', 'them'], ['either', 'of', 'them'], ['any', 'of', 'them'],

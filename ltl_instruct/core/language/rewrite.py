@@ -546,13 +546,15 @@ def _np_end(words: list[str]) -> int:
     return np.end if np is not None else 0
 
 
+# Verbs of keeping away that a restatement may start with ("keep the dog out... I mean, keep away from it").
+_KEEP_VERBS = frozenset({'keep', 'stay', 'steer'})
 _DELIVERY = frozenset({'put', 'place', 'bring', 'take', 'throw', 'toss', 'move', 'carry', 'deliver', 'drop',
                        'leave', 'set', 'stash', 'store', 'dump'})
 
 
 def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Restate a clause: 'bring the blanket to the bedroom. On second thought, bring it to the couch'."""
-    if not seg or seg[0] not in _VERBS:
+    if not seg or seg[0] not in _VERBS | _KEEP_VERBS:
         return None
     end = len(prev)
     while end > 0 and prev[end - 1] in PUNCT:

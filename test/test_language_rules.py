@@ -2,9 +2,11 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from ltl_instruct.core.automaton import equivalent
-from ltl_instruct.core.errors import TranslationError
+from ltl_instruct.core.errors import ErrorCode, LtlInstructError, TranslationError
 from ltl_instruct.core.language.offline import OfflineTranslator
 from ltl_instruct.core.spec import parse_formula
 
@@ -172,3 +174,66 @@ CHAINED = [
 def test_orderings_chained_and_said_first(instruction: str, gold: str) -> None:
     got = T.translate(instruction)
     assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+EVERYDAY = [
+    ('Put the plate in the sink and the cup in the dishwasher.',
+     'F (near[plate] & F (pick[plate] & F (near[sink] & F release[plate, sink]))) & '
+     'F (near[cup] & F (pick[cup] & F (near[dishwasher] & F release[cup, dishwasher])))'),
+    ('After you drop off the package at the front desk, go to the elevator.',
+     'F (near[package] & F (pick[package] & F (near[front_desk] & F (release[package, front_desk] & '
+     'F near[elevator]))))'),
+    ('Go to the fridge, then the oven. Actually, go to the oven first.', 'F (near[oven] & F near[fridge])'),
+    ('Go to the fridge, then the oven, but go to the sink first.',
+     'F (near[sink] & F (near[fridge] & F near[oven]))'),
+    ('Go to the living room and wait there until the guard is seen.',
+     'F (near[living_room] & (near[living_room] U near[guard]))'),
+    ('Either fly over the lake or over the forest, but not both.',
+     '(F near[lake] & G !near[forest]) | (F near[forest] & G !near[lake])'),
+    ('Keep patrolling the hallway and the lobby.', 'G F near[hallway] & G F near[lobby]'),
+    ('Go to the park, stay there until the dog is seen, and then go home.',
+     'F (near[park] & (near[park] U (near[dog] & F near[home])))'),
+    ('When you get to the kitchen, grab a spoon and bring it to the table.',
+     'F (near[kitchen] & F (near[spoon] & F (pick[spoon] & F (near[table] & F release[spoon, table]))))'),
+    ('Deliver the letter to the mailbox only after you have visited the post office.',
+     'F (near[post_office] & F (near[letter] & F (pick[letter] & F (near[mailbox] & '
+     'F release[letter, mailbox]))))'),
+    ('The drone must survey the field, then it must land at the base.', 'F (near[field] & F near[base])'),
+    ('Go to the balcony, but you can only enter the bedroom once.',
+     'F near[balcony] & !F (near[bedroom] & F (!near[bedroom] & F near[bedroom]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', EVERYDAY, ids=[c[0][:40] for c in EVERYDAY])
+def test_everyday_phrasings(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+def test_words_a_reading_would_drop_are_named() -> None:
+    # the patrol reading keeps only places: a sentence with more in it is not one
+    with pytest.raises(TranslationError) as e:
+        T.translate('move the arm back and forth sorting the yellow balls')
+    assert 'sorting' in e.value.message
+    got = T.translate('Go to the gate and finish by going to the war memorial.')
+    assert equivalent(got.formula, parse_formula('F (near[gate] & F near[war_memorial])'))
+
+
+RULE_VOCAB = ['whenever', 'as', 'soon', 'you', 'visit', 'the', 'door', 'a', 'b', 'go', 'to', 'must', 'right',
+              'after', 'before', 'that', 'once', 'only', 'then', 'leave', 'never', 'again', 'each', 'place',
+              'exactly', 'twice', 'at', 'most', 'strict', 'order', 'in', 'if', 'and', 'or', 'not', 'until',
+              'is', 'visited', 'means', 'stay', 'there', 'wait', 'as', 'long', 'does', 'occur', 'maximum',
+              'number', 'of', 'visits', 'three', 'zero', 'times', 'without', 'returning', ',', '.', 'first',
+              'later']
+
+
+@settings(max_examples=300, derandomize=True, deadline=None)
+@given(st.lists(st.sampled_from(RULE_VOCAB), min_size=1, max_size=25))
+def test_word_salad_of_rules_gives_a_formula_or_a_typed_error(words: list[str]) -> None:
+    for translator in (T, OfflineTranslator(landmarks=('a', 'b'), once_scope='next')):
+        try:
+            t = translator.translate(' '.join(words))
+        except LtlInstructError as e:
+            assert e.code != ErrorCode.INTERNAL_ERROR, e.message
+            continue
+        assert t.formula is not None and str(t.formula)

@@ -37,6 +37,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--timeout', type=float, default=30.0, help='llm backend: per-request timeout [s]')
     parser.add_argument('--avoid-scope', choices=('global', 'goal'), default=None,
                         help='offline: avoidance convention (default: goal for drone-planning, else global)')
+    parser.add_argument('--once-scope', choices=('run', 'next'), default=None,
+                        help='offline: "only once" convention (default: next for lifted.csv, else run)')
 
 
 def run(args: argparse.Namespace) -> int:
@@ -44,6 +46,8 @@ def run(args: argparse.Namespace) -> int:
     ds = read_dataset(args.data, args.kind)
     if args.avoid_scope is None:
         args.avoid_scope = 'goal' if 'drone-planning' in ds.name else 'global'
+    if args.once_scope is None:
+        args.once_scope = 'next' if 'lifted' in ds.name else 'run'
     options = _options(args)
     if args.backend == 'offline' and ds.landmarks:
         options['landmarks'] = ds.landmarks   # lifted propositions are names given in advance
@@ -56,6 +60,7 @@ def run(args: argparse.Namespace) -> int:
                **scores.summary()}
     if args.backend == 'offline':
         summary['avoid_scope'] = args.avoid_scope
+        summary['once_scope'] = args.once_scope
     failures = [r.to_dict() for r in scores.results if not r.equivalent][:args.failures]
     if args.json:
         print(json.dumps({**summary, 'failures': failures}, indent=2))

@@ -16,6 +16,7 @@ from typing import Any, Callable, Optional
 
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
 from ltl_instruct.core.language import BACKENDS, Translation, make_translator, verification_for
+from ltl_instruct.core.language.verification import warnings_of
 from ltl_instruct.core.language.datasets import iter_instructions
 from ltl_instruct.core.language.verification import classify_reply
 
@@ -37,11 +38,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--timeout', type=float, default=30.0, help='llm backend: per-request timeout [s]')
     parser.add_argument('--avoid-scope', choices=('global', 'goal'), default='global',
                         help='offline backend: "go to X and avoid Y" as G !Y (global) or at X only (goal)')
+    parser.add_argument('--once-scope', choices=('run', 'next'), default='run',
+                        help='offline backend: "visit X only once, then Y" for the whole run (run) or until '
+                             'Y (next, lang2ltl\'s strictly ordered visits)')
 
 
 def _options(args: argparse.Namespace) -> dict[str, Any]:
     if args.backend == 'offline':
-        return {'avoid_scope': args.avoid_scope}
+        return {'avoid_scope': args.avoid_scope, 'once_scope': getattr(args, 'once_scope', 'run')}
     if args.backend == 'learned':
         return {'model_path': args.model_path}
     opts: dict[str, Any] = {'timeout_s': args.timeout}
@@ -65,6 +69,9 @@ def record(t: Translation) -> dict[str, Any]:
         out['subgoals_error'] = e.to_dict()
     if t.notes:
         out['notes'] = list(t.notes)
+    warnings = warnings_of(t)
+    if warnings:
+        out['warnings'] = list(warnings)   # parts it could not read (guessed at or left out)
     return out
 
 
@@ -88,8 +95,11 @@ def run(args: argparse.Namespace) -> int:
         print(f"avoid:     {', '.join(r['avoid'])}")
     for line in r['subgoals']:
         print(f'  {line}')
+    for warning in r.get('warnings', []):
+        print(f'WARNING: {warning}')
     for note in r.get('notes', []):
-        print(f'note: {note}')
+        if note not in r.get('warnings', []):
+            print(f'note: {note}')
     return 0
 
 

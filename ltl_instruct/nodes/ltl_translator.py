@@ -29,6 +29,7 @@ from ltl_instruct.core.automaton.english import describe_task
 from ltl_instruct.core.errors import (
     ErrorCode, InvalidInputError, LimitExceededError, LtlInstructError, TranslationError,
 )
+from ltl_instruct.core.language.verification import reading_lines, warnings_of
 from ltl_instruct.core.spec import avoided_referents_of, parse_formula, referents_of
 from ltl_instruct.nodes.common import ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node
 
@@ -139,10 +140,11 @@ class LtlTranslatorNode(Node):
         try:
             if formula_text is not None:
                 formula = parse_formula(formula_text)
-                backend, notes = 'formula', ()
+                backend, notes, warnings = 'formula', (), ()
             else:
                 translation = self._translate(body)
                 formula, backend, notes = translation.formula, translation.backend, translation.notes
+                warnings = warnings_of(translation)
             description = describe_task(formula)
         except LtlInstructError as e:
             self._publish_spec(iid, body, received, error=e)
@@ -153,9 +155,10 @@ class LtlTranslatorNode(Node):
         elapsed = time.monotonic() - started
         spec = dict(formula=str(formula), referents=[str(d) for d in referents_of(formula)],
                     avoid=[str(d) for d in avoided_referents_of(formula)], backend=backend,
-                    notes=list(notes), description=description.to_dict(),
-                    # the translator's notes (words left out, typos corrected) are read before anything moves
-                    verification_text='\n'.join([description.text()] + [f'Note: {n}' for n in notes]))
+                    notes=list(notes), warnings=list(warnings), description=description.to_dict(),
+                    # the translator's notes (words left out, typos corrected) are read before anything moves,
+                    # the parts it could not read first
+                    verification_text='\n'.join([description.text()] + reading_lines(notes, warnings)))
         needs_reply = self.params['require_confirmation']
         self.verify_pub.publish(conv.json_msg(conv.payload(
             conv.VERIFICATION_REQUEST, iid, instruction=body, requires_reply=needs_reply, **spec)))

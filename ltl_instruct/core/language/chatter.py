@@ -25,11 +25,14 @@ from __future__ import annotations
 import re
 from typing import Sequence
 
-from ltl_instruct.core.language.phrases import DETERMINERS, is_name_word, match_relation
+from ltl_instruct.core.language.phrases import (
+    DETERMINERS, PLACEHOLDER_ADJECTIVES, is_name_word, match_relation,
+)
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 
 # Words that change what the robot must do; a part holding one is never left out.
 CONSTRAINT_WORDS = frozenset('''
+limits bounds forbidden prohibited banned dangerous unsafe hazardous restricted
 not never no avoid avoiding away without except unless before after until till then first last
 once twice thrice times time only always whenever while when if either or nor again more less least
 most exactly stay keep leave instead but forbidden mustn cannot nothing none neither
@@ -91,6 +94,24 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('there', 'and', 'back'), ('right', 'away'), ('at', 'once'), ('as', 'fast', 'as', 'you', 'can'),
     ('as', 'quickly', 'as', 'you', 'can'), ('as', 'soon', 'as', 'you', 'can'),
     ('as', 'quickly', 'as', 'possible'), ('as', 'fast', 'as', 'possible'),
+    ('when', 'you', 'get', 'a', 'sec'), ('when', 'you', 'get', 'a', 'second'),
+    ('when', 'you', 'get', 'a', 'minute'),
+    ('when', 'you', 'get', 'a', 'moment'), ('when', 'you', 'get', 'the', 'chance'),
+    ('when', 'you', 'have', 'a', 'sec'),
+    ('when', 'you', 'have', 'a', 'second'), ('when', 'you', 'have', 'a', 'minute'),
+    ('when', 'you', 'have', 'time'),
+    ('when', 'you', 'have', 'a', 'chance'), ('whenever', 'you', 'can'),
+    ('whenever', 'you', 'get', 'a', 'chance'),
+    ('whenever', 'you', 'get', 'the', 'chance'), ('if', 'you', 'get', 'a', 'chance'),
+    ('if', 'you', 'have', 'time'),
+    ('at', 'your', 'convenience'), ('when', 'convenient'), ('when', 'it', 'is', 'convenient'),
+    ('in', 'a', 'bit'),
+    ('later', 'today'), ('later', 'on'), ('when', 'you', 'get', 'around', 'to', 'it'), ('soon',),
+    ('for', 'a', 'bit'),
+    ('for', 'a', 'minute'), ('for', 'a', 'moment'), ('if', 'you', 'would', 'not', 'mind'),
+    ('thanks', 'in', 'advance'),
+    ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
+    ('in', 'a', 'sec'), ('in', 'a', 'second'),
 ), key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
@@ -106,6 +127,21 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'you', 'are', 'ready'), ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'),
     ('if', 'you', 'can'), ('if', 'possible'), ('if', 'you', 'do', 'not', 'mind'), ('in', 'a', 'minute'),
     ('right',), ('alright', 'then'), ('okay', 'then'), ('ok', 'then'), ('now', 'then'),
+    ('when', 'you', 'have', 'a', 'moment'), ('when', 'you', 'have', 'a', 'minute'),
+    ('when', 'you', 'have', 'a', 'sec'),
+    ('when', 'you', 'have', 'a', 'second'), ('when', 'you', 'have', 'time'),
+    ('when', 'you', 'have', 'a', 'chance'),
+    ('when', 'you', 'get', 'a', 'moment'), ('when', 'you', 'get', 'a', 'minute'),
+    ('when', 'you', 'get', 'a', 'sec'),
+    ('when', 'you', 'get', 'the', 'chance'), ('whenever', 'you', 'can'),
+    ('whenever', 'you', 'get', 'a', 'chance'),
+    ('if', 'you', 'have', 'a', 'moment'), ('if', 'you', 'have', 'a', 'minute'), ('if', 'you', 'have', 'time'),
+    ('if', 'you', 'get', 'a', 'chance'), ('when', 'you', 'are', 'free'), ('whenever', 'you', 'are', 'free'),
+    ('at', 'your', 'convenience'), ('when', 'convenient'), ('first', 'of', 'all'), ('to', 'start'),
+    ('to', 'begin'), ('to', 'begin', 'with'), ('for', 'starters'), ('okay', 'so'), ('ok', 'so'), ('so',),
+    ('alright', 'so'), ('right', 'so'), ('hey', 'robot'), ('hi', 'robot'), ('robot',), ('drone',),
+    ('before', 'anything', 'else'), ('first', 'things', 'first'), ('before', 'you', 'do', 'anything', 'else'),
+    ('to', 'start', 'with'), ('to', 'start', 'off'), ('for', 'a', 'start'),
 ), key=lambda t: -len(t)))
 
 PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',
@@ -124,6 +160,8 @@ chill relax idle linger loiter hover
 FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
     (r'(^ | [,.;!?] )(?:honestly |so |well )?(?:the )?(?:easiest|best|simplest|quickest|ideal) '
      r'(?:thing|option|way|plan|move)(?: to do)? (?:would be|is|will be) (?:for you )?(?:to )?', r'\1 '),
+    (r'(^ | [,.;!?] )(?:it is|it would be) (?:really |very |super |extremely )?(?:important|vital|crucial|'
+     r'essential|critical|key|imperative) (?:that )?(?:you )?(?:to )?', r'\1 '),
     (r'(^ | [,.;!?] )(?:it would be|it is|it will be|that would be) (?:great|nice|good|lovely|helpful|'
      r'awesome|ideal|perfect|wonderful) if you (?:could|would|can|will) ', r'\1 '),
     (r'(^ | [,.;!?] )(?:it is )?(?:time|high time) (?:for you )?to ', r'\1 '),
@@ -135,6 +173,65 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),
     (r'(^ | [,.;!?] )(?:maybe|perhaps|probably) (?=[a-z])', r'\1 '),
 ))
+
+
+# Nouns that name a list of tasks, not a place: a heading before a colon ("Morning routine:").
+TASK_NOUNS = frozenset('''
+routine routines plan plans task tasks errand errands job jobs chore chores instruction instructions agenda
+itinerary mission missions schedule steps step program programme todo list checklist rundown
+orders assignment assignments duty duties workflow procedure protocol today tonight
+morning afternoon evening plan rules rule note notes reminder reminders request requests
+'''.split())
+
+
+# Verbs that open a command, not a heading ("go to these in this order: ...").
+_COMMANDS = frozenset({'go', 'visit', 'head', 'bring', 'take', 'put', 'do', 'move', 'drive', 'fly', 'walk',
+                       'get', 'fetch', 'carry', 'deliver', 'survey', 'patrol', 'avoid', 'stop', 'swing'})
+# A heading that changes the plan given before is a self-correction ("Change of plan: ..."), read later.
+_CHANGES = frozenset({'change', 'changed', 'correction', 'update', 'updated', 'new', 'revised', 'actually',
+                      'instead', 'wait', 'sorry', 'amended', 'different'})
+
+
+def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
+    """Remove a heading before a colon that opens a sentence ("Morning routine for you, robot: ..."), noted.
+
+    A heading names the list of tasks that follows (a word of :data:`TASK_NOUNS`) and holds no
+    constraint word; a list of places before a colon ("the shelf, the cabinet: ...") is no heading.
+    """
+    out: list[str] = []
+    i = 0
+    n = len(tokens)
+    while i < n:
+        if i == 0 or tokens[i - 1] in '.;!?':
+            c = next((k for k in range(i, min(n, i + 9)) if tokens[k] in PUNCT and tokens[k] != ','), -1)
+            head = tokens[i:c] if c > i and tokens[c] == ':' else []
+            if head and c + 1 < n and any(w in TASK_NOUNS for w in head) and not carries_constraint(head) \
+                    and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
+                        w in DETERMINERS and k > 0 and head[k - 1] in (',', 'and', 'or')
+                        for k, w in enumerate(head)):
+                notes.append(f'left out the heading "{" ".join(t for t in head if t != ",")}:"')
+                i = c + 1
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+_PAREN_RE = re.compile(r'\(([^()]{0,200})\)')
+
+
+def strip_parentheticals(text: str, notes: list[str]) -> str:
+    """Leave out asides in parentheses ("the mug (the one with the chipped handle)"), noted.
+
+    An aside holding a constraint word ("(but never the red one)") is read as a clause instead.
+    """
+    def aside(m: re.Match[str]) -> str:
+        words = re.findall(r"[a-z0-9']+", m.group(1).lower())
+        if carries_constraint(words) or words[:1] in (['then'], ['and']):
+            return f', {m.group(1)} ,'
+        notes.append(f'left out "({m.group(1).strip()})" (an aside)')
+        return ' '
+    return _PAREN_RE.sub(aside, text) if '(' in text else text
 
 
 def strip_frames(tokens: list[str], notes: list[str]) -> list[str]:
@@ -158,6 +255,25 @@ def has_constraint_word(tokens: Sequence[str]) -> bool:
     return any((t in CONSTRAINT_WORDS or t.isdigit()) and not (
         (t in NUMBER_WORDS or t.isdigit()) and k > 0 and tokens[k - 1] in ('at', 'around', 'about') and
         tokens[k + 1:k + 2] not in (['times'], ['time'])) for k, t in enumerate(tokens))
+
+
+# After "keep" / "stay": words that make it a constraint ("keep away", "stay off"); "keep an eye
+# on", "stay calm" ask for nothing about places.
+_KEEP_CONSTRAINT = frozenset({'away', 'off', 'clear', 'out', 'far', 'back', 'your', 'well', 'in', 'on',
+                              'within', 'inside', 'at', 'there', 'here', 'put', 'behind', 'outside', 'right',
+                              'to', 'going', 'moving', 'visiting'})
+
+
+def carries_constraint(tokens: Sequence[str]) -> bool:
+    """Whether words hold a negation, an avoid or stay verb, an order or a count word.
+
+    As :func:`has_constraint_word`, but "keep" and "stay" count only where they constrain where
+    the robot goes ("keep away from", "stay in"), not in "keep an eye out", "stay calm".
+    """
+    words = [t for k, t in enumerate(tokens) if not (
+        t in ('keep', 'stay') and (k + 1 >= len(tokens) or tokens[k + 1] not in _KEEP_CONSTRAINT)) and not (
+        t == 'one' and k > 0 and tokens[k - 1] in DETERMINERS | PLACEHOLDER_ADJECTIVES)]   # "the red one"
+    return has_constraint_word(words) or 'avoid' in words or any(w.startswith('avoid') for w in words)
 
 
 def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:

@@ -63,6 +63,9 @@ _ORDINAL_OF = {'one': 'first', 'two': 'second', 'three': 'third', 'four': 'fourt
                '1': 'first', '2': 'second', '3': 'third', '4': 'fourth', '5': 'fifth'}
 _SMALL = '(?:' + '|'.join(_ORDINAL_OF) + ')'
 
+_PRESENT = {'dropped off': 'drop off', 'dropped': 'drop', 'delivered': 'deliver', 'left': 'leave',
+            'brought': 'bring', 'took': 'take', 'placed': 'place'}
+
 Replacement = Union[str, Callable[['re.Match[str]'], str]]
 
 
@@ -155,6 +158,13 @@ RULES: tuple[Rule, ...] = (
 
     Rule('go to the lab from the second floor only', rf'\b(?:from|via|through) (?P<x>{_NP}) only\b',
          r'only through \g<x>'),
+    Rule('and finish by going to the gate',
+         rf'\b(?:and )?(?:finish|end|end up|conclude|wrap up) by {_GOING}\b',
+         lambda m: f'and finally {_plain(m.group(0).split(" by ", 1)[1])}'),
+    Rule('the drone must survey the field, then it must land',
+         r'(?P<pre>^|, |\bthen |\band )(?:the )?(?:robot|drone|it) (?:must|should|has to|needs to|will|'
+         r'shall) ',
+         r'\g<pre>'),
     Rule('start on the third floor, go to the roof', r'^start (?:on|at|in|from)\b', 'go to'),
     Rule('the 2 nd floor, level two', rf'\b(?:(?P<n>{_SMALL}) (?:st|nd|rd|th) floor|level (?P<m>{_SMALL}))\b',
          lambda m: f'{_ORDINAL_OF[m.group("n") or m.group("m")]} floor'),
@@ -291,11 +301,14 @@ RULES: tuple[Rule, ...] = (
          rf'(?:to not|not to)) (?:revisit|return to|go back to|come back to) (?P<x>{_NPS})(?: again)?'
          rf'(?: before (?:completing|finishing) (?:the )?(?:remaining )?tasks?)?{_CLAUSE_END}',
          r' , do not revisit \g<x> , '),
+    Rule('you can only enter the bedroom once',
+         rf'\byou (?:can|may) only (?P<v>{_GO}) (?P<x>{_NPS}) (?P<c>once|twice|thrice|{_NUM} times)(?= |$)',
+         r'\g<v> \g<x> at most \g<c>'),
     Rule('while visiting a and b only once',
          rf'\b(?:while |and )(?:only )?visiting (?P<x>{_NPS}) (?:only )?(?:once|one time)(?= |$)',
          r' , visit \g<x> only once , '),
     Rule('go to b without returning to a',
-         rf'\b(?:(?:but )?without|(?:, )?(?:or|and|nor)) (?:returning|going back|coming back|revisiting|'
+         rf'\b(?:(?:but )?without|(?:, )?(?:or|nor)) (?:returning|going back|coming back|revisiting|'
          rf'revisit|return|go back|come back)(?: to)? (?P<x>{_NPS}){_CLAUSE_END}',
          r' , do not revisit \g<x> , '),
     Rule('go to b without going to a again', rf'\bwithout {_GOING} (?P<x>{_NPS}) again{_CLAUSE_END}',
@@ -308,6 +321,13 @@ RULES: tuple[Rule, ...] = (
          r'(?:turn|order)\b', ' , in strict order , '),
 
     Rule('make sure to go there', r'\b(?:be sure|make sure|ensure|remember)(?: that)?(?: you)? to\b', ''),
+
+    Rule('after you drop the box at the desk, go to the door',
+         rf'^after you (?:have )?(?P<v>drop off|dropped off|drop|dropped|deliver|delivered|put|leave|left|'
+         rf'bring|brought|take|took|place|placed) (?P<x>{_NPS}) (?P<p>at|in|on|to|into|onto) (?P<y>{_NPS}) , '
+         rf'(?P<rest>(?:go|head|come|return|move|fly|visit|bring|take|put|drive|walk) .+)$',
+         lambda m: f'{_PRESENT.get(m.group("v"), m.group("v"))} {m.group("x")} {m.group("p")} '
+                   f'{m.group("y")} , then {m.group("rest")}'),
 
     # ---- passive goals and avoidances
     Rule('the shed must be visited',
@@ -426,7 +446,20 @@ RULES: tuple[Rule, ...] = (
 )
 
 _SENTENCE_ENDS = frozenset('.;!?')
-_COMPILED = tuple((re.compile(r.pattern), r.replacement) for r in RULES)
+
+
+def _literal_words(pattern: str) -> frozenset[str]:
+    """Every word the pattern spells out, outside negative lookaheads.
+
+    A match always contains at least one of them (each rule spells out a word it needs), so a
+    sentence with none of them cannot match: the rule is skipped without running the regex.
+    """
+    text = re.sub(r'\(\?!\(\?:[^)]*\)\\b\)', ' ', pattern)   # the words a noun phrase may not be
+    text = re.sub(r'\\[a-zA-Z]|\(\?P<\w+>|\(\?P=\w+\)|\\g<\w+>', ' ', text)   # escapes and group names
+    return frozenset(re.findall(r'[a-z]+', text))
+
+
+_COMPILED = tuple((re.compile(r.pattern), r.replacement, _literal_words(r.pattern)) for r in RULES)
 
 
 def rewrite_idioms(tokens: list[str]) -> list[str]:
@@ -445,6 +478,12 @@ def _rewrite_sentence(words: list[str]) -> list[str]:
     if not words:
         return []
     text = ' '.join(words)
-    for pattern, replacement in _COMPILED:
-        text = pattern.sub(replacement, text)
+    present = set(words)
+    for pattern, replacement, needs in _COMPILED:
+        if present.isdisjoint(needs):
+            continue   # none of the words it spells out: it cannot match
+        new = pattern.sub(replacement, text)
+        if new != text:
+            text = new
+            present = set(text.split())
     return text.split()

@@ -22,13 +22,16 @@ from __future__ import annotations
 
 import re
 
-from ltl_instruct.core.language.phrases import PhraseParser
+from ltl_instruct.core.language.phrases import PhraseParser, singular
 
 _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |it is |that is |'
          r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
          r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)')
 
 _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
+    # "land at the pad when you are done": the last step is last anyway
+    (rf' (?:, )?{_DONE}(?: (?:with )?(?:everything|all (?:that|of that|of it)|the rest))?'
+     r' (?=[.;!?] |$)', ' '),
     # "go to a . when you are done there , head to b" -> "go to a . then head to b"
     (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
     (r' (?:exactly )?once and only once ', ' exactly once '),
@@ -61,8 +64,64 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
     (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
     (r' from there , ', ' after that , '),
+    (r'(^ | [,.;!?] | and | then | also )(?:please )?(?:do not forget to|remember to|be sure to|'
+     r'try to|you will need to|you will want to) '
+     r'(?!not |never |avoid|stay |keep |go near|touch )', r'\1 '),
+    # "go to whichever bench is free - the one by the pond or the one by the oak"
+    (r' (?:go to |head to |visit |use )?whichever (\w+) (?:is |s )?(?:free|closer|nearer|open|empty|'
+     r'available|'
+     r'quicker|easier|closest|nearest) (?:, |: )(?=the one )', r' go to either \1 '),
+    # "..., but finish at the florist"
+    (r' but (?:finish|end) (?:up )?(?:at|by|with|in) (?=(?:the|a|an|my|your|our) )', ' , finally go to '),
+    # "the remote that's probably under the cushion": where it is, hedged
+    (r' (that is|which is|that are|which are|is|are) (?:probably|maybe|possibly|likely|usually|currently|'
+     r'still|normally|hopefully|typically|most likely|likely still|often|sometimes) '
+     r'(?=(?:on|under|in|behind|next|by|near|beside|between|above|below|beneath|to the|in front|sitting|'
+     r'lying|standing|left|right) )', r' \1 '),
+    # "first the tower, next the mast, last the silo": the last stop
+    (r'(^ | [,.;!?] | and | then )(?:last|last of all|and last) (?:, )?(?=(?:the|a|an|my|your|our) )',
+     r'\1 finally '),
+    # "until you have dropped by X": visited it
+    (r' (have|you|having|after|until|before|once) '
+     r'(?:dropped|popped|swung|stopped|called|looked|checked|come) '
+     r'(?:by|in at|in on|into|over to|at) (?=(?:the|a|an|my|your|our) )', r' \1 visited '),
+    # "make sure you have been to X before Y": X is a goal (before Y)
+    (r' (?:make sure|be sure|ensure) (?:that )?(?:you )?(?:have |already )*(?:been to|been by|visited|'
+     r'gone to|stopped at|stopped by|passed by|swung by|checked) '
+     r'(?![^,.;!?]* before (?:that|doing that|then) )', ' visit '),
+    # "whichever is closer, the a or the b, go there": the choice is the person's reason, not a place
+    (r'(^ | [,.;!?] | and | then | to )(go to |head to |visit |to )?whichever (?:one )?'
+     r'(?:is |s |of them is |of the two is )?'
+     r'(?:closer|closest|nearer|nearest|easier|quicker|faster|more convenient|handier|free|open|emptier|'
+     r'less busy|shorter)(?: to you| for you| of the two)?(?: , | : | - )?', r'\1 \2'),
+    # "any of the three will do: a, b, or c"
+    (r'(^ | [.;!?] )(?:any|either|one|any one) (?:one )?of (?:the |these |those |them )?'
+     r'(?:two |three |four |five )?(?:will do|is fine|works|is ok|is okay|would be fine|would do|are fine|'
+     r'would work|is good) (?:: |, )?'
+     r'(?:go to |visit )?', r'\1 go to any of '),
+    (r'(^ | [.;!?] )(?:go to|visit|pick|choose|head to) (?:any|one|either) (?:one )?of (?:these|those|'
+     r'the following|them|the two|the three|the four|these places|these spots)(?: places| spots| locations)?'
+     r' (?::|,) ', r'\1 go to any of '),
+    # "start by going to X", "begin with X", "finish up by dropping by Y": the first and the last step
+    (r'(^ | [,.;!?] | and | then )(?:start|begin|kick off|kick things off) (?:off )?(?:by|with) '
+     r'(going|heading|visiting|checking|stopping|swinging|flying|driving|walking|making|picking|grabbing|'
+     r'bringing|taking|getting|fetching|dropping|popping) ', r'\1 first \2 '),
+    (r'(^ | [,.;!?] | and | then )(?:start|begin|kick off|kick things off) (?:off )?(?:with|at) '
+     r'(?=(?:the|a|an|my|your|our) )', r'\1 first go to '),
+    (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:by|with) '
+     r'(going|heading|visiting|checking|stopping|swinging|flying|driving|walking|making|picking|grabbing|'
+     r'bringing|taking|getting|fetching|dropping|popping|landing) ', r'\1 finally \2 '),
+    (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:with|at) '
+     r'(?=(?:the|a|an|my|your|our) )', r'\1 finally go to '),
     (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
-    (r' (?:wait|stand|sit|park) (?:by|near|next to|beside) (?=(?:the|a|my|your|our) )', ' go to '),
+    (r'(?<! the)(?<! a)(?<! my)(?<! your)(?<! our)(?<! car) (?:wait|stand|sit|park) '
+     r'(?:by|near|next to|beside) '
+     r'(?=(?:the|a|my|your|our) )', ' go to '),
+    # "the chair by the window, or if it's taken, the chair by the door": either will do
+    (r' (?:, )?or (?:, )?if (?:it|that|this|the \w+|they) (?:is|are|s|happens to be) (?:already )?'
+     r'(?:taken|busy|occupied|'
+     r'locked|closed|full|blocked|unavailable|not free|not available|in use|out of order|shut|not open|empty)'
+     r'(?: , | )', ' or '),
     (r' check there (?:is|are) (?:any |some |a |an )?(?:\w+ ){1,2}(?:in|on|at|inside) '
      r'(?=(?:the|a|an|my|your|our) )', ' check '),
     # "first stop, the bakery. last stop, the florist": the order of the stops
@@ -74,8 +133,14 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
     (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
      r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
-    (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:goal|destination|target|aim|objective|end point|'
-     r'endpoint|final destination|job|task|mission) (?:is|will be|:) '
+    # "your job today is to bring the cup to the sink": the request itself
+    (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:first |next |final |last |main |only |new |one )?'
+     r'(?:goal|job|task|mission|aim|objective|assignment)(?: for (?:today|tonight|now|the day))?'
+     r'(?: today| tonight| now| here)? (?:is|will be) to (?!go to |reach |get to |visit )', r'\1 '),
+    (r'(^ | [,.;!?] | and | then )(?:your|the|our|my) (?:first |next |final |last |main |only |new |one )?'
+     r'(?:goal|destination|target|aim|objective|end point|'
+     r'endpoint|final destination|job|task|mission|stop)(?: for (?:today|tonight|now|the day|this morning))?'
+     r'(?: today| tonight| now| this morning| this afternoon| this evening| here)? (?:is|will be|:) '
      r'(?:to (?:go to |reach |get to |visit )?)?',
      r'\1 go to '),
 ))
@@ -85,6 +150,33 @@ _PASS_RE = re.compile(r'(^| )(?:make|do|take|fly|run|perform|complete) (one|two|
                       r'(?:passes|pass|trips|trip|laps|lap|rounds|round|sweeps|sweep|runs|run|loops|loop|'
                       r'flyovers|flyover|visits|visit|circuits|circuit) '
                       r'(?:over|to|by|past|around|round|of|through|across|above|at)? ?')
+
+
+_GERUNDS = {'going': 'go', 'heading': 'head', 'visiting': 'visit', 'checking': 'check', 'stopping': 'stop',
+            'swinging': 'swing', 'flying': 'fly', 'driving': 'drive', 'walking': 'walk', 'making': 'make',
+            'picking': 'pick', 'grabbing': 'grab', 'bringing': 'bring', 'taking': 'take', 'getting': 'get',
+            'fetching': 'fetch', 'dropping': 'drop', 'popping': 'pop', 'landing': 'land'}
+# "drop by the porch", "pop in at the shop": a visit, not a delivery
+_DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to) (?=(?:the|a|an|my|your|'
+                         r'our) )')
+_GERUND_RE = re.compile(r' (first|finally) (' + '|'.join(_GERUNDS) + ') ')
+
+
+_GROUP_RE = re.compile(r' (?:pick|choose|select|go to|visit|use|head to|take) '
+                       r'(?:one of|either of|any of|one among) '
+                       r'(?:the|these|those) (?:two|three|four|five) (\w+) (?:, |: )')
+
+
+def _one_of_group(text: str) -> str:
+    """'pick one of the two sinks, the one by the window or the one by the door': go to either sink."""
+    m = _GROUP_RE.search(text)
+    if m is None:
+        return text
+    noun = singular(m.group(1))
+    end = min((text.find(p, m.end()) for p in (' . ', ' ; ', ' ! ', ' ? ') if text.find(p, m.end()) >= 0),
+              default=len(text))
+    body = text[m.end():end].replace('the one ', f'the {noun} ').replace(' a one ', f' a {noun} ')
+    return text[:m.start()] + ' go to either ' + body + text[end:]
 
 
 def paraphrase(tokens: list[str]) -> list[str]:
@@ -98,10 +190,21 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
                                    ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
                                    ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location',
-                                   ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ')):
+                                   ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ',
+                                   ' start', ' begin', ' kick', ' finish', ' end ', ' wrap', ' whichever',
+                                   ' any ', ' either ', ' one of ', ' drop ', ' duck ', ' nip ', ' pop ',
+                                   ' last ', ' dropped', ' popped', ' swung', ' stopped', ' called',
+                                   ' looked', ' come ', ' probably', ' maybe', ' possibly', ' likely',
+                                   ' usually', ' currently', ' still', ' normally', ' hopefully',
+                                   ' typically', ' forget', ' remember', ' be sure', ' try ', ' will need',
+                                   ' will want', ' should', ' need to', ' have to', ' must', ' free',
+                                   ' often', ' sometimes')):
         return tokens
+    text = _one_of_group(text)
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)
+    text = _GERUND_RE.sub(lambda m: f' {m.group(1)} {_GERUNDS[m.group(2)]} ', text)
+    text = _DROP_BY_RE.sub(' visit ', text)
     out = text.split()
     return _passes(out)
 

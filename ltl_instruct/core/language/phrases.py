@@ -22,7 +22,7 @@ RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
     (('between',), 'isbetween'), (('in', 'between'), 'isbetween'),
     (('on', 'top', 'of'), 'isabove'), (('on', 'the', 'top', 'of'), 'isabove'), (('on',), 'isabove'),
     (('onto',), 'isabove'), (('above',), 'isabove'), (('over',), 'isabove'), (('atop',), 'isabove'),
-    (('sitting', 'on'), 'isabove'), (('under',), 'isbelow'), (('underneath',), 'isbelow'),
+    (('under',), 'isbelow'), (('underneath',), 'isbelow'),
     (('below',), 'isbelow'), (('beneath',), 'isbelow'),
     (('to', 'the', 'left', 'of'), 'isleftof'), (('left', 'of'), 'isleftof'),
     (('on', 'the', 'left', 'of'), 'isleftof'), (('to', 'left', 'of'), 'isleftof'),
@@ -35,6 +35,8 @@ RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
     (('next', 'to'), 'isnextto'), (('by',), 'isnextto'), (('beside',), 'isnextto'),
     (('besides',), 'isnextto'), (('near',), 'isnextto'), (('close', 'to'), 'isnextto'),
     (('adjacent', 'to'), 'isnextto'), (('nearby',), 'isnextto'),
+    (('across', 'from'), 'isinfrontof'), (('opposite',), 'isinfrontof'), (('opposite', 'to'), 'isinfrontof'),
+    (('facing',), 'isinfrontof'),
 ), key=lambda p: -len(p[0])))
 
 # Destination prepositions: in "put X on Y" they end the object, they are not relations.
@@ -43,7 +45,8 @@ DESTINATION_PREPS = frozenset({'on', 'onto', 'in', 'into', 'at', 'to', 'over', '
 # "a pair of boots", "a bag of chips": 'of' stays inside the name after these.
 CONTAINER_WORDS = frozenset({'pair', 'bag', 'box', 'bottle', 'cup', 'can', 'piece', 'set', 'bunch',
                              'stack', 'glass', 'jar', 'pile', 'bowl', 'plate', 'pack', 'packet', 'roll',
-                             'sheet', 'slice'})
+                             'sheet', 'slice', 'loaf', 'carton', 'tub', 'bar', 'basket', 'bucket', 'crate',
+                             'tray', 'tin', 'mug', 'pot', 'jug', 'sack', 'case', 'bundle', 'ream', 'tube'})
 
 # "each of a, b and c", "the following locations a, b": words before the names themselves.
 LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -55,6 +58,12 @@ LIST_HEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('any', 'locations', 'among'), ('any', 'of', 'the', 'locations'), ('none', 'among'), ('none', 'of'),
     ('either', 'one', 'among'), ('one', 'among'), ('any', 'one', 'among'), ('either', 'of'), ('any', 'of'),
 ), key=lambda t: -len(t)))
+
+# List heads that make a list a choice ("either of the red door and the blue door").
+CHOICE_HEADS: tuple[tuple[str, ...], ...] = (
+    ('either', 'of'), ('any', 'of'), ('one', 'of'), ('any', 'one', 'of'), ('either', 'one', 'of'),
+    ('whichever', 'of'), ('one', 'among'), ('any', 'one', 'among'), ('either', 'one', 'among'),
+    ('any', 'locations', 'among'), ('any', 'of', 'the', 'locations'))
 
 # Words that introduce a relative clause before a relation ("that's on", "which is behind").
 RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
@@ -79,7 +88,7 @@ fine enough again cannot cant dont one along throughout entire whole during with
 always directly immediately ever never by near behind between above under below beneath beside
 unless except whenever since because though although otherwise later afterwards afterward means thereafter
 something anything everything nothing someone anyone anymore forever staying keeping steering remaining
-followed remain
+followed remain forth
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.
@@ -87,6 +96,9 @@ PART_WORDS = frozenset('''
 roof top side front back door entrance exit corner end edge middle center centre bottom base foot gate
 window wall floor lobby steps stairs porch yard garden balcony
 '''.split())
+
+# Prepositions said again before the next alternative of a list ("over the lake or over the forest").
+LIST_PREPOSITIONS = frozenset({'to', 'over', 'through', 'past', 'into', 'onto', 'towards', 'toward', 'by'})
 
 # "location b", "landmark c": a generic noun before a known landmark name
 PLACE_NOUNS = frozenset({'location', 'landmark', 'place', 'waypoint', 'point'})
@@ -96,7 +108,8 @@ PLACEHOLDER_ADJECTIVES = frozenset('''
 red blue green yellow orange purple pink brown black white grey gray silver gold golden big small large little
 tall short long round square other same left right near far front back upper lower top bottom middle new old
 wooden metal plastic glass open closed empty full clean dirty dark light first second third last closest
-nearest farthest furthest next previous main
+nearest farthest furthest next previous main north south east west northern southern eastern western inner
+outer side central rear upstairs downstairs spare tiny huge heavy light narrow wide broken new older newer
 '''.split())
 
 LY_NOUNS = frozenset({'family', 'assembly', 'supply', 'jelly', 'belly', 'trolley', 'pulley', 'valley',
@@ -375,7 +388,9 @@ class PhraseParser:
         (phrases, joiner, end): joiner is ``'and'``, ``'or'`` or ``''`` for a single phrase.
         """
         joiner = ''
-        if i < len(tokens) and tokens[i] in ('either', 'both'):
+        # "either of X and Y", "any one of X, Y and Z": one of them, however they are joined
+        choice = any(tuple(tokens[i:i + len(h)]) == h for h in CHOICE_HEADS)
+        if i < len(tokens) and tokens[i] in ('either', 'both') and tokens[i + 1:i + 2] != ['of']:
             i += 1
         phrases: list[NounPhrase] = []
         first = self.parse(tokens, i, destination_stops)
@@ -402,6 +417,9 @@ class PhraseParser:
                 break
             if j < len(tokens) and tokens[j] in ('then', 'after', 'finally', 'also'):
                 break
+            if sep == 'or' and j + 1 < len(tokens) and tokens[j] in LIST_PREPOSITIONS and i > 0 and \
+                    tokens[phrases[0].start - 1] == tokens[j]:
+                j += 1   # "over the lake or over the forest": the preposition said again
             nxt = self.parse(tokens, j, destination_stops)
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
@@ -417,4 +435,45 @@ class PhraseParser:
             phrases.append(nxt)
             joiner = sep if sep == 'or' or not joiner else joiner
             i = nxt.end
+        if choice and len(phrases) > 1:
+            joiner = 'or'
         return phrases, joiner, i
+
+
+# Nouns after "in" that name no place ("in this strict order", "in a row", "in any case").
+_NOT_PLACES = frozenset({'order', 'sequence', 'turn', 'row', 'way', 'case', 'fact', 'addition', 'time',
+                         'general', 'advance', 'total', 'particular', 'reverse', 'meantime', 'end', 'future',
+                         'morning',
+                         'evening', 'afternoon', 'night', 'process', 'hurry', 'moment', 'minute', 'manner'})
+# Parts of a place where a thing is ("at the end of the hall", "in the corner of the room").
+_PART_OF_PLACE = frozenset({'end', 'far', 'top', 'bottom', 'corner', 'side', 'edge', 'foot', 'head', 'middle',
+                            'center', 'centre', 'back', 'front', 'rear', 'entrance', 'near'})
+
+
+def location_phrase(tokens: Sequence[str], i: int, parser: 'PhraseParser') -> int:
+    """Where a phrase saying *where* a thing is ends ("in the closet", "at the end of the hall"), or -1.
+
+    No comparator says "inside" ("isin" is none of ours), so such a phrase names where to
+    look, not which thing: the translator reads the thing without it (and notes so).
+    """
+    if i >= len(tokens):
+        return -1
+    w = tokens[i]
+    if w in ('upstairs', 'downstairs', 'outside', 'outdoors', 'indoors'):
+        return i + 1
+    if w == 'down' and tokens[i + 1:i + 2] == ['the'] and \
+            tokens[i + 2:i + 3] in (['hall'], ['hallway'], ['corridor']):
+        return i + 3
+    k = i
+    if w in ('in', 'at', 'on') and tokens[i + 1:i + 2] == ['the'] and i + 3 < len(tokens) and \
+            tokens[i + 2] in _PART_OF_PLACE and tokens[i + 3] in ('of', 'end'):
+        k = i + 4 if tokens[i + 3] == 'of' else (i + 5 if tokens[i + 4:i + 5] == ['of'] else -1)
+        if k < 0:
+            return -1
+    elif w in ('in', 'inside', 'within') and i + 1 < len(tokens) and tokens[i + 1] in DETERMINERS and \
+            not _NOT_PLACES & set(tokens[i + 1:i + 5]):
+        k = i + 1
+    else:
+        return -1
+    np = parser.parse(tokens, k)
+    return np.end if np is not None and not np.pronoun else -1

@@ -25,9 +25,10 @@ from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
-                          'notice', 'find', ','})
+                          'notice', 'find', ',', 'from', 'among', 'options', 'choices'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
-                       'there', '-', 'are', 'sit', 'stand', 'lie'})
+                       'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
+                       'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near'})
 _REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
                                     'after', 'former', 'latter', 'them', 'all'}
 
@@ -60,6 +61,10 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         if s >= 2 and tokens[s - 1] == ':' or s >= 3 and tokens[s - 1] == ',' and \
                 tokens[s - 3] in NUMBER_WORDS:
             category = singular(tokens[s - 2])   # "three chairs: a red one...", "two doors, a red one..."
+            q = next((q for q in range(s - 2, max(-1, s - 8), -1) if tokens[q] in NUMBER_WORDS), -1)
+            counted = parser.parse(tokens, q + 1) if q >= 0 else None
+            if counted is not None and counted.end <= s - 1:
+                category = singular(counted.head)   # "three bins by the gate: a green one, ..."
         elif s >= 2 and tokens[s - 1] == ',':
             continue
         return s, end, nps, category
@@ -147,13 +152,18 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     while i < len(tail):
         t = tail[i]
         nxt = tail[i + 1] if i + 1 < len(tail) else ''
+        if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (tail[i + 2] in ORDINALS or tail[i + 2] in (
+                'last', 'middle')) and (i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in (
+                'and', 'then', 'or')):
+            tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
+            nxt = tail[i + 1]
         if t == 'the' and nxt:
             w = tail[i + 2] if i + 2 < len(tail) else ''
             one = 1 if w in ('one', 'item', 'thing') else 0
             # "the second", "the latter twice": no noun follows the position word
             ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
                 not is_name_word(tail, i + 2, False)
-            if nxt in ORDINALS and ends:
+            if nxt in ORDINALS and ends and not (nxt == 'first' and w in NUMBER_WORDS and w != 'one'):
                 idx = ORDINALS[nxt] - 1
                 if idx >= n:
                     raise TranslationError(f'"the {nxt}" points past the end of a list of {n}',
@@ -161,12 +171,12 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += joined([idx])
                 i += 2 + one
                 continue
-            if nxt == 'last' and w in ('two', 'three'):
+            if nxt == 'last' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
                 k = NUMBER_WORDS[w]
                 out += joined(list(range(n - k, n)))
                 i += 3
                 continue
-            if nxt == 'first' and w in ('two', 'three'):
+            if nxt == 'first' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
                 out += joined(list(range(NUMBER_WORDS[w])))
                 i += 3
                 continue
@@ -251,7 +261,7 @@ _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', '
                      'leave'})
 # Markers that restate a whole clause ("on second thought, bring it to the couch").
 _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
-                      'or', 'er', 'erm', 'um', 'uh', 'ah'})
+                      'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my'})
 # Words that start a clause of their own (the verbs of goals and deliveries).
 _VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
                        'deliver', 'carry', 'return', 'avoid'}
@@ -475,6 +485,13 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         after = out[stop:]
         marker = out[i]
         result = _correct(prev, marker, seg, notes)
+        cut = next((k for k in range(1, len(seg) - 1)
+                    if seg[k] == ',' and seg[k + 1] in ('then', 'and', 'but')), -1)
+        if result is None and cut > 0:
+            # "then the scanner, no, the fax machine, then my desk": the correction ends at the clause
+            result = _correct(prev, marker, seg[:cut], notes)
+            if result is not None:
+                result = result + seg[cut:]
         if result is None:
             # not a correction we understand: drop the marker word and read on
             out = prev + ([','] if prev and prev[-1] not in PUNCT else []) + seg + after
@@ -507,8 +524,9 @@ def _retract_avoidance(prev: list[str], seg: list[str], notes: list[str]) -> Opt
         spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
-            kept = [c for c in _split_commas(seg[:at]) + _split_commas(seg[at + len(r):])
-                    if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS]
+            parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
+                     for c in _split_commas(seg[:at]) + _split_commas(seg[at + len(r):])]
+            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS]
             return _remove_clause(prev, p) + [t for c in kept for t in [','] + c]
     return None
 
@@ -528,9 +546,15 @@ def _np_end(words: list[str]) -> int:
     return np.end if np is not None else 0
 
 
+# Verbs of keeping away that a restatement may start with ("keep the dog out... I mean, keep away from it").
+_KEEP_VERBS = frozenset({'keep', 'stay', 'steer'})
+_DELIVERY = frozenset({'put', 'place', 'bring', 'take', 'throw', 'toss', 'move', 'carry', 'deliver', 'drop',
+                       'leave', 'set', 'stash', 'store', 'dump'})
+
+
 def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Restate a clause: 'bring the blanket to the bedroom. On second thought, bring it to the couch'."""
-    if not seg or seg[0] not in _VERBS:
+    if not seg or seg[0] not in _VERBS | _KEEP_VERBS:
         return None
     end = len(prev)
     while end > 0 and prev[end - 1] in PUNCT:
@@ -538,13 +562,22 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     b = end
     while b > 0 and not (prev[b - 1] in '.;!?' or prev[b - 1] in (',', 'then', 'and') and prev[b] in _VERBS):
         b -= 1
-    if b >= end or prev[b] != seg[0]:
+    if b < end and prev[b] != seg[0]:
+        # "on the way to the hall avoid the stairs, no wait, avoid the door": the verb said again
+        b = next((p for p in range(end - 1, b, -1) if prev[p] == seg[0] and seg[0] == 'avoid'), b)
+    if b < end and prev[b] != seg[0] and prev[b] in _DELIVERY and seg[0] in _DELIVERY:
+        pass   # "throw away the papers. no, actually, put them in the recycling bin": the delivery again
+    elif b >= end or prev[b] != seg[0]:
         return None
     old = prev[b:end]
     new = list(seg)
+    for k in range(1, len(new) - 1):
+        if new[k:k + 2] in (['instead', 'of'], ['rather', 'than']) or new[k] == 'not' and new[k - 1] == ',':
+            new = new[:k - (new[k - 1] == ',')]   # "I meant avoid X, not the fan": what it replaces
+            break
     if any(t in ('it', 'them') for t in new):
         k = 1
-        while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back'):
+        while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back', 'away', 'out'):
             k += 1
         obj = PhraseParser().parse(old, k, destination_stops=True)
         if obj is not None and not obj.pronoun:
@@ -582,6 +615,60 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
     return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
 
 
+def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Swap two goals: 'go to a, then b, then c. wait, swap b and c' -> 'go to a, then c, then b'."""
+    words = [t for t in seg if t not in PUNCT]
+    if not words or words[0] not in ('swap', 'switch', 'flip', 'exchange', 'reverse', 'interchange'):
+        return None
+    k = 1
+    while k < len(words) and words[k] in ('the', 'order', 'of', 'around', 'round'):
+        k += 1
+    nps, _, end = PhraseParser().parse_list(words, k)
+    if len(nps) != 2 or [t for t in words[end:] if t not in ('around', 'round', 'please', 'instead')]:
+        return None
+    spans = _np_spans(prev)
+    hits = [next((sp for sp in reversed(spans) if sp.descriptor == np.descriptor or sp.head == np.head), None)
+            for np in nps]
+    if hits[0] is None or hits[1] is None or hits[0].start == hits[1].start:
+        return None
+    a, b = sorted(hits, key=lambda sp: sp.start)
+    notes.append(f'{nps[0].descriptor} and {nps[1].descriptor} swapped')
+    return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
+
+
+_GOES = (('goes',), ('should', 'go'), ('belongs',), ('needs', 'to', 'go'), ('has', 'to', 'go'), ('go',),
+         ('must', 'go'), ('is', 'for'), ('is', 'going'))
+
+
+def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Change a destination: 'bring the mug to the desk. wait, the mug goes to the sink': to the sink."""
+    words = [t for t in seg if t not in PUNCT]
+    if not words or words[0] not in DETERMINERS:
+        return None
+    parser = PhraseParser()
+    at = next((k for k in range(1, len(words)) if any(tuple(words[k:k + len(v)]) == v for v in _GOES)), -1)
+    obj = parser.parse(words[:at], 0, destination_stops=True) if at > 0 else None
+    if obj is None or obj.pronoun or obj.end != at:
+        return None   # (the verb found first: the parser would take "goes" into the name)
+    verb = next(v for v in _GOES if tuple(words[at:at + len(v)]) == v)
+    k = at + len(verb)
+    if k >= len(words) or words[k] not in _PREPS | {'to'}:
+        return None
+    dest = parser.parse(words, k + 1)
+    if dest is None or dest.end != len(words):
+        return None
+    hit = next((sp for sp in reversed(_np_spans(prev))
+                if sp.descriptor == obj.descriptor or sp.head == obj.head),
+               None)
+    if hit is None or hit.end >= len(prev) or prev[hit.end] not in _PREPS | {'to'}:
+        return None
+    old = parser.parse(prev, hit.end + 1)
+    if old is None or old.pronoun:
+        return None
+    notes.append(f'{obj.descriptor} goes to {dest.descriptor} instead')
+    return prev[:hit.end + 1] + words[k + 1:dest.end] + prev[old.end:]
+
+
 def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Move a goal first: 'go to the pool, then the gym. Actually, do the gym first'."""
     words = [t for t in seg if t not in PUNCT]
@@ -609,8 +696,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
         stripped = False
-        while seg and seg[0] in (',', ':', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh', 'erm',
-                                 'ah'):
+        while seg and (seg[0] in (',', ':', 'actually', 'wait', 'sorry', 'hmm', 'oh', 'er', 'um', 'uh', 'erm',
+                                  'ah', 'oops') or seg[0] == 'no' and seg[1:2] == [',']):
             seg, stripped = seg[1:], True
         for m in _MARKERS:
             if len(m) > 1 and tuple(seg[:len(m)]) == m and m[0] not in _CANCEL and m != ('make', 'that'):
@@ -619,13 +706,21 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     retracted = _retract_avoidance(prev, seg, notes)
     if retracted is not None:
         return retracted
+    swapped = _swap(prev, seg, notes) or _goes_to(prev, seg, notes)
+    if swapped is not None:
+        return swapped
+    if seg[:1] in (['just'], ['simply']) and len(seg) > 1 and seg[1] in _VERBS and marker in _RESTATE:
+        # "go to the kitchen, grab a snack... no, just go to the kitchen, then the hall": the sentence again
+        start = max((k for k in range(len(prev)) if prev[k] in '.;!?'), default=-1) + 1
+        notes.append(f'"{" ".join(prev[start:])}" replaced by "{" ".join(seg[1:])}"')
+        return prev[:start] + seg[1:]
+    reordered = _first_instead(prev, seg, notes)   # before a restatement: "actually, go to X first"
+    if reordered is not None:
+        return reordered
     if marker in _RESTATE:
         restated = _restate(prev, seg, notes)
         if restated is not None:
             return restated
-    reordered = _first_instead(prev, seg, notes)
-    if reordered is not None:
-        return reordered
     if seg and seg[0] in _CANCEL and marker not in _CANCEL and marker != 'never':
         marker, seg = seg[0], seg[1:]
     s = ' '.join(seg)
@@ -700,7 +795,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                     prev = _remove_clause(prev, sp.start)
                     break
         return prev + ([','] if prev and prev[-1] not in PUNCT else []) + rest
-    if 'other way' in s or 'reverse' in s or 'opposite order' in s:
+    if 'other way' in s or 'reverse' in s or 'opposite order' in s or 'backward' in s or 'wrong way' in s or \
+            'mixed up' in s or 'mixed that up' in s or 'wrong order' in s or 'mixed them up' in s:
         spans = _np_spans(prev)
         if len(spans) < 2:
             return None
@@ -721,18 +817,29 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     if seg and seg[0] in _PREPS and len(seg) > 1:
         # "put the jar on the table - no, on the counter": the phrase after the same kind of word
         new_np = PhraseParser().parse(seg, 1)
-        if new_np is not None and new_np.end == len(_strip_corr(seg)) or new_np is not None and not [
-                t for t in seg[new_np.end:] if t not in PUNCT]:
+        after = seg[new_np.end:] if new_np is not None else []
+        if new_np is not None and (new_np.end == len(_strip_corr(seg)) or not [
+                t for t in after if t not in PUNCT] or after[:1] == [','] and len(after) > 2 and (
+                after[1] in _VERBS or after[1] in ('and', 'then', 'but'))):
             for p in range(len(prev) - 1, -1, -1):
                 if prev[p] in _PREPS:
                     old = PhraseParser().parse(prev, p + 1)
                     if old is not None and not old.pronoun:
                         notes.append(f'corrected to "{" ".join(seg[:new_np.end])}"')
-                        return prev[:p] + seg[:new_np.end] + prev[old.end:]
+                        return prev[:p] + seg[:new_np.end] + prev[old.end:] + (
+                            after if [t for t in after if t not in PUNCT] else [])
+    for k in range(len(seg) - 1):
+        if seg[k:k + 2] in (['instead', 'of'], ['rather', 'than']):
+            seg = seg[:k] + ['not'] + seg[k + 2:]   # "the garden instead of the porch"
+            break
     if 'not' in seg:
         # "the freezer, not the fridge"
         k = seg.index('not')
         new, old = _strip_corr(seg[:k]), seg[k + 1:]
+        while new and new[0] in _VERBS | {'to', 'at', 'by', 'over', 'from', 'go', 'away', 'clear', 'of',
+                                          'stay', 'keep'}:
+            new = new[1:]   # "I meant avoid the radiator, not the fan": the verb is the one said before
+        old = [t for t in old if t not in PUNCT]
         parser = PhraseParser()
         onp, nnp = parser.parse(old, 0), parser.parse(new, 0) if new else None
         if onp is not None and nnp is not None and nnp.end == len(new):
@@ -754,16 +861,29 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     return None
 
 
+_COUNT_MODS: tuple[tuple[str, ...], ...] = (
+    ('at', 'least'), ('at', 'most'), ('exactly',), ('only',), ('just',), ('no', 'more', 'than'),
+    ('not', 'more', 'than'), ('no', 'less', 'than'), ('up', 'to'), ('precisely',))
+
+
 def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
+    """'visit X twice. no wait, exactly once': the count said before is replaced (with its modifier)."""
     counts = ('once', 'twice', 'thrice')
+    words = [t for t in seg if t not in PUNCT]
     new = next((k for k, w in enumerate(seg) if w in counts or (w in NUMBER_WORDS and k + 1 < len(seg)
                                                                 and seg[k + 1] == 'times')), -1)
-    if new < 0 or not ({'enough', 'instead', 'is', 'make', 'only', 'just'} & set(seg)):
+    bare = bool(words) and (words[-1] in counts or words[-1] == 'times') and len(words) <= 4
+    said = {'enough', 'instead', 'is', 'make', 'only', 'just', 'exactly', 'least', 'most'} & set(seg)
+    if new < 0 or not (said or bare):
         return None
-    new_words = seg[new:new + (1 if seg[new] in counts else 2)]
+    mod = next((m for m in _COUNT_MODS if tuple(seg[new - len(m):new]) == m), ())
+    new_words = list(mod) + seg[new:new + (1 if seg[new] in counts else 2)]
     for p in range(len(prev) - 1, -1, -1):
-        if prev[p] in counts:
-            return prev[:p] + new_words + prev[p + 1:]
-        if prev[p] == 'times' and p > 0 and prev[p - 1] in NUMBER_WORDS:
-            return prev[:p - 1] + new_words + prev[p + 1:]
+        end = p + 1 if prev[p] in counts else (p + 1 if prev[p] == 'times' and p > 0 and
+                                               prev[p - 1] in NUMBER_WORDS else -1)
+        if end < 0:
+            continue
+        start = p if prev[p] in counts else p - 1
+        old_mod = next((m for m in _COUNT_MODS if tuple(prev[start - len(m):start]) == m), ())
+        return prev[:start - len(old_mod)] + new_words + prev[end:]
     return None

@@ -41,6 +41,8 @@ _RANK = {'double': 0, 'swap': 0, 'sound': 1, 'vowel': 1, 'missing': 2, 'extra': 
 # Nor a stray letter removed ("steeple" -> "steele"), nor a vowel for a vowel ("goggles").
 _MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 99, 'missing': 5, 'extra': 99, 'key': 99}
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
+# Rank below which a word counts as common (a four-letter slip is corrected only to a common word).
+_COMMON = 12000
 # Household, office and outdoor words a robot is sent to that the vocabulary lacks
 # (it was built from encyclopaedia and book text); they are words, not slips.
 DOMAIN_WORDS = frozenset('''
@@ -53,7 +55,7 @@ washcloth bathmat loofah microwave dishwasher dryer humidifier dehumidifier ther
 modem lectern easel corkboard turnstile lanyard daypack duffel keychain coaster placemat spatula whisk
 skillet saucepan trivet stovetop rangehood sconce lampshade cistern mulch trowel secateurs laptop
 fishtank terrarium hamster gerbil parakeet budgie cockatiel poodle labrador tupperware thermos minibar
-kiosk gazebo hangar tarmac workbench toolbox wheelbarrow sprinkler gutter chimney mantel copier
+kiosk deli gazebo hangar tarmac workbench toolbox wheelbarrow sprinkler gutter chimney mantel copier
 shredder printer scanner fridge freezer cooktop pantry closet dresser vanity hamper goggles mitt grater
 '''.split())
 
@@ -147,7 +149,7 @@ class Speller:
         out: Optional[str] = None
         if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word) and self.core:
             core = sorted(c for c, kind in _slips(word)
-                          if c in self.core and kind in ('swap', 'double', 'missing'))
+                          if c in self.core and kind in ('swap', 'double', 'missing', 'sound'))
             if core:
                 self._cache[word] = core[0]
                 return core[0]
@@ -161,6 +163,22 @@ class Speller:
                 if best is None or key < best:
                     best = key
             out = best[2] if best is not None else None
+            if out is None and len(word) == 4:
+                # a four-letter word with one letter dropped ("towl"): only when one common word fits
+                fits = {c for c, kind in _slips(word) if kind == 'missing' and
+                        self.words.get(c, _COMMON) < _COMMON and not _inflection(word, c)}
+                # a dropped vowel ("towl"), not a consonant ("deli" is no "delhi")
+                fits = {c for c in fits if any(c == word[:k] + v + word[k:] for k in range(1, 5)
+                                               for v in 'aeiou')}
+                out = fits.pop() if len(fits) == 1 else None
+            if out is None and len(word) >= 8:
+                # two words run together, the second misspelt ("cornfeild": corn + field)
+                for k in range(4, len(word) - 4):
+                    if word[:k] in self.words:
+                        tail = self.correct(word[k:])
+                        if tail is not None:
+                            out = word[:k] + tail
+                            break
         self._cache[word] = out
         return out
 

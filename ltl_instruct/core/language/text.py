@@ -26,7 +26,11 @@ TYPOS: dict[str, str] = {
     'ofthe': 'of the', 'tothe': 'to the', 'togo': 'to go', 'dnt': 'do not', 'bak': 'back',
     'visti': 'visit', 'vsit': 'visit', 'vist1': 'visit', 'gp': 'go', 'og': 'go',
     'util': 'until', 'onest': 'first', 'threerd': 'third', 'landark': 'landmark', 'occations': 'occasions',
-    'occation': 'occasion', 'endlessy': 'endlessly',
+    'occation': 'occasion', 'endlessy': 'endlessly', 'whichevers': 'whichever is', 'rtb': 'return to base',
+    'kitchin': 'kitchen', 'livingroom': 'living room', 'diningroom': 'dining room', 'frontdoor': 'front door',
+    'backdoor': 'back door', 'laundryroom': 'laundry room', 'guestroom': 'guest room',
+    'frontyard': 'front yard',
+    'bathroon': 'bathroom', 'bedrom': 'bedroom', 'hallwya': 'hallway', 'garagae': 'garage',
 }
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
@@ -60,6 +64,10 @@ _ACRONYM_RE = re.compile(
     r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
 
 
+# A capital letter after a word names something ("field A", "Gate B"): not the article "a".
+_LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
+
+
 def tokenize(text: str) -> list[str]:
     """Normalise an instruction and split it into word and punctuation tokens.
 
@@ -75,11 +83,19 @@ def tokenize(text: str) -> list[str]:
         between spaces becomes a comma, and typos in :data:`TYPOS` are fixed.
     """
     acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
+    acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
     if acronyms:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))
     s = text.lower().replace('\u2019', "'").replace('\u2018', "'").replace('`', "'")
+    # a list written as lines or bullets: each line, "1)", "(2)", "3." or bullet opens a clause
+    s = re.sub(r'(^|[\s:;,])\(?\d{1,2}\)(?=\s)', r'\1 , ', s)
+    s = re.sub(r'(^|[:;,.!?\n]\s*)\d{1,2}\.(?=\s)', r'\1 , ', s)
+    s = re.sub(r'(^|\n)\s*[-*\u2022\u25cf\u25aa]+\s', r'\1 , ', s)
+    s = re.sub(r'(?<![.;:!?,\s])[ \t]*\n', ' . ', s)
+    s = re.sub(r'[\u2022\u25cf\u25aa]', ' , ', s)
     s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
+    s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)

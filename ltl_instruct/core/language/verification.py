@@ -10,7 +10,7 @@ They answer yes, or correct it in words, or type a formula directly;
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Optional
+from typing import Any, Optional, Sequence
 
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language.base import Translation
@@ -33,6 +33,8 @@ class Verification:
     subgoals: ordered English subgoals, then whole-task constraints and notes.
     satisfiable: whether any plan can satisfy the task.
     reading: the translator's notes on how it read the words ("left out 'for me'").
+    warnings: the parts of the instruction it could not read, and what it did with them
+        (guessed at, or left out); shown first, since the plan may miss what they asked for.
     """
 
     formula: str
@@ -41,6 +43,7 @@ class Verification:
     subgoals: tuple[str, ...]
     satisfiable: bool
     reading: tuple[str, ...] = ()
+    warnings: tuple[str, ...] = ()
 
     def text(self) -> str:
         """Lines to show the person."""
@@ -50,7 +53,7 @@ class Verification:
         if self.avoid:
             lines.append('Avoid: ' + '; '.join(self.avoid))
         lines.extend(self.subgoals)
-        lines.extend(f'Note: {n}' for n in self.reading)
+        lines.extend(reading_lines(self.reading, self.warnings))
         lines.append('Is this right? Answer yes, correct it in words, or type a formula (prefix "formula:").')
         return '\n'.join(lines)
 
@@ -58,7 +61,18 @@ class Verification:
         """JSON-ready dict."""
         return {'formula': self.formula, 'referents': list(self.referents), 'avoid': list(self.avoid),
                 'subgoals': list(self.subgoals), 'satisfiable': self.satisfiable,
-                'reading': list(self.reading)}
+                'reading': list(self.reading), 'warnings': list(self.warnings)}
+
+
+def reading_lines(notes: Sequence[str], warnings: Sequence[str] = ()) -> list[str]:
+    """Turn the translator's notes into lines for the person: what it could not read first (``Warning:``)."""
+    return [f'Warning: {w}' for w in warnings] + [f'Note: {n}' for n in notes if n not in warnings]
+
+
+def warnings_of(translation: Translation) -> tuple[str, ...]:
+    """Return the notes of a translation on parts it could not read (``extra['unread']``), if any."""
+    unread = translation.extra.get('unread', ()) if isinstance(translation.extra, dict) else ()
+    return tuple(str(u) for u in unread)
 
 
 def verification_for(translation: Translation | Formula) -> Verification:
@@ -66,10 +80,11 @@ def verification_for(translation: Translation | Formula) -> Verification:
     from ltl_instruct.core.automaton.english import describe_task
     formula = translation.formula if isinstance(translation, Translation) else translation
     reading = translation.notes if isinstance(translation, Translation) else ()
+    warnings = warnings_of(translation) if isinstance(translation, Translation) else ()
     desc = describe_task(formula)
     return Verification(desc.formula, desc.referents, desc.avoid,
                         tuple(desc.subgoals) + tuple(desc.throughout) + tuple(desc.notes), desc.satisfiable,
-                        tuple(reading))
+                        tuple(reading), warnings)
 
 
 @dataclass(frozen=True)

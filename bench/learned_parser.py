@@ -53,7 +53,8 @@ def main(argv: list[str]) -> int:
         if args.retrain or not model_path.exists():
             config = TrainingConfig() if args.epochs is None else TrainingConfig(epochs=args.epochs)
             started = time.monotonic()
-            bundle = train_city(args.data, city, config, threads=args.threads)
+            bundle = train_city(args.data, city, config, threads=args.threads,
+                                progress=lambda m, c=city: print(f'  {c}: {m}', file=sys.stderr, flush=True))
             bundle.info['wall_seconds'] = time.monotonic() - started
             bundle.save(str(model_path))
         bundle = ParserBundle.load(str(model_path))

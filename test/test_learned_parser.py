@@ -217,3 +217,16 @@ def test_cli_train_eval(tmp_path, capsys):
     assert cli_main(['parser', 'train', '--city', 'testville', '--data', str(tmp_path), '--out', model,
                      '--epochs', '0']) == 2
     assert 'MODEL_ERROR' in capsys.readouterr().err
+
+
+def test_seed_probing_stops_at_its_share_of_the_time_budget(tmp_path, monkeypatch):
+    """Out of probing time after the first round: the best seed so far is kept and trained on."""
+    from ltl_instruct.core.language.learned import city as city_module
+    write_dataset(str(tmp_path), n=40)
+    monkeypatch.setattr(city_module, 'PROBE_SHARE', 0.0)   # the probe deadline has passed at once
+    bundle = city_module.train_city(str(tmp_path), 'testville', TrainingConfig(epochs=2, beam=5),
+                                    ParserConfig(beam=5), threads=1, restarts=4, probe_epochs=1)
+    info = bundle.info
+    assert len(info['probe_rounds']) == 1 and len(info['probe_rounds'][0]) == 4   # no second round
+    assert info['chosen_seed'] == 0          # no seed trained in time: all tie at 0, the first kept
+    assert info['training']['epochs_run'] == 2   # the chosen one still gets the rest of the budget

@@ -18,6 +18,10 @@ from ltl_instruct.core.language.learned.training import (
 )
 
 
+# Share of the training time budget that seed probing may use.
+PROBE_SHARE = 0.5
+
+
 def train_city(data_dir: str, city: str, config: TrainingConfig = TrainingConfig(),
                parser_config: ParserConfig = ParserConfig(), threads: int = 2,
                progress: Optional[Callable[[str], None]] = None, restarts: int = 4,
@@ -30,7 +34,8 @@ def train_city(data_dir: str, city: str, config: TrainingConfig = TrainingConfig
     chosen by successive halving: ``restarts`` parsers (seeds ``seed, seed + 1, ...``)
     are trained ``probe_epochs`` epochs each, the better half by mean top-beam training
     reward in its last epoch is trained ``probe_epochs`` more, and so on until one is
-    left, which is trained on to ``config.epochs`` (all within ``config.time_limit_s``).
+    left, which is trained on to ``config.epochs`` (all within ``config.time_limit_s``; the
+    halving rounds stop at ``PROBE_SHARE`` of it and keep the best seed so far).
     No test data is used to choose. The seeds share one reward cache.
     """
     if restarts < 1:
@@ -51,23 +56,27 @@ def train_city(data_dir: str, city: str, config: TrainingConfig = TrainingConfig
         alive.append(ParserTrainer(new_parser(words, out_vocab, parser_config, run_config.seed),
                                    words, train, lmap, run_config, rewards))
 
-    def train_to(trainer: ParserTrainer, epochs: int) -> None:
-        while trainer.log.epochs_run < min(epochs, config.epochs) \
-                and time.monotonic() - started <= config.time_limit_s:
+    def train_to(trainer: ParserTrainer, epochs: int, deadline: float) -> None:
+        while trainer.log.epochs_run < min(epochs, config.epochs) and time.monotonic() - started <= deadline:
             trainer.run_epoch()
             if progress:
                 progress(epoch_message(trainer, started))
 
+    # Probing may take at most half the time budget: on a loaded machine epochs slow down,
+    # and a choice among half-trained seeds is worth less than training the chosen one on.
+    probe_deadline = PROBE_SHARE * config.time_limit_s
     rounds: list[dict[int, float]] = []
     target = 0
     while len(alive) > 1:
         target += probe_epochs
         for trainer in alive:
-            train_to(trainer, target)
+            train_to(trainer, target, probe_deadline)
         rounds.append({t.config.seed: t.last_reward for t in alive})
-        alive = sorted(alive, key=lambda t: (-t.last_reward, t.config.seed))[:(len(alive) + 1) // 2]
+        ranked = sorted(alive, key=lambda t: (-t.last_reward, t.config.seed))
+        out_of_time = time.monotonic() - started > probe_deadline
+        alive = ranked[:1] if out_of_time else ranked[:(len(alive) + 1) // 2]
     chosen = alive[0]
-    train_to(chosen, config.epochs)
+    train_to(chosen, config.epochs, config.time_limit_s)
     baseline = GoalBaseline(words.size, lmap.num_landmarks)
     train_baseline(baseline, words, train, config.baseline_epochs, config.seed)
     info = {'city': city, 'train_instructions': len(train), 'test_instructions': len(test),

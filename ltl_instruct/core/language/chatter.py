@@ -49,7 +49,8 @@ REQUEST_WORDS = frozenset({'need', 'want', 'would', 'like', 'should', 'must', 'w
 FINITE_VERBS = frozenset('''
 is are was were keeps keep has had seems seem looks look sits sit stands lies lie got gets needs
 belongs goes went broke fell spilled leaks leaked smells tends happens arrive arrives arrived came comes
-dropped jammed stopped started moved died spilt broken overflowed overflows ran runs
+dropped jammed stopped started moved died spilt broken overflowed overflows ran runs get sticks jams
+bites barks sleeps wobbles squeaks creaks
 '''.split())
 
 # After "it is": words that make the clause a permission or a demand.
@@ -409,3 +410,28 @@ def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) ->
         out.append(tokens[i])
         i += 1
     return out
+
+
+# Remarks that leave a choice or the pace to the robot ("your call", "take your time",
+# "both are fine by me", "whichever is less busy"): a clause of their own that asks for nothing.
+_REMARK_RE = re.compile(
+    r'^(?:(?:and|but|so|honestly|really|i mean) )*(?:'
+    r'(?:it is )?(?:your (?:choice|call|pick|decision)|up to you|dealer s choice)'
+    r'|(?:it )?(?:does not|do not|will not|would not) matter(?: (?:which|which one|to me|either way))?'
+    r'|(?:i )?(?:honestly |really )?(?:do not|will not) (?:mind|care)(?: which| either way)?'
+    r'(?: (?:one|option|way|route))?(?: you (?:go for|pick|choose|take|use|do))?'
+    r'|take (?:your|as much) time(?: (?:as you need|about it|with it))?'
+    r'|(?:both|either|either one|either of them|both of them|any of them|any) (?:is|are|would be|will be) '
+    r'(?:fine|ok|okay|good|alright|great)(?: (?:by|with|for) me)?'
+    r'|(?:(?:i |we )?(?:am|are) )?(?:fine|happy|ok|okay) with (?:either|both|any|whichever)(?: \w+)?'
+    r'(?: (?:is|are|s) (?:less |more |the )?\w+(?: to \w+)?)?'
+    r'|whichever(?: \w+)? (?:is|are|s|one is) (?:less |more |the )?\w+(?: (?:to \w+|for you|to you))?'
+    r'(?: (?:right now|now|today|at the moment))?'
+    r'|(?:that|the) order (?:matters|is important)(?: to (?:me|us))?'
+    r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
+    r')$')
+
+
+def is_remark(tokens: Sequence[str]) -> bool:
+    """Whether words are a remark that leaves a choice or the pace to the robot ("your call")."""
+    return bool(tokens) and _REMARK_RE.match(' '.join(tokens)) is not None

@@ -697,6 +697,9 @@ class _Reader:
                         ['the', 'order'], ['any', 'order'], ['in', 'any'], ['in', 'whatever'],
                         ['order', 'does']):
                     boundary, skip = 'and', j - i   # "..., the order is up to you"
+                elif t in (',', 'and') and j < n and chatter.is_remark(tokens[j:next(
+                        (k for k in range(j, n) if tokens[k] in PUNCT), n)]):
+                    boundary, skip = 'and', j - i   # "..., your call", "..., take your time"
                 elif t in (',', 'so') and self._starts_statement(tokens, j):
                     boundary, skip = 'and', j - i   # "be careful, the floor is wet"
                 elif i < 4 and t in (',', ':') and all(is_name_word(tokens, m, m > 0) for m in range(i)) and \
@@ -837,6 +840,9 @@ class _Reader:
                     tokens[1:]) and len(tokens) > 2:
             self.notes.append(f'left out "{" ".join(clause.tokens)}" (says why, asks for nothing)')
             return scope
+        if chatter.is_remark(tokens) and tokens[:1] != ['either']:
+            self.notes.append(f'left out "{s}" (asks for nothing)')
+            return scope
         if s.endswith(fine) or s in IGNORED_CLAUSES or \
                 s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                               'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
@@ -884,6 +890,7 @@ class _Reader:
                     self.last_object = nps[-1]
                     self.mentions.extend(np.descriptor for np in nps)
                     self.scene = [np.descriptor for np in nps]
+                    self.notes.append(f'took "{s}" as a description of the scene, not a task')
                     return scope
         if self._is_permission(tokens):
             self._read_permission(tokens)
@@ -999,9 +1006,16 @@ class _Reader:
         if j < len(tokens) and tokens[j] in ('it', 'they', 'that', 'this', 'he', 'she') and \
                 not self.phrases.landmarks:
             end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
-            return tokens[j + 1:j + 2] in (['is'], ['are'], ['was'], ['were'], ['gets'], ['has'],
-                                           ['looks']) and \
+            return (tokens[j + 1:j + 2] in (['is'], ['are'], ['was'], ['were'], ['has'], ['had']) or (
+                j + 1 < len(tokens) and tokens[j + 1] in chatter.FINITE_VERBS)) and \
                 chatter.is_statement(tokens[j:end]) and end - j <= 6
+        if tokens[j:j + 1] == ['there'] and tokens[j + 1:j + 2] in (['is'], ['are']) and j + 2 < len(tokens) and \
+                tokens[j + 2] in ('a', 'an', 'some', 'someone', 'somebody', 'people', 'nobody', 'lots', 'kids',
+                                  'guests', 'visitors', 'water', 'glass', 'oil', 'paint', 'ice') and \
+                not self.phrases.landmarks:
+            # "..., there is someone asleep in there": says why, asks for nothing
+            end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
+            return not chatter.carries_constraint(tokens[j:end])
         if j >= len(tokens) or tokens[j] not in DETS or self.phrases.landmarks:
             return False
         np = self.phrases.parse(tokens, j)

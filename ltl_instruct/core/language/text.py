@@ -31,7 +31,12 @@ TYPOS: dict[str, str] = {
     'backdoor': 'back door', 'laundryroom': 'laundry room', 'guestroom': 'guest room',
     'frontyard': 'front yard',
     'bathroon': 'bathroom', 'bedrom': 'bedroom', 'hallwya': 'hallway', 'garagae': 'garage',
+    'ovr': 'over', 'tims': 'times', 'tmes': 'times', 'nexto': 'next to', 'nextto': 'next to',
+    'vaccum': 'vacuum', 'vacum': 'vacuum', 'vaccuum': 'vacuum', 'trolly': 'trolley', 'flashlite': 'flashlight',
+    'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
+# "away form the stove": after these words "form" is a slip for "from".
+_FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
@@ -99,6 +104,11 @@ def tokenize(text: str) -> list[str]:
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)
+    if 'ur ' in s:   # "on ur way": "ur" before a noun is "your", elsewhere "you are"
+        s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best)\b)',
+                   'your ', s)
+    if ' form ' in s:
+        s = _FORM_RE.sub(r'\1 from', s)
     out: list[str] = []
     for tok in _TOKEN_RE.findall(s):
         if acronyms and tok.startswith('zq'):

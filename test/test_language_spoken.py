@@ -45,3 +45,111 @@ REMARKS = [
 def test_remarks_and_reasons_are_left_out(instruction: str, gold: str) -> None:
     notes = _check(instruction, gold)
     assert any('left out' in n or 'description of the scene' in n for n in notes), notes
+
+
+SPELLING = [
+    ('head over to the vaccum cupboard', 'F near[vacuum_cupboard]'),
+    ('pls put the flashlite on the shelf',
+     'F (near[flashlight] & F (pick[flashlight] & F (near[shelf] & F release[flashlight, shelf])))'),
+    ('check the mailbox two tims', 'F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))'),
+    ('hover ovr the car park', 'F near[car_park]'),
+    ('go to the exit and keep away form the puddle', 'F near[exit] & G !near[puddle]'),
+    ('go to the bench nexto the fountain', 'F near[bench::isnextto(fountain)]'),
+    ('on ur way to the lobby, avoid the tea trolly', '!near[tea_trolley] U near[lobby]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', SPELLING, ids=[c[0][:30] for c in SPELLING])
+def test_chat_spellings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+COUNTS = [
+    ('Swing by the mailbox a couple of times.', 'F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))'),
+    ('Check the gate twice, two separate visits to the gate.', 'F (near[gate] & F (!near[gate] & F near[gate]))'),
+    ('Check the gate three times, three distinct trips.',
+     'F (near[gate] & F (!near[gate] & F (near[gate] & F (!near[gate] & F near[gate]))))'),
+    ('Only once, mind you, drive to the barn.',
+     '!near[barn] U (near[barn] & (near[barn] W G !near[barn]))'),
+    ('Go up to the loft just the once.', '!near[loft] U (near[loft] & (near[loft] W G !near[loft]))'),
+    ('Visit the attic exactly twice, no more and no less, then the porch.',
+     '(!near[attic] U (near[attic] & (near[attic] U (!near[attic] & (!near[attic] U (near[attic] & '
+     '(near[attic] W G !near[attic]))))))) & F (near[attic] & F (!near[attic] & F (near[attic] & F near[porch])))'),
+    ('Check the gate at least twice over the course of the evening.',
+     'F (near[gate] & F (!near[gate] & F near[gate]))'),
+    ('Bring the box to the porch, and never go to the porch more than once while you are at it.',
+     'F (near[box] & F (pick[box] & F (near[porch] & F release[box, porch]))) & '
+     '(!near[porch] W (near[porch] & (near[porch] W G !near[porch])))'),
+    ('Patrol past the gate at least twice, and never go near the vase at any point during the patrol.',
+     'F (near[gate] & F (!near[gate] & F near[gate])) & G !near[vase]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', COUNTS, ids=[c[0][:30] for c in COUNTS])
+def test_count_idioms(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+EVENTS = [
+    ('Lug the sacks into the shed, and the moment they are off your hands, keep out of the barn.',
+     'F (near[sacks] & F (pick[sacks] & F (near[shed] & F (release[sacks, shed] & G !near[barn]))))'),
+    ('Carry the box to the shed, and as soon as you have let go of it, keep out of the garden.',
+     'F (near[box] & F (pick[box] & F (near[shed] & F (release[box, shed] & G !near[garden]))))'),
+    ('Bring the mug to the desk. The minute you have got hold of it, avoid the stairs for the rest of the task.',
+     'F (near[mug] & F (pick[mug] & G !near[stairs] & F (near[desk] & F release[mug, desk])))'),
+    ('Fly to the tower for an inspection, and once you have reached it, avoid the lake for the rest of the flight.',
+     'F (near[tower] & G !near[lake])'),
+    ('Go to the den and give the rug a wide berth.', 'F near[den] & G !near[rug]'),
+    ('Go to the den and do not cut across the lawn.', '!near[lawn] U near[den]'),
+    ('Pick up the cup and fly it over to the sink, then land on the pad.',
+     'F (near[cup] & F (pick[cup] & F (near[sink] & F (release[cup, sink] & F near[pad]))))'),
+    ('Haul the keg to the hatch.', 'F (near[keg] & F (pick[keg] & F (near[hatch] & F release[keg, hatch])))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', EVENTS, ids=[c[0][:30] for c in EVENTS])
+def test_events_said_at_length(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+PLACED = [
+    ('Go to the crate stacked on the red pallet.', 'F near[crate::isabove(red_pallet)]'),
+    ('Head to the stool that is sitting right underneath the sink.', 'F near[stool::isbelow(sink)]'),
+    ('Go to the lamp mounted above the sofa.', 'F near[lamp::isabove(sofa)]'),
+    ('Drive to the van parked behind the gate.', 'F near[van::isbehind(gate)]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', PLACED, ids=[c[0][:30] for c in PLACED])
+def test_where_a_thing_was_put_is_a_relation(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+RETRACTIONS = [
+    ('Keep away from the gas stove and the bins, actually the bins are fine. Then go to the sink.',
+     'F near[sink] & G !near[gas_stove]'),
+    ('Avoid the porch while you do this. On second thought, the porch is fine now that it is dry. '
+     'Just go to the shed.', 'F near[shed]'),
+    ('Take the cups to the sink, and avoid the table. Correction: the table is fine, avoid the oven instead.',
+     'F (near[cups] & F (pick[cups] & F (near[sink] & F release[cups, sink]))) & G !near[oven]'),
+    ('Avoid the hall and the den, then go to the porch. Actually the den is fine.',
+     'F near[porch] & G !near[hall]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', RETRACTIONS, ids=[c[0][:30] for c in RETRACTIONS])
+def test_a_thing_said_to_be_fine_after_all_is_no_longer_avoided(instruction: str, gold: str) -> None:
+    notes = _check(instruction, gold)
+    assert 'the avoidance was retracted' in notes
+
+
+def test_a_thing_said_again_by_its_last_word_is_the_thing_named_before() -> None:
+    notes = _check('There is a kitchen island here. Avoid the island and go to the sink.',
+                   'F near[sink] & G !near[kitchen_island]')
+    assert any('took "island" as the kitchen island' in n for n in notes)
+    short = T.translate('Carry the mug to the oak bench, then the plate to the bench.').formula
+    full = T.translate('Carry the mug to the oak bench, then the plate to the oak bench.').formula
+    assert equivalent(short, full), f'{short} != {full}'
+    # a name with a relation, or two longer names that end in it, are left as they are
+    _check('Go to the red chair and the blue chair, then the chair.',
+           'F (near[red_chair] & F near[chair]) & F (near[blue_chair] & F near[chair])')

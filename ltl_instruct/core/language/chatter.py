@@ -112,8 +112,18 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('for', 'a', 'minute'), ('for', 'a', 'moment'), ('if', 'you', 'would', 'not', 'mind'),
     ('thanks', 'in', 'advance'),
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
-    ('in', 'a', 'sec'), ('in', 'a', 'second'),
-), key=lambda t: -len(t)))
+    ('in', 'a', 'sec'), ('in', 'a', 'second'), ('while', 'you', 'are', 'at', 'it'),
+    ('while', 'you', 'are', 'there'),
+) + tuple(('over', 'the', 'course', 'of', 'the') + span for span in (
+    ('day',), ('night',), ('evening',), ('morning',), ('afternoon',), ('week',), ('shift',), ('night', 'shift'),
+    ('day', 'shift'), ('late', 'shift'), ('early', 'shift'))) + tuple(
+    ('during', 'the') + span for span in (('night', 'shift'), ('day', 'shift'), ('night',), ('day',), ('shift',))
+) + tuple(
+    # what the visit is for ("fly to the pylon for an inspection"): the visit itself is the task
+    ('for',) + art + quick + (what,) for art in (('a',), ('an',)) for quick in ((), ('quick',), ('closer',))
+    for what in ('inspection', 'check', 'look', 'photo', 'picture', 'survey', 'scan', 'reading', 'visual',
+                 'checkup', 'peek', 'glance', 'sweep')),
+    key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
 START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
@@ -364,7 +374,7 @@ TIMING: frozenset[tuple[str, ...]] = frozenset({('right', 'away'), ('at', 'once'
 # Discourse fillers between commas ("go to the hall, like, now").
 ASIDES: tuple[tuple[str, ...], ...] = (
     ('like',), ('you', 'know'), ('i', 'guess'), ('basically',), ('i', 'think'), ('honestly',), ('kinda',),
-    ('sort', 'of'), ('i', 'suppose'))   # not "uh", "um": they mark self-corrections
+    ('sort', 'of'), ('i', 'suppose'), ('mind',), ('mind', 'you'))   # not "uh", "um": they mark self-corrections
 
 
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:

@@ -60,6 +60,12 @@ from ltl_instruct.core.spec import (
 
 MAX_INSTRUCTION_CHARS = 2000
 
+
+def _rename(f: Formula, mapping: dict[Descriptor, Descriptor]) -> Formula:
+    """``f`` with every skill argument in ``mapping`` replaced."""
+    from ltl_instruct.core.language.evaluation import rename_descriptors
+    return rename_descriptors(f, mapping)
+
 # Words that put an avoidance over the whole run, whatever scope the sentence opened with.
 GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('throughout',), ('the', 'whole', 'time'), ('at', 'all', 'times'), ('the', 'entire', 'time'), ('ever',),
@@ -76,7 +82,8 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
           for whole in ('whole', 'entire')
           for what in ('time', 'way', 'trip', 'flight', 'route', 'mission', 'run', 'task', 'journey', 'drive',
                        'walk', 'tour', 'job', 'day', 'night')) + tuple(
-    ('during', 'the', what) for what in ('flight', 'trip', 'mission', 'task', 'run', 'route', 'tour')),
+    ('during', 'the', what) for what in ('flight', 'trip', 'mission', 'task', 'run', 'route', 'tour', 'patrol',
+                                         'round', 'rounds', 'drive', 'walk', 'journey', 'delivery')),
     key=lambda t: -len(t)))
 _GLOBAL_FIRST = frozenset(m[0] for m in GLOBAL_MARKERS)
 
@@ -352,7 +359,28 @@ class _Reader:
                 step.avoid_at.extend(self.pending_avoid_at)
             else:
                 self.task.constraints.extend(_never(self.pending_avoid_at))
-        return self.task.formula()
+        formula = self.task.formula()
+        return formula if self.phrases.landmarks else self._shorthands(formula)
+
+    def _shorthands(self, formula: Formula) -> Formula:
+        """Name a thing said again by its last word as it was first named ("the kitchen island ... the island").
+
+        Only a bare one-word name is renamed, and only where exactly one longer name of the
+        instruction ends in it; each renaming is noted.
+        """
+        refs = list(referents_of(formula))
+        if len(refs) < 2 and not self.mentions:
+            return formula
+        longer = {d.name for d in refs + self.mentions if not d.relations and '_' in d.name}
+        mapping: dict[Descriptor, Descriptor] = {}
+        for d in refs:
+            if d.relations or '_' in d.name or d in mapping:
+                continue
+            full = [n for n in longer if n.endswith('_' + d.name)]
+            if len(full) == 1:
+                mapping[d] = Descriptor(full[0])
+                self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
+        return _rename(formula, mapping) if mapping else formula
 
     def _visits_once(self) -> None:
         """Constraints of the goals visited once ("visit a exactly once", "no revisiting"; see once_scope)."""
@@ -1535,6 +1563,14 @@ class _Reader:
         elif scope is None and 'through' in tokens[:k] and len(self.task.chain) == 1 and (
                 {'without', 'avoid', 'avoiding', 'not', 'never'} & set(tokens[:k])):
             scope = _Scope('onway')   # "go to X, avoid going through Y": on the way to X
+        onward = self._from_now_on(rest)
+        if onward is not None:
+            # "..., and once you have reached it, avoid Y for the rest of the flight": from that event on
+            rest = rest[:onward[0]] + rest[onward[1]:]
+            if scope is None and self.task.chain and self.task.chain[-1].kind in ('visit', 'deliver') and \
+                    self.avoid_scope == 'global':
+                last = self.task.chain[-1]
+                scope = _Scope('after', NounPhrase((last.dests or last.targets)[0], 0, 0, ''))
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
                     'anymore', 'costs', 'instant', 'moment')
@@ -1556,6 +1592,27 @@ class _Reader:
             self._read_tail(rest)
             return
         self._apply_avoid(targets, scope)
+
+    _ONWARD = ('flight', 'task', 'run', 'trip', 'mission', 'job', 'route', 'way', 'day', 'night', 'shift',
+               'tour', 'patrol', 'journey', 'time', 'drive', 'walk')
+
+    def _from_now_on(self, rest: list[str]) -> Optional[tuple[int, int]]:
+        """Where "for the rest of the flight", "from then on" is in ``rest`` (start, end), if anywhere."""
+        for i in range(len(rest)):
+            if rest[i] == 'for' and rest[i + 1:i + 3] == ['the', 'rest'] or rest[i:i + 2] == ['for', 'rest']:
+                j = i + (3 if rest[i + 1] == 'the' else 2)
+                if rest[j:j + 1] == ['of']:
+                    j += 1 + (rest[j + 1:j + 2] == ['the'])
+                    if rest[j:j + 1] and rest[j] in self._ONWARD:
+                        return i, j + 1
+                elif j == len(rest) or rest[j] in PUNCT:
+                    return i, j
+            if rest[i] == 'from' and rest[i + 1:i + 2] in (['then'], ['now'], ['there'], ['here']) and \
+                    rest[i + 2:i + 3] in (['on'], ['onwards'], ['onward']):
+                return i, i + 3
+            if rest[i:i + 4] in (['from', 'that', 'point', 'on'], ['from', 'that', 'moment', 'on']):
+                return i, i + 4
+        return None
 
     def _trailing_scope(self, rest: list[str]) -> tuple[Optional[_Scope], list[str]]:
         if not rest:
@@ -2164,7 +2221,11 @@ class _Reader:
                 self.task.constraints.append(exactly(x, n))
                 # "bring X to the pantry and only enter it once": a bound, not a step after the others
                 if self.task.find_step(d) is None and (self.connector != 'and' or not self.task.chain):
-                    self.task.chain.append(Step('visit', [d]))
+                    # "visit a exactly twice, then b": b after the last of the visits
+                    for k in range(n):
+                        if k:
+                            self.task.chain.append(Step('leave', [d]))
+                        self.task.chain.append(Step('visit', [d]))
             else:
                 self.task.constraints.append(at_most(x, n))
         return True, rest[end:]

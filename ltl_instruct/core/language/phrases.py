@@ -73,6 +73,14 @@ RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
     ('hanging',), ('resting',), ('leaning',), ('parked',), ('stored',), ('kept',), ('found',),
     ('that', 'hangs'), ('that', 'sits'), ('that', 'stands'), ('that', 'lies'),
 )
+# Participles of where a thing was put ("the crate stacked on the pallet", "the van parked by the gate").
+_PLACED = ('stacked', 'piled', 'mounted', 'propped', 'perched', 'sat', 'tucked', 'stashed', 'hung',
+           'sitting', 'lying', 'standing', 'resting', 'leaning', 'hanging', 'parked', 'stored', 'kept', 'placed',
+           'located', 'positioned', 'balanced', 'wedged', 'installed', 'waiting', 'stuck', 'fixed')
+RELATIVE_LEADS = tuple(sorted(set(RELATIVE_LEADS) | {
+    lead + (w,) + right for lead in ((), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
+                                     ('that', 'was'), ('that', 'were'))
+    for w in _PLACED for right in ((), ('right',), ('just',), ('directly',))}, key=lambda t: -len(t)))
 
 # Words that are never part of a name.
 STOPWORDS = frozenset('''

@@ -515,19 +515,66 @@ def _retract_avoidance(prev: list[str], seg: list[str], notes: list[str]) -> Opt
     """'..., you don't need to avoid it (after all)': the avoidance of it is dropped from ``prev``."""
     at = next((k for k in range(len(seg)) for r in _RETRACT if tuple(seg[k:k + len(r)]) == r), -1)
     if at < 0:
-        return None
+        return _fine_after_all(prev, seg, notes)
     r = next(r for r in _RETRACT if tuple(seg[at:at + len(r)]) == r)
     named = PhraseParser().parse(seg, at + len(r))
     head = named.head if named is not None and not named.pronoun else ''
+    return _drop_avoidance(prev, seg, at, at + len(r), head, notes)
+
+
+def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """'keep away from the stove and the bin, actually the bin is fine': the bin no longer avoided."""
+    parser = PhraseParser()
+    for k in range(len(seg)):
+        if seg[k] not in DETERMINERS or k > 0 and seg[k - 1] not in PUNCT and seg[k - 1] not in (
+                'actually', 'but', 'and', 'so', 'well', 'oh'):
+            continue
+        named = parser.parse(seg, k)
+        if named is None or named.pronoun or seg[named.end:named.end + 1] not in (['is'], ['are']):
+            continue
+        e = named.end + 1
+        if seg[e:e + 1] in (['actually'], ['totally'], ['perfectly'], ['all'], ['completely'], ['now']):
+            e += 1
+        if seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe']) and \
+                seg[e:e + 2] not in (['no', 'problem'], ['not', 'a'], ['no', 'longer']):
+            continue
+        if seg[e:e + 2] == ['not', 'a'] and seg[e + 2:e + 3] not in (['problem'], ['hazard'], ['danger']):
+            continue
+        if seg[e:e + 2] == ['no', 'longer'] and seg[e + 2:e + 3] not in (
+                ['a'], ['dangerous'], ['blocked'], ['off'], ['wet'], ['closed']):
+            continue
+        end = e + 1
+        while end < len(seg) and seg[end] != ',':
+            end += 1   # "the stairs are fine now that the gate is up": the reason goes with it
+        return _drop_avoidance(prev, seg, k, end, named.head, notes)
+    return None
+
+
+def _remove_from_list(prev: list[str], p: int, sp: NounPhrase) -> Optional[list[str]]:
+    """``prev`` without the phrase ``sp`` (found from ``prev[p]`` on) where it is one of a list."""
+    a, b = p + sp.start, p + sp.end
+    if a >= 2 and prev[a - 1] in ('and', 'or', ',') and prev[a - 2] not in PUNCT and prev[a - 2] not in (
+            'and', 'or'):
+        return prev[:a - 1] + prev[b:]   # "the island and the stools": the stools taken out
+    if b + 1 < len(prev) and prev[b] in ('and', 'or', ',') and prev[b + 1] in DETERMINERS:
+        return prev[:a] + prev[b + 1:]
+    return None
+
+
+def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: str, notes: list[str]
+                    ) -> Optional[list[str]]:
+    """Remove from ``prev`` the avoidance of the phrase with ``head`` (any, without); keep ``seg``'s orders."""
     avoid_at = [p for p in range(len(prev)) if prev[p] in _AVOID_WORDS]
     for p in reversed(avoid_at):
         spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
             parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
-                     for c in _split_commas(seg[:at]) + _split_commas(seg[at + len(r):])]
-            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS]
-            return _remove_clause(prev, p) + [t for c in kept for t in [','] + c]
+                     for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
+            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS | {
+                'keep', 'stay', 'steer'}]
+            return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
+                t for c in kept for t in [','] + c]
     return None
 
 

@@ -9,7 +9,7 @@ import pytest
 
 from ltl_instruct.core.automaton import equivalent
 from ltl_instruct.core.language.offline import OfflineTranslator
-from ltl_instruct.core.spec import parse_formula
+from ltl_instruct.core.spec import parse_formula, referents_of
 
 T = OfflineTranslator()
 
@@ -153,3 +153,65 @@ def test_a_thing_said_again_by_its_last_word_is_the_thing_named_before() -> None
     # a name with a relation, or two longer names that end in it, are left as they are
     _check('Go to the red chair and the blue chair, then the chair.',
            'F (near[red_chair] & F near[chair]) & F (near[blue_chair] & F near[chair])')
+
+
+TERSE = [
+    ('Garage, please. Avoid: the ramp, the bins.', 'F near[garage] & G !near[ramp] & G !near[bins]'),
+    ('Route: (1) the boot room, (2) the scullery, (3) the larder.',
+     'F (near[boot_room] & F (near[scullery] & F near[larder]))'),
+    ('Either the red door or the blue one, your call.', 'F near[red_door] | F near[blue_door]'),
+    ('Choose one: the den, the hall or the attic.', 'F near[den] | F near[hall] | F near[attic]'),
+    ('The den.', 'F near[den]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', TERSE, ids=[c[0][:30] for c in TERSE])
+def test_terse_requests_with_the_verb_left_out(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_words_that_are_no_places_are_not_guessed_to_be_one() -> None:
+    for text in ('qwzx vvv', 'My keys fell behind the couch.'):
+        try:
+            got = T.translate(text)
+        except Exception:
+            continue
+        assert not any(d.name.startswith(('qwzx', 'keys')) for d in referents_of(got.formula)), got.formula
+
+
+PHRASINGS = [
+    ('Please take the chair back to the office.',
+     'F (near[chair] & F (pick[chair] & F (near[office] & F release[chair, office])))'),
+    ('Make a pass over the field exactly twice, then land on the pad.',
+     '(!near[field] U (near[field] & (near[field] U (!near[field] & (!near[field] U (near[field] & '
+     '(near[field] W G !near[field]))))))) & F (near[field] & F (!near[field] & F (near[field] & F near[pad])))'),
+    ('Drop by either the bakery or the bank, then go home.', 'F ((near[bakery] | near[bank]) & F near[home])'),
+    ('Take the towels down to the chute, and never go near the nursery, there is someone sleeping in there.',
+     'F (near[towels] & F (pick[towels] & F (near[chute] & F release[towels, chute]))) & G !near[nursery]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', PHRASINGS, ids=[c[0][:30] for c in PHRASINGS])
+def test_more_spoken_phrasings(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_one_after_a_compound_noun_stands_for_the_compound() -> None:
+    _check('Either the left loading door or the right one, your call.',
+           'F near[left_loading_door] | F near[right_loading_door]')
+    _check('Go to the blue coffee mug, not the red one.', 'F near[blue_coffee_mug] & G !near[red_coffee_mug]')
+    _check('Go to the big red box or the small one.', 'F near[big_red_box] | F near[small_box]')
+
+
+def test_hyphenated_verb_particle_compounds_are_one_word_of_a_name() -> None:
+    _check('Avoid the fryer, and head to the walk-in larder and then over to the sink.',
+           'F (near[walk_in_larder] & F near[sink]) & G !near[fryer]')
+    _check('Go to the drop-off point.', 'F near[drop_off_point]')
+
+
+def test_a_correction_that_names_what_it_corrects_and_apologises() -> None:
+    notes = _check('Go to the walk-in larder. Wait, no, not the larder, I meant the walk-in wardrobe, sorry, '
+                   'it has been a busy week.', 'F near[walk_in_wardrobe]')
+    assert any('left out' in n for n in notes)
+    _check('Bring the mug to the den. No, not the den, I meant the study, my mistake.',
+           'F (near[mug] & F (pick[mug] & F (near[study] & F release[mug, study])))')

@@ -238,6 +238,8 @@ def strip_parentheticals(text: str, notes: list[str]) -> str:
     """
     def aside(m: re.Match[str]) -> str:
         words = re.findall(r"[a-z0-9']+", m.group(1).lower())
+        if len(words) == 1 and len(words[0]) <= 2 and words[0].isdigit():
+            return m.group(0)   # "(2)": a list number, read by the tokenizer
         if carries_constraint(words) or words[:1] in (['then'], ['and']):
             return f', {m.group(1)} ,'
         notes.append(f'left out "({m.group(1).strip()})" (an aside)')

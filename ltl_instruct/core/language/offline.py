@@ -189,6 +189,7 @@ SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bri
     'be', 'need', 'want', 'robot', 'drone', 'hey', 'can', 'could', 'would', 'you', 'i', 'will', 'ahead',
     'end', 'up', 'please', 'kindly'} | {'make', 'do'}
 
+_REFLEXIVE = frozenset({'yourself', 'itself', 'myself', 'ourselves', 'yourselves', 'me', 'us', 'you'})
 _SPELLER: Optional[Speller] = None
 _WISH_FIRST = frozenset(w[0] for w in chatter.WISHES)
 
@@ -338,6 +339,10 @@ class _Reader:
     # ----------------------------------------------------------------- structure
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
+            if self._places_only(sentence):
+                # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
+                self.notes.append(f'read "{" ".join(sentence)}" as going there')
+                sentence = ['go', 'to'] + sentence
             self._read_part(_Clause('and', sentence), None, sentence=True)
         if self.unread and not self.read_parts:
             # nothing but clauses it could not read: the instruction does not stand on its own
@@ -381,6 +386,39 @@ class _Reader:
                 mapping[d] = Descriptor(full[0])
                 self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
         return _rename(formula, mapping) if mapping else formula
+
+    def _places_only(self, sentence: list[str]) -> bool:
+        """Whether a sentence is nothing but places ("the den, then the attic", "garage, please")."""
+        if self.phrases.landmarks or not sentence:
+            return False
+        i = 1 if sentence[0] == 'either' else 0
+        n = len(sentence)
+        while ',' in sentence[i:n]:   # "..., your call": a remark at the end
+            c = max(k for k in range(i, n) if sentence[k] == ',')
+            if not chatter.is_remark(sentence[c + 1:n]):
+                break
+            n = c
+        seen = 0
+        while i < n:
+            k = i
+            while i < n and sentence[i] in (',', 'and', 'or', 'then', 'please', ':'):
+                i += 1
+            if i >= n:
+                break
+            if seen and i == k:
+                return False   # two phrases with nothing between them ("hit the cart"): no list
+            if sentence[i] in STOPWORDS and sentence[i] not in DETS or sentence[i] in SKILL_VERBS and (
+                    i + 1 >= n or sentence[i + 1] in DETS or sentence[i + 1] in STOPWORDS):
+                return False   # a verb, not a name ("bin store" is a place, "bin the cups" is no list)
+            np = self.phrases.parse(sentence, i)
+            if np is None or np.pronoun not in ('', 'one') or np.end <= i or np.end > n or not all(
+                    _is_word(w) for w in sentence[i:np.end] if w not in PUNCT) or any(
+                    w in chatter.FINITE_VERBS or w in _REFLEXIVE for w in sentence[i:np.end]) or (
+                    np.end - i == 1 and sentence[i] in chatter.INTERJECTIONS):
+                return False   # no words it knows ("qwzx vvv"), or a statement ("my keys fell behind...")
+            seen += 1
+            i = np.end
+        return seen > 0 and 'one' not in sentence[:1]
 
     def _visits_once(self) -> None:
         """Constraints of the goals visited once ("visit a exactly once", "no revisiting"; see once_scope)."""
@@ -918,6 +956,12 @@ class _Reader:
                     self.last_object = nps[-1]
                     self.mentions.extend(np.descriptor for np in nps)
                     self.scene = [np.descriptor for np in nps]
+                    self.notes.append(f'took "{s}" as a description of the scene, not a task')
+                    return scope
+                if lead[0] == 'there' and body and body[0] in ('someone', 'somebody', 'people', 'nobody', 'kids',
+                                                               'guests', 'visitors') and \
+                        not chatter.carries_constraint(body):
+                    # "there is someone asleep in there": why, not what to do
                     self.notes.append(f'took "{s}" as a description of the scene, not a task')
                     return scope
         if self._is_permission(tokens):

@@ -35,6 +35,7 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "go to a . when you are done there , head to b" -> "go to a . then head to b"
     (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
     (r' (?:exactly )?once and only once ', ' exactly once '),
+
     (r' (?:from then on|from that point on|from there on|thereafter|from that moment on|after this) ',
      ' after that '),
     (r' from now on ', ' '),
@@ -157,8 +158,8 @@ _GERUNDS = {'going': 'go', 'heading': 'head', 'visiting': 'visit', 'checking': '
             'picking': 'pick', 'grabbing': 'grab', 'bringing': 'bring', 'taking': 'take', 'getting': 'get',
             'fetching': 'fetch', 'dropping': 'drop', 'popping': 'pop', 'landing': 'land'}
 # "drop by the porch", "pop in at the shop": a visit, not a delivery
-_DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to) (?=(?:the|a|an|my|your|'
-                         r'our) )')
+_DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to) (?=(?:either )?(?:the|a|an|my|'
+                         r'your|our) )')
 _GERUND_RE = re.compile(r' (first|finally) (' + '|'.join(_GERUNDS) + ') ')
 
 
@@ -179,9 +180,19 @@ def _one_of_group(text: str) -> str:
     return text[:m.start()] + ' go to either ' + body + text[end:]
 
 
+_COLON_RE = re.compile(r'(^ | [.;!?] )(?:pick|choose|select) (?:one|any one|one of them|one of these|either one) '
+                       r': ')
+_VERB_COLON_RE = re.compile(r' (avoid|visit|then|never) : ')
+
+
 def paraphrase(tokens: list[str]) -> list[str]:
     """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
     text = ' ' + ' '.join(tokens) + ' '
+    if ':' in tokens:
+        # "pick one: the den, the hall or the attic" is a choice; "avoid: the ramp, the bins" a list
+        text = _VERB_COLON_RE.sub(r' \1 ', _COLON_RE.sub(r'\1 go to one of these : ', text))
+        tokens = text.split()
+        text = ' ' + ' '.join(tokens) + ' '
     if not any(w in text for w in (' done', ' finish', ' through', ' ready', ' once ', ' time ', ' look',
                                    ' peek', ' peep', ' glance', ' gander', ' visit', ' trip', ' see ',
                                    ' check', ' whether', ' if ', ' away', ' clear', ' off', ' out',
@@ -222,4 +233,8 @@ def _passes(tokens: list[str]) -> list[str]:
         return tokens
     count = m.group(2)
     times = ['once'] if count in ('a', 'an', 'a single', 'one', '1') else [count, 'times']
+    nxt = after[np.end:np.end + 3]
+    if times == ['once'] and count != 'one' and nxt and (nxt[0] in ('once', 'twice', 'thrice', 'exactly') or (
+            nxt[:2] in (['at', 'least'], ['at', 'most']) or nxt[1:2] == ['times'])):
+        times = []   # "make a pass over the field exactly twice": the count that follows counts the passes
     return before + ['go', 'over'] + after[:np.end] + times + _passes(after[np.end:])

@@ -346,7 +346,13 @@ class PhraseParser:
             if len(words) == 1:
                 words = base.split('_') if base else words
             elif self.last is not None:
-                words = words[:-1] + [self.last.head]
+                named = self.last.descriptor.name.split('_')
+                if len(words) == 2 and len(named) > 2 and named[0] in PLACEHOLDER_ADJECTIVES and not any(
+                        w in PLACEHOLDER_ADJECTIVES for w in named[1:]):
+                    # "the left loading door or the right one": one is the loading door
+                    words = words[:-1] + named[1:]
+                else:
+                    words = words[:-1] + [self.last.head]
         head = words[-1]
         relations: list[Relation] = []
         while i < len(tokens):

@@ -739,6 +739,10 @@ def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optiona
     return rest[:sent] + ['go', 'to'] + words[k:np.end] + [',', 'then'] + body
 
 
+_APOLOGIES = frozenset({('sorry',), ('my', 'mistake'), ('my', 'bad'), ('oops',), ('sorry', 'about', 'that'),
+                        ('my', 'apologies'), ('apologies',), ('silly', 'me')})
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
@@ -750,6 +754,23 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if len(m) > 1 and tuple(seg[:len(m)]) == m and m[0] not in _CANCEL and m != ('make', 'that'):
                 marker, seg, stripped = m[0], seg[len(m):], True
                 break
+        if seg[:1] == ['not'] and len(seg) > 2:
+            # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
+            named = PhraseParser().parse(seg, 1)
+            if named is not None and not named.pronoun and seg[named.end:named.end + 1] == [','] and any(
+                    sp.head == named.head for sp in _np_spans(prev)):
+                seg, stripped = seg[named.end + 1:], True
+    for k in range(1, len(seg) - 1):
+        if seg[k] != ',':
+            continue
+        end = next((j for j in range(k + 1, len(seg)) if seg[j] == ','), len(seg))
+        tail = seg[k + 1:end]
+        if tuple(tail) in _APOLOGIES or chatter.is_statement(tail, _np_end(tail)) and not [
+                t for t in seg[end:] if t not in PUNCT]:
+            # "I meant the cooler, sorry, it's been a long day": the apology and the reason ask for nothing
+            notes.append(f'left out "{" ".join(t for t in seg[k + 1:] if t not in PUNCT)}" (asks for nothing)')
+            seg = seg[:k]
+            break
     retracted = _retract_avoidance(prev, seg, notes)
     if retracted is not None:
         return retracted

@@ -63,7 +63,11 @@ ORDINALS: dict[str, int] = {
 }
 
 PUNCT = frozenset(',.;:!?')
-_TOKEN_RE = re.compile(r"[a-z0-9]+|[,.;:!?]")
+_TOKEN_RE = re.compile(r"[a-z0-9]+(?:_[a-z0-9]+)*|[,.;:!?]")
+# A verb and its particle joined by a hyphen name a kind of thing ("walk-in", "drop-off", "check-in").
+_PARTICLE_COMPOUND_RE = re.compile(
+    r'\b(walk|drive|drop|check|sign|pull|roll|pop|lean|built|fold|slide|pick|take|lay|top|stand|look|tip)-'
+    r'(in|out|off|up|through|thru|to|down|over|by|away|on)\b(?=\s+[a-z])')
 # An acronym after a determiner ("the IT office", "the ER") is a name, not the word it spells.
 _ACRONYM_RE = re.compile(
     r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
@@ -71,6 +75,17 @@ _ACRONYM_RE = re.compile(
 
 # A capital letter after a word names something ("field A", "Gate B"): not the article "a".
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
+
+
+# After a list number, words that say themselves how the item stands to the others.
+_ITEM_OPENERS = frozenset({'then', 'never', 'do', 'don', 'dont', 'avoid', 'and', 'after', 'before', 'finally',
+                           'but', 'not', 'always', 'only', 'if', 'when', 'whenever', 'once', 'while', 'keep',
+                           'stay', 'also', 'optionally', 'or', 'either', 'first', 'lastly', 'next', 'until'})
+
+
+def _then(number: str, following: str) -> str:
+    """A numbered list is an order: each item after the first reads as "then" (unless it says otherwise)."""
+    return '' if number in ('0', '1', '01') or following in _ITEM_OPENERS else 'then '
 
 
 def tokenize(text: str) -> list[str]:
@@ -94,8 +109,11 @@ def tokenize(text: str) -> list[str]:
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))
     s = text.lower().replace('\u2019', "'").replace('\u2018', "'").replace('`', "'")
     # a list written as lines or bullets: each line, "1)", "(2)", "3." or bullet opens a clause
-    s = re.sub(r'(^|[\s:;,])\(?\d{1,2}\)(?=\s)', r'\1 , ', s)
-    s = re.sub(r'(^|[:;,.!?\n]\s*)\d{1,2}\.(?=\s)', r'\1 , ', s)
+    # (a numbered list is an order: each number after the first reads as "then")
+    s = re.sub(r'(^|[\s:;,])\(?(\d{1,2})\)(?=\s+([a-z]*))',
+               lambda m: f'{m.group(1)} , {_then(m.group(2), m.group(3))}', s)
+    s = re.sub(r'(^|[:;,.!?\n]\s*)(\d{1,2})\.(?=\s+([a-z]*))',
+               lambda m: f'{m.group(1)} , {_then(m.group(2), m.group(3))}', s)
     s = re.sub(r'(^|\n)\s*[-*\u2022\u25cf\u25aa]+\s', r'\1 , ', s)
     s = re.sub(r'(?<![.;:!?,\s])[ \t]*\n', ' . ', s)
     s = re.sub(r'[\u2022\u25cf\u25aa]', ' , ', s)
@@ -103,6 +121,8 @@ def tokenize(text: str) -> list[str]:
     s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
+    if '-' in s:   # "the walk-in cooler", "the drop-off point": one word of a name
+        s = _PARTICLE_COMPOUND_RE.sub(r'\1_\2', s)
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)
     if 'ur ' in s:   # "on ur way": "ur" before a noun is "your", elsewhere "you are"
         s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best)\b)',

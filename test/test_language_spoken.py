@@ -215,3 +215,30 @@ def test_a_correction_that_names_what_it_corrects_and_apologises() -> None:
     assert any('left out' in n for n in notes)
     _check('Bring the mug to the den. No, not the den, I meant the study, my mistake.',
            'F (near[mug] & F (pick[mug] & F (near[study] & F release[mug, study])))')
+
+
+CORRECTIONS = [
+    ('Go to the mug on the top shelf, hang on, my mistake, it is actually on the middle shelf, same mug though.',
+     'F near[mug::isabove(middle_shelf)]'),
+    ('Could you carry the rug to the hall, oh, hang on, I mean the porch, it needs airing.',
+     'F (near[rug] & F (pick[rug] & F (near[porch] & F release[rug, porch])))'),
+    ('Bring the cups to the sink, and keep away from the stove. Correction: the stove\'s fine, keep away from '
+     'the kettle instead.',
+     'F (near[cups] & F (pick[cups] & F (near[sink] & F release[cups, sink]))) & G !near[kettle]'),
+    ('Go to the blue gate or the white gate. Actually, just the white gate; the blue one\'s locked.',
+     'F near[white_gate]'),
+    ('Go to the mill, then the barn, then the silo. Actually, swap the last two around, I changed my mind.',
+     'F (near[mill] & F (near[silo] & F near[barn]))'),
+    ('Visit the den, the attic and the porch in that order. Wait, swap the first two.',
+     'F (near[attic] & F (near[den] & F near[porch]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CORRECTIONS, ids=[c[0][:30] for c in CORRECTIONS])
+def test_spoken_self_corrections(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_whichever_is_easier_to_reach_is_the_person_s_reason() -> None:
+    _check('Go to the bin behind the desk or the one left of the door, whichever is easier to reach.',
+           'F near[bin::isbehind(desk)] | F near[bin::isleftof(door)]')

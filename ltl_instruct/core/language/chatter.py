@@ -263,11 +263,16 @@ TIME_NOUNS = frozenset({'evening', 'morning', 'afternoon', 'night', 'week', 'wee
                         'minute', 'second', 'sec', 'today', 'tonight', 'tomorrow', 'now', 'while'})
 
 
+# "the red one", "that one": a thing, no count
+_ONE_AFTER = frozenset(DETERMINERS) | PLACEHOLDER_ADJECTIVES
+
+
 def has_constraint_word(tokens: Sequence[str]) -> bool:
     """Whether any token is a negation, order, time or count word (not a clock time: "at six")."""
     return any((t in CONSTRAINT_WORDS or t.isdigit()) and not (
         (t in NUMBER_WORDS or t.isdigit()) and k > 0 and tokens[k - 1] in ('at', 'around', 'about') and
-        tokens[k + 1:k + 2] not in (['times'], ['time'])) for k, t in enumerate(tokens))
+        tokens[k + 1:k + 2] not in (['times'], ['time'])) and not (
+        t == 'one' and k > 0 and tokens[k - 1] in _ONE_AFTER) for k, t in enumerate(tokens))
 
 
 # After "keep" / "stay": words that make it a constraint ("keep away", "stay off"); "keep an eye

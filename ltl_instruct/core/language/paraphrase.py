@@ -94,7 +94,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] | and | then | to )(go to |head to |visit |to )?whichever (?:one )?'
      r'(?:is |s |of them is |of the two is )?'
      r'(?:closer|closest|nearer|nearest|easier|quicker|faster|more convenient|handier|free|open|emptier|'
-     r'less busy|shorter)(?: to you| for you| of the two)?(?: , | : | - )?', r'\1 \2'),
+     r'less busy|shorter)(?: to (?:reach|get to|get at|access))?(?: to you| for you| of the two)?'
+     r'(?: , | : | - )?', r'\1 \2'),
     # "any of the three will do: a, b, or c"
     (r'(^ | [.;!?] )(?:any|either|one|any one) (?:one )?of (?:the |these |those |them )?'
      r'(?:two |three |four |five )?(?:will do|is fine|works|is ok|is okay|would be fine|would do|are fine|'

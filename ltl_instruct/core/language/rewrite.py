@@ -255,7 +255,9 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('my', 'mistake'), ('or', 'rather'), ('or', 'actually'), ('or', 'better'), ('on', 'second', 'thought'),
     ('on', 'second', 'thoughts'), ('come', 'to', 'think', 'of', 'it'), ('change', 'of', 'plan'),
     ('change', 'of', 'plans'), ('let', 'me', 'rephrase'), ('wait', 'no'), ('hold', 'on'), ('scratch',),
-    ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'),
+    ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'), ('hang', 'on'),
+    ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
+    ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
                      'leave'})
@@ -670,6 +672,16 @@ def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[st
     k = 1
     while k < len(words) and words[k] in ('the', 'order', 'of', 'around', 'round'):
         k += 1
+    if words[k:k + 2] in (['last', 'two'], ['first', 'two'], ['final', 'two']) and not [
+            t for t in words[k + 2:] if t not in ('around', 'round', 'please', 'instead', 'stops', 'goals',
+                                                  'places', 'ones', 'over', 'of', 'them', 'those', 'these')]:
+        # "swap the last two around": the last two goals named
+        spans = _np_spans(prev)
+        if len(spans) < 2:
+            return None
+        a, b = spans[-2:] if words[k] != 'first' else spans[:2]
+        notes.append(f'{a.descriptor} and {b.descriptor} swapped')
+        return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
     nps, _, end = PhraseParser().parse_list(words, k)
     if len(nps) != 2 or [t for t in words[end:] if t not in ('around', 'round', 'please', 'instead')]:
         return None
@@ -765,7 +777,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             continue
         end = next((j for j in range(k + 1, len(seg)) if seg[j] == ','), len(seg))
         tail = seg[k + 1:end]
-        if tuple(tail) in _APOLOGIES or chatter.is_statement(tail, _np_end(tail)) and not [
+        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or chatter.is_statement(
+                tail, _np_end(tail)) and not [
                 t for t in seg[end:] if t not in PUNCT]:
             # "I meant the cooler, sorry, it's been a long day": the apology and the reason ask for nothing
             notes.append(f'left out "{" ".join(t for t in seg[k + 1:] if t not in PUNCT)}" (asks for nothing)')
@@ -882,6 +895,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         # "wait, not the kitchen, the dining room"
         k = seg.index(',')
         seg = seg[k + 1:] + ['not'] + seg[1:k]
+    for lead in (['it', 'is', 'actually'], ['it', 'is', 'really'], ['it', 'is'], ['they', 'are', 'actually'],
+                 ['they', 'are'], ['actually']):
+        if seg[:len(lead)] == lead and seg[len(lead):len(lead) + 1] and seg[len(lead)] in _PREPS:
+            seg = seg[len(lead):]   # "the box on the top shelf, no, it's actually on the bottom one"
+            break
     if seg and seg[0] in _PREPS and len(seg) > 1:
         # "put the jar on the table - no, on the counter": the phrase after the same kind of word
         new_np = PhraseParser().parse(seg, 1)

@@ -42,6 +42,10 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'), (r"\b(that|there|it|what|where|here|who)'s\b", r'\1 is'),
+    # "the table's fine", "the red one's locked": "is", not a possessive, before how a thing is
+    (r"'s(?= (?:fine|ok|okay|alright|safe|locked|closed|shut|open|broken|blocked|up|out|off|empty|full|wet|"
+     r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
+     r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp)\b)", ' is'),
     (r"'d\b", ' would'), (r"'s\b", ''), (r"s'(?=\s)", 's'),
 )
 

@@ -242,3 +242,22 @@ def test_spoken_self_corrections(instruction: str, gold: str) -> None:
 def test_whichever_is_easier_to_reach_is_the_person_s_reason() -> None:
     _check('Go to the bin behind the desk or the one left of the door, whichever is easier to reach.',
            'F near[bin::isbehind(desk)] | F near[bin::isleftof(door)]')
+
+
+LIST_POSITIONS = [
+    ('There are two chairs: one by the window, and one behind the sofa. Sit on the second one, please.',
+     'F near[chair::isbehind(sofa)]'),
+    ('I have left out a cup, a plate and a fork. Return the middle one to the sink.',
+     'F (near[plate] & F (pick[plate] & F (near[sink] & F release[plate, sink])))'),
+    ('You will pass a vase, a piano and a clock. Go to the one before the clock.', 'F near[piano]'),
+    ('You will pass a vase, a piano and a clock in the hall. Visit the piano first, and after that the item I '
+     'listed at the start.', 'F (near[piano] & F near[vase])'),
+    ('Go to the porch, and keep clear of the second and third things on this list: a ladder, a bucket, a hose.',
+     'F near[porch] & G !near[bucket] & G !near[hose]'),
+    ('Bring me the last of these: a mug, a spoon, a bowl.', 'F (near[bowl] & F pick[bowl])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', LIST_POSITIONS, ids=[c[0][:30] for c in LIST_POSITIONS])
+def test_more_references_by_list_position(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -437,7 +437,8 @@ class PhraseParser:
             nxt = self.parse(tokens, j, destination_stops)
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
-            if sep == 'and' and tokens[i] == ',' and nxt.descriptor.relations and nxt.pronoun in ('', 'one'):
+            if sep == 'and' and tokens[i] == ',' and j == i + 1 and nxt.descriptor.relations and \
+                    nxt.pronoun in ('', 'one'):
                 # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
                 merged = _attach(phrases[-1].descriptor, nxt.descriptor, nxt.pronoun == 'one')
                 if merged is not None:

@@ -25,7 +25,8 @@ from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
-                          'notice', 'find', ',', 'from', 'among', 'options', 'choices'})
+                          'notice', 'find', ',', 'from', 'among', 'options', 'choices', 'pass', 'out', 'pass',
+                          'passing', 'past'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near'})
@@ -76,6 +77,9 @@ _MENTIONED: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('i', 'described'), ('i', 'told', 'you', 'about'), ('you', 'saw'), ('we', 'talked', 'about'),
     ('on', 'the', 'list'), ('in', 'the', 'list'), ('from', 'the', 'list'), ('from', 'before'),
     ('i', 'listed', 'earlier'), ('i', 'mentioned', 'earlier'), ('i', 'mentioned', 'before'),
+    ('on', 'this', 'list'), ('on', 'that', 'list'), ('in', 'this', 'list'), ('of', 'the', 'list'),
+    ('of', 'this', 'list'), ('i', 'listed', 'first'), ('i', 'named', 'first'), ('i', 'mentioned', 'first'),
+    ('of', 'these'), ('of', 'those'), ('of', 'the', 'following'), ('in', 'the', 'following', 'list'),
 ), key=lambda t: -len(t)))
 
 
@@ -86,7 +90,8 @@ def _drop_mentions(tail: list[str]) -> list[str]:
     while i < len(tail):
         out.append(tail[i])
         i += 1
-        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle') or out[-1] in ORDINALS:
+        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle', 'things', 'items', 'ones') or \
+                out[-1] in ORDINALS:
             j = i + (1 if i < len(tail) and tail[i] in ('that', 'which') else 0)
             for m in _MENTIONED:
                 if tuple(tail[j:j + len(m)]) == m:
@@ -108,7 +113,10 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     tail = tokens[end:]
     if tail and tail[0] not in PUNCT and any(t in PUNCT for t in tail):
         tail = tail[next(k for k, t in enumerate(tail) if t in PUNCT):]
-    if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail):
+    start = max((k for k in range(s - 1) if tokens[k] in '.;!?'), default=-1) + 1
+    ahead = s >= 2 and tokens[s - 1] == ':' and any(t in ORDINALS or t in ('last', 'middle') for t in tokens[
+        start:s - 1])   # "the first and third things on this list: ..."
+    if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail) and not ahead:
         heads = {np.head for np in nps}
         if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
                 not any(t in NAME_VERBS for t in tokens[:end]):
@@ -146,99 +154,116 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             out += items[i]
         return out
 
-    out: list[str] = []
-    i = 0
-    n = len(items)
-    while i < len(tail):
-        t = tail[i]
-        nxt = tail[i + 1] if i + 1 < len(tail) else ''
-        if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (tail[i + 2] in ORDINALS or tail[i + 2] in (
-                'last', 'middle')) and (i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in (
-                'and', 'then', 'or')):
-            tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
-            nxt = tail[i + 1]
-        if t == 'the' and nxt:
-            w = tail[i + 2] if i + 2 < len(tail) else ''
-            one = 1 if w in ('one', 'item', 'thing') else 0
-            # "the second", "the latter twice": no noun follows the position word
-            ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
-                not is_name_word(tail, i + 2, False)
-            if nxt in ORDINALS and ends and not (nxt == 'first' and w in NUMBER_WORDS and w != 'one'):
-                idx = ORDINALS[nxt] - 1
-                if idx >= n:
-                    raise TranslationError(f'"the {nxt}" points past the end of a list of {n}',
-                                           details={'part': f'the {nxt}'})
-                out += joined([idx])
-                i += 2 + one
-                continue
-            if nxt == 'last' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
-                k = NUMBER_WORDS[w]
-                out += joined(list(range(n - k, n)))
-                i += 3
-                continue
-            if nxt == 'first' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
-                out += joined(list(range(NUMBER_WORDS[w])))
-                i += 3
-                continue
-            if nxt in ('last', 'latter') and ends:
-                out += joined([n - 1])
-                i += 2 + one
-                continue
-            if nxt == 'former':
-                out += joined([0])
-                i += 2
-                continue
-            if nxt == 'one' and tail[i + 2:i + 5] == ['in', 'the', 'middle'] and n % 2 == 1:
-                out += joined([n // 2])
-                i += 5
-                continue
-            if nxt == 'middle' and n % 2 == 1:
-                out += joined([n // 2])
-                i += 2 + one
-                continue
-            if nxt in ('other', 'others', 'remaining') or (
-                    nxt == 'rest' and (not w or w in PUNCT or w == 'of' or not is_name_word(
-                        tail, i + 2, False))):
-                if nxt == 'rest' and tail[i + 2:i + 4] == ['of', 'them']:
+    def resolve(tail: list[str]) -> list[str]:
+        out: list[str] = []
+        i = 0
+        n = len(items)
+        while i < len(tail):
+            t = tail[i]
+            nxt = tail[i + 1] if i + 1 < len(tail) else ''
+            if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (tail[i + 2] in ORDINALS or tail[i + 2] in (
+                    'last', 'middle')) and (i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in (
+                    'and', 'then', 'or')):
+                tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
+                nxt = tail[i + 1]
+            if t == 'the' and nxt:
+                w = tail[i + 2] if i + 2 < len(tail) else ''
+                one = 1 if w in ('one', 'item', 'thing') else 0
+                # "the second", "the latter twice": no noun follows the position word
+                ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
+                    not is_name_word(tail, i + 2, False)
+                if nxt in ORDINALS and ends and not (nxt == 'first' and w in NUMBER_WORDS and w != 'one'):
+                    idx = ORDINALS[nxt] - 1
+                    if idx >= n:
+                        raise TranslationError(f'"the {nxt}" points past the end of a list of {n}',
+                                               details={'part': f'the {nxt}'})
+                    out += joined([idx])
+                    i += 2 + one
+                    continue
+                if nxt == 'last' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
+                    k = NUMBER_WORDS[w]
+                    out += joined(list(range(n - k, n)))
+                    i += 3
+                    continue
+                if nxt == 'first' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
+                    out += joined(list(range(NUMBER_WORDS[w])))
+                    i += 3
+                    continue
+                if nxt in ('last', 'latter') and ends:
+                    out += joined([n - 1])
+                    i += 2 + one
+                    continue
+                if nxt == 'former':
+                    out += joined([0])
                     i += 2
-                rest_idx = [k for k in range(n) if k not in used]
-                out += joined(rest_idx)
-                i += 2 + (1 if w in ('two', 'three', 'ones', 'one') else 0)
+                    continue
+                if nxt in ('one', 'item', 'thing') and tail[i + 2:i + 4] == ['at', 'the'] and tail[i + 4:i + 5] in (
+                        ['start'], ['beginning'], ['end'], ['top'], ['bottom']) and (
+                        i + 5 >= len(tail) or tail[i + 5] in PUNCT or tail[i + 5] in ('and', 'then', 'or')):
+                    # "the item I listed at the start": the first one (at the end: the last)
+                    out += joined([0] if tail[i + 4] in ('start', 'beginning', 'top') else [n - 1])
+                    i += 5
+                    continue
+                if nxt == 'one' and tail[i + 2:i + 5] == ['in', 'the', 'middle'] and n % 2 == 1:
+                    out += joined([n // 2])
+                    i += 5
+                    continue
+                if nxt == 'middle' and n % 2 == 1:
+                    out += joined([n // 2])
+                    i += 2 + one
+                    continue
+                if nxt in ('other', 'others', 'remaining') or (
+                        nxt == 'rest' and (not w or w in PUNCT or w == 'of' or not is_name_word(
+                            tail, i + 2, False))):
+                    if nxt == 'rest' and tail[i + 2:i + 4] == ['of', 'them']:
+                        i += 2
+                    rest_idx = [k for k in range(n) if k not in used]
+                    out += joined(rest_idx)
+                    i += 2 + (1 if w in ('two', 'three', 'ones', 'one') else 0)
+                    continue
+                if nxt == 'one' and w in ('right', 'just', 'immediately', 'before', 'after', 'directly'):
+                    j = i + 2
+                    while j < len(tail) and tail[j] in ('right', 'just', 'immediately', 'directly'):
+                        j += 1
+                    if j < len(tail) and tail[j] in ('before', 'after'):
+                        parser = PhraseParser()
+                        ref = parser.parse(tail, j + 1)
+                        if ref is not None:
+                            k = next((m for m, it in enumerate(items) if it[-1] == ref.head), -1)
+                            if k >= 0:
+                                k2 = k - 1 if tail[j] == 'before' else k + 1
+                                if 0 <= k2 < n:
+                                    out += joined([k2])
+                                    i = ref.end
+                                    continue
+            if t in ORDINALS and (i == 0 or tail[i - 1] in (',', 'then', 'and', ':')) and (
+                    not nxt or nxt in PUNCT or nxt in ('and', 'then', 'one', 'ones', 'things', 'items')):
+                out += joined([ORDINALS[t] - 1])
+                i += 2 if nxt in ('one', 'ones', 'things', 'items') else 1
                 continue
-            if nxt == 'one' and w in ('right', 'just', 'immediately', 'before', 'after', 'directly'):
-                j = i + 2
-                while j < len(tail) and tail[j] in ('right', 'just', 'immediately', 'directly'):
-                    j += 1
-                if j < len(tail) and tail[j] in ('before', 'after'):
-                    parser = PhraseParser()
-                    ref = parser.parse(tail, j + 1)
-                    if ref is not None:
-                        k = next((m for m, it in enumerate(items) if it[-1] == ref.head), -1)
-                        if k >= 0:
-                            k2 = k - 1 if tail[j] == 'before' else k + 1
-                            if 0 <= k2 < n:
-                                out += joined([k2])
-                                i = ref.end
-                                continue
-        if t in ORDINALS and (i == 0 or tail[i - 1] in (',', 'then', 'and', ':')) and (
-                not nxt or nxt in PUNCT or nxt in ('and', 'then', 'one')):
-            out += joined([ORDINALS[t] - 1])
-            i += 2 if nxt == 'one' else 1
-            continue
-        if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['reverse', 'order']:
-            out += joined(list(range(n - 1, -1, -1)), 'then')
-            i += 4
-            continue
-        if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['that', 'order']:
-            out += joined(list(range(n)), 'then')
-            i += 4
-            continue
-        if t in ('them', 'all') and (nxt in ('all',) or t == 'them'):
-            out += joined(list(range(n)))
-            i += 2 if nxt == 'all' else 1
-            continue
-        out.append(t)
-        i += 1
+            if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['reverse', 'order']:
+                out += joined(list(range(n - 1, -1, -1)), 'then')
+                i += 4
+                continue
+            if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['that', 'order']:
+                out += joined(list(range(n)), 'then')
+                i += 4
+                continue
+            if t in ('them', 'all') and (nxt in ('all',) or t == 'them'):
+                out += joined(list(range(n)))
+                i += 2 if nxt == 'all' else 1
+                continue
+            out.append(t)
+            i += 1
+        return out
+
+    n = len(items)
+    if not any(t in _REF_WORDS for t in tail) and ahead:
+        # "keep clear of the first and third things on this list: a wheelchair, a cart, a hamper"
+        head = _drop_mentions(tokens[start:s - 1])
+        notes.append('list of ' + ', '.join(' '.join(it[1:]) for it in items) + ': positions resolved')
+        return tokens[:start] + resolve(head) + tail
+    out = resolve(tail)
     notes.append('list of ' + ', '.join(' '.join(it[1:]) for it in items) + ': positions resolved')
     # earlier sentences stay; the sentence that holds the list only sets the scene
     keep = max((k for k in range(s) if tokens[k] in '.;!?'), default=-1)

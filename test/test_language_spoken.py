@@ -261,3 +261,42 @@ LIST_POSITIONS = [
 @pytest.mark.parametrize('instruction,gold', LIST_POSITIONS, ids=[c[0][:30] for c in LIST_POSITIONS])
 def test_more_references_by_list_position(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+DRONE_AND_ERRANDS = [
+    ('Drone, once you are in the air, head out to the mast and hold position over it; that is the only stop.',
+     'F near[mast]'),
+    ('Fly across to the gazebo and hold your position there for a couple of minutes.', 'F near[gazebo]'),
+    ('Do not fly over the field until you have inspected the mast, and once that is done, survey the whole field.',
+     '(!near[field] U near[mast]) & F (near[mast] & F near[field])'),
+    ('Hover at the turbine, but only once you have made a pass over the pylon.',
+     'F near[turbine] & (!near[turbine] U near[pylon])'),
+    ('I would love it if you could make your way over to the stool under the sink, no rush at all.',
+     'F near[stool::isbelow(sink)]'),
+    ('I need you at the counter, but before doing that, make a quick stop at the stockroom.',
+     'F (near[stockroom] & F near[counter])'),
+    ('Move the fern over to the shelf, it needs more light.',
+     'F (near[fern] & F (pick[fern] & F (near[shelf] & F release[fern, shelf])))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', DRONE_AND_ERRANDS, ids=[c[0][:30] for c in DRONE_AND_ERRANDS])
+def test_drone_phrasings_and_errands(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+PICK_GUARDS = [
+    ('Bring the charger to the room, but do not pick it up until you have been to the desk.',
+     'F (near[charger] & F (pick[charger] & F (near[room] & F release[charger, room]))) & '
+     '(!pick[charger] U near[desk])'),
+    ('Carry the parcel to the porch, but only grab it after you have visited the gate.',
+     'F (near[parcel] & F (pick[parcel] & F (near[porch] & F release[parcel, porch]))) & '
+     '(!pick[parcel] U near[gate])'),
+    ('Take the tray to the kitchen, and never pick up the tray before you have been to the hall.',
+     'F (near[tray] & F (pick[tray] & F (near[kitchen] & F release[tray, kitchen]))) & (!pick[tray] U near[hall])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', PICK_GUARDS, ids=[c[0][:30] for c in PICK_GUARDS])
+def test_a_pick_that_must_wait_for_a_visit(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

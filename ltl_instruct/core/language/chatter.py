@@ -113,8 +113,12 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('thanks', 'in', 'advance'),
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
     ('in', 'a', 'sec'), ('in', 'a', 'second'), ('while', 'you', 'are', 'at', 'it'),
-    ('while', 'you', 'are', 'there'),
-) + tuple(('over', 'the', 'course', 'of', 'the') + span for span in (
+    ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
+) + tuple(
+    # how long to stay ("hover there for a few minutes"): the formula has no clock
+    ('for',) + amount + (unit,) for amount in (('a', 'few'), ('a', 'couple', 'of'), ('some',), ('two',),
+                                               ('three',), ('five',), ('ten',), ('a', 'few', 'more'))
+    for unit in ('minutes', 'seconds', 'moments', 'mins', 'secs', 'hours')) + tuple(('over', 'the', 'course', 'of', 'the') + span for span in (
     ('day',), ('night',), ('evening',), ('morning',), ('afternoon',), ('week',), ('shift',), ('night', 'shift'),
     ('day', 'shift'), ('late', 'shift'), ('early', 'shift'))) + tuple(
     ('during', 'the') + span for span in (('night', 'shift'), ('day', 'shift'), ('night',), ('day',), ('shift',))
@@ -153,6 +157,11 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('alright', 'so'), ('right', 'so'), ('hey', 'robot'), ('hi', 'robot'), ('robot',), ('drone',),
     ('before', 'anything', 'else'), ('first', 'things', 'first'), ('before', 'you', 'do', 'anything', 'else'),
     ('to', 'start', 'with'), ('to', 'start', 'off'), ('for', 'a', 'start'),
+    # a drone's take-off, which every flight starts with
+    ('once', 'you', 'are', 'airborne'), ('once', 'airborne'), ('when', 'you', 'are', 'airborne'),
+    ('once', 'you', 'are', 'in', 'the', 'air'), ('once', 'you', 'are', 'up'), ('once', 'you', 'have', 'taken', 'off'),
+    ('after', 'taking', 'off'), ('after', 'take', 'off'), ('after', 'takeoff'), ('after', 'you', 'take', 'off'),
+    ('once', 'you', 'are', 'off', 'the', 'ground'), ('when', 'you', 'are', 'up'), ('once', 'in', 'the', 'air'),
 ), key=lambda t: -len(t)))
 
 PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',
@@ -179,6 +188,8 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
     (r'(^ | [,.;!?] )(?:would|could|do|will) you mind ', r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you (?:could|would|can|will) ',
+     r'\1 '),
     (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
      r'get) )', r'\1 '),
     (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),
@@ -305,7 +316,10 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         Where a noun phrase at the start of the clause ends (0: none), for
         noun-phrase subjects ("the cat keeps...").
     """
-    if not tokens or has_constraint_word(tokens):
+    if not tokens or has_constraint_word([t for k, t in enumerate(tokens) if not (
+            # "it needs more shade": an amount of something, no count of visits
+            t in ('more', 'less') and k > 1 and tokens[k - 1] in FINITE_VERBS and k + 1 < len(tokens) and
+            tokens[k + 1] not in NUMBER_WORDS and tokens[k + 1] not in ('than', 'times', 'time', 'often'))]):
         return False
     if len(tokens) > 2 and tokens[0] not in DETERMINERS and tokens[1] in (
             'going', 'coming', 'happening', 'arriving', 'visiting', 'waiting', 'cooking', 'running') and \
@@ -446,6 +460,8 @@ _REMARK_RE = re.compile(
     r'(?: (?:right now|now|today|at the moment))?'
     r'|(?:that|the) order (?:matters|is important)(?: to (?:me|us))?'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
+    r'|(?:(?:that|this|it) )?is (?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)(?: (?:for )?(?:today|now|'
+    r'tonight|this time))?'
     r')$')
 
 

@@ -173,6 +173,12 @@ RULES: tuple[Rule, ...] = (
     Rule('take the chair back to the office',
          rf'\b(?P<v>take|bring|carry|return|move|haul|lug|wheel|ferry|cart) (?P<x>(?:the|a|an|my|your|our|this|that|'
          rf'these|those) {_NP}) back (?P<p>to|into|in|onto|inside)\b', r'\g<v> \g<x> \g<p>'),
+    Rule('hold position over it', r'\bhold (?:your |its )?position (?=over|above|there|here|for)', 'hover '),
+    Rule('survey the whole array: the array',
+         r'\b(?P<v>survey|inspect|cover|scan|search|check|patrol|sweep|map|photograph|visit|over|around|clean|'
+         r'explore|circle|see|film|mow|tidy) (?P<d>the|that|this) (?:whole|entire) '
+         r'(?!(?:time|way|trip|flight|route|mission|run|task|journey|drive|walk|tour|job|day|night|loop|thing)\b)',
+         r'\g<v> \g<d> '),
     Rule('give the rug a wide berth', rf'\bgive (?P<x>{_NP}) a (?:wide|good|big|very wide) berth\b',
          r'keep away from \g<x>'),
     Rule('do not cut across the lawn', r'\b(?:cut|shortcut|short cut) (?:across|through|over)\b', 'go through'),

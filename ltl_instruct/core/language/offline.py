@@ -1026,6 +1026,9 @@ class _Reader:
                 if known is not None:   # "go to the porch. before the porch, stop at the mailbox"
                     self.insert_before = known
                     return scope
+        if self._read_pick_guard(tokens):
+            self.saw_action = True
+            return scope
         if self._read_ordering(tokens, clause):
             return scope
         if self._avoid_start(tokens) is not None:
@@ -2215,6 +2218,48 @@ class _Reader:
                 if k > j + 1:
                     return n, k
         return None
+
+    _GUARD_HEADS = (['do', 'not'], ['never'], ['only'], ['please', 'do', 'not'], ['you', 'must', 'not'],
+                    ['you', 'cannot'], ['do', 'not', 'even'])
+
+    def _read_pick_guard(self, tokens: list[str]) -> bool:
+        """Read 'don't pick it up until you have been to the desk', 'only grab it after ...': the pick waits."""
+        head = next((h for h in self._GUARD_HEADS if tokens[:len(h)] == h), None)
+        if head is None:
+            return False
+        k = len(head)
+        if tokens[k:k + 1] not in (['pick'], ['grab'], ['collect'], ['lift'], ['fetch'], ['retrieve']):
+            return False
+        k += 1
+        up = tokens[k:k + 1] == ['up']
+        k += up
+        if tokens[k:k + 1] in (['it'], ['them']) and self.last_object is not None:
+            np: Optional[NounPhrase] = self.last_object
+            k += 1
+        else:
+            np = self.phrases.parse(tokens, k)
+            if np is None or np.pronoun or np.end <= k:
+                return False
+            k = np.end
+        if tokens[k:k + 1] == ['up']:
+            k += 1
+        rest = tokens[k:]
+        only = head == ['only']
+        if only and rest[:1] == ['after']:
+            rest = ['until'] + rest[1:]   # "only pick it up after you have been to X": not until then
+        elif only or rest[:1] not in (['until'], ['till'], ['before']):
+            return False
+        scope, left = self._trailing_scope(rest)
+        if scope is None or scope.kind != 'until' or scope.target is None or [t for t in left if t not in PUNCT]:
+            return False
+        event = _near(scope.target.descriptor) if scope.event == 'near' else Atom(
+            scope.event, (scope.target.descriptor,))
+        self.task.constraints.append(Until(Not(Atom('pick', (np.descriptor,))), event))
+        if self.task.find_step(np.descriptor) is None:
+            # nothing brought yet: the pick itself is asked for ("don't grab the key before ...")
+            self.task.chain.append(Step('visit', [np.descriptor]))
+            self.task.constraints.append(Eventually(Atom('pick', (np.descriptor,))))
+        return True
 
     def _read_count(self, rest: list[str], targets: list[Descriptor]) -> tuple[bool, list[str]]:
         """Read counting phrases after a goal: at least / at most / exactly / N times / in a row."""

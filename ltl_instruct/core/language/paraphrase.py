@@ -35,6 +35,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "go to a . when you are done there , head to b" -> "go to a . then head to b"
     (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
     (r' (?:exactly )?once and only once ', ' exactly once '),
+    # "make a quick stop at the cart": stop at it
+    (r' make (?:a |one )?(?:quick |brief |short |little )?stop (at|by|in) ', r' stop \1 '),
 
     (r' (?:from then on|from that point on|from there on|thereafter|from that moment on|after this) ',
      ' after that '),
@@ -147,7 +149,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      r'\1 go to '),
 ))
 
-_PASS_RE = re.compile(r'(^| )(?:make|do|take|fly|run|perform|complete) (one|two|three|four|five|six|seven|'
+_PASS_RE = re.compile(r'(^| )(make|do|take|fly|run|perform|complete|made|done|did|taken|flown|performed|'
+                      r'completed) (one|two|three|four|five|six|seven|'
                       r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
                       r'(?:passes|pass|trips|trip|laps|lap|rounds|round|sweeps|sweep|runs|run|loops|loop|'
                       r'flyovers|flyover|visits|visit|circuits|circuit) '
@@ -232,8 +235,12 @@ def _passes(tokens: list[str]) -> list[str]:
     np = PhraseParser().parse(after, 0)
     if np is None:
         return tokens
-    count = m.group(2)
+    count = m.group(3)
     times = ['once'] if count in ('a', 'an', 'a single', 'one', '1') else [count, 'times']
+    if m.group(2) in ('made', 'done', 'did', 'taken', 'flown', 'performed', 'completed'):
+        # "once you have made a pass over the substation": once you have visited it
+        return before + ['visited'] + after[:np.end] + (times if times != ['once'] else []) + _passes(
+            after[np.end:])
     nxt = after[np.end:np.end + 3]
     if times == ['once'] and count != 'one' and nxt and (nxt[0] in ('once', 'twice', 'thrice', 'exactly') or (
             nxt[:2] in (['at', 'least'], ['at', 'most']) or nxt[1:2] == ['times'])):

@@ -165,9 +165,16 @@ def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
     return None
 
 
+_LEADS_BY_FIRST: dict[str, list[tuple[str, ...]]] = {}
+for _lead in RELATIVE_LEADS:
+    _LEADS_BY_FIRST.setdefault(_lead[0], []).append(_lead)   # longest first, as RELATIVE_LEADS is
+
+
 def _relative_lead(tokens: Sequence[str], i: int) -> int:
     """Length of a relative-clause lead-in at ``i`` that is followed by a relation, else 0."""
-    for lead in RELATIVE_LEADS:
+    if i >= len(tokens):
+        return 0
+    for lead in _LEADS_BY_FIRST.get(tokens[i], ()):
         n = len(lead)
         if tuple(tokens[i:i + n]) == lead and match_relation(tokens, i + n) is not None:
             return n

@@ -300,3 +300,24 @@ PICK_GUARDS = [
 @pytest.mark.parametrize('instruction,gold', PICK_GUARDS, ids=[c[0][:30] for c in PICK_GUARDS])
 def test_a_pick_that_must_wait_for_a_visit(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+LEGS = [
+    ('Go to the barn first, and then the cow shed, and as you head from the barn to the shed, do not cut across '
+     'the orchard.', 'F (near[barn] & (!near[orchard] U near[cow_shed]))'),
+    ('Fly out to the mast, and on the return leg to the pad, stay clear of the turbines.',
+     'F (near[mast] & (!near[turbines] U near[pad]))'),
+    ('On your way to the cellar, avoid the boiler. Sorry, I meant avoid it on the way back from the cellar to '
+     'the garage, not on the way there.', 'F (near[cellar] & (!near[boiler] U near[garage]))'),
+    ('Stop at the kiosk first and then make your way to the gate; on the leg between the two, stay out of the '
+     'car park, it is busy.', 'F (near[kiosk] & (!near[car_park] U near[gate]))'),
+    ('Go to the attic and then the porch, and stay out of the hall between the two.',
+     'F (near[attic] & (!near[hall] U near[porch]))'),
+    ('Walk to the pond, then the bench, and while going from the pond to the bench, keep off the grass.',
+     'F (near[pond] & (!near[grass] U near[bench]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', LEGS, ids=[c[0][:30] for c in LEGS])
+def test_avoidance_on_a_leg_said_in_other_words(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -1358,12 +1358,35 @@ class _Reader:
                 return sc, rest
         return None, tokens
 
+    def _named_before(self, np: NounPhrase) -> NounPhrase:
+        """A goal said again by its last word ("the tool shed ... the shed"): the goal named before."""
+        d = np.descriptor
+        if d.relations or '_' in d.name or self.phrases.landmarks or self.task.find_step(d) is not None:
+            return np
+        full = {g for g in self._goals_named() if not g.relations and g.name.endswith('_' + d.name)}
+        if len(full) != 1:
+            return np
+        return NounPhrase(full.pop(), np.start, np.end, np.head, np.pronoun)
+
     def _leg(self, rest: list[str]) -> Optional[tuple[_Scope, list[str]]]:
         """Read 'from X to Y' / 'between X and Y' after "on the way": the leg of the route to Y after X.
 
         X and Y are goals (given before, or added here in that order); what is avoided on the
         leg is avoided from X until Y is reached.
         """
+        if rest[:3] == ['between', 'the', 'two'] or rest[:3] == ['between', 'them', 'both'] or \
+                rest[:2] == ['between', 'them']:
+            # "on the leg between the two": the last two goals named
+            k = 3 if rest[:3] in (['between', 'the', 'two'], ['between', 'them', 'both']) else 2
+            if rest[k:k + 1] in (['stops'], ['goals'], ['places'], ['of', 'them']):
+                k += 1 if rest[k] != 'of' else 2
+            visits = [st for st in self.task.chain if st.kind in ('visit', 'deliver') and st.targets]
+            if len(visits) < 2:
+                return None
+            last = visits[-1]
+            dst = NounPhrase((last.dests or last.targets)[0], 0, 0, '')
+            self.last_place = dst
+            return _Scope('onway', dst), rest[k:]
         src = self.phrases.parse(rest, 1)
         if src is None or src.end >= len(rest) or rest[src.end] not in (
                 ('and',) if rest[0] == 'between' else ('to', 'towards', 'toward')):
@@ -1371,7 +1394,8 @@ class _Reader:
         dst = self.phrases.parse(rest, src.end + 1)
         if dst is None:
             return None
-        src, dst = self._resolve(src, place=True), self._resolve(dst, place=True)
+        src, dst = self._named_before(self._resolve(src, place=True)), self._named_before(
+            self._resolve(dst, place=True))
         if self.task.find_step(src.descriptor) is None:
             self.task.chain.append(Step('visit', [src.descriptor]))
         self.last_place = dst
@@ -1719,6 +1743,10 @@ class _Reader:
             sc, end = self._event_phrase(rest, 1)
             if sc is not None:
                 return sc, rest[end:]
+        if rest[0] == 'between' and self.task.chain:
+            leg = self._leg(rest)   # "avoid the hall between the two", "... between the shed and the gate"
+            if leg is not None:
+                return leg
         return None, rest
 
     def _goals_named(self) -> set[Descriptor]:

@@ -35,6 +35,16 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "go to a . when you are done there , head to b" -> "go to a . then head to b"
     (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
     (r' (?:exactly )?once and only once ', ' exactly once '),
+    # "as you head from the greenhouse to the shed", "on the leg between the two": on the way
+    (r' (?:as|while|when) you (?:head|go|travel|fly|drive|walk|move|come|make your way|are going|are heading|'
+     r'are flying|are travelling|are traveling) (?=from |between )', ' on the way '),
+    (r' (?:while|when) (?:heading|going|travelling|traveling|flying|driving|walking|moving) (?=from |between )',
+     ' on the way '),
+    (r' on the (?:leg|stretch|part|bit|section|segment|trip|journey|flight|drive|walk) (?=from |between )',
+     ' on the way '),
+    (r' on the way back (?=from )', ' on the way '),
+    (r' on the (?:return leg|return trip|return journey|return flight|trip back|flight back|leg back|drive back|'
+     r'walk back|way home|journey back) (?=to |towards )', ' on the way back '),
     # "make a quick stop at the cart": stop at it
     (r' make (?:a |one )?(?:quick |brief |short |little )?stop (at|by|in) ', r' stop \1 '),
 

@@ -321,3 +321,32 @@ LEGS = [
 @pytest.mark.parametrize('instruction,gold', LEGS, ids=[c[0][:30] for c in LEGS])
 def test_avoidance_on_a_leg_said_in_other_words(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+CHOICES = [
+    ('Either visit the kiosk exactly once, or go to the fountain at least twice, your choice.',
+     '(!near[kiosk] U (near[kiosk] & (near[kiosk] W G !near[kiosk]))) | '
+     'F (near[fountain] & F (!near[fountain] & F near[fountain]))'),
+    ('Either go to the east gate or the west gate, and on the way there, avoid the kennels, they get noisy.',
+     '!near[kennels] U (near[east_gate] | near[west_gate])'),
+    ('Head to either the silo or the trough, but do not go near either of them until you have been to the gate.',
+     '(F near[silo] | F near[trough]) & ((!near[silo] & !near[trough]) U near[gate])'),
+    ('Go to the den and the hall, and avoid both of them until you have been to the porch.',
+     'F near[den] & F near[hall] & ((!near[den] & !near[hall]) U near[porch])'),
+    ('Check the east gate or the west gate, just one of them, and avoid the pond.',
+     '((F near[east_gate] & G !near[west_gate]) | (F near[west_gate] & G !near[east_gate])) & G !near[pond]'),
+    ('Inspect the red shed or the blue shed, only one of them, not both, and keep clear of the pen throughout.',
+     '((F near[red_shed] & G !near[blue_shed]) | (F near[blue_shed] & G !near[red_shed])) & G !near[pen]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CHOICES, ids=[c[0][:30] for c in CHOICES])
+def test_choices_said_in_other_words(instruction: str, gold: str) -> None:
+    _check(instruction, gold)
+
+
+def test_a_place_off_limits_until_an_event() -> None:
+    _check('Go to the shed and then the bench. Also, the bench is off limits until you have visited the reel too.',
+           'F (near[shed] & F near[bench]) & (!near[bench] U near[reel])')
+    _check('The loft is out of bounds until you have been to the landing. Go to the loft.',
+           'F near[loft] & (!near[loft] U near[landing])')

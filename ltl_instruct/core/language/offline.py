@@ -189,6 +189,11 @@ SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bri
     'be', 'need', 'want', 'robot', 'drone', 'hey', 'can', 'could', 'would', 'you', 'i', 'will', 'ahead',
     'end', 'up', 'please', 'kindly'} | {'make', 'do'}
 
+# Clauses after a choice that make it exclusive ("the den or the hall, but not both").
+_NOT_BOTH = frozenset({'not both', 'but not both', 'not both of them', 'only one of them', 'just one of them',
+                       'only one', 'just one', 'one or the other', 'only one of the two', 'just one of the two',
+                       'never both', 'but never both', 'not the two of them', 'but only one of them',
+                       'but just one of them'})
 _REFLEXIVE = frozenset({'yourself', 'itself', 'myself', 'ourselves', 'yourselves', 'me', 'us', 'you'})
 _SPELLER: Optional[Speller] = None
 _WISH_FIRST = frozenset(w[0] for w in chatter.WISHES)
@@ -659,6 +664,7 @@ class _Reader:
             scope: Optional[_Scope] = None
             for clause in group:
                 scope = self._read_clause(clause, scope)
+            self._visits_once()   # "either visit a exactly once, or ...": the count binds its branch
             chains.append([Step('formula', formula=c) for c in self.task.constraints] + self.task.chain)
         self.task = outer
         self.task.chain.append(Step('any', chains=chains))
@@ -928,7 +934,7 @@ class _Reader:
             return scope   # "whichever one you pick, ...": the choice is the person's
         if orders.is_strict_marker(tokens) and self._strict_last():
             return scope   # "go to X once you have been to Y, and not a second earlier"
-        if s in ('not both', 'but not both', 'not both of them'):
+        if s in _NOT_BOTH or ' '.join(t for t in clause.tokens if t not in PUNCT) in _NOT_BOTH:
             self._exclusive_or()
             return scope
         if self._read_same_for(tokens, scope):
@@ -1541,6 +1547,21 @@ class _Reader:
         k = self._avoid_start(tokens)
         assert k is not None
         nps, _, end = self._np_list(tokens, k, place=False)
+        group = next((len(g) for g in (['either', 'of', 'them'], ['both', 'of', 'them'], ['any', 'of', 'them'],
+                                       ['each', 'of', 'them'], ['all', 'of', 'them'], ['them', 'both'],
+                                       ['them', 'all'], ['either', 'one'], ['any', 'of', 'those'])
+                      if tokens[k:k + len(g)] == g), 0)
+        last = self.task.chain[-1] if self.task.chain else None
+        named: list[Descriptor] = []
+        if last is not None and last.kind == 'visit':
+            named = list(last.targets)
+        elif last is not None and last.kind in ('all', 'any') and all(
+                len(c) == 1 and c[0].kind == 'visit' for c in last.chains):
+            named = [d for c in last.chains for d in c[0].targets]
+        if group and len(named) > 1:
+            # "go to the silo or the trough, but not near either of them until ...": both of them
+            nps = [NounPhrase(d, k, k + group, d.name.split('_')[-1]) for d in named]
+            end = k + group
         if not nps:
             raise TranslationError(f'could not place what to avoid in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
@@ -1909,6 +1930,14 @@ class _Reader:
             names = ', '.join(str(n.descriptor) for n in nps)
             self.notes.append(f'"{" ".join(tokens)}": kept away from {names}')
             return True
+        cut = next((k for k in range(1, len(rest)) if rest[k] in ('until', 'till', 'before', 'unless')), -1)
+        if rest[:1] in (['is'], ['are']) and cut > 1 and [t for t in rest[1:cut] if t not in hedges] in (
+                ['off', 'limits'], ['out', 'of', 'bounds'], ['forbidden'], ['prohibited'], ['banned'],
+                ['restricted'], ['not', 'allowed'], ['no', 'go'], ['closed'], ['not', 'permitted']) and not none:
+            # "the bench is off limits until you have visited the reel": not there until then
+            self.notes.append(f'"{" ".join(tokens[:end + cut])}": kept away from it, until then')
+            self._read_avoid(['avoid'] + tokens[:end] + rest[cut:], None)
+            return True
         neg = ('cannot', 'never', 'not')
         if not (none and rest[:1] in (['are'], ['is'], ['can'], ['should'], ['must']) or
                 any(w in rest[:3] for w in neg) and rest[:1] != ['is'] and rest and rest[0] in (
@@ -2046,6 +2075,10 @@ class _Reader:
     def _exclusive_or(self) -> None:
         """'X or Y but not both': one of them, and never the other."""
         step = self.task.last_step(('visit',))
+        last = self.task.chain[-1] if self.task.chain else None
+        if (step is None or len(step.targets) < 2) and last is not None and last.kind == 'any' and last.chains and all(
+                c and c[0].kind == 'formula' for c in last.chains):
+            return   # "only one of them, not both": said twice
         if step is None or len(step.targets) < 2:
             raise TranslationError('"not both" needs two alternatives before it',
                                    details={'part': 'not both'})

@@ -45,6 +45,9 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' on the way back (?=from )', ' on the way '),
     (r' on the (?:return leg|return trip|return journey|return flight|trip back|flight back|leg back|drive back|'
      r'walk back|way home|journey back) (?=to |towards )', ' on the way back '),
+    # "either go to the east gate or the west gate": the choice is of the places
+    (r'(^ | [,.;!?] | and | then )either (go to|visit|head to|fly to|drive to|walk to|stop at|head over to) '
+     r'(?=(?:the|a|an|my|your|our) [^,.;!?]* or (?:the|a|an|my|your|our) )', r'\1 \2 either '),
     # "make a quick stop at the cart": stop at it
     (r' make (?:a |one )?(?:quick |brief |short |little )?stop (at|by|in) ', r' stop \1 '),
 

@@ -350,3 +350,16 @@ def test_a_place_off_limits_until_an_event() -> None:
            'F (near[shed] & F near[bench]) & (!near[bench] U near[reel])')
     _check('The loft is out of bounds until you have been to the landing. Go to the loft.',
            'F near[loft] & (!near[loft] U near[landing])')
+
+
+def test_more_everyday_phrasings() -> None:
+    _check('Head to the reception desk but skip the cafe.', 'F near[reception_desk]')
+    _check('Go to the hall, then the landing; you can stop at the bathroom on the way if you need to.',
+           'F (near[hall] & F near[landing])')
+    _check('Go to the kiosk at least twice but no more than three times.',
+           'F (near[kiosk] & F (!near[kiosk] & F near[kiosk])) & (!near[kiosk] W (near[kiosk] & (near[kiosk] W '
+           '(!near[kiosk] & (!near[kiosk] W (near[kiosk] & (near[kiosk] W (!near[kiosk] & (!near[kiosk] W '
+           '(near[kiosk] & (near[kiosk] W G !near[kiosk])))))))))))')
+    _check('Pick up the bread from the bakery and bring it home.',
+           'F (near[bread::isnextto(bakery)] & F (pick[bread::isnextto(bakery)] & F (near[home] & '
+           'F release[bread::isnextto(bakery), home])))')

@@ -170,6 +170,9 @@ RULES: tuple[Rule, ...] = (
     Rule('pick up the cup and fly it over to the sink: moving what is held is carrying it',
          r'\b(?P<a>and|then|,) (?:fly|drive|walk|wheel|roll|float|ride|move|bring|take) (?P<o>it|them) '
          r'(?:over |across |back |down |up |out |along )?(?P<p>to|into|onto)\b', r'\g<a> carry \g<o> \g<p>'),
+    Rule('bring it home: home is where it goes',
+         rf'\b(?P<v>take|bring|carry|return|get|haul|fetch) (?P<x>it|them|(?:the|a|an|my|your|our|this|that|these|'
+         rf'those) {_NP}) (?:back )?home\b', r'\g<v> \g<x> to home'),
     Rule('take the chair back to the office',
          rf'\b(?P<v>take|bring|carry|return|move|haul|lug|wheel|ferry|cart) (?P<x>(?:the|a|an|my|your|our|this|that|'
          rf'these|those) {_NP}) back (?P<p>to|into|in|onto|inside)\b', r'\g<v> \g<x> \g<p>'),

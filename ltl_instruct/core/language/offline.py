@@ -769,6 +769,9 @@ class _Reader:
                         ['the', 'order'], ['any', 'order'], ['in', 'any'], ['in', 'whatever'],
                         ['order', 'does']):
                     boundary, skip = 'and', j - i   # "..., the order is up to you"
+                elif t in (',', 'and', 'but') and j + 1 < n and tokens[j] in ('skip', 'ignore', 'bypass', 'forget') \
+                        and tokens[j + 1] in DETS:
+                    boundary, skip = 'and', j - i   # "head to the desk but skip the cafe"
                 elif t in (',', 'and') and j < n and chatter.is_remark(tokens[j:next(
                         (k for k in range(j, n) if tokens[k] in PUNCT), n)]):
                     boundary, skip = 'and', j - i   # "..., your call", "..., take your time"
@@ -939,6 +942,18 @@ class _Reader:
             return scope
         if self._read_same_for(tokens, scope):
             return scope
+        if tokens[:3] in (['no', 'more', 'than'], ['not', 'more', 'than']) and len(tokens) < 7 or \
+                tokens[:2] in (['at', 'most'], ['up', 'to']) and len(tokens) < 5:
+            # "visit a at least twice, but no more than three times": a bound on the goal just counted
+            step = self.task.last_step(('visit',))
+            if step is not None and len(step.targets) == 1:
+                before = len(self.task.constraints)
+                snapshot = list(self.task.chain)
+                ok, rest = self._read_count(tokens, step.targets[:1])
+                self.task.chain[:] = snapshot
+                if ok and not rest and len(self.task.constraints) > before:
+                    return scope
+                del self.task.constraints[before:]
         if tokens[0] in ('twice', 'thrice', 'once') or (len(tokens) > 1 and tokens[1] == 'times') or \
                 tokens[0] in ('exactly', 'at') and len(tokens) < 5:
             step = self.task.last_step(('visit',))
@@ -1996,6 +2011,14 @@ class _Reader:
 
     def _read_permission(self, tokens: list[str]) -> None:
         """'...then you can go to Y': an avoidance of Y that was pending ends where the goal is reached."""
+        text = ' ' + ' '.join(tokens) + ' '
+        if any(p in text for p in (' on the way ', ' on your way ', ' along the way ', ' en route ',
+                                   ' if you need to ', ' if you want to ', ' if you like ', ' if you want ',
+                                   ' if you need ', ' as well ')) and not self.pending_avoid_at and not any(
+                isinstance(c, Always) for c in self.task.constraints):
+            # "you can stop at the bathroom on the way if you need to": allowed, asks for nothing
+            self.notes.append(f'"{" ".join(tokens)}": allowed, not required')
+            return
         names = set()
         start = next((i for i, t in enumerate(tokens)
                       if t in ('can', 'may', 'free', 'allowed', 'or', 'then')), 0)

@@ -363,3 +363,12 @@ def test_more_everyday_phrasings() -> None:
     _check('Pick up the bread from the bakery and bring it home.',
            'F (near[bread::isnextto(bakery)] & F (pick[bread::isnextto(bakery)] & F (near[home] & '
            'F release[bread::isnextto(bakery), home])))')
+
+
+def test_lists_after_a_verb_and_places_of_destinations() -> None:
+    _check('Visit each of the three huts: the red one, the green one and the blue one.',
+           'F near[red_hut] & F near[green_hut] & F near[blue_hut]')
+    notes = _check('Return the atlas to the shelf in the study.',
+                   'F (near[atlas] & F (pick[atlas] & F (near[shelf] & F release[atlas, shelf])))')
+    assert any('where shelf is' in n for n in notes)
+    _check('Go to the den, no actually the lounge, and then the hallway.', 'F (near[lounge] & F near[hallway])')

@@ -2504,7 +2504,7 @@ class _Reader:
                 if j < len(rest) and rest[j] in ('at', 'by', 'in', 'near', 'next'):
                     j += 2 if _starts(rest, j, ['next', 'to']) else 1
             dests, _, dend = self._np_list(rest, j)
-            rest = rest[dend:]
+            rest = self._drop_location(rest[dend:], dests)   # "to the shelf in the study": the shelf
         elif implicit_dest is None:
             if verb in ('take', 'bring', 'get', 'fetch', 'grab'):
                 dests = []

@@ -128,6 +128,15 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             # enumeration only sets the scene
             notes.append(f'"one" read as "{category}"')
             keep = max((k for k in range(s) if tokens[k] in '.;!?'), default=-1)
+            if tokens[keep + 1:keep + 2] and tokens[keep + 1] in _VERBS | {'check', 'inspect', 'survey'} and \
+                    tokens[s - 1] == ':':
+                # "visit each of the three sheds: the red one, the green one and the blue one": the list is
+                # what to visit
+                listed = [category if t == 'one' and tokens[k - 1] in DETERMINERS | PLACEHOLDER_ADJECTIVES else t
+                          for k, t in enumerate(tokens[s:end], s)]
+                verb_end = next((k for k in range(keep + 1, s) if tokens[k] in DETERMINERS or tokens[k] in (
+                    'each', 'all', 'both', 'every', 'these', 'those', 'them') or tokens[k] in NUMBER_WORDS), s)
+                return tokens[:verb_end] + listed + tail
             return tokens[:keep + 1] + [category if t == 'one' and k > 0 and tail[k - 1] not in DETERMINERS
                                         else t for k, t in enumerate(tail)]
         return tokens
@@ -282,7 +291,8 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('change', 'of', 'plans'), ('let', 'me', 'rephrase'), ('wait', 'no'), ('hold', 'on'), ('scratch',),
     ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'), ('hang', 'on'),
     ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
-    ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'),
+    ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'), ('no', 'actually'), ('no', 'i', 'mean'),
+    ('no', 'make', 'that'), ('no', 'rather'),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
                      'leave'})

@@ -33,7 +33,8 @@ REMARKS = [
     ('Fly to the silo or the mill, whichever is less windy right now.', 'F near[silo] | F near[mill]'),
     ('Carry the knife to the sink, careful, it is sharp.',
      'F (near[knife] & F (pick[knife] & F (near[sink] & F release[knife, sink])))'),
-    ('Visit the printer twice, it keeps jamming.', 'F (near[printer] & F (!near[printer] & F near[printer]))'),
+    ('Visit the printer twice, it keeps '
+     'jamming.', 'F (near[printer] & F (!near[printer] & F near[printer]))'),
     ('Head to the kennel, they get noisy at night.', 'F near[kennel]'),
     ('Take the mop to the closet and never go near the nursery, there is a baby napping in there.',
      'F (near[mop] & F (pick[mop] & F (near[closet] & F release[mop, closet]))) & G !near[nursery]'),
@@ -66,7 +67,8 @@ def test_chat_spellings(instruction: str, gold: str) -> None:
 
 COUNTS = [
     ('Swing by the mailbox a couple of times.', 'F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))'),
-    ('Check the gate twice, two separate visits to the gate.', 'F (near[gate] & F (!near[gate] & F near[gate]))'),
+    ('Check the gate twice, two separate visits to the '
+     'gate.', 'F (near[gate] & F (!near[gate] & F near[gate]))'),
     ('Check the gate three times, three distinct trips.',
      'F (near[gate] & F (!near[gate] & F (near[gate] & F (!near[gate] & F near[gate]))))'),
     ('Only once, mind you, drive to the barn.',
@@ -74,7 +76,8 @@ COUNTS = [
     ('Go up to the loft just the once.', '!near[loft] U (near[loft] & (near[loft] W G !near[loft]))'),
     ('Visit the attic exactly twice, no more and no less, then the porch.',
      '(!near[attic] U (near[attic] & (near[attic] U (!near[attic] & (!near[attic] U (near[attic] & '
-     '(near[attic] W G !near[attic]))))))) & F (near[attic] & F (!near[attic] & F (near[attic] & F near[porch])))'),
+     '(near[attic] W G !near[attic]))))))) & F (near[attic] & F (!near[attic] & F (near[attic] & F '
+     'near[porch])))'),
     ('Check the gate at least twice over the course of the evening.',
      'F (near[gate] & F (!near[gate] & F near[gate]))'),
     ('Bring the box to the porch, and never go to the porch more than once while you are at it.',
@@ -95,9 +98,11 @@ EVENTS = [
      'F (near[sacks] & F (pick[sacks] & F (near[shed] & F (release[sacks, shed] & G !near[barn]))))'),
     ('Carry the box to the shed, and as soon as you have let go of it, keep out of the garden.',
      'F (near[box] & F (pick[box] & F (near[shed] & F (release[box, shed] & G !near[garden]))))'),
-    ('Bring the mug to the desk. The minute you have got hold of it, avoid the stairs for the rest of the task.',
+    ('Bring the mug to the desk. The minute you have got hold of it, avoid the stairs for the rest '
+     'of the task.',
      'F (near[mug] & F (pick[mug] & G !near[stairs] & F (near[desk] & F release[mug, desk])))'),
-    ('Fly to the tower for an inspection, and once you have reached it, avoid the lake for the rest of the flight.',
+    ('Fly to the tower for an inspection, and once you have reached it, avoid the lake for the rest '
+     'of the flight.',
      'F (near[tower] & G !near[lake])'),
     ('Go to the den and give the rug a wide berth.', 'F near[den] & G !near[rug]'),
     ('Go to the den and do not cut across the lawn.', '!near[lawn] U near[den]'),
@@ -184,8 +189,10 @@ PHRASINGS = [
      'F (near[chair] & F (pick[chair] & F (near[office] & F release[chair, office])))'),
     ('Make a pass over the field exactly twice, then land on the pad.',
      '(!near[field] U (near[field] & (near[field] U (!near[field] & (!near[field] U (near[field] & '
-     '(near[field] W G !near[field]))))))) & F (near[field] & F (!near[field] & F (near[field] & F near[pad])))'),
-    ('Drop by either the bakery or the bank, then go home.', 'F ((near[bakery] | near[bank]) & F near[home])'),
+     '(near[field] W G !near[field]))))))) & F (near[field] & F (!near[field] & F (near[field] & F '
+     'near[pad])))'),
+    ('Drop by either the bakery or the bank, then go '
+     'home.', 'F ((near[bakery] | near[bank]) & F near[home])'),
     ('Take the towels down to the chute, and never go near the nursery, there is someone sleeping in there.',
      'F (near[towels] & F (pick[towels] & F (near[chute] & F release[towels, chute]))) & G !near[nursery]'),
 ]
@@ -218,11 +225,13 @@ def test_a_correction_that_names_what_it_corrects_and_apologises() -> None:
 
 
 CORRECTIONS = [
-    ('Go to the mug on the top shelf, hang on, my mistake, it is actually on the middle shelf, same mug though.',
+    ('Go to the mug on the top shelf, hang on, my mistake, it is actually on the middle shelf, same '
+     'mug though.',
      'F near[mug::isabove(middle_shelf)]'),
     ('Could you carry the rug to the hall, oh, hang on, I mean the porch, it needs airing.',
      'F (near[rug] & F (pick[rug] & F (near[porch] & F release[rug, porch])))'),
-    ('Bring the cups to the sink, and keep away from the stove. Correction: the stove\'s fine, keep away from '
+    ('Bring the cups to the sink, and keep away from the stove. Correction: the stove\'s fine, keep '
+     'away from '
      'the kettle instead.',
      'F (near[cups] & F (pick[cups] & F (near[sink] & F release[cups, sink]))) & G !near[kettle]'),
     ('Go to the blue gate or the white gate. Actually, just the white gate; the blue one\'s locked.',
@@ -250,9 +259,11 @@ LIST_POSITIONS = [
     ('I have left out a cup, a plate and a fork. Return the middle one to the sink.',
      'F (near[plate] & F (pick[plate] & F (near[sink] & F release[plate, sink])))'),
     ('You will pass a vase, a piano and a clock. Go to the one before the clock.', 'F near[piano]'),
-    ('You will pass a vase, a piano and a clock in the hall. Visit the piano first, and after that the item I '
+    ('You will pass a vase, a piano and a clock in the hall. Visit the piano first, and after that '
+     'the item I '
      'listed at the start.', 'F (near[piano] & F near[vase])'),
-    ('Go to the porch, and keep clear of the second and third things on this list: a ladder, a bucket, a hose.',
+    ('Go to the porch, and keep clear of the second and third things on this list: a ladder, a '
+     'bucket, a hose.',
      'F near[porch] & G !near[bucket] & G !near[hose]'),
     ('Bring me the last of these: a mug, a spoon, a bowl.', 'F (near[bowl] & F pick[bowl])'),
 ]
@@ -267,7 +278,8 @@ DRONE_AND_ERRANDS = [
     ('Drone, once you are in the air, head out to the mast and hold position over it; that is the only stop.',
      'F near[mast]'),
     ('Fly across to the gazebo and hold your position there for a couple of minutes.', 'F near[gazebo]'),
-    ('Do not fly over the field until you have inspected the mast, and once that is done, survey the whole field.',
+    ('Do not fly over the field until you have inspected the mast, and once that is done, survey '
+     'the whole field.',
      '(!near[field] U near[mast]) & F (near[mast] & F near[field])'),
     ('Hover at the turbine, but only once you have made a pass over the pylon.',
      'F near[turbine] & (!near[turbine] U near[pylon])'),
@@ -293,7 +305,8 @@ PICK_GUARDS = [
      'F (near[parcel] & F (pick[parcel] & F (near[porch] & F release[parcel, porch]))) & '
      '(!pick[parcel] U near[gate])'),
     ('Take the tray to the kitchen, and never pick up the tray before you have been to the hall.',
-     'F (near[tray] & F (pick[tray] & F (near[kitchen] & F release[tray, kitchen]))) & (!pick[tray] U near[hall])'),
+     'F (near[tray] & F (pick[tray] & F (near[kitchen] & F release[tray, kitchen]))) & (!pick[tray] '
+     'U near[hall])'),
 ]
 
 
@@ -303,13 +316,16 @@ def test_a_pick_that_must_wait_for_a_visit(instruction: str, gold: str) -> None:
 
 
 LEGS = [
-    ('Go to the barn first, and then the cow shed, and as you head from the barn to the shed, do not cut across '
+    ('Go to the barn first, and then the cow shed, and as you head from the barn to the shed, do '
+     'not cut across '
      'the orchard.', 'F (near[barn] & (!near[orchard] U near[cow_shed]))'),
     ('Fly out to the mast, and on the return leg to the pad, stay clear of the turbines.',
      'F (near[mast] & (!near[turbines] U near[pad]))'),
-    ('On your way to the cellar, avoid the boiler. Sorry, I meant avoid it on the way back from the cellar to '
+    ('On your way to the cellar, avoid the boiler. Sorry, I meant avoid it on the way back from the '
+     'cellar to '
      'the garage, not on the way there.', 'F (near[cellar] & (!near[boiler] U near[garage]))'),
-    ('Stop at the kiosk first and then make your way to the gate; on the leg between the two, stay out of the '
+    ('Stop at the kiosk first and then make your way to the gate; on the leg between the two, stay '
+     'out of the '
      'car park, it is busy.', 'F (near[kiosk] & (!near[car_park] U near[gate]))'),
     ('Go to the attic and then the porch, and stay out of the hall between the two.',
      'F (near[attic] & (!near[hall] U near[porch]))'),
@@ -329,13 +345,15 @@ CHOICES = [
      'F (near[fountain] & F (!near[fountain] & F near[fountain]))'),
     ('Either go to the east gate or the west gate, and on the way there, avoid the kennels, they get noisy.',
      '!near[kennels] U (near[east_gate] | near[west_gate])'),
-    ('Head to either the silo or the trough, but do not go near either of them until you have been to the gate.',
+    ('Head to either the silo or the trough, but do not go near either of them until you have been '
+     'to the gate.',
      '(F near[silo] | F near[trough]) & ((!near[silo] & !near[trough]) U near[gate])'),
     ('Go to the den and the hall, and avoid both of them until you have been to the porch.',
      'F near[den] & F near[hall] & ((!near[den] & !near[hall]) U near[porch])'),
     ('Check the east gate or the west gate, just one of them, and avoid the pond.',
      '((F near[east_gate] & G !near[west_gate]) | (F near[west_gate] & G !near[east_gate])) & G !near[pond]'),
-    ('Inspect the red shed or the blue shed, only one of them, not both, and keep clear of the pen throughout.',
+    ('Inspect the red shed or the blue shed, only one of them, not both, and keep clear of the pen '
+     'throughout.',
      '((F near[red_shed] & G !near[blue_shed]) | (F near[blue_shed] & G !near[red_shed])) & G !near[pen]'),
 ]
 
@@ -346,7 +364,8 @@ def test_choices_said_in_other_words(instruction: str, gold: str) -> None:
 
 
 def test_a_place_off_limits_until_an_event() -> None:
-    _check('Go to the shed and then the bench. Also, the bench is off limits until you have visited the reel too.',
+    _check('Go to the shed and then the bench. Also, the bench is off limits until you have visited '
+           'the reel too.',
            'F (near[shed] & F near[bench]) & (!near[bench] U near[reel])')
     _check('The loft is out of bounds until you have been to the landing. Go to the loft.',
            'F near[loft] & (!near[loft] U near[landing])')
@@ -357,7 +376,8 @@ def test_more_everyday_phrasings() -> None:
     _check('Go to the hall, then the landing; you can stop at the bathroom on the way if you need to.',
            'F (near[hall] & F near[landing])')
     _check('Go to the kiosk at least twice but no more than three times.',
-           'F (near[kiosk] & F (!near[kiosk] & F near[kiosk])) & (!near[kiosk] W (near[kiosk] & (near[kiosk] W '
+           'F (near[kiosk] & F (!near[kiosk] & F near[kiosk])) & (!near[kiosk] W (near[kiosk] & '
+           '(near[kiosk] W '
            '(!near[kiosk] & (!near[kiosk] W (near[kiosk] & (near[kiosk] W (!near[kiosk] & (!near[kiosk] W '
            '(near[kiosk] & (near[kiosk] W G !near[kiosk])))))))))))')
     _check('Pick up the bread from the bakery and bring it home.',
@@ -371,4 +391,5 @@ def test_lists_after_a_verb_and_places_of_destinations() -> None:
     notes = _check('Return the atlas to the shelf in the study.',
                    'F (near[atlas] & F (pick[atlas] & F (near[shelf] & F release[atlas, shelf])))')
     assert any('where shelf is' in n for n in notes)
-    _check('Go to the den, no actually the lounge, and then the hallway.', 'F (near[lounge] & F near[hallway])')
+    _check('Go to the den, no actually the lounge, and then the '
+           'hallway.', 'F (near[lounge] & F near[hallway])')

@@ -70,6 +70,26 @@ WISHES: tuple[tuple[str, ...], ...] = (
     ('thanks', 'for'), ('thank', 'you', 'for'), ('sorry', 'to', 'bother'), ('sorry', 'for'),
 )
 
+# How long to stay ("hover there for a few minutes"): the formula has no clock.
+_DURATIONS: tuple[tuple[str, ...], ...] = tuple(
+    ('for',) + amount + (unit,)
+    for amount in (('a', 'few'), ('a', 'couple', 'of'), ('some',), ('two',), ('three',), ('five',), ('ten',),
+                   ('a', 'few', 'more'))
+    for unit in ('minutes', 'seconds', 'moments', 'mins', 'secs', 'hours'))
+# When in the day ("over the course of the night shift").
+_SPANS: tuple[tuple[str, ...], ...] = tuple(
+    ('over', 'the', 'course', 'of', 'the') + span
+    for span in (('day',), ('night',), ('evening',), ('morning',), ('afternoon',), ('week',), ('shift',),
+                 ('night', 'shift'), ('day', 'shift'), ('late', 'shift'), ('early', 'shift'))) + tuple(
+    ('during', 'the') + span
+    for span in (('night', 'shift'), ('day', 'shift'), ('night',), ('day',), ('shift',)))
+# What the visit is for ("fly to the pylon for an inspection"): the visit itself is the task.
+_PURPOSES: tuple[tuple[str, ...], ...] = tuple(
+    ('for',) + art + quick + (what,)
+    for art in (('a',), ('an',)) for quick in ((), ('quick',), ('closer',))
+    for what in ('inspection', 'check', 'look', 'photo', 'picture', 'survey', 'scan', 'reading', 'visual',
+                 'checkup', 'peek', 'glance', 'sweep'))
+
 # Courtesy and time-of-day phrases that end a clause and ask for nothing.
 COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('for', 'me'), ('for', 'us'), ('real', 'quick'), ('quick',), ('asap',), ('as', 'soon', 'as', 'possible'),
@@ -114,19 +134,7 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
     ('in', 'a', 'sec'), ('in', 'a', 'second'), ('while', 'you', 'are', 'at', 'it'),
     ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
-) + tuple(
-    # how long to stay ("hover there for a few minutes"): the formula has no clock
-    ('for',) + amount + (unit,) for amount in (('a', 'few'), ('a', 'couple', 'of'), ('some',), ('two',),
-                                               ('three',), ('five',), ('ten',), ('a', 'few', 'more'))
-    for unit in ('minutes', 'seconds', 'moments', 'mins', 'secs', 'hours')) + tuple(('over', 'the', 'course', 'of', 'the') + span for span in (
-    ('day',), ('night',), ('evening',), ('morning',), ('afternoon',), ('week',), ('shift',), ('night', 'shift'),
-    ('day', 'shift'), ('late', 'shift'), ('early', 'shift'))) + tuple(
-    ('during', 'the') + span for span in (('night', 'shift'), ('day', 'shift'), ('night',), ('day',), ('shift',))
-) + tuple(
-    # what the visit is for ("fly to the pylon for an inspection"): the visit itself is the task
-    ('for',) + art + quick + (what,) for art in (('a',), ('an',)) for quick in ((), ('quick',), ('closer',))
-    for what in ('inspection', 'check', 'look', 'photo', 'picture', 'survey', 'scan', 'reading', 'visual',
-                 'checkup', 'peek', 'glance', 'sweep')),
+) + _DURATIONS + _SPANS + _PURPOSES,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
@@ -159,9 +167,10 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('to', 'start', 'with'), ('to', 'start', 'off'), ('for', 'a', 'start'),
     # a drone's take-off, which every flight starts with
     ('once', 'you', 'are', 'airborne'), ('once', 'airborne'), ('when', 'you', 'are', 'airborne'),
-    ('once', 'you', 'are', 'in', 'the', 'air'), ('once', 'you', 'are', 'up'), ('once', 'you', 'have', 'taken', 'off'),
-    ('after', 'taking', 'off'), ('after', 'take', 'off'), ('after', 'takeoff'), ('after', 'you', 'take', 'off'),
-    ('once', 'you', 'are', 'off', 'the', 'ground'), ('when', 'you', 'are', 'up'), ('once', 'in', 'the', 'air'),
+    ('once', 'you', 'are', 'in', 'the', 'air'), ('once', 'you', 'are', 'up'),
+    ('once', 'you', 'have', 'taken', 'off'), ('after', 'taking', 'off'), ('after', 'take', 'off'),
+    ('after', 'takeoff'), ('after', 'you', 'take', 'off'), ('once', 'you', 'are', 'off', 'the', 'ground'),
+    ('when', 'you', 'are', 'up'), ('once', 'in', 'the', 'air'),
 ), key=lambda t: -len(t)))
 
 PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',
@@ -188,7 +197,8 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
     (r'(^ | [,.;!?] )(?:would|could|do|will) you mind ', r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
-    (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you (?:could|would|can|will) ',
+    (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you '
+     r'(?:could|would|can|will) ',
      r'\1 '),
     (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
      r'get) )', r'\1 '),
@@ -395,7 +405,8 @@ TIMING: frozenset[tuple[str, ...]] = frozenset({('right', 'away'), ('at', 'once'
 # Discourse fillers between commas ("go to the hall, like, now").
 ASIDES: tuple[tuple[str, ...], ...] = (
     ('like',), ('you', 'know'), ('i', 'guess'), ('basically',), ('i', 'think'), ('honestly',), ('kinda',),
-    ('sort', 'of'), ('i', 'suppose'), ('mind',), ('mind', 'you'))   # not "uh", "um": they mark self-corrections
+    ('sort', 'of'), ('i', 'suppose'), ('mind',), ('mind', 'you'),
+)   # not "uh", "um": they mark self-corrections
 
 
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
@@ -460,7 +471,8 @@ _REMARK_RE = re.compile(
     r'(?: (?:right now|now|today|at the moment))?'
     r'|(?:that|the) order (?:matters|is important)(?: to (?:me|us))?'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
-    r'|(?:(?:that|this|it) )?is (?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)(?: (?:for )?(?:today|now|'
+    r'|(?:(?:that|this|it) )?is (?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)'
+    r'(?: (?:for )?(?:today|now|'
     r'tonight|this time))?'
     r')$')
 

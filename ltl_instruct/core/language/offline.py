@@ -55,7 +55,8 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
 )
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
-    Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil, referents_of,
+    Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
+    referents_of,
 )
 
 MAX_INSTRUCTION_CHARS = 2000
@@ -65,6 +66,7 @@ def _rename(f: Formula, mapping: dict[Descriptor, Descriptor]) -> Formula:
     """``f`` with every skill argument in ``mapping`` replaced."""
     from ltl_instruct.core.language.evaluation import rename_descriptors
     return rename_descriptors(f, mapping)
+
 
 # Words that put an avoidance over the whole run, whatever scope the sentence opened with.
 GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -82,8 +84,9 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
           for whole in ('whole', 'entire')
           for what in ('time', 'way', 'trip', 'flight', 'route', 'mission', 'run', 'task', 'journey', 'drive',
                        'walk', 'tour', 'job', 'day', 'night')) + tuple(
-    ('during', 'the', what) for what in ('flight', 'trip', 'mission', 'task', 'run', 'route', 'tour', 'patrol',
-                                         'round', 'rounds', 'drive', 'walk', 'journey', 'delivery')),
+    ('during', 'the', what) for what in (
+        'flight', 'trip', 'mission', 'task', 'run', 'route', 'tour', 'patrol', 'round', 'rounds', 'drive',
+        'walk', 'journey', 'delivery')),
     key=lambda t: -len(t)))
 _GLOBAL_FIRST = frozenset(m[0] for m in GLOBAL_MARKERS)
 
@@ -191,9 +194,13 @@ SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bri
 
 # Clauses after a choice that make it exclusive ("the den or the hall, but not both").
 _NOT_BOTH = frozenset({'not both', 'but not both', 'not both of them', 'only one of them', 'just one of them',
-                       'only one', 'just one', 'one or the other', 'only one of the two', 'just one of the two',
-                       'never both', 'but never both', 'not the two of them', 'but only one of them',
-                       'but just one of them'})
+                       'only one', 'just one', 'one or the other', 'only one of the two',
+                       'just one of the two', 'never both', 'but never both', 'not the two of them',
+                       'but only one of them', 'but just one of them'})
+# "either of them", "both of them": every goal of the step just given.
+_ALL_OF_THEM = (['either', 'of', 'them'], ['both', 'of', 'them'], ['any', 'of', 'them'],
+                ['each', 'of', 'them'], ['all', 'of', 'them'], ['them', 'both'], ['them', 'all'],
+                ['either', 'one'], ['any', 'of', 'those'])
 _REFLEXIVE = frozenset({'yourself', 'itself', 'myself', 'ourselves', 'yourselves', 'me', 'us', 'you'})
 _SPELLER: Optional[Speller] = None
 _WISH_FIRST = frozenset(w[0] for w in chatter.WISHES)
@@ -373,7 +380,7 @@ class _Reader:
         return formula if self.phrases.landmarks else self._shorthands(formula)
 
     def _shorthands(self, formula: Formula) -> Formula:
-        """Name a thing said again by its last word as it was first named ("the kitchen island ... the island").
+        """Name a thing said again by its last word as first named ("the kitchen island ... the island").
 
         Only a bare one-word name is renamed, and only where exactly one longer name of the
         instruction ends in it; each renaming is noted.
@@ -769,8 +776,8 @@ class _Reader:
                         ['the', 'order'], ['any', 'order'], ['in', 'any'], ['in', 'whatever'],
                         ['order', 'does']):
                     boundary, skip = 'and', j - i   # "..., the order is up to you"
-                elif t in (',', 'and', 'but') and j + 1 < n and tokens[j] in ('skip', 'ignore', 'bypass', 'forget') \
-                        and tokens[j + 1] in DETS:
+                elif t in (',', 'and', 'but') and j + 1 < n and tokens[j] in (
+                        'skip', 'ignore', 'bypass', 'forget') and tokens[j + 1] in DETS:
                     boundary, skip = 'and', j - i   # "head to the desk but skip the cafe"
                 elif t in (',', 'and') and j < n and chatter.is_remark(tokens[j:next(
                         (k for k in range(j, n) if tokens[k] in PUNCT), n)]):
@@ -979,8 +986,8 @@ class _Reader:
                     self.scene = [np.descriptor for np in nps]
                     self.notes.append(f'took "{s}" as a description of the scene, not a task')
                     return scope
-                if lead[0] == 'there' and body and body[0] in ('someone', 'somebody', 'people', 'nobody', 'kids',
-                                                               'guests', 'visitors') and \
+                if lead[0] == 'there' and body and body[0] in (
+                        'someone', 'somebody', 'people', 'nobody', 'kids', 'guests', 'visitors') and \
                         not chatter.carries_constraint(body):
                     # "there is someone asleep in there": why, not what to do
                     self.notes.append(f'took "{s}" as a description of the scene, not a task')
@@ -1105,9 +1112,10 @@ class _Reader:
             return (tokens[j + 1:j + 2] in (['is'], ['are'], ['was'], ['were'], ['has'], ['had']) or (
                 j + 1 < len(tokens) and tokens[j + 1] in chatter.FINITE_VERBS)) and \
                 chatter.is_statement(tokens[j:end]) and end - j <= 6
-        if tokens[j:j + 1] == ['there'] and tokens[j + 1:j + 2] in (['is'], ['are']) and j + 2 < len(tokens) and \
-                tokens[j + 2] in ('a', 'an', 'some', 'someone', 'somebody', 'people', 'nobody', 'lots', 'kids',
-                                  'guests', 'visitors', 'water', 'glass', 'oil', 'paint', 'ice') and \
+        if tokens[j:j + 1] == ['there'] and tokens[j + 1:j + 2] in (['is'], ['are']) and \
+                j + 2 < len(tokens) and tokens[j + 2] in (
+                    'a', 'an', 'some', 'someone', 'somebody', 'people', 'nobody', 'lots', 'kids', 'guests',
+                    'visitors', 'water', 'glass', 'oil', 'paint', 'ice') and \
                 not self.phrases.landmarks:
             # "..., there is someone asleep in there": says why, asks for nothing
             end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
@@ -1380,7 +1388,7 @@ class _Reader:
         return None, tokens
 
     def _named_before(self, np: NounPhrase) -> NounPhrase:
-        """A goal said again by its last word ("the tool shed ... the shed"): the goal named before."""
+        """Return the goal named before for one said again by its last word ("the tool shed ... the shed")."""
         d = np.descriptor
         if d.relations or '_' in d.name or self.phrases.landmarks or self.task.find_step(d) is not None:
             return np
@@ -1562,10 +1570,7 @@ class _Reader:
         k = self._avoid_start(tokens)
         assert k is not None
         nps, _, end = self._np_list(tokens, k, place=False)
-        group = next((len(g) for g in (['either', 'of', 'them'], ['both', 'of', 'them'], ['any', 'of', 'them'],
-                                       ['each', 'of', 'them'], ['all', 'of', 'them'], ['them', 'both'],
-                                       ['them', 'all'], ['either', 'one'], ['any', 'of', 'those'])
-                      if tokens[k:k + len(g)] == g), 0)
+        group = next((len(g) for g in _ALL_OF_THEM if tokens[k:k + len(g)] == g), 0)
         last = self.task.chain[-1] if self.task.chain else None
         named: list[Descriptor] = []
         if last is not None and last.kind == 'visit':
@@ -1948,7 +1953,8 @@ class _Reader:
         cut = next((k for k in range(1, len(rest)) if rest[k] in ('until', 'till', 'before', 'unless')), -1)
         if rest[:1] in (['is'], ['are']) and cut > 1 and [t for t in rest[1:cut] if t not in hedges] in (
                 ['off', 'limits'], ['out', 'of', 'bounds'], ['forbidden'], ['prohibited'], ['banned'],
-                ['restricted'], ['not', 'allowed'], ['no', 'go'], ['closed'], ['not', 'permitted']) and not none:
+                ['restricted'], ['not', 'allowed'], ['no', 'go'], ['closed'], ['not', 'permitted']) and \
+                not none:
             # "the bench is off limits until you have visited the reel": not there until then
             self.notes.append(f'"{" ".join(tokens[:end + cut])}": kept away from it, until then')
             self._read_avoid(['avoid'] + tokens[:end] + rest[cut:], None)
@@ -2099,8 +2105,8 @@ class _Reader:
         """'X or Y but not both': one of them, and never the other."""
         step = self.task.last_step(('visit',))
         last = self.task.chain[-1] if self.task.chain else None
-        if (step is None or len(step.targets) < 2) and last is not None and last.kind == 'any' and last.chains and all(
-                c and c[0].kind == 'formula' for c in last.chains):
+        if (step is None or len(step.targets) < 2) and last is not None and last.kind == 'any' and \
+                last.chains and all(c and c[0].kind == 'formula' for c in last.chains):
             return   # "only one of them, not both": said twice
         if step is None or len(step.targets) < 2:
             raise TranslationError('"not both" needs two alternatives before it',
@@ -2307,7 +2313,7 @@ class _Reader:
                     ['you', 'cannot'], ['do', 'not', 'even'])
 
     def _read_pick_guard(self, tokens: list[str]) -> bool:
-        """Read 'don't pick it up until you have been to the desk', 'only grab it after ...': the pick waits."""
+        """Read 'don't pick it up until you have been to the desk', 'only grab it after ...': it waits."""
         head = next((h for h in self._GUARD_HEADS if tokens[:len(h)] == h), None)
         if head is None:
             return False
@@ -2334,7 +2340,8 @@ class _Reader:
         elif only or rest[:1] not in (['until'], ['till'], ['before']):
             return False
         scope, left = self._trailing_scope(rest)
-        if scope is None or scope.kind != 'until' or scope.target is None or [t for t in left if t not in PUNCT]:
+        if scope is None or scope.kind != 'until' or scope.target is None or [
+                t for t in left if t not in PUNCT]:
             return False
         event = _near(scope.target.descriptor) if scope.event == 'near' else Atom(
             scope.event, (scope.target.descriptor,))

@@ -38,12 +38,14 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "as you head from the greenhouse to the shed", "on the leg between the two": on the way
     (r' (?:as|while|when) you (?:head|go|travel|fly|drive|walk|move|come|make your way|are going|are heading|'
      r'are flying|are travelling|are traveling) (?=from |between )', ' on the way '),
-    (r' (?:while|when) (?:heading|going|travelling|traveling|flying|driving|walking|moving) (?=from |between )',
+    (r' (?:while|when) (?:heading|going|travelling|traveling|flying|driving|walking|moving) '
+     r'(?=from |between )',
      ' on the way '),
     (r' on the (?:leg|stretch|part|bit|section|segment|trip|journey|flight|drive|walk) (?=from |between )',
      ' on the way '),
     (r' on the way back (?=from )', ' on the way '),
-    (r' on the (?:return leg|return trip|return journey|return flight|trip back|flight back|leg back|drive back|'
+    (r' on the (?:return leg|return trip|return journey|return flight|trip back|flight back|leg back|'
+     r'drive back|'
      r'walk back|way home|journey back) (?=to |towards )', ' on the way back '),
     # "either go to the east gate or the west gate": the choice is of the places
     (r'(^ | [,.;!?] | and | then )either (go to|visit|head to|fly to|drive to|walk to|stop at|head over to) '
@@ -175,8 +177,8 @@ _GERUNDS = {'going': 'go', 'heading': 'head', 'visiting': 'visit', 'checking': '
             'picking': 'pick', 'grabbing': 'grab', 'bringing': 'bring', 'taking': 'take', 'getting': 'get',
             'fetching': 'fetch', 'dropping': 'drop', 'popping': 'pop', 'landing': 'land'}
 # "drop by the porch", "pop in at the shop": a visit, not a delivery
-_DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to) (?=(?:either )?(?:the|a|an|my|'
-                         r'your|our) )')
+_DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to) '
+                         r'(?=(?:either )?(?:the|a|an|my|your|our) )')
 _GERUND_RE = re.compile(r' (first|finally) (' + '|'.join(_GERUNDS) + ') ')
 
 
@@ -197,8 +199,8 @@ def _one_of_group(text: str) -> str:
     return text[:m.start()] + ' go to either ' + body + text[end:]
 
 
-_COLON_RE = re.compile(r'(^ | [.;!?] )(?:pick|choose|select) (?:one|any one|one of them|one of these|either one) '
-                       r': ')
+_COLON_RE = re.compile(r'(^ | [.;!?] )(?:pick|choose|select) '
+                       r'(?:one|any one|one of them|one of these|either one) : ')
 _VERB_COLON_RE = re.compile(r' (avoid|visit|then|never) : ')
 
 

@@ -75,7 +75,8 @@ RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
 )
 # Participles of where a thing was put ("the crate stacked on the pallet", "the van parked by the gate").
 _PLACED = ('stacked', 'piled', 'mounted', 'propped', 'perched', 'sat', 'tucked', 'stashed', 'hung',
-           'sitting', 'lying', 'standing', 'resting', 'leaning', 'hanging', 'parked', 'stored', 'kept', 'placed',
+           'sitting', 'lying', 'standing', 'resting', 'leaning', 'hanging', 'parked', 'stored', 'kept',
+           'placed',
            'located', 'positioned', 'balanced', 'wedged', 'installed', 'waiting', 'stuck', 'fixed')
 RELATIVE_LEADS = tuple(sorted(set(RELATIVE_LEADS) | {
     lead + (w,) + right for lead in ((), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),

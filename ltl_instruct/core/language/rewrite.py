@@ -90,8 +90,8 @@ def _drop_mentions(tail: list[str]) -> list[str]:
     while i < len(tail):
         out.append(tail[i])
         i += 1
-        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle', 'things', 'items', 'ones') or \
-                out[-1] in ORDINALS:
+        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle', 'things', 'items',
+                       'ones') or out[-1] in ORDINALS:
             j = i + (1 if i < len(tail) and tail[i] in ('that', 'which') else 0)
             for m in _MENTIONED:
                 if tuple(tail[j:j + len(m)]) == m:
@@ -132,10 +132,11 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                     tokens[s - 1] == ':':
                 # "visit each of the three sheds: the red one, the green one and the blue one": the list is
                 # what to visit
-                listed = [category if t == 'one' and tokens[k - 1] in DETERMINERS | PLACEHOLDER_ADJECTIVES else t
-                          for k, t in enumerate(tokens[s:end], s)]
+                listed = [category if t == 'one' and tokens[k - 1] in DETERMINERS | PLACEHOLDER_ADJECTIVES
+                          else t for k, t in enumerate(tokens[s:end], s)]
                 verb_end = next((k for k in range(keep + 1, s) if tokens[k] in DETERMINERS or tokens[k] in (
-                    'each', 'all', 'both', 'every', 'these', 'those', 'them') or tokens[k] in NUMBER_WORDS), s)
+                    'each', 'all', 'both', 'every', 'these', 'those', 'them') or tokens[k] in NUMBER_WORDS),
+                    s)
                 return tokens[:verb_end] + listed + tail
             return tokens[:keep + 1] + [category if t == 'one' and k > 0 and tail[k - 1] not in DETERMINERS
                                         else t for k, t in enumerate(tail)]
@@ -170,9 +171,9 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
         while i < len(tail):
             t = tail[i]
             nxt = tail[i + 1] if i + 1 < len(tail) else ''
-            if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (tail[i + 2] in ORDINALS or tail[i + 2] in (
-                    'last', 'middle')) and (i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in (
-                    'and', 'then', 'or')):
+            if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (
+                    tail[i + 2] in ORDINALS or tail[i + 2] in ('last', 'middle')) and (
+                    i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in ('and', 'then', 'or')):
                 tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
                 nxt = tail[i + 1]
             if t == 'the' and nxt:
@@ -206,8 +207,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                     out += joined([0])
                     i += 2
                     continue
-                if nxt in ('one', 'item', 'thing') and tail[i + 2:i + 4] == ['at', 'the'] and tail[i + 4:i + 5] in (
-                        ['start'], ['beginning'], ['end'], ['top'], ['bottom']) and (
+                if nxt in ('one', 'item', 'thing') and tail[i + 2:i + 4] == ['at', 'the'] and \
+                        tail[i + 4:i + 5] in (['start'], ['beginning'], ['end'], ['top'], ['bottom']) and (
                         i + 5 >= len(tail) or tail[i + 5] in PUNCT or tail[i + 5] in ('and', 'then', 'or')):
                     # "the item I listed at the start": the first one (at the end: the last)
                     out += joined([0] if tail[i + 4] in ('start', 'beginning', 'top') else [n - 1])
@@ -266,7 +267,6 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             i += 1
         return out
 
-    n = len(items)
     if not any(t in _REF_WORDS for t in tail) and ahead:
         # "keep clear of the first and third things on this list: a wheelchair, a cart, a hamper"
         head = _drop_mentions(tokens[start:s - 1])
@@ -600,7 +600,7 @@ def _remove_from_list(prev: list[str], p: int, sp: NounPhrase) -> Optional[list[
 
 def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: str, notes: list[str]
                     ) -> Optional[list[str]]:
-    """Remove from ``prev`` the avoidance of the phrase with ``head`` (any, without); keep ``seg``'s orders."""
+    """Remove from ``prev`` the avoidance of the phrase with ``head`` (any, without); keep seg's orders."""
     avoid_at = [p for p in range(len(prev)) if prev[p] in _AVOID_WORDS]
     for p in reversed(avoid_at):
         spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
@@ -816,7 +816,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 tail, _np_end(tail)) and not [
                 t for t in seg[end:] if t not in PUNCT]:
             # "I meant the cooler, sorry, it's been a long day": the apology and the reason ask for nothing
-            notes.append(f'left out "{" ".join(t for t in seg[k + 1:] if t not in PUNCT)}" (asks for nothing)')
+            dropped = ' '.join(t for t in seg[k + 1:] if t not in PUNCT)
+            notes.append(f'left out "{dropped}" (asks for nothing)')
             seg = seg[:k]
             break
     retracted = _retract_avoidance(prev, seg, notes)

@@ -32,7 +32,8 @@ TYPOS: dict[str, str] = {
     'frontyard': 'front yard',
     'bathroon': 'bathroom', 'bedrom': 'bedroom', 'hallwya': 'hallway', 'garagae': 'garage',
     'ovr': 'over', 'tims': 'times', 'tmes': 'times', 'nexto': 'next to', 'nextto': 'next to',
-    'vaccum': 'vacuum', 'vacum': 'vacuum', 'vaccuum': 'vacuum', 'trolly': 'trolley', 'flashlite': 'flashlight',
+    'vaccum': 'vacuum', 'vacum': 'vacuum', 'vaccuum': 'vacuum', 'trolly': 'trolley',
+    'flashlite': 'flashlight',
     'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".
@@ -88,7 +89,7 @@ _ITEM_OPENERS = frozenset({'then', 'never', 'do', 'don', 'dont', 'avoid', 'and',
 
 
 def _then(number: str, following: str) -> str:
-    """A numbered list is an order: each item after the first reads as "then" (unless it says otherwise)."""
+    """Return "then " for a list number after the first (a numbered list is an order), unless told."""
     return '' if number in ('0', '1', '01') or following in _ITEM_OPENERS else 'then '
 
 

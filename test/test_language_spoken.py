@@ -393,3 +393,19 @@ def test_lists_after_a_verb_and_places_of_destinations() -> None:
     assert any('where shelf is' in n for n in notes)
     _check('Go to the den, no actually the lounge, and then the '
            'hallway.', 'F (near[lounge] & F near[hallway])')
+
+
+def test_first_and_last_said_afterwards() -> None:
+    _check('Visit the bakery, the florist and the bank. The bank has to be last.',
+           'F near[bakery] & F near[florist] & F near[bank] & (!near[bank] U near[bakery]) & '
+           '(!near[bank] U near[florist])')
+    _check('Go to the den and the hall; the hall must come first.',
+           'F near[den] & F near[hall] & (!near[den] U near[hall])')
+
+
+def test_where_a_thing_is_taken_from_and_an_order_word_corrected() -> None:
+    _check('Get the keys from under the mat and put them on the hook.',
+           'F (near[keys::isbelow(mat)] & F (pick[keys::isbelow(mat)] & F (near[hook] & '
+           'F release[keys::isbelow(mat), hook])))')
+    _check('Visit the park, then the museum, but you must not go to the museum before noon... sorry, '
+           'before the park.', 'F (near[park] & F near[museum]) & (!near[museum] U near[park])')

@@ -998,7 +998,8 @@ class _Reader:
         if self._read_patrol(tokens):
             self.saw_action = True
             return scope
-        if self._read_passive_avoid(tokens) or self._read_order_statement(tokens):
+        if self._read_passive_avoid(tokens) or self._read_order_statement(tokens) or self._read_first_last(
+                [t for t in clause.tokens if t not in PUNCT]):
             self.saw_action = True
             return scope
         for tail in (['are', 'all', 'visited'], ['are', 'visited'], ['is', 'visited'], ['are', 'reached'],
@@ -1933,6 +1934,37 @@ class _Reader:
             self.last_place = later
         return True
 
+    _FIRST_LAST_VERBS = (['has', 'to', 'be'], ['must', 'be'], ['should', 'be'], ['needs', 'to', 'be'], ['is'],
+                         ['comes'], ['goes'], ['must', 'come'], ['should', 'come'], ['has', 'to', 'come'])
+
+    def _read_first_last(self, tokens: list[str]) -> bool:
+        """Read 'the shop has to be last' / 'the bank must come first' after the goals are given."""
+        if not tokens or tokens[0] not in DETS or self.phrases.landmarks:
+            return False
+        np = self.phrases.parse(tokens, 0)
+        if np is None or np.pronoun:
+            return False
+        rest = tokens[np.end:]
+        verb = next((v for v in self._FIRST_LAST_VERBS if rest[:len(v)] == v), None)
+        if verb is None:
+            return False
+        rest = [t for t in rest[len(verb):] if t not in ('the', 'one', 'stop', 'of', 'all', 'place', 'visit')]
+        if rest not in (['last'], ['first']):
+            return False
+        x = self._named_before(np).descriptor
+        step = self.task.find_step(x)
+        others = [d for st in self.task._all_steps() if st.kind == 'visit' and st is not step
+                  for d in st.targets if d != x]
+        if step is None or not others:
+            return False
+        for d in others:
+            if rest == ['last']:   # not there until every other goal is reached
+                self.task.constraints.append(Until(Not(_near(x)), _near(d)))
+            else:
+                self.task.constraints.append(Until(Not(_near(d)), _near(x)))
+        self.notes.append(f'{x}: {rest[0]} of the goals')
+        return True
+
     def _read_passive_avoid(self, tokens: list[str]) -> bool:
         """Read passive avoidance: 'a and b cannot be visited', 'none of a, b are visited'."""
         none = tokens[:1] == ['none']
@@ -2461,6 +2493,17 @@ class _Reader:
         destined = 0 < loc < len(rest) and rest[loc] in ('to', 'into', 'onto', 'on', 'in', 'inside', 'over')
         if loc > 0 and (verb not in PUT_VERBS or rest[0] not in ('in', 'inside', 'within') or destined):
             rest = self._drop_location(rest, objs)   # "bring the cup in the kitchen to the table"
+        rel = match_relation(rest, 1) if rest[:1] == ['from'] and len(objs) == 1 else None
+        if rel is not None and rel[0] != 'isnextto':
+            # "the remote from under the sofa": where the object is, as that relation
+            src = self.phrases.parse(rest, rel[1], destination_stops=True)
+            if src is not None and not src.pronoun:
+                o = objs[0]
+                d = Descriptor(o.descriptor.name, o.descriptor.relations + (
+                    Relation(rel[0], (src.descriptor,)),))
+                objs = [NounPhrase(d, o.start, o.end, o.head)]
+                self.notes.append(f'"{" ".join(rest[:src.end])}" read as {d}')
+                rest = rest[src.end:]
         if rest and rest[0] in ('from', 'off') and len(objs) == 1:
             # "the blanket from the closet", "the remote off the couch": where the object is, as nearness
             src = self.phrases.parse(rest, 1, destination_stops=True)

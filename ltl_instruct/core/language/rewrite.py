@@ -936,6 +936,15 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if seg[:len(lead)] == lead and seg[len(lead):len(lead) + 1] and seg[len(lead)] in _PREPS:
             seg = seg[len(lead):]   # "the box on the top shelf, no, it's actually on the bottom one"
             break
+    if seg and seg[0] in ('before', 'after', 'until') and len(seg) > 1 and seg[0] in prev:
+        # "don't go to the library before noon, sorry, before the park": the phrase after the same word
+        new_np = PhraseParser().parse(seg, 1)
+        p = max(k for k in range(len(prev)) if prev[k] == seg[0])
+        old = PhraseParser().parse(prev, p + 1)
+        if new_np is not None and old is not None and not old.pronoun and not [
+                t for t in seg[new_np.end:] if t not in PUNCT]:
+            notes.append(f'corrected to "{" ".join(seg[:new_np.end])}"')
+            return prev[:p] + seg[:new_np.end] + prev[old.end:]
     if seg and seg[0] in _PREPS and len(seg) > 1:
         # "put the jar on the table - no, on the counter": the phrase after the same kind of word
         new_np = PhraseParser().parse(seg, 1)

@@ -409,3 +409,11 @@ def test_where_a_thing_is_taken_from_and_an_order_word_corrected() -> None:
            'F release[keys::isbelow(mat), hook])))')
     _check('Visit the park, then the museum, but you must not go to the museum before noon... sorry, '
            'before the park.', 'F (near[park] & F near[museum]) & (!near[museum] U near[park])')
+
+
+def test_a_fallback_a_counted_heading_and_no_return() -> None:
+    _check('Go to the gym, but if the gym is busy, go to the pool instead.', 'F near[gym] | F near[pool]')
+    _check('Two errands: the post office, then the bank.', 'F (near[post_office] & F near[bank])')
+    _check('Please visit the storeroom, and do not go back to the storeroom after that.',
+           'F near[storeroom] & (!near[storeroom] U (near[storeroom] & '
+           '(near[storeroom] W G !near[storeroom])))')

@@ -212,7 +212,8 @@ TASK_NOUNS = frozenset('''
 routine routines plan plans task tasks errand errands job jobs chore chores instruction instructions agenda
 itinerary mission missions schedule steps step program programme todo list checklist rundown
 orders assignment assignments duty duties workflow procedure protocol today tonight
-morning afternoon evening plan rules rule note notes reminder reminders request requests
+morning afternoon evening plan rules rule note notes reminder reminders request requests things favours
+favors jobs bits
 '''.split())
 
 
@@ -237,7 +238,9 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
         if i == 0 or tokens[i - 1] in '.;!?':
             c = next((k for k in range(i, min(n, i + 9)) if tokens[k] in PUNCT and tokens[k] != ','), -1)
             head = tokens[i:c] if c > i and tokens[c] == ':' else []
-            if head and c + 1 < n and any(w in TASK_NOUNS for w in head) and not carries_constraint(head) \
+            counted = [w for k, w in enumerate(head) if not (   # "three things to do:": no count of visits
+                w in NUMBER_WORDS and head[k + 1:k + 2] and head[k + 1] in TASK_NOUNS)]
+            if head and c + 1 < n and any(w in TASK_NOUNS for w in head) and not carries_constraint(counted) \
                     and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
                         w in DETERMINERS and k > 0 and head[k - 1] in (',', 'and', 'or')
                         for k, w in enumerate(head)):

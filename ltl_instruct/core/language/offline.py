@@ -1623,7 +1623,9 @@ class _Reader:
                         [Step('visit', [d]), Step('leave', [d])] * (n[0] - 1) + [Step('visit', [d])])
             self._check_leftover(rest[n[1]:], tokens)
             return
-        again = bool({'revisit', 'revisiting', 'reenter'} & set(tokens[:k]))
+        again = bool({'revisit', 'revisiting', 'reenter', 'back', 'return', 'returning'} & set(tokens[:k]))
+        if again and rest[-2:] in (['after', 'that'], ['afterwards'], ['after', 'it'], ['later']):
+            rest = rest[:-2] if rest[-1] != 'afterwards' and rest[-1] != 'later' else rest[:-1]
         if again or rest and rest[0] in ('anymore', 'again') or (
                 _starts(rest, 0, ['any', 'more']) and len(rest) == 2):
             visits = {d: sum(1 for st in self.task.chain if st.kind == 'visit' and st.targets == [d])

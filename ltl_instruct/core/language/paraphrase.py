@@ -50,6 +50,10 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "either go to the east gate or the west gate": the choice is of the places
     (r'(^ | [,.;!?] | and | then )either (go to|visit|head to|fly to|drive to|walk to|stop at|head over to) '
      r'(?=(?:the|a|an|my|your|our) [^,.;!?]* or (?:the|a|an|my|your|our) )', r'\1 \2 either '),
+    # "go to the hall, but if the hall is busy, go to the lounge instead": one or the other
+    (r' , (?:but |or )?if (?:the|that|it)(?: [a-z]+){0,3} (?:is|are|s) (?:too )?(?:busy|closed|locked|'
+     r'occupied|full|blocked|taken|unavailable|not available|out of order|shut|crowded|packed) , (?:then )?'
+     r'(?:go to|use|try|head to|visit|pick) (?=(?:the|a|an|my|your|our) [^,.;!?]*? instead )', ' or '),
     # "make a quick stop at the cart": stop at it
     (r' make (?:a |one )?(?:quick |brief |short |little )?stop (at|by|in) ', r' stop \1 '),
 

@@ -417,3 +417,11 @@ def test_a_fallback_a_counted_heading_and_no_return() -> None:
     _check('Please visit the storeroom, and do not go back to the storeroom after that.',
            'F near[storeroom] & (!near[storeroom] U (near[storeroom] & '
            '(near[storeroom] W G !near[storeroom])))')
+
+
+def test_going_back_said_with_a_condition_is_not_a_bound_on_visits() -> None:
+    _check('Visit the shed, and never return to it afterwards.',
+           'F near[shed] & (!near[shed] U (near[shed] & (near[shed] W G !near[shed])))')
+    _check('Go to the kitchen, then the hall. Do not go back to the kitchen until you have been to the '
+           'garden.',
+           'F (near[kitchen] & F near[hall]) & (!near[kitchen] U near[garden])')

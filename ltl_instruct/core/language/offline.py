@@ -1623,9 +1623,13 @@ class _Reader:
                         [Step('visit', [d]), Step('leave', [d])] * (n[0] - 1) + [Step('visit', [d])])
             self._check_leftover(rest[n[1]:], tokens)
             return
-        again = bool({'revisit', 'revisiting', 'reenter', 'back', 'return', 'returning'} & set(tokens[:k]))
-        if again and rest[-2:] in (['after', 'that'], ['afterwards'], ['after', 'it'], ['later']):
-            rest = rest[:-2] if rest[-1] != 'afterwards' and rest[-1] != 'later' else rest[:-1]
+        again = bool({'revisit', 'revisiting', 'reenter'} & set(tokens[:k]))
+        if {'back', 'return', 'returning'} & set(tokens[:k]):
+            # "visit the shed, and don't go back to it after that": no second visit
+            tail = rest[:-2] if rest[-2:] in (['after', 'that'], ['after', 'it']) else (
+                rest[:-1] if rest[-1:] in (['afterwards'], ['later'], ['again']) else rest)
+            if not [t for t in tail if t not in PUNCT]:
+                again, rest = True, tail
         if again or rest and rest[0] in ('anymore', 'again') or (
                 _starts(rest, 0, ['any', 'more']) and len(rest) == 2):
             visits = {d: sum(1 for st in self.task.chain if st.kind == 'visit' and st.targets == [d])

@@ -425,3 +425,13 @@ def test_going_back_said_with_a_condition_is_not_a_bound_on_visits() -> None:
     _check('Go to the kitchen, then the hall. Do not go back to the kitchen until you have been to the '
            'garden.',
            'F (near[kitchen] & F near[hall]) & (!near[kitchen] U near[garden])')
+
+
+def test_staying_put_beforehand_forever_and_a_relative_clause_after_a_comma() -> None:
+    _check("Go to the kitchen. Once you're there, don't leave until you've checked the oven.",
+           'F (near[kitchen] & (near[kitchen] U near[oven]))')
+    _check("I'd like you to visit the museum, but please go to the cafe beforehand.",
+           'F (near[cafe] & F near[museum])')
+    _check('Keep visiting the entrance and the exit, forever.', 'G F near[entrance] & G F near[exit]')
+    _check('Go to the lift, and keep away from the trolley, which is right next to the stairs.',
+           'F near[lift] & G !near[trolley::isnextto(stairs)]')

@@ -54,6 +54,18 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r' , (?:but |or )?if (?:the|that|it)(?: [a-z]+){0,3} (?:is|are|s) (?:too )?(?:busy|closed|locked|'
      r'occupied|full|blocked|taken|unavailable|not available|out of order|shut|crowded|packed) , (?:then )?'
      r'(?:go to|use|try|head to|visit|pick) (?=(?:the|a|an|my|your|our) [^,.;!?]*? instead )', ' or '),
+    # "once you're there, don't leave until you've checked the oven": stay there until then
+    (r' (?:do not|never) (?:leave|go anywhere|move|budge)(?: (?:from )?(?:there|here|it|that spot))? '
+     r'(?=until )', ' stay there '),
+    # "go to the cafe beforehand": first
+    (r' (?:beforehand|before anything else|before all that)(?= [,.;!?] | $)', ' first '),
+    # "keep visiting a and b, forever": the comma says nothing
+    (r' , (forever|indefinitely|endlessly|continuously|nonstop|over and over|again and again)'
+     r'(?= [,.;!?] | $)', r' \1 '),
+    # "the cart, which is right next to the stairs": where the cart is
+    (r' , (which|that) (is|are) (?=(?:right |just |directly )?(?:next to|beside|behind|in front of|under|'
+     r'underneath|below|beneath|above|over|on top of|near|by|between|left of|right of|to the left of|'
+     r'to the right of|opposite|across from|on|in|inside|at) )', r' \1 \2 '),
     # "make a quick stop at the cart": stop at it
     (r' make (?:a |one )?(?:quick |brief |short |little )?stop (at|by|in) ', r' stop \1 '),
 

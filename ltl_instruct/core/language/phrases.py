@@ -81,7 +81,9 @@ _PLACED = ('stacked', 'piled', 'mounted', 'propped', 'perched', 'sat', 'tucked',
 RELATIVE_LEADS = tuple(sorted(set(RELATIVE_LEADS) | {
     lead + (w,) + right for lead in ((), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
                                      ('that', 'was'), ('that', 'were'))
-    for w in _PLACED for right in ((), ('right',), ('just',), ('directly',))}, key=lambda t: -len(t)))
+    for w in _PLACED for right in ((), ('right',), ('just',), ('directly',))} | {
+    lead + (right,) for lead in (('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'))
+    for right in ('right', 'just', 'directly')}, key=lambda t: -len(t)))
 
 # Words that are never part of a name.
 STOPWORDS = frozenset('''

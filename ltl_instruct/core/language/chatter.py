@@ -49,7 +49,8 @@ REQUEST_WORDS = frozenset({'need', 'want', 'would', 'like', 'should', 'must', 'w
 FINITE_VERBS = frozenset('''
 is are was were keeps keep has had seems seem looks look sits sit stands lies lie got gets needs
 belongs goes went broke fell spilled leaks leaked smells tends happens arrive arrives arrived came comes
-dropped jammed stopped started moved died spilt broken overflowed overflows ran runs
+dropped jammed stopped started moved died spilt broken overflowed overflows ran runs get sticks jams
+bites barks sleeps wobbles squeaks creaks
 '''.split())
 
 # After "it is": words that make the clause a permission or a demand.
@@ -68,6 +69,26 @@ WISHES: tuple[tuple[str, ...], ...] = (
     ('be', 'careful'), ('be', 'quick'), ('be', 'gentle'), ('be', 'quiet'), ('be', 'safe'), ('take', 'care'),
     ('thanks', 'for'), ('thank', 'you', 'for'), ('sorry', 'to', 'bother'), ('sorry', 'for'),
 )
+
+# How long to stay ("hover there for a few minutes"): the formula has no clock.
+_DURATIONS: tuple[tuple[str, ...], ...] = tuple(
+    ('for',) + amount + (unit,)
+    for amount in (('a', 'few'), ('a', 'couple', 'of'), ('some',), ('two',), ('three',), ('five',), ('ten',),
+                   ('a', 'few', 'more'))
+    for unit in ('minutes', 'seconds', 'moments', 'mins', 'secs', 'hours'))
+# When in the day ("over the course of the night shift").
+_SPANS: tuple[tuple[str, ...], ...] = tuple(
+    ('over', 'the', 'course', 'of', 'the') + span
+    for span in (('day',), ('night',), ('evening',), ('morning',), ('afternoon',), ('week',), ('shift',),
+                 ('night', 'shift'), ('day', 'shift'), ('late', 'shift'), ('early', 'shift'))) + tuple(
+    ('during', 'the') + span
+    for span in (('night', 'shift'), ('day', 'shift'), ('night',), ('day',), ('shift',)))
+# What the visit is for ("fly to the pylon for an inspection"): the visit itself is the task.
+_PURPOSES: tuple[tuple[str, ...], ...] = tuple(
+    ('for',) + art + quick + (what,)
+    for art in (('a',), ('an',)) for quick in ((), ('quick',), ('closer',))
+    for what in ('inspection', 'check', 'look', 'photo', 'picture', 'survey', 'scan', 'reading', 'visual',
+                 'checkup', 'peek', 'glance', 'sweep'))
 
 # Courtesy and time-of-day phrases that end a clause and ask for nothing.
 COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -111,8 +132,10 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('for', 'a', 'minute'), ('for', 'a', 'moment'), ('if', 'you', 'would', 'not', 'mind'),
     ('thanks', 'in', 'advance'),
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
-    ('in', 'a', 'sec'), ('in', 'a', 'second'),
-), key=lambda t: -len(t)))
+    ('in', 'a', 'sec'), ('in', 'a', 'second'), ('while', 'you', 'are', 'at', 'it'),
+    ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
+) + _DURATIONS + _SPANS + _PURPOSES,
+    key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
 START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
@@ -142,6 +165,12 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('alright', 'so'), ('right', 'so'), ('hey', 'robot'), ('hi', 'robot'), ('robot',), ('drone',),
     ('before', 'anything', 'else'), ('first', 'things', 'first'), ('before', 'you', 'do', 'anything', 'else'),
     ('to', 'start', 'with'), ('to', 'start', 'off'), ('for', 'a', 'start'),
+    # a drone's take-off, which every flight starts with
+    ('once', 'you', 'are', 'airborne'), ('once', 'airborne'), ('when', 'you', 'are', 'airborne'),
+    ('once', 'you', 'are', 'in', 'the', 'air'), ('once', 'you', 'are', 'up'),
+    ('once', 'you', 'have', 'taken', 'off'), ('after', 'taking', 'off'), ('after', 'take', 'off'),
+    ('after', 'takeoff'), ('after', 'you', 'take', 'off'), ('once', 'you', 'are', 'off', 'the', 'ground'),
+    ('when', 'you', 'are', 'up'), ('once', 'in', 'the', 'air'),
 ), key=lambda t: -len(t)))
 
 PREPOSITIONS = frozenset({'of', 'to', 'in', 'at', 'from', 'near', 'by', 'on', 'into', 'onto', 'through',
@@ -168,6 +197,9 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
     (r'(^ | [,.;!?] )(?:would|could|do|will) you mind ', r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you '
+     r'(?:could|would|can|will) ',
+     r'\1 '),
     (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
      r'get) )', r'\1 '),
     (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),
@@ -180,7 +212,8 @@ TASK_NOUNS = frozenset('''
 routine routines plan plans task tasks errand errands job jobs chore chores instruction instructions agenda
 itinerary mission missions schedule steps step program programme todo list checklist rundown
 orders assignment assignments duty duties workflow procedure protocol today tonight
-morning afternoon evening plan rules rule note notes reminder reminders request requests
+morning afternoon evening plan rules rule note notes reminder reminders request requests things favours
+favors jobs bits
 '''.split())
 
 
@@ -205,7 +238,9 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
         if i == 0 or tokens[i - 1] in '.;!?':
             c = next((k for k in range(i, min(n, i + 9)) if tokens[k] in PUNCT and tokens[k] != ','), -1)
             head = tokens[i:c] if c > i and tokens[c] == ':' else []
-            if head and c + 1 < n and any(w in TASK_NOUNS for w in head) and not carries_constraint(head) \
+            counted = [w for k, w in enumerate(head) if not (   # "three things to do:": no count of visits
+                w in NUMBER_WORDS and head[k + 1:k + 2] and head[k + 1] in TASK_NOUNS)]
+            if head and c + 1 < n and any(w in TASK_NOUNS for w in head) and not carries_constraint(counted) \
                     and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
                         w in DETERMINERS and k > 0 and head[k - 1] in (',', 'and', 'or')
                         for k, w in enumerate(head)):
@@ -227,6 +262,8 @@ def strip_parentheticals(text: str, notes: list[str]) -> str:
     """
     def aside(m: re.Match[str]) -> str:
         words = re.findall(r"[a-z0-9']+", m.group(1).lower())
+        if len(words) == 1 and len(words[0]) <= 2 and words[0].isdigit():
+            return m.group(0)   # "(2)": a list number, read by the tokenizer
         if carries_constraint(words) or words[:1] in (['then'], ['and']):
             return f', {m.group(1)} ,'
         notes.append(f'left out "({m.group(1).strip()})" (an aside)')
@@ -250,11 +287,16 @@ TIME_NOUNS = frozenset({'evening', 'morning', 'afternoon', 'night', 'week', 'wee
                         'minute', 'second', 'sec', 'today', 'tonight', 'tomorrow', 'now', 'while'})
 
 
+# "the red one", "that one": a thing, no count
+_ONE_AFTER = frozenset(DETERMINERS) | PLACEHOLDER_ADJECTIVES
+
+
 def has_constraint_word(tokens: Sequence[str]) -> bool:
     """Whether any token is a negation, order, time or count word (not a clock time: "at six")."""
     return any((t in CONSTRAINT_WORDS or t.isdigit()) and not (
         (t in NUMBER_WORDS or t.isdigit()) and k > 0 and tokens[k - 1] in ('at', 'around', 'about') and
-        tokens[k + 1:k + 2] not in (['times'], ['time'])) for k, t in enumerate(tokens))
+        tokens[k + 1:k + 2] not in (['times'], ['time'])) and not (
+        t == 'one' and k > 0 and tokens[k - 1] in _ONE_AFTER) for k, t in enumerate(tokens))
 
 
 # After "keep" / "stay": words that make it a constraint ("keep away", "stay off"); "keep an eye
@@ -287,7 +329,10 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         Where a noun phrase at the start of the clause ends (0: none), for
         noun-phrase subjects ("the cat keeps...").
     """
-    if not tokens or has_constraint_word(tokens):
+    if not tokens or has_constraint_word([t for k, t in enumerate(tokens) if not (
+            # "it needs more shade": an amount of something, no count of visits
+            t in ('more', 'less') and k > 1 and tokens[k - 1] in FINITE_VERBS and k + 1 < len(tokens) and
+            tokens[k + 1] not in NUMBER_WORDS and tokens[k + 1] not in ('than', 'times', 'time', 'often'))]):
         return False
     if len(tokens) > 2 and tokens[0] not in DETERMINERS and tokens[1] in (
             'going', 'coming', 'happening', 'arriving', 'visiting', 'waiting', 'cooking', 'running') and \
@@ -363,7 +408,8 @@ TIMING: frozenset[tuple[str, ...]] = frozenset({('right', 'away'), ('at', 'once'
 # Discourse fillers between commas ("go to the hall, like, now").
 ASIDES: tuple[tuple[str, ...], ...] = (
     ('like',), ('you', 'know'), ('i', 'guess'), ('basically',), ('i', 'think'), ('honestly',), ('kinda',),
-    ('sort', 'of'), ('i', 'suppose'))   # not "uh", "um": they mark self-corrections
+    ('sort', 'of'), ('i', 'suppose'), ('mind',), ('mind', 'you'),
+)   # not "uh", "um": they mark self-corrections
 
 
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
@@ -409,3 +455,31 @@ def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) ->
         out.append(tokens[i])
         i += 1
     return out
+
+
+# Remarks that leave a choice or the pace to the robot ("your call", "take your time",
+# "both are fine by me", "whichever is less busy"): a clause of their own that asks for nothing.
+_REMARK_RE = re.compile(
+    r'^(?:(?:and|but|so|honestly|really|i mean) )*(?:'
+    r'(?:it is )?(?:your (?:choice|call|pick|decision)|up to you|dealer s choice)'
+    r'|(?:it )?(?:does not|do not|will not|would not) matter(?: (?:which|which one|to me|either way))?'
+    r'|(?:i )?(?:honestly |really )?(?:do not|will not) (?:mind|care)(?: which| either way)?'
+    r'(?: (?:one|option|way|route))?(?: you (?:go for|pick|choose|take|use|do))?'
+    r'|take (?:your|as much) time(?: (?:as you need|about it|with it))?'
+    r'|(?:both|either|either one|either of them|both of them|any of them|any) (?:is|are|would be|will be) '
+    r'(?:fine|ok|okay|good|alright|great)(?: (?:by|with|for) me)?'
+    r'|(?:(?:i |we )?(?:am|are) )?(?:fine|happy|ok|okay) with (?:either|both|any|whichever)(?: \w+)?'
+    r'(?: (?:is|are|s) (?:less |more |the )?\w+(?: to \w+)?)?'
+    r'|whichever(?: \w+)? (?:is|are|s|one is) (?:less |more |the )?\w+(?: (?:to \w+|for you|to you))?'
+    r'(?: (?:right now|now|today|at the moment))?'
+    r'|(?:that|the) order (?:matters|is important)(?: to (?:me|us))?'
+    r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
+    r'|(?:(?:that|this|it) )?is (?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)'
+    r'(?: (?:for )?(?:today|now|'
+    r'tonight|this time))?'
+    r')$')
+
+
+def is_remark(tokens: Sequence[str]) -> bool:
+    """Whether words are a remark that leaves a choice or the pace to the robot ("your call")."""
+    return bool(tokens) and _REMARK_RE.match(' '.join(tokens)) is not None

@@ -133,6 +133,13 @@ def _wait(m: 're.Match[str]') -> str:
     return f'stay at {m.group("y")} until you visit {m.group("x1") or m.group("x2")}'
 
 
+def _held(m: 're.Match[str]') -> str:
+    # "once it is off your hands": it; "once you have let go of them": them
+    if m.group('o'):
+        return 'it' if m.group('o') == 'it' else 'them'
+    return m.group('p')
+
+
 def _repeat(m: 're.Match[str]') -> str:
     mode = _group(m, 'mode').strip() or 'at least'
     return f'visit {m.group("x")} {mode} {_times(1 + _number(m.group("n")))}'
@@ -156,6 +163,41 @@ RULES: tuple[Rule, ...] = (
          rf'(?:the task |the mission |your task )?without (?P<verb>{_GOING})\b',
          lambda m: _plain(m.group('verb'))),
 
+    # ---- events said at length: "the moment you've got hold of it", "once it's off your hands"
+    Rule('as soon as you have picked it up',
+         r'(?:^|(?<=, )|(?<=\band )|(?<=\bbut ))(?:as soon as|the moment|the minute|the second|the instant)'
+         r'(?= you (?:have )?(?:[a-z]+ ){1,3}(?:it|them)\b| (?:it|they) (?:is|are) )', 'once'),
+    Rule('once you have got hold of it',
+         r'\b(?P<c>once|when|after|until|before) you (?:have |ve )?(?:got|gotten|get|grabbed|taken|take) '
+         r'hold of '
+         r'(?P<o>it|them)\b', r'\g<c> you have picked \g<o> up'),
+    Rule('once it is off your hands',
+         r'\b(?P<c>once|when|after) (?:(?P<o>it|they) (?:is|are) off your hands|you (?:have )?(?:let go of|'
+         r'set down|put down|handed over|parted with) (?P<p>it|them))\b',
+         lambda m: f'{m.group("c")} you drop {_held(m)} off'),
+    Rule('pick up the cup and fly it over to the sink: moving what is held is carrying it',
+         r'\b(?P<a>and|then|,) (?:fly|drive|walk|wheel|roll|float|ride|move|bring|take) (?P<o>it|them) '
+         r'(?:over |across |back |down |up |out |along )?(?P<p>to|into|onto)\b', r'\g<a> carry \g<o> \g<p>'),
+    Rule('bring it home: home is where it goes',
+         rf'\b(?P<v>take|bring|carry|return|get|haul|fetch) (?P<x>it|them|(?:the|a|an|my|your|our|this|that|'
+         rf'these|'
+         rf'those) {_NP}) (?:back )?home\b', r'\g<v> \g<x> to home'),
+    Rule('take the chair back to the office',
+         rf'\b(?P<v>take|bring|carry|return|move|haul|lug|wheel|ferry|cart) '
+         rf'(?P<x>(?:the|a|an|my|your|our|this|that|'
+         rf'these|those) {_NP}) back (?P<p>to|into|in|onto|inside)\b', r'\g<v> \g<x> \g<p>'),
+    Rule('hold position over it', r'\bhold (?:your |its )?position (?=over|above|there|here|for)', 'hover '),
+    Rule('survey the whole array: the array',
+         r'\b(?P<v>survey|inspect|cover|scan|search|check|patrol|sweep|map|photograph|visit|over|around|'
+         r'clean|'
+         r'explore|circle|see|film|mow|tidy) (?P<d>the|that|this) (?:whole|entire) '
+         r'(?!(?:time|way|trip|flight|route|mission|run|task|journey|drive|walk|tour|job|day|night|loop|'
+         r'thing)\b)',
+         r'\g<v> \g<d> '),
+    Rule('give the rug a wide berth', rf'\bgive (?P<x>{_NP}) a (?:wide|good|big|very wide) berth\b',
+         r'keep away from \g<x>'),
+    Rule('do not cut across the lawn', r'\b(?:cut|shortcut|short cut) (?:across|through|over)\b',
+         'go through'),
     Rule('go to the lab from the second floor only', rf'\b(?:from|via|through) (?P<x>{_NP}) only\b',
          r'only through \g<x>'),
     Rule('and finish by going to the gate',
@@ -437,6 +479,22 @@ RULES: tuple[Rule, ...] = (
     # ---- repetition said at length: "again and again", "with no limits", "at any point in time, visit a"
     Rule('visit a again and again', r'\b(?:again and again|over and over(?: again)?|with no limits?|without '
          r'(?:any )?limits?|time after time|all the time)\b', 'repeatedly'),
+    Rule('swing by a couple of times', r'\ba couple (?:of )?(?:times|visits|passes|trips|rounds)\b', 'twice'),
+    Rule('just the once', r'\b(?:just|only) the once\b', 'exactly once'),
+    Rule('exactly twice, no more, no fewer',
+         rf'\b(?P<c>exactly (?:once|twice|thrice|{_NUM} times?)) ,? no more ,? (?:and |or |but )?'
+         rf'no (?:fewer|less)\b', r'\g<c>'),
+    Rule('exactly once, go to the attic: the count said before the clause it counts',
+         rf'^(?P<c>(?:exactly |at most |at least |only |just )?(?:once|twice|thrice|{_NUM} times))(?: ,)? '
+         r'(?P<rest>(?:visit|go to|head to|fly to|fly over|drive to|walk to) '
+         r'(?:(?! then | and | or )[^,])+)$',
+         r'\g<rest> \g<c>'),
+    Rule('twice, two separate trips',
+         rf'\b(?P<c>twice|thrice|{_NUM} {_KIND}times) ,? (?:so |that is |i mean |as in )?(?P<n>{_NUM}) '
+         rf'{_KIND}(?:trips|visits|times|passes|stops|occasions)'
+         rf'(?: (?:to|at|by|over) (?:the (?:[a-z]+ ){{0,2}}?[a-z]+|it|there)'
+         rf'(?= ,|$| before| then| and| after))?',
+         lambda m: m.group('c') if _count_of(m.group('c')) == _number(m.group('n')) else m.group(0)),
     Rule('at any point in time you must visit a at least once in the future',
          rf'\b(?:make sure )?(?:at any point in time|at every point in time|at all times|at any time)(?: ,)? '
          rf'(?:you (?:will |must |should |have to )?|ensure that you (?:will )?|'

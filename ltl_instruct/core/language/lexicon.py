@@ -69,7 +69,7 @@ but eventually must have should ensure required that certainly definitely simply
 '''.split())
 DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
                            'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',
-                           'stash', 'store', 'push', 'relocate', 'chuck'})
+                           'stash', 'store', 'push', 'relocate', 'chuck', 'haul', 'lug', 'ferry', 'cart'})
 PUT_VERBS = frozenset({'put', 'place', 'leave', 'drop', 'set', 'toss', 'throw', 'stick', 'stash', 'store',
                        'dump', 'chuck'})
 PICK_VERBS = frozenset({'pick', 'grab', 'fetch', 'collect', 'get', 'retrieve', 'lift'})

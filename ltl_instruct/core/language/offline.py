@@ -55,10 +55,18 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
 )
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
-    Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil, referents_of,
+    Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
+    referents_of,
 )
 
 MAX_INSTRUCTION_CHARS = 2000
+
+
+def _rename(f: Formula, mapping: dict[Descriptor, Descriptor]) -> Formula:
+    """``f`` with every skill argument in ``mapping`` replaced."""
+    from ltl_instruct.core.language.evaluation import rename_descriptors
+    return rename_descriptors(f, mapping)
+
 
 # Words that put an avoidance over the whole run, whatever scope the sentence opened with.
 GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -76,7 +84,9 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
           for whole in ('whole', 'entire')
           for what in ('time', 'way', 'trip', 'flight', 'route', 'mission', 'run', 'task', 'journey', 'drive',
                        'walk', 'tour', 'job', 'day', 'night')) + tuple(
-    ('during', 'the', what) for what in ('flight', 'trip', 'mission', 'task', 'run', 'route', 'tour')),
+    ('during', 'the', what) for what in (
+        'flight', 'trip', 'mission', 'task', 'run', 'route', 'tour', 'patrol', 'round', 'rounds', 'drive',
+        'walk', 'journey', 'delivery')),
     key=lambda t: -len(t)))
 _GLOBAL_FIRST = frozenset(m[0] for m in GLOBAL_MARKERS)
 
@@ -182,6 +192,16 @@ SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bri
     'be', 'need', 'want', 'robot', 'drone', 'hey', 'can', 'could', 'would', 'you', 'i', 'will', 'ahead',
     'end', 'up', 'please', 'kindly'} | {'make', 'do'}
 
+# Clauses after a choice that make it exclusive ("the den or the hall, but not both").
+_NOT_BOTH = frozenset({'not both', 'but not both', 'not both of them', 'only one of them', 'just one of them',
+                       'only one', 'just one', 'one or the other', 'only one of the two',
+                       'just one of the two', 'never both', 'but never both', 'not the two of them',
+                       'but only one of them', 'but just one of them'})
+# "either of them", "both of them": every goal of the step just given.
+_ALL_OF_THEM = (['either', 'of', 'them'], ['both', 'of', 'them'], ['any', 'of', 'them'],
+                ['each', 'of', 'them'], ['all', 'of', 'them'], ['them', 'both'], ['them', 'all'],
+                ['either', 'one'], ['any', 'of', 'those'])
+_REFLEXIVE = frozenset({'yourself', 'itself', 'myself', 'ourselves', 'yourselves', 'me', 'us', 'you'})
 _SPELLER: Optional[Speller] = None
 _WISH_FIRST = frozenset(w[0] for w in chatter.WISHES)
 
@@ -331,6 +351,10 @@ class _Reader:
     # ----------------------------------------------------------------- structure
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
+            if self._places_only(sentence):
+                # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
+                self.notes.append(f'read "{" ".join(sentence)}" as going there')
+                sentence = ['go', 'to'] + sentence
             self._read_part(_Clause('and', sentence), None, sentence=True)
         if self.unread and not self.read_parts:
             # nothing but clauses it could not read: the instruction does not stand on its own
@@ -352,7 +376,61 @@ class _Reader:
                 step.avoid_at.extend(self.pending_avoid_at)
             else:
                 self.task.constraints.extend(_never(self.pending_avoid_at))
-        return self.task.formula()
+        formula = self.task.formula()
+        return formula if self.phrases.landmarks else self._shorthands(formula)
+
+    def _shorthands(self, formula: Formula) -> Formula:
+        """Name a thing said again by its last word as first named ("the kitchen island ... the island").
+
+        Only a bare one-word name is renamed, and only where exactly one longer name of the
+        instruction ends in it; each renaming is noted.
+        """
+        refs = list(referents_of(formula))
+        if len(refs) < 2 and not self.mentions:
+            return formula
+        longer = {d.name for d in refs + self.mentions if not d.relations and '_' in d.name}
+        mapping: dict[Descriptor, Descriptor] = {}
+        for d in refs:
+            if d.relations or '_' in d.name or d in mapping:
+                continue
+            full = [n for n in longer if n.endswith('_' + d.name)]
+            if len(full) == 1:
+                mapping[d] = Descriptor(full[0])
+                self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
+        return _rename(formula, mapping) if mapping else formula
+
+    def _places_only(self, sentence: list[str]) -> bool:
+        """Whether a sentence is nothing but places ("the den, then the attic", "garage, please")."""
+        if self.phrases.landmarks or not sentence:
+            return False
+        i = 1 if sentence[0] == 'either' else 0
+        n = len(sentence)
+        while ',' in sentence[i:n]:   # "..., your call": a remark at the end
+            c = max(k for k in range(i, n) if sentence[k] == ',')
+            if not chatter.is_remark(sentence[c + 1:n]):
+                break
+            n = c
+        seen = 0
+        while i < n:
+            k = i
+            while i < n and sentence[i] in (',', 'and', 'or', 'then', 'please', ':'):
+                i += 1
+            if i >= n:
+                break
+            if seen and i == k:
+                return False   # two phrases with nothing between them ("hit the cart"): no list
+            if sentence[i] in STOPWORDS and sentence[i] not in DETS or sentence[i] in SKILL_VERBS and (
+                    i + 1 >= n or sentence[i + 1] in DETS or sentence[i + 1] in STOPWORDS):
+                return False   # a verb, not a name ("bin store" is a place, "bin the cups" is no list)
+            np = self.phrases.parse(sentence, i)
+            if np is None or np.pronoun not in ('', 'one') or np.end <= i or np.end > n or not all(
+                    _is_word(w) for w in sentence[i:np.end] if w not in PUNCT) or any(
+                    w in chatter.FINITE_VERBS or w in _REFLEXIVE for w in sentence[i:np.end]) or (
+                    np.end - i == 1 and sentence[i] in chatter.INTERJECTIONS):
+                return False   # no words it knows ("qwzx vvv"), or a statement ("my keys fell behind...")
+            seen += 1
+            i = np.end
+        return seen > 0 and 'one' not in sentence[:1]
 
     def _visits_once(self) -> None:
         """Constraints of the goals visited once ("visit a exactly once", "no revisiting"; see once_scope)."""
@@ -593,6 +671,7 @@ class _Reader:
             scope: Optional[_Scope] = None
             for clause in group:
                 scope = self._read_clause(clause, scope)
+            self._visits_once()   # "either visit a exactly once, or ...": the count binds its branch
             chains.append([Step('formula', formula=c) for c in self.task.constraints] + self.task.chain)
         self.task = outer
         self.task.chain.append(Step('any', chains=chains))
@@ -697,6 +776,12 @@ class _Reader:
                         ['the', 'order'], ['any', 'order'], ['in', 'any'], ['in', 'whatever'],
                         ['order', 'does']):
                     boundary, skip = 'and', j - i   # "..., the order is up to you"
+                elif t in (',', 'and', 'but') and j + 1 < n and tokens[j] in (
+                        'skip', 'ignore', 'bypass', 'forget') and tokens[j + 1] in DETS:
+                    boundary, skip = 'and', j - i   # "head to the desk but skip the cafe"
+                elif t in (',', 'and') and j < n and chatter.is_remark(tokens[j:next(
+                        (k for k in range(j, n) if tokens[k] in PUNCT), n)]):
+                    boundary, skip = 'and', j - i   # "..., your call", "..., take your time"
                 elif t in (',', 'so') and self._starts_statement(tokens, j):
                     boundary, skip = 'and', j - i   # "be careful, the floor is wet"
                 elif i < 4 and t in (',', ':') and all(is_name_word(tokens, m, m > 0) for m in range(i)) and \
@@ -837,6 +922,9 @@ class _Reader:
                     tokens[1:]) and len(tokens) > 2:
             self.notes.append(f'left out "{" ".join(clause.tokens)}" (says why, asks for nothing)')
             return scope
+        if chatter.is_remark(tokens) and tokens[:1] != ['either']:
+            self.notes.append(f'left out "{s}" (asks for nothing)')
+            return scope
         if s.endswith(fine) or s in IGNORED_CLAUSES or \
                 s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                               'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
@@ -856,11 +944,23 @@ class _Reader:
             return scope   # "whichever one you pick, ...": the choice is the person's
         if orders.is_strict_marker(tokens) and self._strict_last():
             return scope   # "go to X once you have been to Y, and not a second earlier"
-        if s in ('not both', 'but not both', 'not both of them'):
+        if s in _NOT_BOTH or ' '.join(t for t in clause.tokens if t not in PUNCT) in _NOT_BOTH:
             self._exclusive_or()
             return scope
         if self._read_same_for(tokens, scope):
             return scope
+        if tokens[:3] in (['no', 'more', 'than'], ['not', 'more', 'than']) and len(tokens) < 7 or \
+                tokens[:2] in (['at', 'most'], ['up', 'to']) and len(tokens) < 5:
+            # "visit a at least twice, but no more than three times": a bound on the goal just counted
+            step = self.task.last_step(('visit',))
+            if step is not None and len(step.targets) == 1:
+                before = len(self.task.constraints)
+                snapshot = list(self.task.chain)
+                ok, rest = self._read_count(tokens, step.targets[:1])
+                self.task.chain[:] = snapshot
+                if ok and not rest and len(self.task.constraints) > before:
+                    return scope
+                del self.task.constraints[before:]
         if tokens[0] in ('twice', 'thrice', 'once') or (len(tokens) > 1 and tokens[1] == 'times') or \
                 tokens[0] in ('exactly', 'at') and len(tokens) < 5:
             step = self.task.last_step(('visit',))
@@ -884,6 +984,13 @@ class _Reader:
                     self.last_object = nps[-1]
                     self.mentions.extend(np.descriptor for np in nps)
                     self.scene = [np.descriptor for np in nps]
+                    self.notes.append(f'took "{s}" as a description of the scene, not a task')
+                    return scope
+                if lead[0] == 'there' and body and body[0] in (
+                        'someone', 'somebody', 'people', 'nobody', 'kids', 'guests', 'visitors') and \
+                        not chatter.carries_constraint(body):
+                    # "there is someone asleep in there": why, not what to do
+                    self.notes.append(f'took "{s}" as a description of the scene, not a task')
                     return scope
         if self._is_permission(tokens):
             self._read_permission(tokens)
@@ -891,7 +998,8 @@ class _Reader:
         if self._read_patrol(tokens):
             self.saw_action = True
             return scope
-        if self._read_passive_avoid(tokens) or self._read_order_statement(tokens):
+        if self._read_passive_avoid(tokens) or self._read_order_statement(tokens) or self._read_first_last(
+                [t for t in clause.tokens if t not in PUNCT]):
             self.saw_action = True
             return scope
         for tail in (['are', 'all', 'visited'], ['are', 'visited'], ['is', 'visited'], ['are', 'reached'],
@@ -947,6 +1055,9 @@ class _Reader:
                 if known is not None:   # "go to the porch. before the porch, stop at the mailbox"
                     self.insert_before = known
                     return scope
+        if self._read_pick_guard(tokens):
+            self.saw_action = True
+            return scope
         if self._read_ordering(tokens, clause):
             return scope
         if self._avoid_start(tokens) is not None:
@@ -999,9 +1110,17 @@ class _Reader:
         if j < len(tokens) and tokens[j] in ('it', 'they', 'that', 'this', 'he', 'she') and \
                 not self.phrases.landmarks:
             end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
-            return tokens[j + 1:j + 2] in (['is'], ['are'], ['was'], ['were'], ['gets'], ['has'],
-                                           ['looks']) and \
+            return (tokens[j + 1:j + 2] in (['is'], ['are'], ['was'], ['were'], ['has'], ['had']) or (
+                j + 1 < len(tokens) and tokens[j + 1] in chatter.FINITE_VERBS)) and \
                 chatter.is_statement(tokens[j:end]) and end - j <= 6
+        if tokens[j:j + 1] == ['there'] and tokens[j + 1:j + 2] in (['is'], ['are']) and \
+                j + 2 < len(tokens) and tokens[j + 2] in (
+                    'a', 'an', 'some', 'someone', 'somebody', 'people', 'nobody', 'lots', 'kids', 'guests',
+                    'visitors', 'water', 'glass', 'oil', 'paint', 'ice') and \
+                not self.phrases.landmarks:
+            # "..., there is someone asleep in there": says why, asks for nothing
+            end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
+            return not chatter.carries_constraint(tokens[j:end])
         if j >= len(tokens) or tokens[j] not in DETS or self.phrases.landmarks:
             return False
         np = self.phrases.parse(tokens, j)
@@ -1269,12 +1388,35 @@ class _Reader:
                 return sc, rest
         return None, tokens
 
+    def _named_before(self, np: NounPhrase) -> NounPhrase:
+        """Return the goal named before for one said again by its last word ("the tool shed ... the shed")."""
+        d = np.descriptor
+        if d.relations or '_' in d.name or self.phrases.landmarks or self.task.find_step(d) is not None:
+            return np
+        full = {g for g in self._goals_named() if not g.relations and g.name.endswith('_' + d.name)}
+        if len(full) != 1:
+            return np
+        return NounPhrase(full.pop(), np.start, np.end, np.head, np.pronoun)
+
     def _leg(self, rest: list[str]) -> Optional[tuple[_Scope, list[str]]]:
         """Read 'from X to Y' / 'between X and Y' after "on the way": the leg of the route to Y after X.
 
         X and Y are goals (given before, or added here in that order); what is avoided on the
         leg is avoided from X until Y is reached.
         """
+        if rest[:3] == ['between', 'the', 'two'] or rest[:3] == ['between', 'them', 'both'] or \
+                rest[:2] == ['between', 'them']:
+            # "on the leg between the two": the last two goals named
+            k = 3 if rest[:3] in (['between', 'the', 'two'], ['between', 'them', 'both']) else 2
+            if rest[k:k + 1] in (['stops'], ['goals'], ['places'], ['of', 'them']):
+                k += 1 if rest[k] != 'of' else 2
+            visits = [st for st in self.task.chain if st.kind in ('visit', 'deliver') and st.targets]
+            if len(visits) < 2:
+                return None
+            last = visits[-1]
+            dst = NounPhrase((last.dests or last.targets)[0], 0, 0, '')
+            self.last_place = dst
+            return _Scope('onway', dst), rest[k:]
         src = self.phrases.parse(rest, 1)
         if src is None or src.end >= len(rest) or rest[src.end] not in (
                 ('and',) if rest[0] == 'between' else ('to', 'towards', 'toward')):
@@ -1282,7 +1424,8 @@ class _Reader:
         dst = self.phrases.parse(rest, src.end + 1)
         if dst is None:
             return None
-        src, dst = self._resolve(src, place=True), self._resolve(dst, place=True)
+        src, dst = self._named_before(self._resolve(src, place=True)), self._named_before(
+            self._resolve(dst, place=True))
         if self.task.find_step(src.descriptor) is None:
             self.task.chain.append(Step('visit', [src.descriptor]))
         self.last_place = dst
@@ -1428,6 +1571,18 @@ class _Reader:
         k = self._avoid_start(tokens)
         assert k is not None
         nps, _, end = self._np_list(tokens, k, place=False)
+        group = next((len(g) for g in _ALL_OF_THEM if tokens[k:k + len(g)] == g), 0)
+        last = self.task.chain[-1] if self.task.chain else None
+        named: list[Descriptor] = []
+        if last is not None and last.kind == 'visit':
+            named = list(last.targets)
+        elif last is not None and last.kind in ('all', 'any') and all(
+                len(c) == 1 and c[0].kind == 'visit' for c in last.chains):
+            named = [d for c in last.chains for d in c[0].targets]
+        if group and len(named) > 1:
+            # "go to the silo or the trough, but not near either of them until ...": both of them
+            nps = [NounPhrase(d, k, k + group, d.name.split('_')[-1]) for d in named]
+            end = k + group
         if not nps:
             raise TranslationError(f'could not place what to avoid in "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
@@ -1469,6 +1624,12 @@ class _Reader:
             self._check_leftover(rest[n[1]:], tokens)
             return
         again = bool({'revisit', 'revisiting', 'reenter'} & set(tokens[:k]))
+        if {'back', 'return', 'returning'} & set(tokens[:k]):
+            # "visit the shed, and don't go back to it after that": no second visit
+            tail = rest[:-2] if rest[-2:] in (['after', 'that'], ['after', 'it']) else (
+                rest[:-1] if rest[-1:] in (['afterwards'], ['later'], ['again']) else rest)
+            if not [t for t in tail if t not in PUNCT]:
+                again, rest = True, tail
         if again or rest and rest[0] in ('anymore', 'again') or (
                 _starts(rest, 0, ['any', 'more']) and len(rest) == 2):
             visits = {d: sum(1 for st in self.task.chain if st.kind == 'visit' and st.targets == [d])
@@ -1521,6 +1682,14 @@ class _Reader:
         elif scope is None and 'through' in tokens[:k] and len(self.task.chain) == 1 and (
                 {'without', 'avoid', 'avoiding', 'not', 'never'} & set(tokens[:k])):
             scope = _Scope('onway')   # "go to X, avoid going through Y": on the way to X
+        onward = self._from_now_on(rest)
+        if onward is not None:
+            # "..., and once you have reached it, avoid Y for the rest of the flight": from that event on
+            rest = rest[:onward[0]] + rest[onward[1]:]
+            if scope is None and self.task.chain and self.task.chain[-1].kind in ('visit', 'deliver') and \
+                    self.avoid_scope == 'global':
+                last = self.task.chain[-1]
+                scope = _Scope('after', NounPhrase((last.dests or last.targets)[0], 0, 0, ''))
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
                     'anymore', 'costs', 'instant', 'moment')
@@ -1542,6 +1711,27 @@ class _Reader:
             self._read_tail(rest)
             return
         self._apply_avoid(targets, scope)
+
+    _ONWARD = ('flight', 'task', 'run', 'trip', 'mission', 'job', 'route', 'way', 'day', 'night', 'shift',
+               'tour', 'patrol', 'journey', 'time', 'drive', 'walk')
+
+    def _from_now_on(self, rest: list[str]) -> Optional[tuple[int, int]]:
+        """Where "for the rest of the flight", "from then on" is in ``rest`` (start, end), if anywhere."""
+        for i in range(len(rest)):
+            if rest[i] == 'for' and rest[i + 1:i + 3] == ['the', 'rest'] or rest[i:i + 2] == ['for', 'rest']:
+                j = i + (3 if rest[i + 1] == 'the' else 2)
+                if rest[j:j + 1] == ['of']:
+                    j += 1 + (rest[j + 1:j + 2] == ['the'])
+                    if rest[j:j + 1] and rest[j] in self._ONWARD:
+                        return i, j + 1
+                elif j == len(rest) or rest[j] in PUNCT:
+                    return i, j
+            if rest[i] == 'from' and rest[i + 1:i + 2] in (['then'], ['now'], ['there'], ['here']) and \
+                    rest[i + 2:i + 3] in (['on'], ['onwards'], ['onward']):
+                return i, i + 3
+            if rest[i:i + 4] in (['from', 'that', 'point', 'on'], ['from', 'that', 'moment', 'on']):
+                return i, i + 4
+        return None
 
     def _trailing_scope(self, rest: list[str]) -> tuple[Optional[_Scope], list[str]]:
         if not rest:
@@ -1601,6 +1791,10 @@ class _Reader:
             sc, end = self._event_phrase(rest, 1)
             if sc is not None:
                 return sc, rest[end:]
+        if rest[0] == 'between' and self.task.chain:
+            leg = self._leg(rest)   # "avoid the hall between the two", "... between the shed and the gate"
+            if leg is not None:
+                return leg
         return None, rest
 
     def _goals_named(self) -> set[Descriptor]:
@@ -1746,6 +1940,37 @@ class _Reader:
             self.last_place = later
         return True
 
+    _FIRST_LAST_VERBS = (['has', 'to', 'be'], ['must', 'be'], ['should', 'be'], ['needs', 'to', 'be'], ['is'],
+                         ['comes'], ['goes'], ['must', 'come'], ['should', 'come'], ['has', 'to', 'come'])
+
+    def _read_first_last(self, tokens: list[str]) -> bool:
+        """Read 'the shop has to be last' / 'the bank must come first' after the goals are given."""
+        if not tokens or tokens[0] not in DETS or self.phrases.landmarks:
+            return False
+        np = self.phrases.parse(tokens, 0)
+        if np is None or np.pronoun:
+            return False
+        rest = tokens[np.end:]
+        verb = next((v for v in self._FIRST_LAST_VERBS if rest[:len(v)] == v), None)
+        if verb is None:
+            return False
+        rest = [t for t in rest[len(verb):] if t not in ('the', 'one', 'stop', 'of', 'all', 'place', 'visit')]
+        if rest not in (['last'], ['first']):
+            return False
+        x = self._named_before(np).descriptor
+        step = self.task.find_step(x)
+        others = [d for st in self.task._all_steps() if st.kind == 'visit' and st is not step
+                  for d in st.targets if d != x]
+        if step is None or not others:
+            return False
+        for d in others:
+            if rest == ['last']:   # not there until every other goal is reached
+                self.task.constraints.append(Until(Not(_near(x)), _near(d)))
+            else:
+                self.task.constraints.append(Until(Not(_near(d)), _near(x)))
+        self.notes.append(f'{x}: {rest[0]} of the goals')
+        return True
+
     def _read_passive_avoid(self, tokens: list[str]) -> bool:
         """Read passive avoidance: 'a and b cannot be visited', 'none of a, b are visited'."""
         none = tokens[:1] == ['none']
@@ -1762,6 +1987,15 @@ class _Reader:
             self.task.constraints.extend(_never([np.descriptor for np in nps]))   # "the pond is off limits"
             names = ', '.join(str(n.descriptor) for n in nps)
             self.notes.append(f'"{" ".join(tokens)}": kept away from {names}')
+            return True
+        cut = next((k for k in range(1, len(rest)) if rest[k] in ('until', 'till', 'before', 'unless')), -1)
+        if rest[:1] in (['is'], ['are']) and cut > 1 and [t for t in rest[1:cut] if t not in hedges] in (
+                ['off', 'limits'], ['out', 'of', 'bounds'], ['forbidden'], ['prohibited'], ['banned'],
+                ['restricted'], ['not', 'allowed'], ['no', 'go'], ['closed'], ['not', 'permitted']) and \
+                not none:
+            # "the bench is off limits until you have visited the reel": not there until then
+            self.notes.append(f'"{" ".join(tokens[:end + cut])}": kept away from it, until then')
+            self._read_avoid(['avoid'] + tokens[:end] + rest[cut:], None)
             return True
         neg = ('cannot', 'never', 'not')
         if not (none and rest[:1] in (['are'], ['is'], ['can'], ['should'], ['must']) or
@@ -1821,6 +2055,14 @@ class _Reader:
 
     def _read_permission(self, tokens: list[str]) -> None:
         """'...then you can go to Y': an avoidance of Y that was pending ends where the goal is reached."""
+        text = ' ' + ' '.join(tokens) + ' '
+        if any(p in text for p in (' on the way ', ' on your way ', ' along the way ', ' en route ',
+                                   ' if you need to ', ' if you want to ', ' if you like ', ' if you want ',
+                                   ' if you need ', ' as well ')) and not self.pending_avoid_at and not any(
+                isinstance(c, Always) for c in self.task.constraints):
+            # "you can stop at the bathroom on the way if you need to": allowed, asks for nothing
+            self.notes.append(f'"{" ".join(tokens)}": allowed, not required')
+            return
         names = set()
         start = next((i for i, t in enumerate(tokens)
                       if t in ('can', 'may', 'free', 'allowed', 'or', 'then')), 0)
@@ -1900,6 +2142,10 @@ class _Reader:
     def _exclusive_or(self) -> None:
         """'X or Y but not both': one of them, and never the other."""
         step = self.task.last_step(('visit',))
+        last = self.task.chain[-1] if self.task.chain else None
+        if (step is None or len(step.targets) < 2) and last is not None and last.kind == 'any' and \
+                last.chains and all(c and c[0].kind == 'formula' for c in last.chains):
+            return   # "only one of them, not both": said twice
         if step is None or len(step.targets) < 2:
             raise TranslationError('"not both" needs two alternatives before it',
                                    details={'part': 'not both'})
@@ -2101,6 +2347,49 @@ class _Reader:
                     return n, k
         return None
 
+    _GUARD_HEADS = (['do', 'not'], ['never'], ['only'], ['please', 'do', 'not'], ['you', 'must', 'not'],
+                    ['you', 'cannot'], ['do', 'not', 'even'])
+
+    def _read_pick_guard(self, tokens: list[str]) -> bool:
+        """Read 'don't pick it up until you have been to the desk', 'only grab it after ...': it waits."""
+        head = next((h for h in self._GUARD_HEADS if tokens[:len(h)] == h), None)
+        if head is None:
+            return False
+        k = len(head)
+        if tokens[k:k + 1] not in (['pick'], ['grab'], ['collect'], ['lift'], ['fetch'], ['retrieve']):
+            return False
+        k += 1
+        up = tokens[k:k + 1] == ['up']
+        k += up
+        if tokens[k:k + 1] in (['it'], ['them']) and self.last_object is not None:
+            np: Optional[NounPhrase] = self.last_object
+            k += 1
+        else:
+            np = self.phrases.parse(tokens, k)
+            if np is None or np.pronoun or np.end <= k:
+                return False
+            k = np.end
+        if tokens[k:k + 1] == ['up']:
+            k += 1
+        rest = tokens[k:]
+        only = head == ['only']
+        if only and rest[:1] == ['after']:
+            rest = ['until'] + rest[1:]   # "only pick it up after you have been to X": not until then
+        elif only or rest[:1] not in (['until'], ['till'], ['before']):
+            return False
+        scope, left = self._trailing_scope(rest)
+        if scope is None or scope.kind != 'until' or scope.target is None or [
+                t for t in left if t not in PUNCT]:
+            return False
+        event = _near(scope.target.descriptor) if scope.event == 'near' else Atom(
+            scope.event, (scope.target.descriptor,))
+        self.task.constraints.append(Until(Not(Atom('pick', (np.descriptor,))), event))
+        if self.task.find_step(np.descriptor) is None:
+            # nothing brought yet: the pick itself is asked for ("don't grab the key before ...")
+            self.task.chain.append(Step('visit', [np.descriptor]))
+            self.task.constraints.append(Eventually(Atom('pick', (np.descriptor,))))
+        return True
+
     def _read_count(self, rest: list[str], targets: list[Descriptor]) -> tuple[bool, list[str]]:
         """Read counting phrases after a goal: at least / at most / exactly / N times / in a row."""
         rest = normalize_counts(rest)
@@ -2150,7 +2439,11 @@ class _Reader:
                 self.task.constraints.append(exactly(x, n))
                 # "bring X to the pantry and only enter it once": a bound, not a step after the others
                 if self.task.find_step(d) is None and (self.connector != 'and' or not self.task.chain):
-                    self.task.chain.append(Step('visit', [d]))
+                    # "visit a exactly twice, then b": b after the last of the visits
+                    for k in range(n):
+                        if k:
+                            self.task.chain.append(Step('leave', [d]))
+                        self.task.chain.append(Step('visit', [d]))
             else:
                 self.task.constraints.append(at_most(x, n))
         return True, rest[end:]
@@ -2206,6 +2499,17 @@ class _Reader:
         destined = 0 < loc < len(rest) and rest[loc] in ('to', 'into', 'onto', 'on', 'in', 'inside', 'over')
         if loc > 0 and (verb not in PUT_VERBS or rest[0] not in ('in', 'inside', 'within') or destined):
             rest = self._drop_location(rest, objs)   # "bring the cup in the kitchen to the table"
+        rel = match_relation(rest, 1) if rest[:1] == ['from'] and len(objs) == 1 else None
+        if rel is not None and rel[0] != 'isnextto':
+            # "the remote from under the sofa": where the object is, as that relation
+            src = self.phrases.parse(rest, rel[1], destination_stops=True)
+            if src is not None and not src.pronoun:
+                o = objs[0]
+                d = Descriptor(o.descriptor.name, o.descriptor.relations + (
+                    Relation(rel[0], (src.descriptor,)),))
+                objs = [NounPhrase(d, o.start, o.end, o.head)]
+                self.notes.append(f'"{" ".join(rest[:src.end])}" read as {d}')
+                rest = rest[src.end:]
         if rest and rest[0] in ('from', 'off') and len(objs) == 1:
             # "the blanket from the closet", "the remote off the couch": where the object is, as nearness
             src = self.phrases.parse(rest, 1, destination_stops=True)
@@ -2256,7 +2560,7 @@ class _Reader:
                 if j < len(rest) and rest[j] in ('at', 'by', 'in', 'near', 'next'):
                     j += 2 if _starts(rest, j, ['next', 'to']) else 1
             dests, _, dend = self._np_list(rest, j)
-            rest = rest[dend:]
+            rest = self._drop_location(rest[dend:], dests)   # "to the shelf in the study": the shelf
         elif implicit_dest is None:
             if verb in ('take', 'bring', 'get', 'fetch', 'grab'):
                 dests = []

@@ -35,6 +35,40 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "go to a . when you are done there , head to b" -> "go to a . then head to b"
     (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
     (r' (?:exactly )?once and only once ', ' exactly once '),
+    # "as you head from the greenhouse to the shed", "on the leg between the two": on the way
+    (r' (?:as|while|when) you (?:head|go|travel|fly|drive|walk|move|come|make your way|are going|are heading|'
+     r'are flying|are travelling|are traveling) (?=from |between )', ' on the way '),
+    (r' (?:while|when) (?:heading|going|travelling|traveling|flying|driving|walking|moving) '
+     r'(?=from |between )',
+     ' on the way '),
+    (r' on the (?:leg|stretch|part|bit|section|segment|trip|journey|flight|drive|walk) (?=from |between )',
+     ' on the way '),
+    (r' on the way back (?=from )', ' on the way '),
+    (r' on the (?:return leg|return trip|return journey|return flight|trip back|flight back|leg back|'
+     r'drive back|'
+     r'walk back|way home|journey back) (?=to |towards )', ' on the way back '),
+    # "either go to the east gate or the west gate": the choice is of the places
+    (r'(^ | [,.;!?] | and | then )either (go to|visit|head to|fly to|drive to|walk to|stop at|head over to) '
+     r'(?=(?:the|a|an|my|your|our) [^,.;!?]* or (?:the|a|an|my|your|our) )', r'\1 \2 either '),
+    # "go to the hall, but if the hall is busy, go to the lounge instead": one or the other
+    (r' , (?:but |or )?if (?:the|that|it)(?: [a-z]+){0,3} (?:is|are|s) (?:too )?(?:busy|closed|locked|'
+     r'occupied|full|blocked|taken|unavailable|not available|out of order|shut|crowded|packed) , (?:then )?'
+     r'(?:go to|use|try|head to|visit|pick) (?=(?:the|a|an|my|your|our) [^,.;!?]*? instead )', ' or '),
+    # "once you're there, don't leave until you've checked the oven": stay there until then
+    (r' (?:do not|never) (?:leave|go anywhere|move|budge)(?: (?:from )?(?:there|here|it|that spot))? '
+     r'(?=until )', ' stay there '),
+    # "go to the cafe beforehand": first
+    (r' (?:beforehand|before anything else|before all that)(?= [,.;!?] | $)', ' first '),
+    # "keep visiting a and b, forever": the comma says nothing
+    (r' , (forever|indefinitely|endlessly|continuously|nonstop|over and over|again and again)'
+     r'(?= [,.;!?] | $)', r' \1 '),
+    # "the cart, which is right next to the stairs": where the cart is
+    (r' , (which|that) (is|are) (?=(?:right |just |directly )?(?:next to|beside|behind|in front of|under|'
+     r'underneath|below|beneath|above|over|on top of|near|by|between|left of|right of|to the left of|'
+     r'to the right of|opposite|across from|on|in|inside|at) )', r' \1 \2 '),
+    # "make a quick stop at the cart": stop at it
+    (r' make (?:a |one )?(?:quick |brief |short |little )?stop (at|by|in) ', r' stop \1 '),
+
     (r' (?:from then on|from that point on|from there on|thereafter|from that moment on|after this) ',
      ' after that '),
     (r' from now on ', ' '),
@@ -93,7 +127,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] | and | then | to )(go to |head to |visit |to )?whichever (?:one )?'
      r'(?:is |s |of them is |of the two is )?'
      r'(?:closer|closest|nearer|nearest|easier|quicker|faster|more convenient|handier|free|open|emptier|'
-     r'less busy|shorter)(?: to you| for you| of the two)?(?: , | : | - )?', r'\1 \2'),
+     r'less busy|shorter)(?: to (?:reach|get to|get at|access))?(?: to you| for you| of the two)?'
+     r'(?: , | : | - )?', r'\1 \2'),
     # "any of the three will do: a, b, or c"
     (r'(^ | [.;!?] )(?:any|either|one|any one) (?:one )?of (?:the |these |those |them )?'
      r'(?:two |three |four |five )?(?:will do|is fine|works|is ok|is okay|would be fine|would do|are fine|'
@@ -145,7 +180,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      r'\1 go to '),
 ))
 
-_PASS_RE = re.compile(r'(^| )(?:make|do|take|fly|run|perform|complete) (one|two|three|four|five|six|seven|'
+_PASS_RE = re.compile(r'(^| )(make|do|take|fly|run|perform|complete|made|done|did|taken|flown|performed|'
+                      r'completed) (one|two|three|four|five|six|seven|'
                       r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
                       r'(?:passes|pass|trips|trip|laps|lap|rounds|round|sweeps|sweep|runs|run|loops|loop|'
                       r'flyovers|flyover|visits|visit|circuits|circuit) '
@@ -157,8 +193,8 @@ _GERUNDS = {'going': 'go', 'heading': 'head', 'visiting': 'visit', 'checking': '
             'picking': 'pick', 'grabbing': 'grab', 'bringing': 'bring', 'taking': 'take', 'getting': 'get',
             'fetching': 'fetch', 'dropping': 'drop', 'popping': 'pop', 'landing': 'land'}
 # "drop by the porch", "pop in at the shop": a visit, not a delivery
-_DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to) (?=(?:the|a|an|my|your|'
-                         r'our) )')
+_DROP_BY_RE = re.compile(r' (?:drop|pop|duck|nip) (?:by|in at|into|in to|over to) '
+                         r'(?=(?:either )?(?:the|a|an|my|your|our) )')
 _GERUND_RE = re.compile(r' (first|finally) (' + '|'.join(_GERUNDS) + ') ')
 
 
@@ -179,9 +215,19 @@ def _one_of_group(text: str) -> str:
     return text[:m.start()] + ' go to either ' + body + text[end:]
 
 
+_COLON_RE = re.compile(r'(^ | [.;!?] )(?:pick|choose|select) '
+                       r'(?:one|any one|one of them|one of these|either one) : ')
+_VERB_COLON_RE = re.compile(r' (avoid|visit|then|never) : ')
+
+
 def paraphrase(tokens: list[str]) -> list[str]:
     """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
     text = ' ' + ' '.join(tokens) + ' '
+    if ':' in tokens:
+        # "pick one: the den, the hall or the attic" is a choice; "avoid: the ramp, the bins" a list
+        text = _VERB_COLON_RE.sub(r' \1 ', _COLON_RE.sub(r'\1 go to one of these : ', text))
+        tokens = text.split()
+        text = ' ' + ' '.join(tokens) + ' '
     if not any(w in text for w in (' done', ' finish', ' through', ' ready', ' once ', ' time ', ' look',
                                    ' peek', ' peep', ' glance', ' gander', ' visit', ' trip', ' see ',
                                    ' check', ' whether', ' if ', ' away', ' clear', ' off', ' out',
@@ -220,6 +266,14 @@ def _passes(tokens: list[str]) -> list[str]:
     np = PhraseParser().parse(after, 0)
     if np is None:
         return tokens
-    count = m.group(2)
+    count = m.group(3)
     times = ['once'] if count in ('a', 'an', 'a single', 'one', '1') else [count, 'times']
+    if m.group(2) in ('made', 'done', 'did', 'taken', 'flown', 'performed', 'completed'):
+        # "once you have made a pass over the substation": once you have visited it
+        return before + ['visited'] + after[:np.end] + (times if times != ['once'] else []) + _passes(
+            after[np.end:])
+    nxt = after[np.end:np.end + 3]
+    if times == ['once'] and count != 'one' and nxt and (nxt[0] in ('once', 'twice', 'thrice', 'exactly') or (
+            nxt[:2] in (['at', 'least'], ['at', 'most']) or nxt[1:2] == ['times'])):
+        times = []   # "make a pass over the field exactly twice": the count that follows counts the passes
     return before + ['go', 'over'] + after[:np.end] + times + _passes(after[np.end:])

@@ -73,6 +73,17 @@ RELATIVE_LEADS: tuple[tuple[str, ...], ...] = (
     ('hanging',), ('resting',), ('leaning',), ('parked',), ('stored',), ('kept',), ('found',),
     ('that', 'hangs'), ('that', 'sits'), ('that', 'stands'), ('that', 'lies'),
 )
+# Participles of where a thing was put ("the crate stacked on the pallet", "the van parked by the gate").
+_PLACED = ('stacked', 'piled', 'mounted', 'propped', 'perched', 'sat', 'tucked', 'stashed', 'hung',
+           'sitting', 'lying', 'standing', 'resting', 'leaning', 'hanging', 'parked', 'stored', 'kept',
+           'placed',
+           'located', 'positioned', 'balanced', 'wedged', 'installed', 'waiting', 'stuck', 'fixed')
+RELATIVE_LEADS = tuple(sorted(set(RELATIVE_LEADS) | {
+    lead + (w,) + right for lead in ((), ('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'),
+                                     ('that', 'was'), ('that', 'were'))
+    for w in _PLACED for right in ((), ('right',), ('just',), ('directly',))} | {
+    lead + (right,) for lead in (('that', 'is'), ('which', 'is'), ('that', 'are'), ('which', 'are'))
+    for right in ('right', 'just', 'directly')}, key=lambda t: -len(t)))
 
 # Words that are never part of a name.
 STOPWORDS = frozenset('''
@@ -157,9 +168,16 @@ def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
     return None
 
 
+_LEADS_BY_FIRST: dict[str, list[tuple[str, ...]]] = {}
+for _lead in RELATIVE_LEADS:
+    _LEADS_BY_FIRST.setdefault(_lead[0], []).append(_lead)   # longest first, as RELATIVE_LEADS is
+
+
 def _relative_lead(tokens: Sequence[str], i: int) -> int:
     """Length of a relative-clause lead-in at ``i`` that is followed by a relation, else 0."""
-    for lead in RELATIVE_LEADS:
+    if i >= len(tokens):
+        return 0
+    for lead in _LEADS_BY_FIRST.get(tokens[i], ()):
         n = len(lead)
         if tuple(tokens[i:i + n]) == lead and match_relation(tokens, i + n) is not None:
             return n
@@ -338,7 +356,13 @@ class PhraseParser:
             if len(words) == 1:
                 words = base.split('_') if base else words
             elif self.last is not None:
-                words = words[:-1] + [self.last.head]
+                named = self.last.descriptor.name.split('_')
+                if len(words) == 2 and len(named) > 2 and named[0] in PLACEHOLDER_ADJECTIVES and not any(
+                        w in PLACEHOLDER_ADJECTIVES for w in named[1:]):
+                    # "the left loading door or the right one": one is the loading door
+                    words = words[:-1] + named[1:]
+                else:
+                    words = words[:-1] + [self.last.head]
         head = words[-1]
         relations: list[Relation] = []
         while i < len(tokens):
@@ -423,7 +447,8 @@ class PhraseParser:
             nxt = self.parse(tokens, j, destination_stops)
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
-            if sep == 'and' and tokens[i] == ',' and nxt.descriptor.relations and nxt.pronoun in ('', 'one'):
+            if sep == 'and' and tokens[i] == ',' and j == i + 1 and nxt.descriptor.relations and \
+                    nxt.pronoun in ('', 'one'):
                 # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
                 merged = _attach(phrases[-1].descriptor, nxt.descriptor, nxt.pronoun == 'one')
                 if merged is not None:

@@ -25,7 +25,8 @@ from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
-                          'notice', 'find', ',', 'from', 'among', 'options', 'choices'})
+                          'notice', 'find', ',', 'from', 'among', 'options', 'choices', 'pass', 'out', 'pass',
+                          'passing', 'past'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near'})
@@ -76,6 +77,9 @@ _MENTIONED: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('i', 'described'), ('i', 'told', 'you', 'about'), ('you', 'saw'), ('we', 'talked', 'about'),
     ('on', 'the', 'list'), ('in', 'the', 'list'), ('from', 'the', 'list'), ('from', 'before'),
     ('i', 'listed', 'earlier'), ('i', 'mentioned', 'earlier'), ('i', 'mentioned', 'before'),
+    ('on', 'this', 'list'), ('on', 'that', 'list'), ('in', 'this', 'list'), ('of', 'the', 'list'),
+    ('of', 'this', 'list'), ('i', 'listed', 'first'), ('i', 'named', 'first'), ('i', 'mentioned', 'first'),
+    ('of', 'these'), ('of', 'those'), ('of', 'the', 'following'), ('in', 'the', 'following', 'list'),
 ), key=lambda t: -len(t)))
 
 
@@ -86,7 +90,8 @@ def _drop_mentions(tail: list[str]) -> list[str]:
     while i < len(tail):
         out.append(tail[i])
         i += 1
-        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle') or out[-1] in ORDINALS:
+        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle', 'things', 'items',
+                       'ones') or out[-1] in ORDINALS:
             j = i + (1 if i < len(tail) and tail[i] in ('that', 'which') else 0)
             for m in _MENTIONED:
                 if tuple(tail[j:j + len(m)]) == m:
@@ -108,7 +113,10 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     tail = tokens[end:]
     if tail and tail[0] not in PUNCT and any(t in PUNCT for t in tail):
         tail = tail[next(k for k, t in enumerate(tail) if t in PUNCT):]
-    if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail):
+    start = max((k for k in range(s - 1) if tokens[k] in '.;!?'), default=-1) + 1
+    ahead = s >= 2 and tokens[s - 1] == ':' and any(t in ORDINALS or t in ('last', 'middle') for t in tokens[
+        start:s - 1])   # "the first and third things on this list: ..."
+    if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail) and not ahead:
         heads = {np.head for np in nps}
         if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
                 not any(t in NAME_VERBS for t in tokens[:end]):
@@ -120,6 +128,16 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             # enumeration only sets the scene
             notes.append(f'"one" read as "{category}"')
             keep = max((k for k in range(s) if tokens[k] in '.;!?'), default=-1)
+            if tokens[keep + 1:keep + 2] and tokens[keep + 1] in _VERBS | {'check', 'inspect', 'survey'} and \
+                    tokens[s - 1] == ':':
+                # "visit each of the three sheds: the red one, the green one and the blue one": the list is
+                # what to visit
+                listed = [category if t == 'one' and tokens[k - 1] in DETERMINERS | PLACEHOLDER_ADJECTIVES
+                          else t for k, t in enumerate(tokens[s:end], s)]
+                verb_end = next((k for k in range(keep + 1, s) if tokens[k] in DETERMINERS or tokens[k] in (
+                    'each', 'all', 'both', 'every', 'these', 'those', 'them') or tokens[k] in NUMBER_WORDS),
+                    s)
+                return tokens[:verb_end] + listed + tail
             return tokens[:keep + 1] + [category if t == 'one' and k > 0 and tail[k - 1] not in DETERMINERS
                                         else t for k, t in enumerate(tail)]
         return tokens
@@ -146,99 +164,115 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             out += items[i]
         return out
 
-    out: list[str] = []
-    i = 0
-    n = len(items)
-    while i < len(tail):
-        t = tail[i]
-        nxt = tail[i + 1] if i + 1 < len(tail) else ''
-        if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (tail[i + 2] in ORDINALS or tail[i + 2] in (
-                'last', 'middle')) and (i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in (
-                'and', 'then', 'or')):
-            tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
-            nxt = tail[i + 1]
-        if t == 'the' and nxt:
-            w = tail[i + 2] if i + 2 < len(tail) else ''
-            one = 1 if w in ('one', 'item', 'thing') else 0
-            # "the second", "the latter twice": no noun follows the position word
-            ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
-                not is_name_word(tail, i + 2, False)
-            if nxt in ORDINALS and ends and not (nxt == 'first' and w in NUMBER_WORDS and w != 'one'):
-                idx = ORDINALS[nxt] - 1
-                if idx >= n:
-                    raise TranslationError(f'"the {nxt}" points past the end of a list of {n}',
-                                           details={'part': f'the {nxt}'})
-                out += joined([idx])
-                i += 2 + one
-                continue
-            if nxt == 'last' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
-                k = NUMBER_WORDS[w]
-                out += joined(list(range(n - k, n)))
-                i += 3
-                continue
-            if nxt == 'first' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
-                out += joined(list(range(NUMBER_WORDS[w])))
-                i += 3
-                continue
-            if nxt in ('last', 'latter') and ends:
-                out += joined([n - 1])
-                i += 2 + one
-                continue
-            if nxt == 'former':
-                out += joined([0])
-                i += 2
-                continue
-            if nxt == 'one' and tail[i + 2:i + 5] == ['in', 'the', 'middle'] and n % 2 == 1:
-                out += joined([n // 2])
-                i += 5
-                continue
-            if nxt == 'middle' and n % 2 == 1:
-                out += joined([n // 2])
-                i += 2 + one
-                continue
-            if nxt in ('other', 'others', 'remaining') or (
-                    nxt == 'rest' and (not w or w in PUNCT or w == 'of' or not is_name_word(
-                        tail, i + 2, False))):
-                if nxt == 'rest' and tail[i + 2:i + 4] == ['of', 'them']:
+    def resolve(tail: list[str]) -> list[str]:
+        out: list[str] = []
+        i = 0
+        n = len(items)
+        while i < len(tail):
+            t = tail[i]
+            nxt = tail[i + 1] if i + 1 < len(tail) else ''
+            if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (
+                    tail[i + 2] in ORDINALS or tail[i + 2] in ('last', 'middle')) and (
+                    i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in ('and', 'then', 'or')):
+                tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
+                nxt = tail[i + 1]
+            if t == 'the' and nxt:
+                w = tail[i + 2] if i + 2 < len(tail) else ''
+                one = 1 if w in ('one', 'item', 'thing') else 0
+                # "the second", "the latter twice": no noun follows the position word
+                ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
+                    not is_name_word(tail, i + 2, False)
+                if nxt in ORDINALS and ends and not (nxt == 'first' and w in NUMBER_WORDS and w != 'one'):
+                    idx = ORDINALS[nxt] - 1
+                    if idx >= n:
+                        raise TranslationError(f'"the {nxt}" points past the end of a list of {n}',
+                                               details={'part': f'the {nxt}'})
+                    out += joined([idx])
+                    i += 2 + one
+                    continue
+                if nxt == 'last' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
+                    k = NUMBER_WORDS[w]
+                    out += joined(list(range(n - k, n)))
+                    i += 3
+                    continue
+                if nxt == 'first' and w in ('two', 'three', 'four') and NUMBER_WORDS[w] <= n:
+                    out += joined(list(range(NUMBER_WORDS[w])))
+                    i += 3
+                    continue
+                if nxt in ('last', 'latter') and ends:
+                    out += joined([n - 1])
+                    i += 2 + one
+                    continue
+                if nxt == 'former':
+                    out += joined([0])
                     i += 2
-                rest_idx = [k for k in range(n) if k not in used]
-                out += joined(rest_idx)
-                i += 2 + (1 if w in ('two', 'three', 'ones', 'one') else 0)
+                    continue
+                if nxt in ('one', 'item', 'thing') and tail[i + 2:i + 4] == ['at', 'the'] and \
+                        tail[i + 4:i + 5] in (['start'], ['beginning'], ['end'], ['top'], ['bottom']) and (
+                        i + 5 >= len(tail) or tail[i + 5] in PUNCT or tail[i + 5] in ('and', 'then', 'or')):
+                    # "the item I listed at the start": the first one (at the end: the last)
+                    out += joined([0] if tail[i + 4] in ('start', 'beginning', 'top') else [n - 1])
+                    i += 5
+                    continue
+                if nxt == 'one' and tail[i + 2:i + 5] == ['in', 'the', 'middle'] and n % 2 == 1:
+                    out += joined([n // 2])
+                    i += 5
+                    continue
+                if nxt == 'middle' and n % 2 == 1:
+                    out += joined([n // 2])
+                    i += 2 + one
+                    continue
+                if nxt in ('other', 'others', 'remaining') or (
+                        nxt == 'rest' and (not w or w in PUNCT or w == 'of' or not is_name_word(
+                            tail, i + 2, False))):
+                    if nxt == 'rest' and tail[i + 2:i + 4] == ['of', 'them']:
+                        i += 2
+                    rest_idx = [k for k in range(n) if k not in used]
+                    out += joined(rest_idx)
+                    i += 2 + (1 if w in ('two', 'three', 'ones', 'one') else 0)
+                    continue
+                if nxt == 'one' and w in ('right', 'just', 'immediately', 'before', 'after', 'directly'):
+                    j = i + 2
+                    while j < len(tail) and tail[j] in ('right', 'just', 'immediately', 'directly'):
+                        j += 1
+                    if j < len(tail) and tail[j] in ('before', 'after'):
+                        parser = PhraseParser()
+                        ref = parser.parse(tail, j + 1)
+                        if ref is not None:
+                            k = next((m for m, it in enumerate(items) if it[-1] == ref.head), -1)
+                            if k >= 0:
+                                k2 = k - 1 if tail[j] == 'before' else k + 1
+                                if 0 <= k2 < n:
+                                    out += joined([k2])
+                                    i = ref.end
+                                    continue
+            if t in ORDINALS and (i == 0 or tail[i - 1] in (',', 'then', 'and', ':')) and (
+                    not nxt or nxt in PUNCT or nxt in ('and', 'then', 'one', 'ones', 'things', 'items')):
+                out += joined([ORDINALS[t] - 1])
+                i += 2 if nxt in ('one', 'ones', 'things', 'items') else 1
                 continue
-            if nxt == 'one' and w in ('right', 'just', 'immediately', 'before', 'after', 'directly'):
-                j = i + 2
-                while j < len(tail) and tail[j] in ('right', 'just', 'immediately', 'directly'):
-                    j += 1
-                if j < len(tail) and tail[j] in ('before', 'after'):
-                    parser = PhraseParser()
-                    ref = parser.parse(tail, j + 1)
-                    if ref is not None:
-                        k = next((m for m, it in enumerate(items) if it[-1] == ref.head), -1)
-                        if k >= 0:
-                            k2 = k - 1 if tail[j] == 'before' else k + 1
-                            if 0 <= k2 < n:
-                                out += joined([k2])
-                                i = ref.end
-                                continue
-        if t in ORDINALS and (i == 0 or tail[i - 1] in (',', 'then', 'and', ':')) and (
-                not nxt or nxt in PUNCT or nxt in ('and', 'then', 'one')):
-            out += joined([ORDINALS[t] - 1])
-            i += 2 if nxt == 'one' else 1
-            continue
-        if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['reverse', 'order']:
-            out += joined(list(range(n - 1, -1, -1)), 'then')
-            i += 4
-            continue
-        if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['that', 'order']:
-            out += joined(list(range(n)), 'then')
-            i += 4
-            continue
-        if t in ('them', 'all') and (nxt in ('all',) or t == 'them'):
-            out += joined(list(range(n)))
-            i += 2 if nxt == 'all' else 1
-            continue
-        out.append(t)
-        i += 1
+            if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['reverse', 'order']:
+                out += joined(list(range(n - 1, -1, -1)), 'then')
+                i += 4
+                continue
+            if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['that', 'order']:
+                out += joined(list(range(n)), 'then')
+                i += 4
+                continue
+            if t in ('them', 'all') and (nxt in ('all',) or t == 'them'):
+                out += joined(list(range(n)))
+                i += 2 if nxt == 'all' else 1
+                continue
+            out.append(t)
+            i += 1
+        return out
+
+    if not any(t in _REF_WORDS for t in tail) and ahead:
+        # "keep clear of the first and third things on this list: a wheelchair, a cart, a hamper"
+        head = _drop_mentions(tokens[start:s - 1])
+        notes.append('list of ' + ', '.join(' '.join(it[1:]) for it in items) + ': positions resolved')
+        return tokens[:start] + resolve(head) + tail
+    out = resolve(tail)
     notes.append('list of ' + ', '.join(' '.join(it[1:]) for it in items) + ': positions resolved')
     # earlier sentences stay; the sentence that holds the list only sets the scene
     keep = max((k for k in range(s) if tokens[k] in '.;!?'), default=-1)
@@ -255,7 +289,10 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('my', 'mistake'), ('or', 'rather'), ('or', 'actually'), ('or', 'better'), ('on', 'second', 'thought'),
     ('on', 'second', 'thoughts'), ('come', 'to', 'think', 'of', 'it'), ('change', 'of', 'plan'),
     ('change', 'of', 'plans'), ('let', 'me', 'rephrase'), ('wait', 'no'), ('hold', 'on'), ('scratch',),
-    ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'),
+    ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'), ('hang', 'on'),
+    ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
+    ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'), ('no', 'actually'), ('no', 'i', 'mean'),
+    ('no', 'make', 'that'), ('no', 'rather'),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
                      'leave'})
@@ -515,19 +552,66 @@ def _retract_avoidance(prev: list[str], seg: list[str], notes: list[str]) -> Opt
     """'..., you don't need to avoid it (after all)': the avoidance of it is dropped from ``prev``."""
     at = next((k for k in range(len(seg)) for r in _RETRACT if tuple(seg[k:k + len(r)]) == r), -1)
     if at < 0:
-        return None
+        return _fine_after_all(prev, seg, notes)
     r = next(r for r in _RETRACT if tuple(seg[at:at + len(r)]) == r)
     named = PhraseParser().parse(seg, at + len(r))
     head = named.head if named is not None and not named.pronoun else ''
+    return _drop_avoidance(prev, seg, at, at + len(r), head, notes)
+
+
+def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """'keep away from the stove and the bin, actually the bin is fine': the bin no longer avoided."""
+    parser = PhraseParser()
+    for k in range(len(seg)):
+        if seg[k] not in DETERMINERS or k > 0 and seg[k - 1] not in PUNCT and seg[k - 1] not in (
+                'actually', 'but', 'and', 'so', 'well', 'oh'):
+            continue
+        named = parser.parse(seg, k)
+        if named is None or named.pronoun or seg[named.end:named.end + 1] not in (['is'], ['are']):
+            continue
+        e = named.end + 1
+        if seg[e:e + 1] in (['actually'], ['totally'], ['perfectly'], ['all'], ['completely'], ['now']):
+            e += 1
+        if seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe']) and \
+                seg[e:e + 2] not in (['no', 'problem'], ['not', 'a'], ['no', 'longer']):
+            continue
+        if seg[e:e + 2] == ['not', 'a'] and seg[e + 2:e + 3] not in (['problem'], ['hazard'], ['danger']):
+            continue
+        if seg[e:e + 2] == ['no', 'longer'] and seg[e + 2:e + 3] not in (
+                ['a'], ['dangerous'], ['blocked'], ['off'], ['wet'], ['closed']):
+            continue
+        end = e + 1
+        while end < len(seg) and seg[end] != ',':
+            end += 1   # "the stairs are fine now that the gate is up": the reason goes with it
+        return _drop_avoidance(prev, seg, k, end, named.head, notes)
+    return None
+
+
+def _remove_from_list(prev: list[str], p: int, sp: NounPhrase) -> Optional[list[str]]:
+    """``prev`` without the phrase ``sp`` (found from ``prev[p]`` on) where it is one of a list."""
+    a, b = p + sp.start, p + sp.end
+    if a >= 2 and prev[a - 1] in ('and', 'or', ',') and prev[a - 2] not in PUNCT and prev[a - 2] not in (
+            'and', 'or'):
+        return prev[:a - 1] + prev[b:]   # "the island and the stools": the stools taken out
+    if b + 1 < len(prev) and prev[b] in ('and', 'or', ',') and prev[b + 1] in DETERMINERS:
+        return prev[:a] + prev[b + 1:]
+    return None
+
+
+def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: str, notes: list[str]
+                    ) -> Optional[list[str]]:
+    """Remove from ``prev`` the avoidance of the phrase with ``head`` (any, without); keep seg's orders."""
     avoid_at = [p for p in range(len(prev)) if prev[p] in _AVOID_WORDS]
     for p in reversed(avoid_at):
         spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
             parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
-                     for c in _split_commas(seg[:at]) + _split_commas(seg[at + len(r):])]
-            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS]
-            return _remove_clause(prev, p) + [t for c in kept for t in [','] + c]
+                     for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
+            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS | {
+                'keep', 'stay', 'steer'}]
+            return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
+                t for c in kept for t in [','] + c]
     return None
 
 
@@ -623,6 +707,16 @@ def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[st
     k = 1
     while k < len(words) and words[k] in ('the', 'order', 'of', 'around', 'round'):
         k += 1
+    if words[k:k + 2] in (['last', 'two'], ['first', 'two'], ['final', 'two']) and not [
+            t for t in words[k + 2:] if t not in ('around', 'round', 'please', 'instead', 'stops', 'goals',
+                                                  'places', 'ones', 'over', 'of', 'them', 'those', 'these')]:
+        # "swap the last two around": the last two goals named
+        spans = _np_spans(prev)
+        if len(spans) < 2:
+            return None
+        a, b = spans[-2:] if words[k] != 'first' else spans[:2]
+        notes.append(f'{a.descriptor} and {b.descriptor} swapped')
+        return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
     nps, _, end = PhraseParser().parse_list(words, k)
     if len(nps) != 2 or [t for t in words[end:] if t not in ('around', 'round', 'please', 'instead')]:
         return None
@@ -692,6 +786,10 @@ def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optiona
     return rest[:sent] + ['go', 'to'] + words[k:np.end] + [',', 'then'] + body
 
 
+_APOLOGIES = frozenset({('sorry',), ('my', 'mistake'), ('my', 'bad'), ('oops',), ('sorry', 'about', 'that'),
+                        ('my', 'apologies'), ('apologies',), ('silly', 'me')})
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
@@ -703,6 +801,25 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if len(m) > 1 and tuple(seg[:len(m)]) == m and m[0] not in _CANCEL and m != ('make', 'that'):
                 marker, seg, stripped = m[0], seg[len(m):], True
                 break
+        if seg[:1] == ['not'] and len(seg) > 2:
+            # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
+            named = PhraseParser().parse(seg, 1)
+            if named is not None and not named.pronoun and seg[named.end:named.end + 1] == [','] and any(
+                    sp.head == named.head for sp in _np_spans(prev)):
+                seg, stripped = seg[named.end + 1:], True
+    for k in range(1, len(seg) - 1):
+        if seg[k] != ',':
+            continue
+        end = next((j for j in range(k + 1, len(seg)) if seg[j] == ','), len(seg))
+        tail = seg[k + 1:end]
+        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or chatter.is_statement(
+                tail, _np_end(tail)) and not [
+                t for t in seg[end:] if t not in PUNCT]:
+            # "I meant the cooler, sorry, it's been a long day": the apology and the reason ask for nothing
+            dropped = ' '.join(t for t in seg[k + 1:] if t not in PUNCT)
+            notes.append(f'left out "{dropped}" (asks for nothing)')
+            seg = seg[:k]
+            break
     retracted = _retract_avoidance(prev, seg, notes)
     if retracted is not None:
         return retracted
@@ -814,6 +931,20 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         # "wait, not the kitchen, the dining room"
         k = seg.index(',')
         seg = seg[k + 1:] + ['not'] + seg[1:k]
+    for lead in (['it', 'is', 'actually'], ['it', 'is', 'really'], ['it', 'is'], ['they', 'are', 'actually'],
+                 ['they', 'are'], ['actually']):
+        if seg[:len(lead)] == lead and seg[len(lead):len(lead) + 1] and seg[len(lead)] in _PREPS:
+            seg = seg[len(lead):]   # "the box on the top shelf, no, it's actually on the bottom one"
+            break
+    if seg and seg[0] in ('before', 'after', 'until') and len(seg) > 1 and seg[0] in prev:
+        # "don't go to the library before noon, sorry, before the park": the phrase after the same word
+        new_np = PhraseParser().parse(seg, 1)
+        p = max(k for k in range(len(prev)) if prev[k] == seg[0])
+        old = PhraseParser().parse(prev, p + 1)
+        if new_np is not None and old is not None and not old.pronoun and not [
+                t for t in seg[new_np.end:] if t not in PUNCT]:
+            notes.append(f'corrected to "{" ".join(seg[:new_np.end])}"')
+            return prev[:p] + seg[:new_np.end] + prev[old.end:]
     if seg and seg[0] in _PREPS and len(seg) > 1:
         # "put the jar on the table - no, on the counter": the phrase after the same kind of word
         new_np = PhraseParser().parse(seg, 1)

@@ -31,12 +31,22 @@ TYPOS: dict[str, str] = {
     'backdoor': 'back door', 'laundryroom': 'laundry room', 'guestroom': 'guest room',
     'frontyard': 'front yard',
     'bathroon': 'bathroom', 'bedrom': 'bedroom', 'hallwya': 'hallway', 'garagae': 'garage',
+    'ovr': 'over', 'tims': 'times', 'tmes': 'times', 'nexto': 'next to', 'nextto': 'next to',
+    'vaccum': 'vacuum', 'vacum': 'vacuum', 'vaccuum': 'vacuum', 'trolly': 'trolley',
+    'flashlite': 'flashlight',
+    'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
+# "away form the stove": after these words "form" is a slip for "from".
+_FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'), (r"\b(that|there|it|what|where|here|who)'s\b", r'\1 is'),
+    # "the table's fine", "the red one's locked": "is", not a possessive, before how a thing is
+    (r"'s(?= (?:fine|ok|okay|alright|safe|locked|closed|shut|open|broken|blocked|up|out|off|empty|full|wet|"
+     r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
+     r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp)\b)", ' is'),
     (r"'d\b", ' would'), (r"'s\b", ''), (r"s'(?=\s)", 's'),
 )
 
@@ -58,7 +68,11 @@ ORDINALS: dict[str, int] = {
 }
 
 PUNCT = frozenset(',.;:!?')
-_TOKEN_RE = re.compile(r"[a-z0-9]+|[,.;:!?]")
+_TOKEN_RE = re.compile(r"[a-z0-9]+(?:_[a-z0-9]+)*|[,.;:!?]")
+# A verb and its particle joined by a hyphen name a kind of thing ("walk-in", "drop-off", "check-in").
+_PARTICLE_COMPOUND_RE = re.compile(
+    r'\b(walk|drive|drop|check|sign|pull|roll|pop|lean|built|fold|slide|pick|take|lay|top|stand|look|tip)-'
+    r'(in|out|off|up|through|thru|to|down|over|by|away|on)\b(?=\s+[a-z])')
 # An acronym after a determiner ("the IT office", "the ER") is a name, not the word it spells.
 _ACRONYM_RE = re.compile(
     r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
@@ -66,6 +80,17 @@ _ACRONYM_RE = re.compile(
 
 # A capital letter after a word names something ("field A", "Gate B"): not the article "a".
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
+
+
+# After a list number, words that say themselves how the item stands to the others.
+_ITEM_OPENERS = frozenset({'then', 'never', 'do', 'don', 'dont', 'avoid', 'and', 'after', 'before', 'finally',
+                           'but', 'not', 'always', 'only', 'if', 'when', 'whenever', 'once', 'while', 'keep',
+                           'stay', 'also', 'optionally', 'or', 'either', 'first', 'lastly', 'next', 'until'})
+
+
+def _then(number: str, following: str) -> str:
+    """Return "then " for a list number after the first (a numbered list is an order), unless told."""
+    return '' if number in ('0', '1', '01') or following in _ITEM_OPENERS else 'then '
 
 
 def tokenize(text: str) -> list[str]:
@@ -89,8 +114,11 @@ def tokenize(text: str) -> list[str]:
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))
     s = text.lower().replace('\u2019', "'").replace('\u2018', "'").replace('`', "'")
     # a list written as lines or bullets: each line, "1)", "(2)", "3." or bullet opens a clause
-    s = re.sub(r'(^|[\s:;,])\(?\d{1,2}\)(?=\s)', r'\1 , ', s)
-    s = re.sub(r'(^|[:;,.!?\n]\s*)\d{1,2}\.(?=\s)', r'\1 , ', s)
+    # (a numbered list is an order: each number after the first reads as "then")
+    s = re.sub(r'(^|[\s:;,])\(?(\d{1,2})\)(?=\s+([a-z]*))',
+               lambda m: f'{m.group(1)} , {_then(m.group(2), m.group(3))}', s)
+    s = re.sub(r'(^|[:;,.!?\n]\s*)(\d{1,2})\.(?=\s+([a-z]*))',
+               lambda m: f'{m.group(1)} , {_then(m.group(2), m.group(3))}', s)
     s = re.sub(r'(^|\n)\s*[-*\u2022\u25cf\u25aa]+\s', r'\1 , ', s)
     s = re.sub(r'(?<![.;:!?,\s])[ \t]*\n', ' . ', s)
     s = re.sub(r'[\u2022\u25cf\u25aa]', ' , ', s)
@@ -98,7 +126,14 @@ def tokenize(text: str) -> list[str]:
     s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
+    if '-' in s:   # "the walk-in cooler", "the drop-off point": one word of a name
+        s = _PARTICLE_COMPOUND_RE.sub(r'\1_\2', s)
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)
+    if 'ur ' in s:   # "on ur way": "ur" before a noun is "your", elsewhere "you are"
+        s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best)\b)',
+                   'your ', s)
+    if ' form ' in s:
+        s = _FORM_RE.sub(r'\1 from', s)
     out: list[str] = []
     for tok in _TOKEN_RE.findall(s):
         if acronyms and tok.startswith('zq'):

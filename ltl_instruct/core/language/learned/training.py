@@ -226,7 +226,7 @@ def train_parser(model: SemanticParser, words: WordVocabulary, demos: Sequence[D
 
 
 def epoch_message(trainer: ParserTrainer, started: float) -> str:
-    """The progress line after an epoch."""
+    """Return the progress line after an epoch."""
     log = trainer.log
     return (f'seed {trainer.config.seed} epoch {log.epochs_run}: mean top-beam reward '
             f'{log.mean_reward_per_epoch[-1]:.3f}, examples with a rewarded program '

@@ -134,6 +134,7 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
     ('in', 'a', 'sec'), ('in', 'a', 'second'), ('while', 'you', 'are', 'at', 'it'),
     ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
+    ('with', 'the', 'drone'), ('with', 'the', 'robot'), ('using', 'the', 'drone'), ('whatever', 'you', 'do'),
 ) + _DURATIONS + _SPANS + _PURPOSES,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
@@ -163,6 +164,8 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('at', 'your', 'convenience'), ('when', 'convenient'), ('first', 'of', 'all'), ('to', 'start'),
     ('to', 'begin'), ('to', 'begin', 'with'), ('for', 'starters'), ('okay', 'so'), ('ok', 'so'), ('so',),
     ('alright', 'so'), ('right', 'so'), ('hey', 'robot'), ('hi', 'robot'), ('robot',), ('drone',),
+    ('mister', 'robot'), ('mr', 'robot'), ('dear', 'robot'), ('okay', 'robot'), ('hey', 'drone'),
+    ('mister', 'drone'), ('mr', 'drone'),
     ('before', 'anything', 'else'), ('first', 'things', 'first'), ('before', 'you', 'do', 'anything', 'else'),
     ('to', 'start', 'with'), ('to', 'start', 'off'), ('for', 'a', 'start'),
     # a drone's take-off, which every flight starts with
@@ -196,6 +199,10 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )(?:it is )?(?:time|high time) (?:for you )?to ', r'\1 '),
     (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
     (r'(^ | [,.;!?] )(?:would|could|do|will) you mind ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:(?:would|could|will) you )?(?:please )?be (?:so (?:kind|good)|(?:kind|good) enough) '
+     r'(?:as )?to ', r'\1 '),
+    (r'(^ | [,.;!?] )whatever (?:you do|happens)(?: ,)? (?=(?:do not|never|avoid|stay|keep|steer|no) )',
+     r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you '
      r'(?:could|would|can|will) ',

@@ -1,0 +1,40 @@
+"""Offline translator: polite frames, chat spelling, vocatives and list references (seventh round).
+
+Every sentence here was written for these tests (none is taken from a data set). Each case
+checks the formula on automata.
+"""
+from __future__ import annotations
+
+import pytest
+
+from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.language.offline import OfflineTranslator
+from ltl_instruct.core.spec import parse_formula
+
+T = OfflineTranslator()
+
+
+def _check(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
+MANNERS = [
+    ('Could you be kind enough to bring the cup to the sink?',
+     'F (near[cup] & F (pick[cup] & F (near[sink] & F release[cup, sink])))'),
+    ('Would you please be so good as to visit the attic.', 'F near[attic]'),
+    ('head 2 the garage n then the shed', 'F (near[garage] & F near[shed])'),
+    ('stay away from the pond tho', 'G !near[pond]'),
+    ('whatever happens never enter the vault. visit the lobby', 'F near[lobby] & G !near[vault]'),
+    ('Patrol the hall once and avoid the den, whatever you do.', 'F near[hall] & G !near[den]'),
+    ('Mr robot, go to the cellar please.', 'F near[cellar]'),
+    ('Dear robot, head over to the porch, thanks.', 'F near[porch]'),
+    ('Do not turn up at the clinic before the lab.', 'F near[lab] & (!near[clinic] U near[lab])'),
+    ('Circle the water tower twice with the drone.',
+     'F (near[water_tower] & F (!near[water_tower] & F near[water_tower]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', MANNERS, ids=[c[0][:30] for c in MANNERS])
+def test_polite_frames_and_chat_spelling(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -38,3 +38,24 @@ MANNERS = [
 @pytest.mark.parametrize('instruction,gold', MANNERS, ids=[c[0][:30] for c in MANNERS])
 def test_polite_frames_and_chat_spelling(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+CORRECTIONS = [
+    ('go to the bakery then the bank. actually switch those', 'F (near[bank] & F near[bakery])'),
+    ('Head to the pier, then the dock. Hmm, swap them around.', 'F (near[dock] & F near[pier])'),
+    ('go to gate 2 then gate 4, sorry i meant gate 7 not gate 4', 'F (near[gate_2] & F near[gate_7])'),
+    ('Stay away from the lab. No, sorry, that was wrong, stay away from the clinic. Visit the lobby.',
+     'F near[lobby] & G !near[clinic]'),
+    ('Check the pantry, the cellar and the attic in that order. Wait, skip the first one.',
+     'F (near[cellar] & F near[attic])'),
+    ('Visit the pool, the spa and the sauna, any order. Hmm, forget the third one.',
+     'F near[pool] & F near[spa]'),
+    ('Go to the bench or the kiosk. Actually, forget the kiosk.', 'F near[bench]'),
+    ('Go to the bench or the kiosk. No, only the kiosk, forget the bench.', 'F near[kiosk]'),
+    ('Take the rug to the porch. Actually, leave the rug alone, just go to the porch.', 'F near[porch]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', CORRECTIONS, ids=[c[0][:30] for c in CORRECTIONS])
+def test_self_corrections(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

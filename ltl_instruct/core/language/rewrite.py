@@ -331,7 +331,10 @@ def _np_spans(tokens: list[str]) -> list[NounPhrase]:
     out: list[NounPhrase] = []
     i = 0
     while i < len(tokens):
-        if tokens[i] in DETERMINERS or (i > 0 and tokens[i - 1] in ('to', 'by', 'at', 'visit', 'avoid', ',')):
+        after = tokens[i - 1] if i > 0 else ''
+        if tokens[i] in DETERMINERS or after in ('to', 'by', 'at', 'visit', 'avoid', ',') or (
+                i > 0 and tokens[i - 1] in ('then', 'and', 'or') and tokens[i] not in _VERBS and is_name_word(
+                    tokens, i, False)):
             np = parser.parse(tokens, i)
             if np is not None and np.end > i and not np.pronoun:
                 out.append(np)
@@ -717,6 +720,16 @@ def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[st
         a, b = spans[-2:] if words[k] != 'first' else spans[:2]
         notes.append(f'{a.descriptor} and {b.descriptor} swapped')
         return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
+    if words[k:] and not [t for t in words[k:] if t not in (
+            'those', 'them', 'these', 'two', 'the', 'around', 'round', 'please', 'instead', 'over')] and (
+            words[k] in ('those', 'them', 'these') or words[k:k + 2] == ['the', 'two']):
+        # "go to a then b. actually, switch those": the only two goals named
+        spans = _np_spans(prev)
+        if len(spans) != 2:
+            return None
+        a, b = spans
+        notes.append(f'{a.descriptor} and {b.descriptor} swapped')
+        return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
     nps, _, end = PhraseParser().parse_list(words, k)
     if len(nps) != 2 or [t for t in words[end:] if t not in ('around', 'round', 'please', 'instead')]:
         return None
@@ -790,6 +803,43 @@ _APOLOGIES = frozenset({('sorry',), ('my', 'mistake'), ('my', 'bad'), ('oops',),
                         ('my', 'apologies'), ('apologies',), ('silly', 'me')})
 
 
+def _ordinal_target(words: list[str]) -> Optional[int]:
+    """The list place a cancelled phrase names ("the second one", "the first stop"), else None."""
+    w = [t for t in words if t not in ('the', 'that')]
+    if len(w) in (1, 2) and w[0] in ORDINALS and w[0] != 'last' and (len(w) == 1 or w[1] in (
+            'one', 'stop', 'place', 'goal', 'item', 'thing', 'location', 'spot', 'room')):
+        return ORDINALS[w[0]]
+    return None
+
+
+_LEAVE_BE = (('where', 'it', 'is'), ('where', 'they', 'are'), ('alone',), ('be',),
+             ('where', 'it', 'was'), ('where', 'they', 'were'))
+
+
+def _leave_be(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Cancel a delivery: 'bring the mop to the hall. actually, leave the mop where it is, go to the hall'."""
+    if seg[:1] != ['leave']:
+        return None
+    at, tail = next(((j, t) for j in range(2, len(seg)) for t in _LEAVE_BE
+                     if tuple(seg[j:j + len(t)]) == t), (-1, ()))
+    np = PhraseParser().parse(seg[:at], 1) if at > 0 else None
+    if np is None or np.pronoun or np.end != at:
+        return None
+    k = np.end + len(tail)
+    if k < len(seg) and seg[k] != ',':
+        return None
+    hit = next((sp for sp in reversed(_np_spans(prev))
+                if sp.descriptor == np.descriptor or sp.head == np.head), None)
+    if hit is None:
+        return None
+    rest = seg[k + 1:]
+    while rest and rest[0] in ('just', 'simply', 'only', 'and', 'but', 'then', ','):
+        rest = rest[1:]
+    notes.append(f'the delivery of {np.descriptor} was cancelled')
+    kept = _remove_clause(prev, hit.start)
+    return kept + ([','] if kept and kept[-1] not in PUNCT and rest else []) + rest
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
@@ -801,6 +851,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if len(m) > 1 and tuple(seg[:len(m)]) == m and m[0] not in _CANCEL and m != ('make', 'that'):
                 marker, seg, stripped = m[0], seg[len(m):], True
                 break
+        for wrong in (['that', 'is', 'wrong'], ['that', 'was', 'wrong'], ['that', 'is', 'not', 'right'],
+                      ['i', 'got', 'that', 'wrong'], ['that', 'is', 'a', 'mistake'], ['wrong', 'one']):
+            if seg[:len(wrong)] == wrong and seg[len(wrong):len(wrong) + 1] == [',']:
+                seg, stripped = seg[len(wrong) + 1:], True   # "no, sorry, that's wrong, avoid the hall"
         if seg[:1] == ['not'] and len(seg) > 2:
             # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
             named = PhraseParser().parse(seg, 1)
@@ -812,6 +866,15 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             continue
         end = next((j for j in range(k + 1, len(seg)) if seg[j] == ','), len(seg))
         tail = seg[k + 1:end]
+        gone = PhraseParser().parse(tail, 1) if tail[:1] in (['forget'], ['ignore'], ['skip'], ['drop']) \
+            else None
+        if gone is not None and not gone.pronoun and gone.end == len(tail) and end == len(seg) and any(
+                sp.head == gone.head for sp in _np_spans(prev)) and not any(
+                sp.head == gone.head for sp in _np_spans(seg[:k])):
+            # "no, just the gazebo, forget the fountain": what the correction replaces, said again
+            notes.append(f'"{" ".join(tail)}" read as part of the correction')
+            seg = seg[:k]
+            break
         if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or chatter.is_statement(
                 tail, _np_end(tail)) and not [
                 t for t in seg[end:] if t not in PUNCT]:
@@ -820,7 +883,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'left out "{dropped}" (asks for nothing)')
             seg = seg[:k]
             break
-    retracted = _retract_avoidance(prev, seg, notes)
+    retracted = _retract_avoidance(prev, seg, notes) or _leave_be(prev, seg, notes)
     if retracted is not None:
         return retracted
     swapped = _swap(prev, seg, notes) or _goes_to(prev, seg, notes)
@@ -882,6 +945,14 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return _remove_clause(prev, last.start)
         spans = _np_spans(prev)
         parser = PhraseParser()
+        nth = _ordinal_target(target)
+        if nth is not None and not new:
+            # "visit a, b and c. wait, forget the second one": the goal at that place of the list
+            if not 0 < nth <= len(spans):
+                return None
+            hit = spans[nth - 1]
+            notes.append(f'"{tgt}" ({hit.descriptor}) was dropped')
+            return _remove_from_list(prev, 0, hit) or _remove_clause(prev, hit.start, narrow=True)
         tnp = parser.parse(target, 0)
         if tnp is None:
             return None
@@ -898,6 +969,13 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{tgt}" was replaced')
             return prev[:hit.start] + new + prev[hit.end:]
         notes.append(f'"{tgt}" was dropped')
+        if (prev[hit.end:hit.end + 1] == ['or'] or prev[hit.start - 1:hit.start] == ['or']) and not [
+                t for k, t in enumerate(prev[hit.end:-1], hit.end)
+                if t in '.;!?' and prev[k + 1] not in PUNCT]:
+            # "go to the fountain or the gazebo. forget the fountain": one option taken out
+            kept = _remove_from_list(prev, 0, hit)
+            if kept is not None:
+                return kept
         return _remove_clause(prev, hit.start, narrow=True)
     # "the couch is fine, just avoid the rug"
     if ' is fine' in s or ' is okay' in s or ' is ok' in s or ' are fine' in s:

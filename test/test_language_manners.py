@@ -59,3 +59,22 @@ CORRECTIONS = [
 @pytest.mark.parametrize('instruction,gold', CORRECTIONS, ids=[c[0][:30] for c in CORRECTIONS])
 def test_self_corrections(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+ORDERS = [
+    ('Fly to the mast. Before you do that, circle the barn.', 'F (near[barn] & F near[mast])'),
+    ('Take the jug to the shed, but before doing so, stop at the well.',
+     'F (near[well] & F (near[jug] & F (pick[jug] & F (near[shed] & F release[jug, shed]))))'),
+    ('Go to the loft. Before that, though, swing by the mill.', 'F (near[mill] & F near[loft])'),
+    ('You are not permitted in the vault until you have visited the office. Go to the vault.',
+     'F near[vault] & (!near[vault] U near[office])'),
+    ('You can visit the pool only after the gym.', 'F near[pool] & (!near[pool] U near[gym])'),
+    ('Only once you have reached the gate can you go to the yard.',
+     'F near[yard] & (!near[yard] U near[gate])'),
+    ('Visit the cafe, no earlier than after the library.', 'F near[cafe] & (!near[cafe] U near[library])'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', ORDERS, ids=[c[0][:30] for c in ORDERS])
+def test_orders_said_as_permissions(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -57,6 +57,24 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "once you're there, don't leave until you've checked the oven": stay there until then
     (r' (?:do not|never) (?:leave|go anywhere|move|budge)(?: (?:from )?(?:there|here|it|that spot))? '
      r'(?=until )', ' stay there '),
+    # "before you do that", "before doing so": before the step just named
+    (r' (before|after) (?:you (?:go )?do|doing|you have done|having done) (?:that|this|it|so)'
+     r'(?: , though| though)?(?= [,.;!?] | )', r' \1 that '),
+    (r' before that , though , ', ' before that , '),
+    # "you're not allowed in the lab until ...": do not go there until then
+    (r'(^ | [,.;!?] | and | but )(?:you are |you re )?(?:not|never) (?:allowed|permitted|supposed)'
+     r'(?: to (?:go|be|enter|step|visit|approach|set foot))?(?: (?:in|into|inside|to|near|at|on|in to))?'
+     r' (?=(?:the|a|an|my|your|our|this|that) [^,.;!?]* (?:until|before) )', r'\1 do not go to '),
+    # "you may go to the lab only after the desk": the permission is the order
+    (r'(^ | [,.;!?] | and | but )you (?:may|can|could|are allowed to|should|will) (?=(?:go|visit|enter|'
+     r'approach|head|fly|drive|walk|land|return|come)[^,.;!?]* only (?:after|once) )', r'\1 '),
+    # "only after you've been to the desk may you go to the lab": the same, the order said first
+    (r'(^ | [,.;!?] )only (after|once) ((?:you have |you |having )?[a-z]+(?: to| past| by| at| over| on)? '
+     r'(?:the|a|an|my|your|our) [^,.;!?]*?) (?:may|can|should|could|will|are) you (?:allowed to )?'
+     r'((?:go|visit|enter|approach|head|fly|drive|walk|land|return|come)(?: [a-z]+)? '
+     r'(?:the|a|an|my|your|our) [^,.;!?]*?)(?= [,.;!?] | $)', r'\1 \4 only after \3 '),
+    # "no sooner than after the bank", "no earlier than": not before
+    (r' (?:, )?(?:no|not) (?:sooner|earlier) than (?:after )?', ' but not before '),
     # "go to the cafe beforehand": first
     (r' (?:beforehand|before anything else|before all that)(?= [,.;!?] | $)', ' first '),
     # "keep visiting a and b, forever": the comma says nothing
@@ -244,7 +262,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' usually', ' currently', ' still', ' normally', ' hopefully',
                                    ' typically', ' forget', ' remember', ' be sure', ' try ', ' will need',
                                    ' will want', ' should', ' need to', ' have to', ' must', ' free',
-                                   ' often', ' sometimes')):
+                                   ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
+                                   ' supposed', ' sooner', ' earlier')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:

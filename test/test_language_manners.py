@@ -78,3 +78,22 @@ ORDERS = [
 @pytest.mark.parametrize('instruction,gold', ORDERS, ids=[c[0][:30] for c in ORDERS])
 def test_orders_said_as_permissions(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+COUNTS_AND_OPTIONS = [
+    ('Drive out to the kiln on three separate occasions.',
+     'F (near[kiln] & F (!near[kiln] & F (near[kiln] & F (!near[kiln] & F near[kiln]))))'),
+    ('Visit the shed two different times, then the barn.',
+     'F (near[shed] & F (!near[shed] & F (near[shed] & F near[barn])))'),
+    ('Do 3 laps around the pond, exactly three.',
+     '!near[pond] U (near[pond] & (near[pond] U (!near[pond] & (!near[pond] U (near[pond] & (near[pond] U '
+     '(!near[pond] & (!near[pond] U (near[pond] & (near[pond] W G !near[pond]))))))))))'),
+    ('Touch down at the helipad or on the lawn.', 'F near[helipad] | F near[lawn]'),
+    ('Never go to the bar more than once. Sorry, I mean exactly once.',
+     '!near[bar] U (near[bar] & (near[bar] W G !near[bar]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', COUNTS_AND_OPTIONS, ids=[c[0][:30] for c in COUNTS_AND_OPTIONS])
+def test_counts_and_options(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -75,6 +75,14 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      r'(?:the|a|an|my|your|our) [^,.;!?]*?)(?= [,.;!?] | $)', r'\1 \4 only after \3 '),
     # "no sooner than after the bank", "no earlier than": not before
     (r' (?:, )?(?:no|not) (?:sooner|earlier) than (?:after )?', ' but not before '),
+    # "on two separate trips", "on three different occasions": that many times
+    (r' on (one|two|three|four|five|six|seven|eight|nine|ten|\d+) (?:separate |different |distinct )?'
+     r'(?:trips|occasions|visits|passes|runs|flights|outings|sorties)(?= [,.;!?] | )', r' \1 times'),
+    (r' (two|three|four|five|six|seven|eight|nine|ten|\d+) (?:separate|different|distinct) times ',
+     r' \1 times '),
+    # "land on the roof or in the pasture": the second place's own preposition
+    (r' (on|in|at|to|by|into|onto) (the|a|an|my|your|our) ([^,.;!?]*?) or (?:on|in|at|to|by|into|onto) '
+     r'(?=(?:the|a|an|my|your|our) )', r' \1 \2 \3 or '),
     # "go to the cafe beforehand": first
     (r' (?:beforehand|before anything else|before all that)(?= [,.;!?] | $)', ' first '),
     # "keep visiting a and b, forever": the comma says nothing
@@ -198,6 +206,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      r'\1 go to '),
 ))
 
+# "2 times, exactly two": the count said again, exactly
+_EXACT_AGAIN_RE = re.compile(
+    r' (one|two|three|four|five|six|seven|eight|nine|ten|\d+) times , (?:exactly|precisely) '
+    r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+|once|twice|thrice)(?: times)?(?= )')
+
 _PASS_RE = re.compile(r'(^| )(make|do|take|fly|run|perform|complete|made|done|did|taken|flown|performed|'
                       r'completed) (one|two|three|four|five|six|seven|'
                       r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
@@ -263,7 +276,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' typically', ' forget', ' remember', ' be sure', ' try ', ' will need',
                                    ' will want', ' should', ' need to', ' have to', ' must', ' free',
                                    ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
-                                   ' supposed', ' sooner', ' earlier')):
+                                   ' supposed', ' sooner', ' earlier', ' or ', ' times')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:
@@ -271,7 +284,10 @@ def paraphrase(tokens: list[str]) -> list[str]:
     text = _GERUND_RE.sub(lambda m: f' {m.group(1)} {_GERUNDS[m.group(2)]} ', text)
     text = _DROP_BY_RE.sub(' visit ', text)
     out = text.split()
-    return _passes(out)
+    out = _passes(out)
+    if 'exactly' in out or 'precisely' in out:
+        out = _EXACT_AGAIN_RE.sub(r' exactly \1 times', ' ' + ' '.join(out) + ' ').split()
+    return out
 
 
 def _passes(tokens: list[str]) -> list[str]:

@@ -1072,7 +1072,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
 
 _COUNT_MODS: tuple[tuple[str, ...], ...] = (
     ('at', 'least'), ('at', 'most'), ('exactly',), ('only',), ('just',), ('no', 'more', 'than'),
-    ('not', 'more', 'than'), ('no', 'less', 'than'), ('up', 'to'), ('precisely',))
+    ('not', 'more', 'than'), ('no', 'less', 'than'), ('up', 'to'), ('precisely',), ('more', 'than'),
+    ('no', 'fewer', 'than'))
+# Modifiers that bound a count from above ("don't go there more than once"): said in a prohibition.
+_BOUNDS = (('more', 'than'), ('no', 'more', 'than'), ('not', 'more', 'than'))
 
 
 def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
@@ -1094,5 +1097,12 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
             continue
         start = p if prev[p] in counts else p - 1
         old_mod = next((m for m in _COUNT_MODS if tuple(prev[start - len(m):start]) == m), ())
-        return prev[:start - len(old_mod)] + new_words + prev[end:]
+        cut = start - len(old_mod)
+        if old_mod in _BOUNDS and mod and mod not in _BOUNDS:
+            # "don't go to the gym more than once. wait, exactly once": the prohibition is now a goal
+            cs = max((k for k in range(cut) if prev[k] in PUNCT), default=-1) + 1
+            neg = 2 if prev[cs:cs + 2] == ['do', 'not'] else 1 if prev[cs:cs + 1] == ['never'] else 0
+            if neg:
+                return prev[:cs] + prev[cs + neg:cut] + new_words + prev[end:]
+        return prev[:cut] + new_words + prev[end:]
     return None

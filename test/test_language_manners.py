@@ -97,3 +97,15 @@ COUNTS_AND_OPTIONS = [
 @pytest.mark.parametrize('instruction,gold', COUNTS_AND_OPTIONS, ids=[c[0][:30] for c in COUNTS_AND_OPTIONS])
 def test_counts_and_options(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+SCENE = [
+    ('Keep away from the stairs, floor is slippery. Go to the attic.', 'F near[attic] & G !near[stairs]'),
+    ('Fly to the barn, then the mill, roof is icy there.', 'F (near[barn] & F near[mill])'),
+    ('Walk over to the porta potty.', 'F near[porta_potty]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', SCENE, ids=[c[0][:30] for c in SCENE])
+def test_scene_without_articles_and_name_words(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

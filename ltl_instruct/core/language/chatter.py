@@ -53,6 +53,12 @@ dropped jammed stopped started moved died spilt broken overflowed overflows ran 
 bites barks sleeps wobbles squeaks creaks
 '''.split())
 
+# How a thing is ("the floor is wet"): after "is" a description of the scene, not a request.
+STATES = frozenset('''
+wet slippery locked closed shut broken blocked busy occupied dirty flooded icy muddy packed crowded full
+empty hot cold dark noisy fragile jammed open
+'''.split())
+
 # After "it is": words that make the clause a permission or a demand.
 PERMISSIVE = frozenset({'okay', 'ok', 'fine', 'alright', 'allowed', 'important', 'necessary', 'essential',
                         'vital', 'crucial', 'required', 'best', 'better', 'safe', 'forbidden', 'not',
@@ -346,6 +352,10 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
             tokens[0] not in STATEMENT_SUBJECTS | {'you', 'keep', 'stop', 'start', 'go', 'be'} and \
             is_name_word(tokens, 0, False):
         return True   # "lots going on today", "guests arriving at noon"
+    if len(tokens) > 2 and tokens[0] not in DETERMINERS and tokens[1] in ('is', 'are', 'was', 'were') and \
+            tokens[2] in STATES and tokens[0] not in STATEMENT_SUBJECTS | {'you', 'there', 'here'} and \
+            is_name_word(tokens, 0, False):
+        return True   # "floor is wet there", "gate was locked": the article left out, as people do
     if tokens[0] in ('our', 'my', 'his', 'her', 'their') and np_end == 0:
         # "our in-laws are visiting": a possessive subject the phrase reader did not take
         f = next((k for k in range(2, min(6, len(tokens))) if tokens[k] in FINITE_VERBS), -1)

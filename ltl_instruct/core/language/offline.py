@@ -1121,10 +1121,14 @@ class _Reader:
             # "..., there is someone asleep in there": says why, asks for nothing
             end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
             return not chatter.carries_constraint(tokens[j:end])
+        end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
+        if j + 2 < end and tokens[j + 1] in ('is', 'are', 'was', 'were') and \
+                tokens[j + 2] in chatter.STATES and not self.phrases.landmarks and j > 0 and \
+                tokens[j - 1] == ',' and end - j <= 5:
+            return chatter.is_statement(tokens[j:end])   # ", floor is wet there": the article left out
         if j >= len(tokens) or tokens[j] not in DETS or self.phrases.landmarks:
             return False
         np = self.phrases.parse(tokens, j)
-        end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
         return np is not None and chatter.is_statement(tokens[j:end], np.end - j)
 
     def _any_order(self) -> None:

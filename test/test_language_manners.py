@@ -109,3 +109,18 @@ SCENE = [
 @pytest.mark.parametrize('instruction,gold', SCENE, ids=[c[0][:30] for c in SCENE])
 def test_scene_without_articles_and_name_words(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+LISTS = [
+    ('Remember the jug, the lamp and the clock I pointed out? Take the second one to the porch.',
+     'F (near[lamp] & F (pick[lamp] & F (near[porch] & F release[lamp, porch])))'),
+    ('I showed you the rake, the hoe and the spade. Put the last one in the shed.',
+     'F (near[spade] & F (pick[spade] & F (near[shed] & F release[spade, shed])))'),
+    ('I will name two rooms, the den and the study. Go to the one I said first twice.',
+     'F (near[den] & F (!near[den] & F near[den]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', LISTS, ids=[c[0][:30] for c in LISTS])
+def test_list_positions(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

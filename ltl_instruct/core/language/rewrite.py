@@ -26,10 +26,11 @@ from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
                           'notice', 'find', ',', 'from', 'among', 'options', 'choices', 'pass', 'out', 'pass',
-                          'passing', 'past'})
+                          'passing', 'past', 'remember', 'you'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
-                       'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near'})
+                       'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
+                       'i', 'we', 'that', 'you'})   # "the vase, the candle and the frame I showed you?"
 _REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
                                     'after', 'former', 'latter', 'them', 'all'}
 
@@ -57,6 +58,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             continue
         if end < len(tokens) and tokens[end] not in _LIST_END:
             continue
+        if tokens[nps[0].end:nps[0].end + 1] == [','] and any(
+                t in NUMBER_WORDS and t != 'one' for t in tokens[s:nps[0].end]):
+            continue   # "name two rooms, the den and the study": the count names the list that follows
         # the category before a colon: "three chairs: a red one by the desk, ..."
         category = ''
         if s >= 2 and tokens[s - 1] == ':' or s >= 3 and tokens[s - 1] == ',' and \
@@ -173,7 +177,9 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             nxt = tail[i + 1] if i + 1 < len(tail) else ''
             if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (
                     tail[i + 2] in ORDINALS or tail[i + 2] in ('last', 'middle')) and (
-                    i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in ('and', 'then', 'or')):
+                    i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in (
+                        'and', 'then', 'or', 'exactly', 'twice', 'thrice', 'once', 'at', 'first', 'last') or
+                    tail[i + 3] in NUMBER_WORDS):
                 tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
                 nxt = tail[i + 1]
             if t == 'the' and nxt:

@@ -124,3 +124,10 @@ LISTS = [
 @pytest.mark.parametrize('instruction,gold', LISTS, ids=[c[0][:30] for c in LISTS])
 def test_list_positions(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+def test_once_you_have_it_scopes_the_avoidance_from_the_pick() -> None:
+    _check('Fetch the tray. Once you have got it, keep away from the nursery. Leave it on the desk.',
+           'F (near[tray] & F (pick[tray] & G !near[nursery] & F (near[desk] & F release[tray, desk])))')
+    _check('Pick up the plates. As soon as you are holding them, avoid the lounge. Put them in the sink.',
+           'F (near[plates] & F (pick[plates] & G !near[lounge] & F (near[sink] & F release[plates, sink])))')

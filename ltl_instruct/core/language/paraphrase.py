@@ -75,6 +75,9 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      r'(?:the|a|an|my|your|our) [^,.;!?]*?)(?= [,.;!?] | $)', r'\1 \4 only after \3 '),
     # "no sooner than after the bank", "no earlier than": not before
     (r' (?:, )?(?:no|not) (?:sooner|earlier) than (?:after )?', ' but not before '),
+    # "once you have it", "as soon as you've got them": once it is picked up
+    (r' (once|as soon as|when|after) you (?:have|have got|got|are holding|hold|have grabbed|grabbed)'
+     r' (it|them)(?= , | [.;!?] )', r' \1 you have picked \2 up'),
     # "on two separate trips", "on three different occasions": that many times
     (r' on (one|two|three|four|five|six|seven|eight|nine|ten|\d+) (?:separate |different |distinct )?'
      r'(?:trips|occasions|visits|passes|runs|flights|outings|sorties)(?= [,.;!?] | )', r' \1 times'),

@@ -131,3 +131,10 @@ def test_once_you_have_it_scopes_the_avoidance_from_the_pick() -> None:
            'F (near[tray] & F (pick[tray] & G !near[nursery] & F (near[desk] & F release[tray, desk])))')
     _check('Pick up the plates. As soon as you are holding them, avoid the lounge. Put them in the sink.',
            'F (near[plates] & F (pick[plates] & G !near[lounge] & F (near[sink] & F release[plates, sink])))')
+
+
+def test_not_going_back_is_at_most_once() -> None:
+    _check("Visit the pantry, and don't keep coming back to the fridge over and over.",
+           'F near[pantry] & (!near[fridge] W (near[fridge] & (near[fridge] W G !near[fridge])))')
+    _check('Inspect the boiler exactly once. Never keep going back to it.',
+           '!near[boiler] U (near[boiler] & (near[boiler] W G !near[boiler]))')

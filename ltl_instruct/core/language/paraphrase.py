@@ -75,6 +75,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      r'(?:the|a|an|my|your|our) [^,.;!?]*?)(?= [,.;!?] | $)', r'\1 \4 only after \3 '),
     # "no sooner than after the bank", "no earlier than": not before
     (r' (?:, )?(?:no|not) (?:sooner|earlier) than (?:after )?', ' but not before '),
+    # "don't keep going back to the door": no visit after the first
+    (r' (?:do not|never|you should not|you must not) (?:keep|be) (?:going|coming|heading|returning|running|'
+     r'popping|flying|driving) back (?:to|into|over to) ((?:the|a|an|my|your|our) [^,.;!?]*?|it|them)'
+     r'(?: (?:over and over|again and again|all the time|repeatedly))?(?= [,.;!?] | $)',
+     r' do not go to \1 more than once'),
     # "once you have it", "as soon as you've got them": once it is picked up
     (r' (once|as soon as|when|after) you (?:have|have got|got|are holding|hold|have grabbed|grabbed)'
      r' (it|them)(?= , | [.;!?] )', r' \1 you have picked \2 up'),
@@ -279,7 +284,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' typically', ' forget', ' remember', ' be sure', ' try ', ' will need',
                                    ' will want', ' should', ' need to', ' have to', ' must', ' free',
                                    ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
-                                   ' supposed', ' sooner', ' earlier', ' or ', ' times')):
+                                   ' supposed', ' sooner', ' earlier', ' or ', ' times', ' back ')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:

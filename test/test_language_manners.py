@@ -138,3 +138,9 @@ def test_not_going_back_is_at_most_once() -> None:
            'F near[pantry] & (!near[fridge] W (near[fridge] & (near[fridge] W G !near[fridge])))')
     _check('Inspect the boiler exactly once. Never keep going back to it.',
            '!near[boiler] U (near[boiler] & (near[boiler] W G !near[boiler]))')
+
+
+def test_until_one_of_several_places_is_refused_not_guessed() -> None:
+    from ltl_instruct.core.errors import TranslationError
+    with pytest.raises(TranslationError):
+        T.translate('Keep off the lawn until you get to the north door or the south door.')

@@ -1771,7 +1771,12 @@ class _Reader:
                     rest[j].endswith('ed') and rest[j] not in STOPWORDS and j + 1 < len(rest) and (
                         rest[j + 1] in DETS or rest[j + 1] in GOAL_PARTICLES))):
                 j += 1
-            nps, _, end = self._np_list(rest, j, place=False)
+            nps, joiner, end = self._np_list(rest, j, place=False)
+            if joiner == 'or' and len(nps) > 1:
+                # "avoid the lobby until you reach the east gate or the west gate": a scope that ends at
+                # either of two places has no reading here; said, not read as the first of them
+                raise TranslationError('cannot read a constraint that holds until one of several places',
+                                       details={'part': ' '.join(rest[:end])})
             held = next((d for st in self.task._all_steps() if st.kind in ('pick', 'deliver')
                          for d in st.targets if nps and d.name == nps[0].descriptor.name),
                         None) if holding else None

@@ -144,3 +144,14 @@ def test_until_one_of_several_places_is_refused_not_guessed() -> None:
     from ltl_instruct.core.errors import TranslationError
     with pytest.raises(TranslationError):
         T.translate('Keep off the lawn until you get to the north door or the south door.')
+
+
+@pytest.mark.parametrize('instruction', [
+    'The lamps and the rugs need moving to the loft. Just do the first two for now.',
+    'Of the three crates I told you about, the red one, the blue one and the green one, '
+    'take the latter away.',
+])
+def test_positions_without_a_list_are_refused(instruction: str) -> None:
+    from ltl_instruct.core.errors import TranslationError
+    with pytest.raises(TranslationError):
+        T.translate(instruction)

@@ -53,6 +53,8 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
     for s in starts:
         if s >= len(tokens):
             continue
+        if tokens[s] in chatter.PREPOSITIONS or tokens[s] in ('about', 'for'):
+            continue   # "the bins I told you about, the red one and ...": no list starts at "about"
         nps, joiner, end = parser.parse_list(tokens, s)
         if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
             continue
@@ -112,6 +114,15 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     """
     found = _find_list(tokens)
     if found is None:
+        for k in range(len(tokens) - 2):
+            if k > 0 and tokens[k - 1] in ('do', 'handle', 'finish', 'complete') and tokens[k] == 'the' and \
+                    tokens[k + 1] in ('first', 'last') and tokens[k + 2] in NUMBER_WORDS and \
+                    tokens[k + 2] not in ('one', 'once', 'twice', 'thrice') and (
+                    k + 3 >= len(tokens) or tokens[k + 3] in PUNCT or tokens[k + 3] in (
+                        'for', 'and', 'then', 'now', 'please', 'only', 'first')):
+                # "just do the first two for now": positions in a list that was not found
+                said = ' '.join(tokens[k:k + 3])
+                raise TranslationError(f'"{said}": found no list they are part of', details={'part': said})
         return tokens
     s, end, nps, category = found
     tail = tokens[end:]

@@ -155,3 +155,9 @@ def test_positions_without_a_list_are_refused(instruction: str) -> None:
     from ltl_instruct.core.errors import TranslationError
     with pytest.raises(TranslationError):
         T.translate(instruction)
+
+
+def test_correcting_where_a_scope_starts() -> None:
+    _check('Visit the pier, then the dock, then the mill. After the pier, avoid the road. '
+           'Sorry, I meant after the dock, not the pier.',
+           'F (near[pier] & F (near[dock] & G !near[road] & F near[mill]))')

@@ -1059,8 +1059,24 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             seg = seg[:k] + ['not'] + seg[k + 2:]   # "the garden instead of the porch"
             break
     if 'not' in seg:
-        # "the freezer, not the fridge"
         k = seg.index('not')
+        lead = _strip_corr(seg[:k])
+        word = lead[0] if lead and lead[0] in ('after', 'before', 'until') else ''
+        old = [t for t in seg[k + 1:] if t not in PUNCT]
+        if word and old[:1] != [word]:
+            old = [word] + old   # "I meant after the cafe, not the library": not after the library
+        if word and old[0] == word:
+            parser = PhraseParser()
+            onp, nnp = parser.parse(old, 1), parser.parse(lead, 1)
+            at = next((p for p in range(len(prev) - 1, -1, -1) if prev[p] == word), -1)
+            here = parser.parse(prev, at + 1) if at >= 0 else None
+            if onp is not None and nnp is not None and nnp.end == len(lead) and onp.end == len(old) and \
+                    here is not None and not here.pronoun and (here.descriptor == onp.descriptor or
+                                                               here.head == onp.head):
+                # the scope's place is corrected, not a goal of the same name
+                notes.append(f'corrected to "{" ".join(lead)}"')
+                return prev[:at + 1] + lead[1:] + prev[here.end:]
+        # "the freezer, not the fridge"
         new, old = _strip_corr(seg[:k]), seg[k + 1:]
         while new and new[0] in _VERBS | {'to', 'at', 'by', 'over', 'from', 'go', 'away', 'clear', 'of',
                                           'stay', 'keep'}:

@@ -161,3 +161,9 @@ def test_correcting_where_a_scope_starts() -> None:
     _check('Visit the pier, then the dock, then the mill. After the pier, avoid the road. '
            'Sorry, I meant after the dock, not the pier.',
            'F (near[pier] & F (near[dock] & G !near[road] & F near[mill]))')
+
+
+def test_a_goal_said_to_be_closed_is_replaced() -> None:
+    _check('Go to the den, then the gym. No wait, that is closed. Go to the pool instead.',
+           'F (near[den] & F near[pool])')
+    _check('Head to the bakery. Hmm, no, it is shut. Visit the deli instead.', 'F near[deli]')

@@ -858,6 +858,7 @@ def _leave_be(prev: list[str], seg: list[str], notes: list[str]) -> Optional[lis
 
 
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    said_no = marker == 'no' or 'no' in seg[:3]
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
         stripped = False
@@ -900,6 +901,14 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'left out "{dropped}" (asks for nothing)')
             seg = seg[:k]
             break
+    words = [t for t in seg if t not in PUNCT]
+    if said_no and len(words) in (3, 4) and words[0] in ('that', 'it') and \
+            words[1] in ('is', 'was', 'will') and words[-1] in chatter.STATES:
+        # "go to the staff room. hmm, no, that's locked. go to the lounge instead": that goal is dropped
+        spans = _np_spans(prev)
+        if spans:
+            notes.append(f'{spans[-1].descriptor} dropped ("{" ".join(words)}")')
+            return _remove_clause(prev, spans[-1].start, narrow=True)
     retracted = _retract_avoidance(prev, seg, notes) or _leave_be(prev, seg, notes)
     if retracted is not None:
         return retracted

@@ -53,6 +53,12 @@ dropped jammed stopped started moved died spilt broken overflowed overflows ran 
 bites barks sleeps wobbles squeaks creaks
 '''.split())
 
+# How a thing is ("the floor is wet"): after "is" a description of the scene, not a request.
+STATES = frozenset('''
+wet slippery locked closed shut broken blocked busy occupied dirty flooded icy muddy packed crowded full
+empty hot cold dark noisy fragile jammed open
+'''.split())
+
 # After "it is": words that make the clause a permission or a demand.
 PERMISSIVE = frozenset({'okay', 'ok', 'fine', 'alright', 'allowed', 'important', 'necessary', 'essential',
                         'vital', 'crucial', 'required', 'best', 'better', 'safe', 'forbidden', 'not',
@@ -134,6 +140,7 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
     ('in', 'a', 'sec'), ('in', 'a', 'second'), ('while', 'you', 'are', 'at', 'it'),
     ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
+    ('with', 'the', 'drone'), ('with', 'the', 'robot'), ('using', 'the', 'drone'), ('whatever', 'you', 'do'),
 ) + _DURATIONS + _SPANS + _PURPOSES,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
@@ -163,6 +170,8 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('at', 'your', 'convenience'), ('when', 'convenient'), ('first', 'of', 'all'), ('to', 'start'),
     ('to', 'begin'), ('to', 'begin', 'with'), ('for', 'starters'), ('okay', 'so'), ('ok', 'so'), ('so',),
     ('alright', 'so'), ('right', 'so'), ('hey', 'robot'), ('hi', 'robot'), ('robot',), ('drone',),
+    ('mister', 'robot'), ('mr', 'robot'), ('dear', 'robot'), ('okay', 'robot'), ('hey', 'drone'),
+    ('mister', 'drone'), ('mr', 'drone'),
     ('before', 'anything', 'else'), ('first', 'things', 'first'), ('before', 'you', 'do', 'anything', 'else'),
     ('to', 'start', 'with'), ('to', 'start', 'off'), ('for', 'a', 'start'),
     # a drone's take-off, which every flight starts with
@@ -196,6 +205,10 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )(?:it is )?(?:time|high time) (?:for you )?to ', r'\1 '),
     (r'(^ | [,.;!?] )do me a (?:favour|favor) and ', r'\1 '),
     (r'(^ | [,.;!?] )(?:would|could|do|will) you mind ', r'\1 '),
+    (r'(^ | [,.;!?] )(?:(?:would|could|will) you )?(?:please )?be (?:so (?:kind|good)|(?:kind|good) enough) '
+     r'(?:as )?to ', r'\1 '),
+    (r'(^ | [,.;!?] )whatever (?:you do|happens)(?: ,)? (?=(?:do not|never|avoid|stay|keep|steer|no) )',
+     r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you '
      r'(?:could|would|can|will) ',
@@ -339,6 +352,10 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
             tokens[0] not in STATEMENT_SUBJECTS | {'you', 'keep', 'stop', 'start', 'go', 'be'} and \
             is_name_word(tokens, 0, False):
         return True   # "lots going on today", "guests arriving at noon"
+    if len(tokens) > 2 and tokens[0] not in DETERMINERS and tokens[1] in ('is', 'are', 'was', 'were') and \
+            tokens[2] in STATES and tokens[0] not in STATEMENT_SUBJECTS | {'you', 'there', 'here'} and \
+            is_name_word(tokens, 0, False):
+        return True   # "floor is wet there", "gate was locked": the article left out, as people do
     if tokens[0] in ('our', 'my', 'his', 'her', 'their') and np_end == 0:
         # "our in-laws are visiting": a possessive subject the phrase reader did not take
         f = next((k for k in range(2, min(6, len(tokens))) if tokens[k] in FINITE_VERBS), -1)

@@ -34,7 +34,7 @@ land anywhere back near close to by into in over through past on onto around at 
 even going passing touching knock hit disturb wake anywhere let yourself be into enter visiting follow
 entering navigate navigating reaching reach move moving travel traveling travelling stepping step
 walking fly flying driving going ever allowed permitted to first foot use ride wander stray drift take
-outside inside out outdoors indoors
+outside inside out outdoors indoors show turn up
 '''.split()) - {'the'} | {'revisit', 'revisiting', 'reenter'}
 
 # Gerunds and participles of movement, skipped between "until"/"after"/"before" and the place.
@@ -105,6 +105,9 @@ RULE_WORDS = frozenset({'whenever', 'time', 'anytime', 'if', 'soon', 'after', 'o
 RUN_ON_NOT_AFTER = frozenset({'and', 'or', 'but', 'then', 'that', 'so', 'if', 'when', 'because', 'where',
                               'which', 'who', 'what', 'why', 'how', 'as', 'the', 'a', 'an', 'to', 'of', 'for',
                               'until', 'before', 'after', 'while', 'unless', 'whenever'})
+
+# Words of place names that a speller would take for slips ("porta potty" is no "portal").
+NAME_WORDS = frozenset({'porta', 'potty', 'portaloo', 'loo', 'cubby', 'mudroom'})
 
 STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})
 

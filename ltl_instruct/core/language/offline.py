@@ -1121,10 +1121,14 @@ class _Reader:
             # "..., there is someone asleep in there": says why, asks for nothing
             end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
             return not chatter.carries_constraint(tokens[j:end])
+        end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
+        if j + 2 < end and tokens[j + 1] in ('is', 'are', 'was', 'were') and \
+                tokens[j + 2] in chatter.STATES and not self.phrases.landmarks and j > 0 and \
+                tokens[j - 1] == ',' and end - j <= 5:
+            return chatter.is_statement(tokens[j:end])   # ", floor is wet there": the article left out
         if j >= len(tokens) or tokens[j] not in DETS or self.phrases.landmarks:
             return False
         np = self.phrases.parse(tokens, j)
-        end = next((k for k in range(j, len(tokens)) if tokens[k] in PUNCT), len(tokens))
         return np is not None and chatter.is_statement(tokens[j:end], np.end - j)
 
     def _any_order(self) -> None:
@@ -1767,7 +1771,12 @@ class _Reader:
                     rest[j].endswith('ed') and rest[j] not in STOPWORDS and j + 1 < len(rest) and (
                         rest[j + 1] in DETS or rest[j + 1] in GOAL_PARTICLES))):
                 j += 1
-            nps, _, end = self._np_list(rest, j, place=False)
+            nps, joiner, end = self._np_list(rest, j, place=False)
+            if joiner == 'or' and len(nps) > 1:
+                # "avoid the lobby until you reach the east gate or the west gate": a scope that ends at
+                # either of two places has no reading here; said, not read as the first of them
+                raise TranslationError('cannot read a constraint that holds until one of several places',
+                                       details={'part': ' '.join(rest[:end])})
             held = next((d for st in self.task._all_steps() if st.kind in ('pick', 'deliver')
                          for d in st.targets if nps and d.name == nps[0].descriptor.name),
                         None) if holding else None

@@ -57,6 +57,40 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
     # "once you're there, don't leave until you've checked the oven": stay there until then
     (r' (?:do not|never) (?:leave|go anywhere|move|budge)(?: (?:from )?(?:there|here|it|that spot))? '
      r'(?=until )', ' stay there '),
+    # "before you do that", "before doing so": before the step just named
+    (r' (before|after) (?:you (?:go )?do|doing|you have done|having done) (?:that|this|it|so)'
+     r'(?: , though| though)?(?= [,.;!?] | )', r' \1 that '),
+    (r' before that , though , ', ' before that , '),
+    # "you're not allowed in the lab until ...": do not go there until then
+    (r'(^ | [,.;!?] | and | but )(?:you are |you re )?(?:not|never) (?:allowed|permitted|supposed)'
+     r'(?: to (?:go|be|enter|step|visit|approach|set foot))?(?: (?:in|into|inside|to|near|at|on|in to))?'
+     r' (?=(?:the|a|an|my|your|our|this|that) [^,.;!?]* (?:until|before) )', r'\1 do not go to '),
+    # "you may go to the lab only after the desk": the permission is the order
+    (r'(^ | [,.;!?] | and | but )you (?:may|can|could|are allowed to|should|will) (?=(?:go|visit|enter|'
+     r'approach|head|fly|drive|walk|land|return|come)[^,.;!?]* only (?:after|once) )', r'\1 '),
+    # "only after you've been to the desk may you go to the lab": the same, the order said first
+    (r'(^ | [,.;!?] )only (after|once) ((?:you have |you |having )?[a-z]+(?: to| past| by| at| over| on)? '
+     r'(?:the|a|an|my|your|our) [^,.;!?]*?) (?:may|can|should|could|will|are) you (?:allowed to )?'
+     r'((?:go|visit|enter|approach|head|fly|drive|walk|land|return|come)(?: [a-z]+)? '
+     r'(?:the|a|an|my|your|our) [^,.;!?]*?)(?= [,.;!?] | $)', r'\1 \4 only after \3 '),
+    # "no sooner than after the bank", "no earlier than": not before
+    (r' (?:, )?(?:no|not) (?:sooner|earlier) than (?:after )?', ' but not before '),
+    # "don't keep going back to the door": no visit after the first
+    (r' (?:do not|never|you should not|you must not) (?:keep|be) (?:going|coming|heading|returning|running|'
+     r'popping|flying|driving) back (?:to|into|over to) ((?:the|a|an|my|your|our) [^,.;!?]*?|it|them)'
+     r'(?: (?:over and over|again and again|all the time|repeatedly))?(?= [,.;!?] | $)',
+     r' do not go to \1 more than once'),
+    # "once you have it", "as soon as you've got them": once it is picked up
+    (r' (once|as soon as|when|after) you (?:have|have got|got|are holding|hold|have grabbed|grabbed)'
+     r' (it|them)(?= , | [.;!?] )', r' \1 you have picked \2 up'),
+    # "on two separate trips", "on three different occasions": that many times
+    (r' on (one|two|three|four|five|six|seven|eight|nine|ten|\d+) (?:separate |different |distinct )?'
+     r'(?:trips|occasions|visits|passes|runs|flights|outings|sorties)(?= [,.;!?] | )', r' \1 times'),
+    (r' (two|three|four|five|six|seven|eight|nine|ten|\d+) (?:separate|different|distinct) times ',
+     r' \1 times '),
+    # "land on the roof or in the pasture": the second place's own preposition
+    (r' (on|in|at|to|by|into|onto) (the|a|an|my|your|our) ([^,.;!?]*?) or (?:on|in|at|to|by|into|onto) '
+     r'(?=(?:the|a|an|my|your|our) )', r' \1 \2 \3 or '),
     # "go to the cafe beforehand": first
     (r' (?:beforehand|before anything else|before all that)(?= [,.;!?] | $)', ' first '),
     # "keep visiting a and b, forever": the comma says nothing
@@ -180,6 +214,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) fo
      r'\1 go to '),
 ))
 
+# "2 times, exactly two": the count said again, exactly
+_EXACT_AGAIN_RE = re.compile(
+    r' (one|two|three|four|five|six|seven|eight|nine|ten|\d+) times , (?:exactly|precisely) '
+    r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+|once|twice|thrice)(?: times)?(?= )')
+
 _PASS_RE = re.compile(r'(^| )(make|do|take|fly|run|perform|complete|made|done|did|taken|flown|performed|'
                       r'completed) (one|two|three|four|five|six|seven|'
                       r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
@@ -244,7 +283,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' usually', ' currently', ' still', ' normally', ' hopefully',
                                    ' typically', ' forget', ' remember', ' be sure', ' try ', ' will need',
                                    ' will want', ' should', ' need to', ' have to', ' must', ' free',
-                                   ' often', ' sometimes')):
+                                   ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
+                                   ' supposed', ' sooner', ' earlier', ' or ', ' times', ' back ')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:
@@ -252,7 +292,10 @@ def paraphrase(tokens: list[str]) -> list[str]:
     text = _GERUND_RE.sub(lambda m: f' {m.group(1)} {_GERUNDS[m.group(2)]} ', text)
     text = _DROP_BY_RE.sub(' visit ', text)
     out = text.split()
-    return _passes(out)
+    out = _passes(out)
+    if 'exactly' in out or 'precisely' in out:
+        out = _EXACT_AGAIN_RE.sub(r' exactly \1 times', ' ' + ' '.join(out) + ' ').split()
+    return out
 
 
 def _passes(tokens: list[str]) -> list[str]:

@@ -26,10 +26,11 @@ from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
                           'notice', 'find', ',', 'from', 'among', 'options', 'choices', 'pass', 'out', 'pass',
-                          'passing', 'past'})
+                          'passing', 'past', 'remember', 'you'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
-                       'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near'})
+                       'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
+                       'i', 'we', 'that', 'you'})   # "the vase, the candle and the frame I showed you?"
 _REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
                                     'after', 'former', 'latter', 'them', 'all'}
 
@@ -52,11 +53,16 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
     for s in starts:
         if s >= len(tokens):
             continue
+        if tokens[s] in chatter.PREPOSITIONS or tokens[s] in ('about', 'for'):
+            continue   # "the bins I told you about, the red one and ...": no list starts at "about"
         nps, joiner, end = parser.parse_list(tokens, s)
         if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
             continue
         if end < len(tokens) and tokens[end] not in _LIST_END:
             continue
+        if tokens[nps[0].end:nps[0].end + 1] == [','] and any(
+                t in NUMBER_WORDS and t != 'one' for t in tokens[s:nps[0].end]):
+            continue   # "name two rooms, the den and the study": the count names the list that follows
         # the category before a colon: "three chairs: a red one by the desk, ..."
         category = ''
         if s >= 2 and tokens[s - 1] == ':' or s >= 3 and tokens[s - 1] == ',' and \
@@ -108,6 +114,15 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     """
     found = _find_list(tokens)
     if found is None:
+        for k in range(len(tokens) - 2):
+            if k > 0 and tokens[k - 1] in ('do', 'handle', 'finish', 'complete') and tokens[k] == 'the' and \
+                    tokens[k + 1] in ('first', 'last') and tokens[k + 2] in NUMBER_WORDS and \
+                    tokens[k + 2] not in ('one', 'once', 'twice', 'thrice') and (
+                    k + 3 >= len(tokens) or tokens[k + 3] in PUNCT or tokens[k + 3] in (
+                        'for', 'and', 'then', 'now', 'please', 'only', 'first')):
+                # "just do the first two for now": positions in a list that was not found
+                said = ' '.join(tokens[k:k + 3])
+                raise TranslationError(f'"{said}": found no list they are part of', details={'part': said})
         return tokens
     s, end, nps, category = found
     tail = tokens[end:]
@@ -173,7 +188,9 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             nxt = tail[i + 1] if i + 1 < len(tail) else ''
             if t == 'the' and nxt == 'one' and i + 2 < len(tail) and (
                     tail[i + 2] in ORDINALS or tail[i + 2] in ('last', 'middle')) and (
-                    i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in ('and', 'then', 'or')):
+                    i + 3 >= len(tail) or tail[i + 3] in PUNCT or tail[i + 3] in (
+                        'and', 'then', 'or', 'exactly', 'twice', 'thrice', 'once', 'at', 'first', 'last') or
+                    tail[i + 3] in NUMBER_WORDS):
                 tail = tail[:i + 1] + tail[i + 2:i + 3] + ['one'] + tail[i + 3:]   # "the one (I listed) last"
                 nxt = tail[i + 1]
             if t == 'the' and nxt:
@@ -331,7 +348,10 @@ def _np_spans(tokens: list[str]) -> list[NounPhrase]:
     out: list[NounPhrase] = []
     i = 0
     while i < len(tokens):
-        if tokens[i] in DETERMINERS or (i > 0 and tokens[i - 1] in ('to', 'by', 'at', 'visit', 'avoid', ',')):
+        after = tokens[i - 1] if i > 0 else ''
+        if tokens[i] in DETERMINERS or after in ('to', 'by', 'at', 'visit', 'avoid', ',') or (
+                i > 0 and tokens[i - 1] in ('then', 'and', 'or') and tokens[i] not in _VERBS and is_name_word(
+                    tokens, i, False)):
             np = parser.parse(tokens, i)
             if np is not None and np.end > i and not np.pronoun:
                 out.append(np)
@@ -717,6 +737,16 @@ def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[st
         a, b = spans[-2:] if words[k] != 'first' else spans[:2]
         notes.append(f'{a.descriptor} and {b.descriptor} swapped')
         return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
+    if words[k:] and not [t for t in words[k:] if t not in (
+            'those', 'them', 'these', 'two', 'the', 'around', 'round', 'please', 'instead', 'over')] and (
+            words[k] in ('those', 'them', 'these') or words[k:k + 2] == ['the', 'two']):
+        # "go to a then b. actually, switch those": the only two goals named
+        spans = _np_spans(prev)
+        if len(spans) != 2:
+            return None
+        a, b = spans
+        notes.append(f'{a.descriptor} and {b.descriptor} swapped')
+        return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
     nps, _, end = PhraseParser().parse_list(words, k)
     if len(nps) != 2 or [t for t in words[end:] if t not in ('around', 'round', 'please', 'instead')]:
         return None
@@ -790,7 +820,45 @@ _APOLOGIES = frozenset({('sorry',), ('my', 'mistake'), ('my', 'bad'), ('oops',),
                         ('my', 'apologies'), ('apologies',), ('silly', 'me')})
 
 
+def _ordinal_target(words: list[str]) -> Optional[int]:
+    """The list place a cancelled phrase names ("the second one", "the first stop"), else None."""
+    w = [t for t in words if t not in ('the', 'that')]
+    if len(w) in (1, 2) and w[0] in ORDINALS and w[0] != 'last' and (len(w) == 1 or w[1] in (
+            'one', 'stop', 'place', 'goal', 'item', 'thing', 'location', 'spot', 'room')):
+        return ORDINALS[w[0]]
+    return None
+
+
+_LEAVE_BE = (('where', 'it', 'is'), ('where', 'they', 'are'), ('alone',), ('be',),
+             ('where', 'it', 'was'), ('where', 'they', 'were'))
+
+
+def _leave_be(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Cancel a delivery: 'bring the mop to the hall. actually, leave the mop where it is, go to the hall'."""
+    if seg[:1] != ['leave']:
+        return None
+    at, tail = next(((j, t) for j in range(2, len(seg)) for t in _LEAVE_BE
+                     if tuple(seg[j:j + len(t)]) == t), (-1, ()))
+    np = PhraseParser().parse(seg[:at], 1) if at > 0 else None
+    if np is None or np.pronoun or np.end != at:
+        return None
+    k = np.end + len(tail)
+    if k < len(seg) and seg[k] != ',':
+        return None
+    hit = next((sp for sp in reversed(_np_spans(prev))
+                if sp.descriptor == np.descriptor or sp.head == np.head), None)
+    if hit is None:
+        return None
+    rest = seg[k + 1:]
+    while rest and rest[0] in ('just', 'simply', 'only', 'and', 'but', 'then', ','):
+        rest = rest[1:]
+    notes.append(f'the delivery of {np.descriptor} was cancelled')
+    kept = _remove_clause(prev, hit.start)
+    return kept + ([','] if kept and kept[-1] not in PUNCT and rest else []) + rest
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    said_no = marker == 'no' or 'no' in seg[:3]
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
         stripped = False
@@ -801,6 +869,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if len(m) > 1 and tuple(seg[:len(m)]) == m and m[0] not in _CANCEL and m != ('make', 'that'):
                 marker, seg, stripped = m[0], seg[len(m):], True
                 break
+        for wrong in (['that', 'is', 'wrong'], ['that', 'was', 'wrong'], ['that', 'is', 'not', 'right'],
+                      ['i', 'got', 'that', 'wrong'], ['that', 'is', 'a', 'mistake'], ['wrong', 'one']):
+            if seg[:len(wrong)] == wrong and seg[len(wrong):len(wrong) + 1] == [',']:
+                seg, stripped = seg[len(wrong) + 1:], True   # "no, sorry, that's wrong, avoid the hall"
         if seg[:1] == ['not'] and len(seg) > 2:
             # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
             named = PhraseParser().parse(seg, 1)
@@ -812,6 +884,15 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             continue
         end = next((j for j in range(k + 1, len(seg)) if seg[j] == ','), len(seg))
         tail = seg[k + 1:end]
+        gone = PhraseParser().parse(tail, 1) if tail[:1] in (['forget'], ['ignore'], ['skip'], ['drop']) \
+            else None
+        if gone is not None and not gone.pronoun and gone.end == len(tail) and end == len(seg) and any(
+                sp.head == gone.head for sp in _np_spans(prev)) and not any(
+                sp.head == gone.head for sp in _np_spans(seg[:k])):
+            # "no, just the gazebo, forget the fountain": what the correction replaces, said again
+            notes.append(f'"{" ".join(tail)}" read as part of the correction')
+            seg = seg[:k]
+            break
         if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or chatter.is_statement(
                 tail, _np_end(tail)) and not [
                 t for t in seg[end:] if t not in PUNCT]:
@@ -820,7 +901,15 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'left out "{dropped}" (asks for nothing)')
             seg = seg[:k]
             break
-    retracted = _retract_avoidance(prev, seg, notes)
+    words = [t for t in seg if t not in PUNCT]
+    if said_no and len(words) in (3, 4) and words[0] in ('that', 'it') and \
+            words[1] in ('is', 'was', 'will') and words[-1] in chatter.STATES:
+        # "go to the staff room. hmm, no, that's locked. go to the lounge instead": that goal is dropped
+        spans = _np_spans(prev)
+        if spans:
+            notes.append(f'{spans[-1].descriptor} dropped ("{" ".join(words)}")')
+            return _remove_clause(prev, spans[-1].start, narrow=True)
+    retracted = _retract_avoidance(prev, seg, notes) or _leave_be(prev, seg, notes)
     if retracted is not None:
         return retracted
     swapped = _swap(prev, seg, notes) or _goes_to(prev, seg, notes)
@@ -882,6 +971,14 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return _remove_clause(prev, last.start)
         spans = _np_spans(prev)
         parser = PhraseParser()
+        nth = _ordinal_target(target)
+        if nth is not None and not new:
+            # "visit a, b and c. wait, forget the second one": the goal at that place of the list
+            if not 0 < nth <= len(spans):
+                return None
+            hit = spans[nth - 1]
+            notes.append(f'"{tgt}" ({hit.descriptor}) was dropped')
+            return _remove_from_list(prev, 0, hit) or _remove_clause(prev, hit.start, narrow=True)
         tnp = parser.parse(target, 0)
         if tnp is None:
             return None
@@ -898,6 +995,13 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{tgt}" was replaced')
             return prev[:hit.start] + new + prev[hit.end:]
         notes.append(f'"{tgt}" was dropped')
+        if (prev[hit.end:hit.end + 1] == ['or'] or prev[hit.start - 1:hit.start] == ['or']) and not [
+                t for k, t in enumerate(prev[hit.end:-1], hit.end)
+                if t in '.;!?' and prev[k + 1] not in PUNCT]:
+            # "go to the fountain or the gazebo. forget the fountain": one option taken out
+            kept = _remove_from_list(prev, 0, hit)
+            if kept is not None:
+                return kept
         return _remove_clause(prev, hit.start, narrow=True)
     # "the couch is fine, just avoid the rug"
     if ' is fine' in s or ' is okay' in s or ' is ok' in s or ' are fine' in s:
@@ -964,8 +1068,24 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             seg = seg[:k] + ['not'] + seg[k + 2:]   # "the garden instead of the porch"
             break
     if 'not' in seg:
-        # "the freezer, not the fridge"
         k = seg.index('not')
+        lead = _strip_corr(seg[:k])
+        word = lead[0] if lead and lead[0] in ('after', 'before', 'until') else ''
+        old = [t for t in seg[k + 1:] if t not in PUNCT]
+        if word and old[:1] != [word]:
+            old = [word] + old   # "I meant after the cafe, not the library": not after the library
+        if word and old[0] == word:
+            parser = PhraseParser()
+            onp, nnp = parser.parse(old, 1), parser.parse(lead, 1)
+            at = next((p for p in range(len(prev) - 1, -1, -1) if prev[p] == word), -1)
+            here = parser.parse(prev, at + 1) if at >= 0 else None
+            if onp is not None and nnp is not None and nnp.end == len(lead) and onp.end == len(old) and \
+                    here is not None and not here.pronoun and (here.descriptor == onp.descriptor or
+                                                               here.head == onp.head):
+                # the scope's place is corrected, not a goal of the same name
+                notes.append(f'corrected to "{" ".join(lead)}"')
+                return prev[:at + 1] + lead[1:] + prev[here.end:]
+        # "the freezer, not the fridge"
         new, old = _strip_corr(seg[:k]), seg[k + 1:]
         while new and new[0] in _VERBS | {'to', 'at', 'by', 'over', 'from', 'go', 'away', 'clear', 'of',
                                           'stay', 'keep'}:
@@ -994,7 +1114,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
 
 _COUNT_MODS: tuple[tuple[str, ...], ...] = (
     ('at', 'least'), ('at', 'most'), ('exactly',), ('only',), ('just',), ('no', 'more', 'than'),
-    ('not', 'more', 'than'), ('no', 'less', 'than'), ('up', 'to'), ('precisely',))
+    ('not', 'more', 'than'), ('no', 'less', 'than'), ('up', 'to'), ('precisely',), ('more', 'than'),
+    ('no', 'fewer', 'than'))
+# Modifiers that bound a count from above ("don't go there more than once"): said in a prohibition.
+_BOUNDS = (('more', 'than'), ('no', 'more', 'than'), ('not', 'more', 'than'))
 
 
 def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
@@ -1016,5 +1139,12 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
             continue
         start = p if prev[p] in counts else p - 1
         old_mod = next((m for m in _COUNT_MODS if tuple(prev[start - len(m):start]) == m), ())
-        return prev[:start - len(old_mod)] + new_words + prev[end:]
+        cut = start - len(old_mod)
+        if old_mod in _BOUNDS and mod and mod not in _BOUNDS:
+            # "don't go to the gym more than once. wait, exactly once": the prohibition is now a goal
+            cs = max((k for k in range(cut) if prev[k] in PUNCT), default=-1) + 1
+            neg = 2 if prev[cs:cs + 2] == ['do', 'not'] else 1 if prev[cs:cs + 1] == ['never'] else 0
+            if neg:
+                return prev[:cs] + prev[cs + neg:cut] + new_words + prev[end:]
+        return prev[:cut] + new_words + prev[end:]
     return None

@@ -34,6 +34,7 @@ TYPOS: dict[str, str] = {
     'ovr': 'over', 'tims': 'times', 'tmes': 'times', 'nexto': 'next to', 'nextto': 'next to',
     'vaccum': 'vacuum', 'vacum': 'vacuum', 'vaccuum': 'vacuum', 'trolly': 'trolley',
     'flashlite': 'flashlight',
+    'tho': 'though', 'thx': 'thanks',
     'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".
@@ -132,6 +133,9 @@ def tokenize(text: str) -> list[str]:
     if 'ur ' in s:   # "on ur way": "ur" before a noun is "your", elsewhere "you are"
         s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best)\b)',
                    'your ', s)
+    if ' 2 ' in s:   # "go 2 the break room": chat spelling of "to" after a verb of motion, before a place
+        s = re.sub(r'\b(go|head|come|get|walk|drive|fly|run|move|back|over|down|up|way|next|close) 2 '
+                   r'(?=(?:the|my|our|your|a|an|this|that)\b)', r'\1 to ', s)
     if ' form ' in s:
         s = _FORM_RE.sub(r'\1 from', s)
     out: list[str] = []

@@ -821,7 +821,7 @@ _APOLOGIES = frozenset({('sorry',), ('my', 'mistake'), ('my', 'bad'), ('oops',),
 
 
 def _ordinal_target(words: list[str]) -> Optional[int]:
-    """The list place a cancelled phrase names ("the second one", "the first stop"), else None."""
+    """Return the list place a cancelled phrase names ("the second one", "the first stop"), else None."""
     w = [t for t in words if t not in ('the', 'that')]
     if len(w) in (1, 2) and w[0] in ORDINALS and w[0] != 'last' and (len(w) == 1 or w[1] in (
             'one', 'stop', 'place', 'goal', 'item', 'thing', 'location', 'spot', 'room')):

@@ -7,16 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from ltl_instruct.core.automaton import equivalent
-from ltl_instruct.core.language.offline import OfflineTranslator
-from ltl_instruct.core.spec import parse_formula
-
-T = OfflineTranslator()
-
-
-def _check(instruction: str, gold: str) -> None:
-    got = T.translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+from translation_cases import T, check_translation as _check
 
 
 MANNERS = [

@@ -13,14 +13,7 @@ from ltl_instruct.core.errors import TranslationError
 from ltl_instruct.core.language.offline import OfflineTranslator
 from ltl_instruct.core.language.spelling import Speller
 from ltl_instruct.core.spec import parse_formula
-
-T = OfflineTranslator()
-
-
-def _check(instruction: str, gold: str) -> tuple[str, ...]:
-    got = T.translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
-    return got.notes
+from translation_cases import T, check_translation as _check
 
 
 UNKNOWN_VERBS = [

@@ -8,16 +8,8 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.automaton import equivalent
-from ltl_instruct.core.language.offline import OfflineTranslator
-from ltl_instruct.core.spec import parse_formula, referents_of
-
-T = OfflineTranslator()
-
-
-def _check(instruction: str, gold: str) -> tuple[str, ...]:
-    got = T.translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
-    return got.notes
+from ltl_instruct.core.spec import referents_of
+from translation_cases import T, check_translation as _check
 
 
 REMARKS = [

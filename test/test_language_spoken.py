@@ -427,3 +427,73 @@ def test_staying_put_beforehand_forever_and_a_relative_clause_after_a_comma() ->
     _check('Keep visiting the entrance and the exit, forever.', 'G F near[entrance] & G F near[exit]')
     _check('Go to the lift, and keep away from the trolley, which is right next to the stairs.',
            'F near[lift] & G !near[trolley::isnextto(stairs)]')
+
+
+FOUND_LATE = [
+    # "can" is a thing after a determiner, not only in "soda can"
+    ('Carry the can to the wall, and keep away from the sofa while carrying it.',
+     'F (near[can] & F (pick[can] & (!near[sofa] U (near[wall] & F release[can, wall]))))'),
+    ('Pick up the can and then go to the door.', 'F (near[can] & F (pick[can] & F near[door]))'),
+    ('You can go to the kitchen.', 'F near[kitchen]'),
+    # an avoidance until several places are reached holds until the last of them, in the order said
+    ('Avoid the kitchen until you reach the hall and the attic.',
+     'F (near[hall] & F near[attic]) & (!near[kitchen] U (near[hall] & (!near[kitchen] U near[attic])))'),
+    ('Until you reach the hall and the attic, avoid the kitchen.',
+     'F (near[hall] & F near[attic]) & (!near[kitchen] U (near[hall] & (!near[kitchen] U near[attic])))'),
+    ('Avoid the kitchen until you reach the hall.', '(!near[kitchen] U near[hall]) & F near[hall]'),
+    # a correction that says the whole step again, the thing as a pronoun
+    ('Put the mug on the shelf. Scratch that, put it in the sink.',
+     'F (near[mug] & F (pick[mug] & F (near[sink] & F release[mug, sink])))'),
+    ('Take the plates to the table. Actually, ignore that, just throw them away.',
+     'F (near[plates] & F (pick[plates] & F (near[trash_can] & F release[plates, trash_can])))'),
+    ('Go to the porch, then put the lamp on the desk. Scratch that, put it by the bed.',
+     'F (near[porch] & F (near[lamp] & F (pick[lamp] & F (near[bed] & F release[lamp, bed]))))'),
+    ('Go to the garage. Scratch that, go to the shed.', 'F near[shed]'),
+    # "the third floor one" for "the second floor lounge": floor is not said twice
+    ('Go to the second floor lounge, no wait, the third floor one.', 'F near[third_floor_lounge]'),
+    # "too" for "to", and "any one of the three" asks for nothing
+    ('Carry the seed bag too the barn.',
+     'F (near[seed_bag] & F (pick[seed_bag] & F (near[barn] & F release[seed_bag, barn])))'),
+    ('Visit the den, the loft or the attic - any one of the three.',
+     'F near[den] | F near[loft] | F near[attic]'),
+    ('Visit the den, the loft or the attic, any one of them will do.',
+     'F near[den] | F near[loft] | F near[attic]'),
+    # an avoidance after the last of several alternative clauses holds for all of them
+    ('Either go to the den or go to the hall, and keep away from the dog bowl.',
+     '(F near[den] | F near[hall]) & G !near[dog_bowl]'),
+    ('Either put the cup in the sink or throw it away, and either way keep away from the cat.',
+     'F (near[cup] & F (pick[cup] & (F (near[sink] & F release[cup, sink]) | '
+     'F (near[trash_can] & F release[cup, trash_can])))) & G !near[cat]'),
+    ('Either go to the den or go to the hall.', 'F near[den] | F near[hall]'),
+    # "flip that": the last two goals swapped
+    ('Go to the barn and then the silo. Hmm, flip that, silo first.', 'F (near[silo] & F near[barn])'),
+    ('Go to the barn and then the silo. Actually, flip that.', 'F (near[silo] & F near[barn])'),
+    # a list said after an adverb
+    ('Earlier I mentioned the attic, the den and the porch. Go to the last one I mentioned.',
+     'F near[porch]'),
+    ('Barn, silo, pump house: go to all three in reverse order.',
+     'F (near[pump_house] & F (near[silo] & F near[barn]))'),
+    ('I listed three rooms: the den, the office and the nursery. Visit the first and second in either '
+     'order, but never the third.', 'F near[den] & F near[office] & G !near[nursery]'),
+    ("Go to the lobby, but hold off on it until you've been to the coat check.",
+     'F near[lobby] & (!near[lobby] U near[coat_check])'),
+    ('Hold off on visiting the lab until you have seen the office, then go to the lab.',
+     'F (near[office] & F near[lab]) & (!near[lab] U near[office])'),
+    ('Before you head to the den, swing by the pantry, and before the pantry, the garage.',
+     'F (near[garage] & F (near[pantry] & F near[den]))'),
+    ('Go to the bins at most once and to the compost pile at least twice.',
+     '(!near[bins] W (near[bins] & (near[bins] W G !near[bins]))) & '
+     'F (near[compost_pile] & F (!near[compost_pile] & F near[compost_pile]))'),
+    ('Go to the printer, and from there to the copier without going near the stairs.',
+     'F (near[printer] & (!near[stairs] U near[copier]))'),
+    ('Visit the kiosk before the lounge, and the lounge before the quad.',
+     'F (near[lounge] & F near[quad]) & (!near[lounge] U near[kiosk]) & (!near[quad] U near[lounge])'),
+    # two letters swapped in a compound of two listed words
+    ('Move the toolbox over to the wrokbench.',
+     'F (near[toolbox] & F (pick[toolbox] & F (near[workbench] & F release[toolbox, workbench])))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', FOUND_LATE)
+def test_readings_found_wrong_late(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

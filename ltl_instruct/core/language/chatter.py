@@ -490,6 +490,8 @@ _REMARK_RE = re.compile(
     r'|whichever(?: \w+)? (?:is|are|s|one is) (?:less |more |the )?\w+(?: (?:to \w+|for you|to you))?'
     r'(?: (?:right now|now|today|at the moment))?'
     r'|(?:that|the) order (?:matters|is important)(?: to (?:me|us))?'
+    r'|(?:any|any one|anyone|either one|whichever one|whichever)'
+    r'(?: of (?:them|those|these|the (?:two|three|four|five)(?: \w+)?))?(?: (?:will do|is fine|works))?'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
     r'|(?:(?:that|this|it) )?is (?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)'
     r'(?: (?:for )?(?:today|now|'

@@ -194,6 +194,24 @@ RULES: tuple[Rule, ...] = (
          r'(?!(?:time|way|trip|flight|route|mission|run|task|journey|drive|walk|tour|job|day|night|loop|'
          r'thing)\b)',
          r'\g<v> \g<d> '),
+    Rule('hold off on it until you have been to X',
+         rf'\b(?:hold off|wait) (?:on|with) (?:(?:going to|visiting|entering) )?(?P<x>it|them|there|{_NP}) '
+         rf'(?=until|till|before|unless)',
+         lambda m: f'do not go to {m.group("x") if m.group("x") != "there" else "it"} '),
+    Rule('and before the closet, the laundry room: the goal before it',
+         r'(?P<a>^|\band )(?P<c>before|after) (?P<x>(?:the|a|an|my|your|our) ' + _NP + r') , '
+         r'(?P<y>(?:the|a|an|my|your|our) ' + _NP + r')$',
+         r'\g<a>\g<c> going to \g<x> , go to \g<y>'),
+    Rule('go to the bins at most once and to the pile twice: the verb said once',
+         r'\b(?P<c>once|twice|thrice|times) (?P<j>and|but) (?P<p>to|into) (?=(?:the|a|an|my|your|our) )',
+         r'\g<c> \g<j> go \g<p> '),
+    Rule('and from there to the copier: the verb left out',
+         r'(?P<a>(?:^|, )(?:and )?)from (?:there|here) (?=(?:to|on to|over to) (?:the|a|an|my|your|our) )',
+         r'\g<a>then go '),
+    Rule('visit a before b, and b before c: the verb said once',
+         r'(?P<a>^(?:visit|go to) .* , (?:and|then) )(?P<x>(?:the|a|an|my|your|our) ' + _NP + r') '
+         r'(?P<c>before|after) (?=(?:the|a|an|my|your|our) )',
+         r'\g<a>visit \g<x> \g<c> '),
     Rule('give the rug a wide berth', rf'\bgive (?P<x>{_NP}) a (?:wide|good|big|very wide) berth\b',
          r'keep away from \g<x>'),
     Rule('do not cut across the lawn', r'\b(?:cut|shortcut|short cut) (?:across|through|over)\b',

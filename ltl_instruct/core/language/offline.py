@@ -104,6 +104,7 @@ class _Scope:
     kind: str = 'global'   # global, until, onway, after, carry, after_pick, after_release
     target: Optional[NounPhrase] = None
     event: str = 'near'    # for until: near / pick / release
+    then: tuple[NounPhrase, ...] = ()   # for until near: places reached after the target, in order
 
 
 class OfflineTranslator:
@@ -245,6 +246,11 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
     known = {w for name in landmarks for w in name.replace('_', ' ').split()}
     out = list(tokens)
     for k, w in enumerate(tokens):
+        if w == 'too' and 0 < k < len(tokens) - 1 and tokens[k - 1] not in PUNCT and \
+                tokens[k + 1] in ('the', 'my', 'your', 'our', 'a', 'an', 'that', 'this'):
+            out[k] = 'to'   # "carry the seed bag too the greenhouse"
+            notes.append('read "too" as "to"')
+            continue
         if w in known or len(w) < 4:
             continue
         fixed = speller.correct(w)
@@ -629,6 +635,18 @@ class _Reader:
                 return
             scope = self._read_part(clause, scope)
 
+    def _is_avoidance_clause(self, tokens: list[str]) -> bool:
+        """Whether a clause only says what to keep away from ("and either way avoid the hall")."""
+        words = [t for t in self._strip_fillers(tokens) if t not in PUNCT]
+        for lead in (['either', 'way'], ['in', 'any', 'case'], ['regardless'], ['no', 'matter', 'which'],
+                     ['whichever', 'you', 'choose'], ['in', 'both', 'cases'], ['in', 'either', 'case']):
+            if words[:len(lead)] == lead:
+                words = [t for t in self._strip_fillers(words[len(lead):]) if t not in PUNCT]
+        return any(words[:len(lead)] == lead for lead in (
+            ['avoid'], ['never'], ['keep', 'away'], ['stay', 'away'], ['keep', 'clear'], ['stay', 'clear'],
+            ['steer', 'clear'], ['keep', 'out'], ['stay', 'out'], ['do', 'not', 'go'], ['do', 'not', 'pass'],
+            ['do', 'not', 'enter'], ['do', 'not', 'fly'], ['do', 'not', 'come'], ['do', 'not', 'get']))
+
     def _read_optional(self, tokens: list[str], nxt: list[str]) -> bool:
         """Read 'you can also stop by X, but no more than once': X is optional, its visits bounded."""
         words = [t for t in tokens if t not in PUNCT]
@@ -663,6 +681,17 @@ class _Reader:
         self._read_alternative_clauses([self._clauses(p[1:] if p and p[0] == 'either' else p) for p in parts])
 
     def _read_alternative_clauses(self, groups: list[list[_Clause]]) -> None:
+        # "either go to a or go to b, and (either way) keep away from c": the avoidance after the
+        # last alternative holds whichever is taken
+        last = groups[-1]
+        cut = next((k for k in range(1, len(last)) if last[k].connector == 'and' and
+                    self._is_avoidance_clause(last[k].tokens)), len(last))
+        if cut < len(last):
+            self._read_alternative_clauses(groups[:-1] + [last[:cut]])
+            scope: Optional[_Scope] = None
+            for clause in last[cut:]:
+                scope = self._read_part(clause, scope)
+            return
         self.saw_action = True
         outer = self.task
         chains = []
@@ -1785,7 +1814,9 @@ class _Reader:
                 return _Scope('until', NounPhrase(held, nps[0].start, nps[0].end, nps[0].head), 'pick'), \
                     rest[end:]
             if nps:
-                return _Scope('until', nps[0], event), rest[end:]
+                # "until you reach the hall and the attic": until both are reached, in the order said
+                more = tuple(nps[1:]) if event == 'near' and joiner in ('and', 'then') else ()
+                return _Scope('until', nps[0], event, more), rest[end:]
             if rest[0] in ('until', 'till') and j > 1 and (j == len(rest) or rest[j] in PUNCT) and \
                     rest[j - 1] in ('arrive', 'arrived', 'get', 'got', 'are', 'reach', 'reached', 'land',
                                     'landed') and self.last_place is not None:
@@ -1857,9 +1888,15 @@ class _Reader:
                     # "don't go in until you've picked up the torch": picking it up is part of the task, first
                     self.task.chain.insert(0, Step('pick', [d]))
             else:
-                self.task.constraints.append(_until_avoid(targets, _near(d)))
-                if self.task.find_step(d) is None and not self.task.chain:
-                    self.task.chain.append(Step('visit', [d]))  # so that "then ..." comes after it
+                places = [d] + [self._resolve(p, place=True).descriptor for p in scope.then]
+                goal: Formula = _near(places[-1])
+                for p in reversed(places[:-1]):
+                    goal = _and(_near(p), _until_avoid(targets, goal))
+                self.task.constraints.append(_until_avoid(targets, goal))
+                if not self.task.chain:
+                    for p in places:   # so that "then ..." comes after them
+                        if self.task.find_step(p) is None:
+                            self.task.chain.append(Step('visit', [p]))
             return
         if kind == 'onway' and self.avoid_scope == 'goal' and scope is not None and scope.event == 'while' \
                 and scope.target is not None:

@@ -184,6 +184,10 @@ def _relative_lead(tokens: Sequence[str], i: int) -> int:
     return 0
 
 
+CAN_DETERMINERS = frozenset({'the', 'a', 'an', 'that', 'this', 'each', 'every', 'my', 'your', 'our',
+                             'empty', 'old', 'open', 'tin', 'paint', 'trash', 'garbage', 'watering'})
+
+
 def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     """Whether ``tokens[i]`` can be part of an object's name."""
     if i >= len(tokens):
@@ -196,8 +200,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return nxt not in PUNCT and nxt not in STOPWORDS and nxt != '' and nxt not in ('one',)
     if w == 'one':
         return nxt not in ('times', 'time', 'more')
-    if w == 'can':
-        return have_name and nxt not in ('you', 'i', 'we', 'go', 'be', 'not')
+    if w == 'can':   # "the soda can", "the can" are things; "you can go" is not
+        after_det = i > 0 and tokens[i - 1] in CAN_DETERMINERS
+        return (have_name or after_det) and nxt not in ('you', 'i', 'we', 'go', 'be', 'not')
     if w in ('once', 'twice', 'thrice'):
         return False
     if w in NUMBER_WORDS or w.isdigit():

@@ -42,13 +42,18 @@ def _np_text(tokens: list[str], np: NounPhrase) -> list[str]:
     return ['the'] + span
 
 
+_LEAD_ADVERBS = frozenset({'earlier', 'before', 'so', 'ok', 'okay', 'now', 'also', 'again', 'well', 'right',
+                           'first', 'today', 'yesterday', 'above', 'previously', 'already'})
+
+
 def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], str]]:
     """Find the first enumeration of three (or two, with "and") noun phrases, and its category."""
     parser = PhraseParser()
     starts = [0] + [i + 1 for i, t in enumerate(tokens) if t in _LIST_INTROS]
     # "I left a notebook, a pen and a ruler...": after a pronoun subject and its verb
     starts += [i + 2 for i, t in enumerate(tokens) if t in ('i', 'we', 'they') and (
-        i == 0 or tokens[i - 1] in PUNCT)]
+        i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in _LEAD_ADVERBS and (
+            i == 1 or tokens[i - 2] in PUNCT))]   # "earlier I mentioned a, b and c
     starts.sort()
     for s in starts:
         if s >= len(tokens):
@@ -264,7 +269,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                                     i = ref.end
                                     continue
             if t in ORDINALS and (i == 0 or tail[i - 1] in (',', 'then', 'and', ':')) and (
-                    not nxt or nxt in PUNCT or nxt in ('and', 'then', 'one', 'ones', 'things', 'items')):
+                    not nxt or nxt in PUNCT or nxt in ('and', 'then', 'one', 'ones', 'things', 'items', 'in',
+                                                       'or', 'but')):
                 out += joined([ORDINALS[t] - 1])
                 i += 2 if nxt in ('one', 'ones', 'things', 'items') else 1
                 continue
@@ -272,6 +278,17 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += joined(list(range(n - 1, -1, -1)), 'then')
                 i += 4
                 continue
+            if t == 'all':
+                # "all three in reverse order", "all of them in reverse order"
+                j = i + 1
+                if j < len(tail) and tail[j] in NUMBER_WORDS and NUMBER_WORDS[tail[j]] == n:
+                    j += 1
+                if tail[j:j + 2] == ['of', 'them']:
+                    j += 2
+                if j > i + 1 and tail[j:j + 3] == ['in', 'reverse', 'order']:
+                    out += joined(list(range(n - 1, -1, -1)), 'then')
+                    i = j + 3
+                    continue
             if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['that', 'order']:
                 out += joined(list(range(n)), 'then')
                 i += 4
@@ -443,6 +460,9 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
             # "the blue recycling bin ... make that the green one": the new adjective replaces the old
             while len(name) > 1 and name[0] in PLACEHOLDER_ADJECTIVES:
                 name = name[1:]
+            said = {w for w in new[:k] if w not in DETERMINERS}
+            while len(name) > 1 and name[0] in said:
+                name = name[1:]   # "the second floor lounge ... the third floor one": floor said again
         new_words = new[:k] + name + new[k + 1:]
     start, end = target.start, target.end
     # an either-or group is corrected as a whole ("the sofa or the armchair ... just the sofa")
@@ -747,6 +767,21 @@ def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[st
         a, b = spans
         notes.append(f'{a.descriptor} and {b.descriptor} swapped')
         return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
+    if words[k:k + 1] in (['that'], ['it']):
+        # "go to a and then b. hmm, flip that, b first": the last two goals, the one said first now
+        spans = _np_spans(prev)
+        said = words[k + 1:]
+        if said[-1:] in (['first'], ['last']):
+            np = PhraseParser().parse(said, 0)
+            if np is None or np.end != len(said) - 1:
+                return None
+            said = [] if len(spans) >= 2 and np.head in (spans[-1].head if said[-1] == 'first'
+                                                          else spans[-2].head,) else said
+        if len(spans) < 2 or [t for t in said if t not in ('around', 'round', 'please', 'instead')]:
+            return None
+        a, b = spans[-2:]
+        notes.append(f'{a.descriptor} and {b.descriptor} swapped')
+        return prev[:a.start] + prev[b.start:b.end] + prev[a.end:b.start] + prev[a.start:a.end] + prev[b.end:]
     nps, _, end = PhraseParser().parse_list(words, k)
     if len(nps) != 2 or [t for t in words[end:] if t not in ('around', 'round', 'please', 'instead')]:
         return None
@@ -943,7 +978,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                   _VERBS | {'do'}), k)
         target, rest = seg[:k], seg[k + 1:]
         if seg and seg[0] in _VERBS and seg[0] not in ('drop', 'leave') and marker in (
-                'never', 'forget', 'ignore'):
+                'never', 'forget', 'ignore', 'scratch'):
             target, rest = [], seg   # "never mind, go to the porch": the last goal is replaced
         tgt = ' '.join(target)
         if any(w in tgt for w in ('avoid', 'avoiding', 'avoidance')):
@@ -964,6 +999,17 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if not spans:
                 return None
             last = spans[-1]
+            if len(new) > 1 and new[0] in _VERBS and new[1] in ('it', 'them'):
+                # "put the bowl on the counter. scratch that, put it in the dishwasher": the whole
+                # step again, with "it" the thing of the step it replaces
+                start = max((p for p in range(last.start) if prev[p] in '.;!?' or prev[p] == 'then'),
+                            default=-1) + 1
+                obj_end = next((p for p in range(start + 2, len(prev)) if prev[p] in (
+                    'on', 'in', 'into', 'onto', 'to', 'at', 'inside', 'over', 'away', 'back', '.', ',')),
+                    len(prev))
+                if prev[start] in _VERBS and start + 1 < obj_end and prev[start + 1] in DETERMINERS:
+                    notes.append('the last step was replaced')
+                    return prev[:start] + new[:1] + prev[start + 1:obj_end] + new[2:]
             if new:
                 notes.append('the last goal was replaced')
                 return prev[:last.start] + new + prev[last.end:]

@@ -179,6 +179,13 @@ class Speller:
                         if tail is not None:
                             out = word[:k] + tail
                             break
+            if out is None and len(word) >= 8:
+                # two neighbouring letters swapped in a compound ("wrokbench": work + bench), when
+                # exactly one swap gives two listed words run together
+                w = self.words
+                fits = {c for c, kind in _slips(word) if kind == 'swap' and any(
+                    c[:k] in w and c[k:] in w for k in range(4, len(c) - 3))}
+                out = fits.pop() if len(fits) == 1 else None
         self._cache[word] = out
         return out
 

@@ -47,13 +47,14 @@ def train_city(data_dir: str, city: str, config: TrainingConfig = TrainingConfig
     data = load_city(data_dir, city)
     train, test = split_train_test(data)
     lmap = data.landmark_map(train)
-    words = WordVocabulary.build([d.instruction for d in train])
+    # the landmark names' words are in the vocabulary too, so that the copy scores know them
+    words = WordVocabulary.build([d.instruction for d in train] + list(lmap.names))
     out_vocab = OutputVocabulary(lmap.props)
     rewards = RewardCache(out_vocab, lmap)
     alive = []
     for r in range(restarts if probe_epochs > 0 else 1):
         run_config = dataclasses.replace(config, seed=config.seed + r)
-        alive.append(ParserTrainer(new_parser(words, out_vocab, parser_config, run_config.seed),
+        alive.append(ParserTrainer(new_parser(words, out_vocab, parser_config, run_config.seed, lmap.names),
                                    words, train, lmap, run_config, rewards))
 
     def train_to(trainer: ParserTrainer, epochs: int, deadline: float) -> None:

@@ -6,7 +6,23 @@ direction); the encoder states have shape (B, T, 60).
 Decoder: the embeddings (12 each) of the last K = 4 decoded tokens (a START
 token pads the left) feed a hidden layer (50, tanh); its output attends over
 the encoder states (bilinear scores, softmax over words); hidden and context go
-through a second layer (50, tanh) to the logits over output tokens. Tokens that
+through a second layer (50, tanh) to the logits over output tokens.
+
+Our addition to the original model (``ParserConfig.lexical_copy``, on by
+default): landmark tokens also get copy scores from the words that name them.
+With M the word-by-landmark name-match matrix of ``lexicon`` (fixed, from the
+map's names), alpha the decoder's attention over the words and M_t the row of
+the word at position t, the logit of landmark l gains
+``c * sum_t alpha_t M_t[l] + m * max_t M_t[l]``: the first term points at the
+landmark named where the decoder looks (order), the second at every landmark
+the instruction names at all; c and m are learned scalars (both start at 2).
+Without it, a seed that does not find the word-landmark alignment early
+settles on programs that ignore the landmarks named (every probed seed of
+baltimore and philadelphia stayed at a training reward of ~0.04, on programs
+such as ``goal F ! F ! F ...``); with it one seed of each reached a test goal
+accuracy of 0.63 and 0.78 after six epochs (was 0.05 and 0.13 after full
+training). The encoder output carries the match rows after the
+BiLSTM states, so every caller passes one tensor. Tokens that
 the postfix stack discipline forbids (``programs.allowed_mask``) get -inf, so
 every decoded program is a valid formula.
 
@@ -29,6 +45,7 @@ import numpy as np
 import torch
 from torch import nn
 
+from ltl_instruct.core.language.learned.lexicon import ascii_fold, name_match_matrix
 from ltl_instruct.core.language.learned.programs import OutputVocabulary, allowed_mask, stack_effect
 
 PAD, UNK = '<pad>', '<unk>'
@@ -36,8 +53,8 @@ _WORD = re.compile(r"[a-z0-9]+(?:'[a-z]+)?")
 
 
 def tokenize(text: str) -> list[str]:
-    """Lower-case words and numbers of an instruction."""
-    return _WORD.findall(text.lower())
+    """Lower-case words and numbers of an instruction (accents removed: "Così" -> "cosi")."""
+    return _WORD.findall(ascii_fold(text))
 
 
 @dataclass(frozen=True)
@@ -82,6 +99,7 @@ class ParserConfig:
     history: int = 4        # K: decoder input = embeddings of the last K tokens
     max_program: int = 13   # most tokens before END
     beam: int = 20
+    lexical_copy: bool = True  # our addition: copy scores from the words that name landmarks
 
 
 def pad_batch(seqs: Sequence[Sequence[int]], pad: int = 0) -> tuple[torch.Tensor, torch.Tensor]:
@@ -102,9 +120,12 @@ class BeamResult:
 
 
 class SemanticParser(nn.Module):
-    """BiLSTM encoder + feed-forward decoder over the last K tokens with attention."""
+    """BiLSTM encoder + feed-forward decoder over the last K tokens with attention (+ copy scores)."""
 
-    def __init__(self, num_words: int, out_vocab: OutputVocabulary, config: ParserConfig) -> None:
+    def __init__(self, num_words: int, out_vocab: OutputVocabulary, config: ParserConfig,
+                 name_match: Optional[np.ndarray] = None) -> None:
+        """Build the network; ``name_match`` (num_words, landmarks) is the lexicon matrix (zeros if None;
+        a loaded model gets it from its state dict)."""
         super().__init__()
         self.config = config
         self.out_vocab = out_vocab
@@ -123,24 +144,51 @@ class SemanticParser(nn.Module):
         nn.init.normal_(self.output.weight, std=0.01)
         nn.init.zeros_(self.output.bias)
         self._effect = torch.from_numpy(stack_effect(out_vocab))
+        self._enc = enc
+        n_props = len(out_vocab.props)
+        if c.lexical_copy:
+            match = torch.zeros(num_words, n_props) if name_match is None else torch.as_tensor(
+                np.asarray(name_match, dtype=np.float32))
+            if tuple(match.shape) != (num_words, n_props):
+                raise ValueError(f'name_match must have shape {(num_words, n_props)}, got {tuple(match.shape)}')
+            self.register_buffer('name_match', match)
+            # start with a clear preference for the landmarks the instruction names
+            self.copy_weight = nn.Parameter(torch.tensor(2.0))
+            self.mention_weight = nn.Parameter(torch.tensor(2.0))
 
     # ------------------------------------------------------------------ network
     def encode(self, words: torch.Tensor, lengths: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
-        """Encode padded word ids (B, T): encoder states (B, T, 60) and word mask (B, T) ."""
+        """Encode padded word ids (B, T): encoder output (B, T, 60 [+ landmarks]) and word mask (B, T).
+
+        With ``lexical_copy`` the output is the BiLSTM states followed by each word's
+        row of the name-match matrix.
+        """
         emb = self.word_embedding(words)
         packed = nn.utils.rnn.pack_padded_sequence(emb, lengths, batch_first=True, enforce_sorted=False)
         out, _ = self.encoder(packed)
         states, _ = nn.utils.rnn.pad_packed_sequence(out, batch_first=True, total_length=words.shape[1])
         mask = torch.arange(words.shape[1])[None, :] < lengths[:, None]
+        if self.config.lexical_copy:
+            states = torch.cat([states, self.name_match[words]], dim=2)
         return states, mask
 
     def step_logits(self, states: torch.Tensor, mask: torch.Tensor, history: torch.Tensor) -> torch.Tensor:
-        """Unmasked logits (N, V) given encoder states (N, T, 60), mask (N, T), last-K ids (N, K)."""
+        """Unmasked logits (N, V) given encoder output (N, T, ...), mask (N, T), last-K ids (N, K)."""
+        enc = states[:, :, :self._enc]
         h = torch.tanh(self.hidden(self.token_embedding(history).flatten(1)))
-        scores = torch.einsum('ntd,nd->nt', states, self.attention(h))
+        scores = torch.einsum('ntd,nd->nt', enc, self.attention(h))
         scores = scores.masked_fill(~mask, float('-inf'))
-        context = torch.einsum('nt,ntd->nd', torch.softmax(scores, dim=1), states)
-        return self.output(torch.tanh(self.combine(torch.cat([h, context], dim=1))))
+        alpha = torch.softmax(scores, dim=1)
+        context = torch.einsum('nt,ntd->nd', alpha, enc)
+        logits = self.output(torch.tanh(self.combine(torch.cat([h, context], dim=1))))
+        if not self.config.lexical_copy:
+            return logits
+        match = states[:, :, self._enc:]
+        copied = torch.einsum('nt,ntl->nl', alpha, match)
+        mentioned = match.masked_fill(~mask[:, :, None], 0.0).amax(dim=1)
+        n_props = match.shape[2]
+        bonus = self.copy_weight * copied + self.mention_weight * mentioned
+        return torch.cat([logits[:, :n_props] + bonus, logits[:, n_props:]], dim=1)
 
     def _masked_log_probs(self, states: torch.Tensor, mask: torch.Tensor, history: torch.Tensor,
                           stack: np.ndarray, length: np.ndarray, last: np.ndarray) -> torch.Tensor:

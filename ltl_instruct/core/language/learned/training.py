@@ -35,8 +35,9 @@ import torch
 
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language.learned.data import Demonstration
+from ltl_instruct.core.language.learned.lexicon import name_match_matrix
 from ltl_instruct.core.language.learned.model import (
-    GoalBaseline, ParserConfig, SemanticParser, WordVocabulary, pad_batch,
+    GoalBaseline, ParserConfig, SemanticParser, WordVocabulary, pad_batch, tokenize,
 )
 from ltl_instruct.core.language.learned.planning import plan_on_landmarks
 from ltl_instruct.core.language.learned.programs import OutputVocabulary, first_acceptance, program_to_formula
@@ -254,7 +255,17 @@ def train_baseline(baseline: GoalBaseline, words: WordVocabulary, demos: Sequenc
 
 
 def new_parser(words: WordVocabulary, out_vocab: OutputVocabulary,
-               config: ParserConfig = ParserConfig(), seed: int = 0) -> SemanticParser:
-    """Build a freshly initialised parser (seeded)."""
+               config: ParserConfig = ParserConfig(), seed: int = 0,
+               names: Optional[Sequence[str]] = None) -> SemanticParser:
+    """Build a freshly initialised parser (seeded).
+
+    ``names`` are the landmarks' names as written in the map, for the copy scores
+    (default: the propositions with spaces for underscores).
+    """
     torch.manual_seed(seed)
-    return SemanticParser(words.size, out_vocab, config)
+    match = None
+    if config.lexical_copy:
+        if names is None:
+            names = [p.replace('_', ' ') for p in out_vocab.props]
+        match = name_match_matrix(words.words, names, tokenize)
+    return SemanticParser(words.size, out_vocab, config, match)

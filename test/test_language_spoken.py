@@ -491,6 +491,49 @@ FOUND_LATE = [
     # two letters swapped in a compound of two listed words
     ('Move the toolbox over to the wrokbench.',
      'F (near[toolbox] & F (pick[toolbox] & F (near[workbench] & F release[toolbox, workbench])))'),
+    # a last comma part that says why asks for nothing
+    ('Fly to the mast, and never fly over the pond, the neighbours complain.',
+     'F near[mast] & G !near[pond]'),
+    ("Fly out to the pier, and don't ever fly over the marina, we don't have clearance for that.",
+     'F near[pier] & G !near[marina]'),
+    ("Peek into the study no more than once, my husband's on a call.",
+     '!near[study] W (near[study] & (near[study] W G !near[study]))'),
+    ("Throw away the paper cup, it's been sitting there for days.",
+     'F (near[paper_cup] & F (pick[paper_cup] & F (near[trash_can] & F release[paper_cup, trash_can])))'),
+    ('Go to the printer, then the desk - somebody keeps jamming it.', 'F (near[printer] & F near[desk])'),
+    ('Bring me the keys, they are on the table.',
+     'F (near[keys::isabove(table)] & F pick[keys::isabove(table)])'),
+    ('Go to the den, I need you to avoid the hall.', 'F near[den] & G !near[hall]'),
+    # fillers and verbs said another way
+    ('Could you maybe head over to the piano?', 'F near[piano]'),
+    ('Visit the mailbox like at least 2 times today.', 'F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))'),
+    ('Go to the desk, and when you get there carry on to the lobby.', 'F (near[desk] & F near[lobby])'),
+    ('Bring the mail in to the kitchen table.',
+     'F (near[mail] & F (pick[mail] & F (near[kitchen_table] & F release[mail, kitchen_table])))'),
+    ('I need the scalpel brought to the tray.',
+     'F (near[scalpel] & F (pick[scalpel] & F (near[tray] & F release[scalpel, tray])))'),
+    ('Visit the mailbox twice - eh, make it three times.',
+     'F (near[mailbox] & F (!near[mailbox] & F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))))'),
+    # "but first a, then b": both before the goal said
+    ('I want you at the dock door, but first stop at the office and then the pallet jack.',
+     'F (near[office] & F (near[pallet_jack] & F near[dock_door]))'),
+    ('Go to the gate, but first go to the shed, then the barn.', 'F (near[shed] & F (near[barn] & F near[gate]))'),
+    ('Go to the gate, but first go to the shed. Then go to the barn.',
+     'F (near[shed] & F (near[gate] & F near[barn]))'),
+    # a statement about the scene is not a place to go
+    ('The kids left stuff everywhere. Visit the swings, then the slide.', 'F (near[swings] & F near[slide])'),
+    # corrections: the words before the phrase said again; "the one ..." of the same kind
+    ("Go to the classroom, but only after the principal's office - sorry, only after the front office.",
+     'F near[classroom] & (!near[classroom] U near[front_office])'),
+    ('Bring the remote on the couch to the tv stand. Actually, no, bring the one on the armchair.',
+     'F (near[remote::isabove(armchair)] & F (pick[remote::isabove(armchair)] & F (near[tv_stand] & '
+     'F release[remote::isabove(armchair), tv_stand])))'),
+    ('Bring the red mug to the sink. No, bring the blue one.',
+     'F (near[blue_mug] & F (pick[blue_mug] & F (near[sink] & F release[blue_mug, sink])))'),
+    ('Go to the red chair. No, go to the blue one.', 'F near[blue_chair]'),
+    # "it" in a phrase read again is still what it was the first time
+    ('Go to the cabinet left of the sink, then the drawer under it.',
+     'F (near[cabinet::isleftof(sink)] & F near[drawer::isbelow(cabinet::isleftof(sink))])'),
 ]
 
 

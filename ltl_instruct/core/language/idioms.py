@@ -53,6 +53,8 @@ _STAY = r'(?:stay|remain|wait|hold (?:your )?position)'
 _SEE = r'(?:visit|see|observe)'
 _HAPPEN = r'(?:occur|happen|hold|appear)'
 
+_ACTIVE = {'brought': 'bring', 'taken': 'take', 'carried': 'carry', 'moved': 'move', 'put': 'put',
+           'delivered': 'deliver'}
 _PLAIN_AUX = ('is', 'are', 'get', 'gets')
 _PLACES = r'(?:landmarks?|locations?|places?|waypoints?|ones?|goals?|them|rooms?|spots?)'
 # the canonical wording of "no goal visited twice", which the clause reader knows
@@ -212,6 +214,17 @@ RULES: tuple[Rule, ...] = (
          r'(?P<a>^(?:visit|go to) .* , (?:and|then) )(?P<x>(?:the|a|an|my|your|our) ' + _NP + r') '
          r'(?P<c>before|after) (?=(?:the|a|an|my|your|our) )',
          r'\g<a>visit \g<x> \g<c> '),
+    Rule('visit the mailbox like at least twice: "like" says nothing',
+         r'\blike (?=(?:at least|at most|exactly|once|twice|thrice|maybe|around|about|\d+|one|two|three|four|'
+         r'five) )', ''),
+    Rule('carry on to the lobby', r'\b(?:carry on|continue on|move on) (?=to |on to )',
+         'go '),
+    Rule('bring the mail in to the table', r'\b(?P<v>bring|take|carry|put) (?P<x>(?:the|a|an|my|your|our) '
+         + _NP + r') in to (?=(?:the|a|an|my|your|our) )', r'\g<v> \g<x> to '),
+    Rule('I need the stethoscope brought to the station',
+         r'\b(?:i|we) (?:need|want|would like) (?P<x>(?:the|a|an|my|your|our|this|that) ' + _NP + r') '
+         r'(?P<v>brought|taken|carried|moved|put|delivered) (?P<p>to|into|in|on|onto|over to|back to) ',
+         lambda m: f'{_ACTIVE[m.group("v")]} {m.group("x")} {m.group("p")} '),
     Rule('give the rug a wide berth', rf'\bgive (?P<x>{_NP}) a (?:wide|good|big|very wide) berth\b',
          r'keep away from \g<x>'),
     Rule('do not cut across the lawn', r'\b(?:cut|shortcut|short cut) (?:across|through|over)\b',

@@ -66,6 +66,7 @@ sometime sometimes
 please pls hey robot drone can could would you will just also then now first next lastly finally and
 so okay kindly i need want like to be sure make remember also yes alright right well oh hmm um er
 but eventually must have should ensure required that certainly definitely simply though although
+maybe perhaps possibly
 '''.split())
 DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
                            'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',

@@ -179,6 +179,10 @@ class OfflineTranslator:
 
 
 # Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
+# Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
+_REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
+                           'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
+                           'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills'})
 NEGATIVE_VERBS = frozenset({'ignore', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade', 'miss', 'exit',
                             'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee', 'circumvent', 'spare',
                             'leave', 'drop', 'scratch', 'lose', 'pass', 'release', 'free', 'not'})
@@ -340,6 +344,8 @@ class _Reader:
         self.last_clause: Optional[tuple[list[str], Optional[_Scope]]] = None
         self.before_strict = False
         self.insert_before: Optional[Step] = None
+        self.first_tail: Optional[Step] = None   # the goals a "but first ..." of this sentence went before
+        self.first_leads = False   # the last "first" clause said so at its start ("but first ...")
         self.strict_chain = False   # "in that strict order" somewhere in the instruction
         self.last_goal: Optional[Step] = None   # the last goal clause's step ("before that" refers to it)
         # the goals of the last "X after Y" read, and the ones they come after ("and not a second earlier")
@@ -355,8 +361,49 @@ class _Reader:
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
 
     # ----------------------------------------------------------------- structure
+    def _drop_trailing_reason(self, sentence: list[str]) -> list[str]:
+        """Leave out a last comma part that says why ("..., the neighbours complain", "..., she's jumpy").
+
+        Only a part with a subject other than the robot (I, we, she, somebody, my husband, the
+        neighbours...), no request word after it ("I need", "we want") and no "you", after a part
+        that asks for something; "they are in the kitchen" (where a thing is) is kept.
+        """
+        cut = max((k for k, t in enumerate(sentence) if t == ','), default=-1)
+        if cut <= 0:
+            return sentence
+        tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
+        if len(tail) < 2 or 'you' in tail or tail in (['you', 'know', 'why'],) or \
+                any(t in chatter.REQUEST_WORDS for t in tail[1:3]) or tail[1] in ('not', 'never'):
+            return sentence if tail != ['you', 'know', 'why'] else self._noted_cut(sentence, cut)
+        first = tail[0]
+        if first in ('i', 'we', 'somebody', 'someone', 'everyone', 'nobody', 'my', 'our', 'his', 'her',
+                     'their'):
+            return self._noted_cut(sentence, cut)
+        if first in ('he', 'she', 'they', 'it') and tail[1] in ('is', 'are', 'was', 'were', 'has', 'have',
+                                                                'keeps', 'gets', 'bites', 'barks'):
+            if tail[2:3] and tail[2] in DETS | {'on', 'in', 'under', 'behind', 'next', 'by', 'near', 'beside',
+                                                 'between', 'above', 'below', 'inside', 'over', 'fine', 'ok',
+                                                 'okay', 'up', 'your', 'important', 'better'}:
+                return sentence   # "they are in the kitchen", "it is the red one", "it is up to you"
+            return self._noted_cut(sentence, cut)
+        if first == 'the' and not {'one', 'ones', 'that', 'which'} & set(tail) and any(
+                t in _REASON_VERBS and t not in ('is', 'are', 'was', 'were') for t in tail[2:]):
+            return self._noted_cut(sentence, cut)   # "..., the neighbours complain"
+        return sentence
+
+    def _noted_cut(self, sentence: list[str], cut: int) -> list[str]:
+        head = sentence[:cut]
+        if not [t for t in head if t not in PUNCT] or chatter.is_statement(
+                [t for t in head if t not in PUNCT]):
+            return sentence
+        said = ' '.join(t for t in sentence[cut + 1:] if t not in PUNCT)
+        self.notes.append(f'left out "{said}" (says why, asks for nothing)')
+        return head + [t for t in sentence[cut + 1:] if t in '.;!?']
+
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
+            self.first_tail = None
+            sentence = self._drop_trailing_reason(sentence)
             if self._places_only(sentence):
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
                 self.notes.append(f'read "{" ".join(sentence)}" as going there')
@@ -411,6 +458,10 @@ class _Reader:
             return False
         i = 1 if sentence[0] == 'either' else 0
         n = len(sentence)
+        words = [t for t in sentence if t not in PUNCT]
+        subject = self.phrases.parse(words, 0)
+        if subject is not None and chatter.is_statement(words, subject.end):
+            return False   # "the kids left stuff everywhere.": about the scene, not where to go
         while ',' in sentence[i:n]:   # "..., your call": a remark at the end
             c = max(k for k in range(i, n) if sentence[k] == ',')
             if not chatter.is_remark(sentence[c + 1:n]):
@@ -1061,6 +1112,7 @@ class _Reader:
                 self._read_avoid(tokens, _Scope('onway'))
                 return scope
             clause = _Clause('pre', clause.tokens, first=True)
+            self.first_leads = raw[:2] == ['but', 'first'] or raw[0] == 'first'
         if tokens[0] == 'only' and len(tokens) > 1 and tokens[1] in GOAL_VERBS | DELIVER_VERBS:
             tokens = tokens[1:]
             self.only = True
@@ -2866,6 +2918,12 @@ class _Reader:
                                             len(chain) - 1)   # "..., but go to X first": before them all
             tail, self.task.chain = chain[k:], chain[:k]
             self._add_targets(targets, joiner, ordered)
+            if clause.first and tail and self.first_leads:
+                self.first_tail = tail[0]   # "..., but first a, then b": b goes before them too
+        elif clause.connector == 'seq' and self.first_tail is not None and self.first_tail in self.task.chain:
+            at = self.task.chain.index(self.first_tail)
+            self._add_targets(targets, joiner, ordered)
+            self.task.chain.insert(at, self.task.chain.pop())
         elif self.insert_before is not None and self.insert_before in self.task.chain:
             at = self.task.chain.index(self.insert_before)
             self._add_targets(targets, joiner, ordered)

@@ -269,6 +269,8 @@ class PhraseParser:
 
     def __init__(self, landmarks: Sequence[str] = ()) -> None:
         self.last: Optional[NounPhrase] = None
+        self._last_key: tuple[str, ...] = ()
+        self._before_last: Optional[NounPhrase] = None
         # known landmark names, as token tuples, longest first ("a", "red room", "landmark_1")
         self.landmarks = sorted({tuple(name.replace('_', ' ').split()) for name in landmarks},
                                 key=lambda t: -len(t))
@@ -297,6 +299,14 @@ class PhraseParser:
         """
         if depth > 8:
             return None
+        if depth == 0:
+            # the same phrase read again ("then the drawer under it", tried by several readers):
+            # its pronouns mean what they meant the first time, not the phrase itself
+            key = tuple(tokens[i:i + 12])
+            if key == self._last_key:
+                self.last = self._before_last
+            else:
+                self._last_key, self._before_last = key, self.last
         start = i
         for head in LIST_HEADS:
             if tuple(tokens[i:i + len(head)]) == head and i + len(head) < len(tokens):

@@ -552,7 +552,7 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             i += 1
             continue
         prev = out[:i]
-        while prev and prev[-1] in (',', 'hmm', 'oh'):
+        while prev and prev[-1] in (',', 'hmm', 'oh', 'eh', 'uh', 'um', 'er', 'erm', 'ah'):
             prev = prev[:-1]
         j = i + m
         stop = j
@@ -699,6 +699,16 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
         if new[k:k + 2] in (['instead', 'of'], ['rather', 'than']) or new[k] == 'not' and new[k - 1] == ',':
             new = new[:k - (new[k - 1] == ',')]   # "I meant avoid X, not the fan": what it replaces
             break
+    d_new = next((k for k in range(1, min(len(new), 4)) if new[k] in DETERMINERS), -1)
+    d_old = next((k for k in range(1, min(len(old), 4)) if old[k] in DETERMINERS), -1)
+    j = next((j for j in range(d_new + 1, min(len(new), d_new + 4)) if new[j] == 'one'), -1) if d_new > 0 else -1
+    if j > 0 and d_old > 0 and new[0] == old[0] and new[1:d_new] == old[1:d_old]:
+        # "bring the remote on the couch to the stand. no, bring the one on the armchair" / "the
+        # blue one": another thing of the same kind, the rest of the step as said
+        obj = PhraseParser().parse(old, d_old)
+        one = PhraseParser().parse(new, d_new)
+        if obj is not None and one is not None and not obj.pronoun and one.end == len(new):
+            new = new[:j] + [obj.head] + new[j + 1:] + old[obj.end:]
     if any(t in ('it', 'them') for t in new):
         k = 1
         while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back', 'away', 'out'):
@@ -1151,6 +1161,16 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     new = _strip_corr(seg)
     if not new:
         return prev
+    spans = _np_spans(prev)
+    if spans and new[0] not in DETERMINERS:
+        # "only after the principal's office - sorry, only after the front office": the words
+        # before the phrase said again
+        last = spans[-1]
+        for n in (3, 2, 1):
+            if len(new) > n and last.start >= n and new[:n] == prev[last.start - n:last.start] and \
+                    new[n] in DETERMINERS:
+                new = new[n:]
+                break
     replaced = _replace_np(prev, new)
     if replaced is not None:
         notes.append(f'corrected to "{" ".join(new)}"')

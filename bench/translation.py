@@ -24,7 +24,7 @@ DATA = Path(__file__).resolve().parents[1].parent / 'shared' / 'datasets'
 SETS: dict[str, tuple[Path, dict[str, str]]] = {
     'dev': (DATA / 'spatial-temporal-dev' / 'dev.jsonl', {}),
     'drone': (DATA / 'efficient-eng-2-ltl' / 'drone-planning.jsonl', {'avoid_scope': 'goal'}),
-    'lifted': (DATA / 'lang2ltl' / 'lifted.csv', {'once_scope': 'next'}),
+    'lifted': (DATA / 'lang2ltl' / 'lifted.csv', {'once_scope': 'next', 'after_scope': 'conditional'}),
 }
 
 

@@ -531,6 +531,11 @@ FOUND_LATE = [
     ('Bring the red mug to the sink. No, bring the blue one.',
      'F (near[blue_mug] & F (pick[blue_mug] & F (near[sink] & F release[blue_mug, sink])))'),
     ('Go to the red chair. No, go to the blue one.', 'F near[blue_chair]'),
+    # "after going to X, avoid Y" (the conventions): X is a step, Y avoided from there on
+    ('After going to the coop, avoid the garden. Then go to the tractor.',
+     'F (near[coop] & G !near[garden] & F near[tractor])'),
+    ('After going to the coop, avoid the garden.', 'F (near[coop] & G !near[garden])'),
+    ('Once you have been to the garden you cannot go to the carpet.', 'G (near[garden] -> X G !near[carpet])'),
     # "it" in a phrase read again is still what it was the first time
     ('Go to the cabinet left of the sink, then the drawer under it.',
      'F (near[cabinet::isleftof(sink)] & F near[drawer::isbelow(cabinet::isleftof(sink))])'),
@@ -540,3 +545,14 @@ FOUND_LATE = [
 @pytest.mark.parametrize('instruction,gold', FOUND_LATE)
 def test_readings_found_wrong_late(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+def test_after_scope_conditional_reads_after_as_a_rule() -> None:
+    from ltl_instruct.core.language.offline import OfflineTranslator
+    from ltl_instruct.core.errors import TranslationError
+    from ltl_instruct.core.spec import parse_formula
+    t = OfflineTranslator(after_scope='conditional')
+    got = t.translate('After going to the coop, avoid the garden.').formula
+    assert equivalent(got, parse_formula('G (near[coop] -> X G !near[garden])')), got
+    with pytest.raises(TranslationError):
+        OfflineTranslator(after_scope='sometimes')

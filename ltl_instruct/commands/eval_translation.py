@@ -39,6 +39,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help='offline: avoidance convention (default: goal for drone-planning, else global)')
     parser.add_argument('--once-scope', choices=('run', 'next'), default=None,
                         help='offline: "only once" convention (default: next for lifted.csv, else run)')
+    parser.add_argument('--after-scope', choices=('goal', 'conditional'), default=None,
+                        help='offline: "after X, avoid Y" convention (default: conditional for lifted.csv, '
+                             'else goal)')
 
 
 def run(args: argparse.Namespace) -> int:
@@ -48,6 +51,8 @@ def run(args: argparse.Namespace) -> int:
         args.avoid_scope = 'goal' if 'drone-planning' in ds.name else 'global'
     if args.once_scope is None:
         args.once_scope = 'next' if 'lifted' in ds.name else 'run'
+    if args.after_scope is None:
+        args.after_scope = 'conditional' if 'lifted' in ds.name else 'goal'
     options = _options(args)
     if args.backend == 'offline' and ds.landmarks:
         options['landmarks'] = ds.landmarks   # lifted propositions are names given in advance
@@ -61,6 +66,7 @@ def run(args: argparse.Namespace) -> int:
     if args.backend == 'offline':
         summary['avoid_scope'] = args.avoid_scope
         summary['once_scope'] = args.once_scope
+        summary['after_scope'] = args.after_scope
     failures = [r.to_dict() for r in scores.results if not r.equivalent][:args.failures]
     if args.json:
         print(json.dumps({**summary, 'failures': failures}, indent=2))

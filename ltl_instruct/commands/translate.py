@@ -41,11 +41,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--once-scope', choices=('run', 'next'), default='run',
                         help='offline backend: "visit X only once, then Y" for the whole run (run) or until '
                              'Y (next, lang2ltl\'s strictly ordered visits)')
+    parser.add_argument('--after-scope', choices=('goal', 'conditional'), default='goal',
+                        help='offline backend: "after going to X, avoid Y" with X a goal (goal) or as a rule '
+                             'if X is ever reached (conditional, lang2ltl)')
 
 
 def _options(args: argparse.Namespace) -> dict[str, Any]:
     if args.backend == 'offline':
-        return {'avoid_scope': args.avoid_scope, 'once_scope': getattr(args, 'once_scope', 'run')}
+        return {'avoid_scope': args.avoid_scope, 'once_scope': getattr(args, 'once_scope', 'run'),
+                'after_scope': getattr(args, 'after_scope', None) or 'goal'}
     if args.backend == 'learned':
         return {'model_path': args.model_path}
     opts: dict[str, Any] = {'timeout_s': args.timeout}

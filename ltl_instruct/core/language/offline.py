@@ -126,12 +126,17 @@ class OfflineTranslator:
         each only once", "no revisiting") in a sequence as lang2ltl's strictly ordered visits
         do: X is not visited again before the next goal, ``!x U (x U (!x U y))``; a goal
         with none after it keeps "exactly once".
+    after_scope:
+        ``'goal'`` (default, the development set's convention): "after going to X, avoid Y"
+        makes X a goal and avoids Y from there on, ``F (near[x] & G !near[y])``; "once you
+        have been to X, ..." stays a rule. ``'conditional'`` reads both as lang2ltl does, a
+        rule that holds if X is ever reached: ``G (near[x] -> X G !near[y])``.
     """
 
     name = 'offline'
 
     def __init__(self, avoid_scope: str = 'global', landmarks: Sequence[str] = (),
-                 once_scope: str = 'run') -> None:
+                 once_scope: str = 'run', after_scope: str = 'goal') -> None:
         if avoid_scope not in ('global', 'goal'):
             raise TranslationError(f'avoid_scope must be global or goal, not {avoid_scope!r}',
                                    ErrorCode.INVALID_INPUT)
@@ -139,7 +144,11 @@ class OfflineTranslator:
             raise TranslationError(f'once_scope must be run or next, not {once_scope!r}',
                                    ErrorCode.INVALID_INPUT)
         self.avoid_scope = avoid_scope
+        if after_scope not in ('goal', 'conditional'):
+            raise TranslationError(f'after_scope must be goal or conditional, not {after_scope!r}',
+                                   ErrorCode.INVALID_INPUT)
         self.once_scope = once_scope
+        self.after_scope = after_scope
         self.landmarks = tuple(landmarks)
         _speller()   # the word list is read once, here, not inside the first translation
 
@@ -162,7 +171,7 @@ class OfflineTranslator:
         tokens = orders.apply_reverse(resolve_list_references(tokens, notes), notes)
         tokens = apply_exclusions(apply_corrections(tokens, notes), notes)
         tokens = rewrite_idioms(tokens)
-        reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope)
+        reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope)
         try:
             formula = reader.read(tokens)
         except (IndexError, KeyError, ValueError, AttributeError, RecursionError, AssertionError) as e:
@@ -324,11 +333,12 @@ class _Reader:
     """Reads the clauses of one instruction into a :class:`_Task`."""
 
     def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = (),
-                 once_scope: str = 'run') -> None:
+                 once_scope: str = 'run', after_scope: str = 'goal') -> None:
         self.once_scope = once_scope
+        self.after_scope = after_scope
         self.no_revisits = False   # "visit each place only once", "no revisiting"
         self.phrases = PhraseParser(landmarks)
-        self.rules = RuleReader(self.phrases)
+        self.rules = RuleReader(self.phrases, conditional_after=after_scope == 'conditional')
         self.task = _Task()
         self.avoid_scope = avoid_scope
         self.notes = notes
@@ -1612,7 +1622,9 @@ class _Reader:
         np = self.phrases.parse(tokens, k)
         if np is None:
             return None, i
-        return _Scope('after', self._resolve(np, place=True)), np.end
+        # "after going to X" (event 'goal'): X is a step of the task; "once you have been to X": a rule
+        return _Scope('after', self._resolve(np, place=True), 'goal' if tokens[i - 1] == 'after' else 'near'), \
+            np.end
 
     def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:
         if np.pronoun in ('there', 'here') and self.last_place is not None:
@@ -1994,7 +2006,8 @@ class _Reader:
         if kind == 'after' and scope is not None and scope.target is not None:
             step = self.task.find_step(scope.target.descriptor, scope.target.head
                                        if scope.target.descriptor.name == scope.target.head else '')
-            if step is None and not self.task.chain:
+            if step is None and not self.task.chain and (self.after_scope == 'conditional' or
+                                                          scope.event != 'goal'):
                 # no goal to hang it on: "once you have visited a, avoid b" holds whenever a happens
                 a = _near(scope.target.descriptor)
                 never = _and(*_never(targets))
@@ -2002,6 +2015,7 @@ class _Reader:
                 self.task.constraints.append(Always(Implies(a, Next(never))))
                 return
             if step is None:
+                # "after going to a, avoid b": a is a goal, b avoided from there on (F (a & G !b & ...))
                 step = Step('visit', [scope.target.descriptor])
                 self.task.chain.append(step)
             if step.kind == 'deliver':

@@ -149,8 +149,9 @@ def _match(tokens: Sequence[str], i: int, phrases: Sequence[tuple[str, ...]]) ->
 class RuleReader:
     """Reads a whole sentence as trigger-response rules, or gives ``None`` to leave it to the clauses."""
 
-    def __init__(self, phrases: PhraseParser) -> None:
+    def __init__(self, phrases: PhraseParser, conditional_after: bool = False) -> None:
         self.phrases = phrases
+        self.conditional_after = conditional_after   # "after X, avoid Y" as a rule (lang2ltl)
 
     # ------------------------------------------------------------------ entry
     def read(self, tokens: list[str], goals: Sequence[Descriptor]) -> Optional[list[Formula]]:
@@ -277,6 +278,8 @@ class RuleReader:
             return None   # a plain command: "after you visit a, go to b" is a sequence
         if not always and any(d in goals for d in event):
             return None   # "once you reach X" scopes the goal X given before: the clause reader places it
+        if not always and response.avoid and not self.conditional_after and words[start] == 'after':
+            return None   # "after going to X, avoid Y": X is a goal, Y avoided after it (the clause reader)
         t = _any(event)
         if response.avoid:
             never = _conj([Always(Not(_near(d))) for d in response.places])

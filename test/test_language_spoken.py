@@ -536,6 +536,15 @@ FOUND_LATE = [
      'F (near[coop] & G !near[garden] & F near[tractor])'),
     ('After going to the coop, avoid the garden.', 'F (near[coop] & G !near[garden])'),
     ('Once you have been to the garden you cannot go to the carpet.', 'G (near[garden] -> X G !near[carpet])'),
+    # scopes: the way back, a leg named by a goal said again shorter, after dropping off
+    ("Go to the mailbox and then come back to the porch, and while you're returning, avoid the flower bed.",
+     'F (near[mailbox] & (!near[flower_bed] U near[porch]))'),
+    ('Go to the bench next to the fountain, then the gazebo, and on your way from the bench to the gazebo '
+     'stay off the lawn.', 'F (near[bench::isnextto(fountain)] & (!near[lawn] U near[gazebo]))'),
+    ("Take the cooler to the table and then go to the car. Once you've dropped off the cooler, stay away "
+     'from the lake.',
+     'F (near[cooler] & F (pick[cooler] & F (near[table] & F (release[cooler, table] & G !near[lake] & '
+     'F near[car]))))'),
     # "it" in a phrase read again is still what it was the first time
     ('Go to the cabinet left of the sink, then the drawer under it.',
      'F (near[cabinet::isleftof(sink)] & F near[drawer::isbelow(cabinet::isleftof(sink))])'),

@@ -1486,7 +1486,12 @@ class _Reader:
     def _named_before(self, np: NounPhrase) -> NounPhrase:
         """Return the goal named before for one said again by its last word ("the tool shed ... the shed")."""
         d = np.descriptor
-        if d.relations or '_' in d.name or self.phrases.landmarks or self.task.find_step(d) is not None:
+        if d.relations or self.phrases.landmarks or self.task.find_step(d) is not None:
+            return np
+        described = {g for g in self._goals_named() if g.relations and g.name == d.name}
+        if len(described) == 1:   # "the bench next to the fountain ... from the bench": that bench
+            return NounPhrase(described.pop(), np.start, np.end, np.head, np.pronoun)
+        if '_' in d.name:
             return np
         full = {g for g in self._goals_named() if not g.relations and g.name.endswith('_' + d.name)}
         if len(full) != 1:
@@ -1569,6 +1574,11 @@ class _Reader:
             if np is not None:
                 # "while returning to the hall": on the way to it (again, if it was a goal before)
                 return _Scope('onway', self._resolve(np, place=True), 'back' if back else 'while'), np.end
+        if w in ('returning', 'coming') and tokens[j + 1:j + 2] != ['to'] and tokens[i - 1] in ('while', 'when') \
+                and self.last_place is not None and not self.task.last_step(('deliver',)):
+            # "..., then come back to the porch, and while you're returning, avoid X": the way back
+            end = j + 1 + (tokens[j + 1:j + 2] in (['back'], ['home']))
+            return _Scope('onway', self.last_place, 'back'), end
         if w in ('carrying', 'holding', 'transporting', 'bringing', 'taking', 'moving', 'returning'):
             k = j + 1
             np = self.phrases.parse(tokens, k)
@@ -1592,6 +1602,8 @@ class _Reader:
                  'putting',
                  'setting', 'leaving', 'unloading'):
             k = j + 1
+            while k < len(tokens) and tokens[k] in ('off', 'down'):
+                k += 1   # "once you've dropped off the cooler"
             np = self.phrases.parse(tokens, k)
             end = np.end if np is not None else k
             while end < len(tokens) and tokens[end] in ('off', 'down'):

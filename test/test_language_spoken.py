@@ -545,6 +545,14 @@ FOUND_LATE = [
      'from the lake.',
      'F (near[cooler] & F (pick[cooler] & F (near[table] & F (release[cooler, table] & G !near[lake] & '
      'F near[car]))))'),
+    # corrections and list positions found on set F
+    ('Go to the printer three times - scratch that, twice is plenty - and then go to my office.',
+     'F (near[printer] & F (!near[printer] & F (near[printer] & F near[office])))'),
+    ('Go to the pharmacy then the shop, and avoid the ward. Actually, ignore the last thing - avoid the '
+     'cafe instead.', 'F (near[pharmacy] & F near[shop]) & G !near[cafe]'),
+    ('Entrance, lobby, atrium, courtyard - go to the second to last one.', 'F near[atrium]'),
+    ("Fly over the north field, then land on the strip. Don't go near the strip until you've done the "
+     'north field.', 'F (near[north_field] & F near[strip]) & (!near[strip] U near[north_field])'),
     # "it" in a phrase read again is still what it was the first time
     ('Go to the cabinet left of the sink, then the drawer under it.',
      'F (near[cabinet::isleftof(sink)] & F near[drawer::isbelow(cabinet::isleftof(sink))])'),

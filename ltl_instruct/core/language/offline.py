@@ -1870,7 +1870,7 @@ class _Reader:
             skippable = NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {'picked', 'grabbed', 'up'}
             holding = bool({'have', 'has'} & set(rest[1:j])) and not {'been', 'reached'} & set(
                 rest[1:j + 1]) or rest[j:j + 1] in (['holding'], ['hold'])
-            skippable |= {'holding', 'hold'}
+            skippable |= {'holding', 'hold', 'done', 'finished', 'completed'}
             while j < len(rest) and rest[j] not in ('there', 'here') and (rest[j] in skippable or (
                     # a participle before a place: "until you have circled the island", "signed in at"
                     rest[j].endswith('ed') and rest[j] not in STOPWORDS and j + 1 < len(rest) and (

@@ -204,6 +204,11 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 # "the second", "the latter twice": no noun follows the position word
                 ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
                     not is_name_word(tail, i + 2, False)
+                if nxt == 'second' and tail[i + 2:i + 4] == ['to', 'last'] and n >= 2:
+                    # "the second to last (one)"
+                    out += joined([n - 2])
+                    i += 4 + (1 if tail[i + 4:i + 5] in (['one'], ['item'], ['thing']) else 0)
+                    continue
                 if nxt in ORDINALS and ends and not (nxt == 'first' and w in NUMBER_WORDS and w != 'one'):
                     idx = ORDINALS[nxt] - 1
                     if idx >= n:
@@ -1001,7 +1006,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         count_fix = _count_correction(prev, seg)
         if count_fix is not None:
             notes.append('the count was corrected')
-            return count_fix
+            # "visit it three times - scratch that, twice is plenty - and then go to my office"
+            cut = next((k for k in range(1, len(seg) - 1) if seg[k] == ',' and seg[k + 1] in ('then', 'and')), -1)
+            return count_fix + (seg[cut:] if cut > 0 else [])
         if tgt in ('', 'the last thing', 'the last one', 'the last part', 'that last part', 'that', 'it',
                    'the last bit', 'that last one', 'last thing', 'last part', 'that part', 'that last bit',
                    'last bit', 'the last step', 'that last step', 'the last instruction'):
@@ -1020,6 +1027,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 if prev[start] in _VERBS and start + 1 < obj_end and prev[start + 1] in DETERMINERS:
                     notes.append('the last step was replaced')
                     return prev[:start] + new[:1] + prev[start + 1:obj_end] + new[2:]
+            if len(new) > 1 and new[0] in _VERBS and new[1] not in ('it', 'them') and last.start > 0 and prev[last.start - 1] == new[0]:
+                new = new[1:]   # "..., and avoid the hall. ignore the last thing, avoid the den instead"
             if new:
                 notes.append('the last goal was replaced')
                 return prev[:last.start] + new + prev[last.end:]

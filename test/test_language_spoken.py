@@ -553,6 +553,22 @@ FOUND_LATE = [
     ('Entrance, lobby, atrium, courtyard - go to the second to last one.', 'F near[atrium]'),
     ("Fly over the north field, then land on the strip. Don't go near the strip until you've done the "
      'north field.', 'F (near[north_field] & F near[strip]) & (!near[strip] U near[north_field])'),
+    # more reasons and remarks, an address, "before anything else" (set G)
+    ('Head down to the pier - and on the way there, stay away from the fish market, the gulls go nuts.',
+     '!near[fish_market] U near[pier]'),
+    ('Go to the paddock, and after going there, avoid the stables, the horses spook easy.',
+     'F (near[paddock] & G !near[stables])'),
+    ('Visit the bike rack before the gate, the bikes need counting.',
+     'F near[gate] & (!near[gate] U near[bike_rack])'),
+    ("Bring the tea to the table, I'm not fussy.",
+     'F (near[tea] & F (pick[tea] & F (near[table] & F release[tea, table])))'),
+    ('Could you go to the tractor or the quad bike? One of them, not fussed.',
+     'F near[tractor] | F near[quad_bike]'),
+    ('Go to the den, the robot should avoid the hall.', 'F near[den] & G !near[hall]'),
+    ('Before anything else go to the nurse station; after that the linen closet.',
+     'F (near[nurse_station] & F near[linen_closet])'),
+    ('Hotel robot: room service cart first, then the ice machine.',
+     'F (near[room_service_cart] & F near[ice_machine])'),
     # "it" in a phrase read again is still what it was the first time
     ('Go to the cabinet left of the sink, then the drawer under it.',
      'F (near[cabinet::isleftof(sink)] & F near[drawer::isbelow(cabinet::isleftof(sink))])'),

@@ -65,7 +65,7 @@ PERMISSIVE = frozenset({'okay', 'ok', 'fine', 'alright', 'allowed', 'important',
                         'mandatory'})
 
 INTERJECTIONS = frozenset('''
-hi hello hey hiya howdy thanks thank cheers great cool awesome perfect ok okay alright right sure
+hi hello hey hiya howdy thanks thank cheers great cool awesome perfect ok okay alright right sure mmm mm
 please good morning afternoon evening ah oh ahh hmm um uh er erm yo dear buddy pal friend there lot
 much appreciated wonderful brilliant
 '''.split())
@@ -479,7 +479,8 @@ def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) ->
 # "both are fine by me", "whichever is less busy"): a clause of their own that asks for nothing.
 _REMARK_RE = re.compile(
     r'^(?:(?:and|but|so|honestly|really|i mean) )*(?:'
-    r'(?:it is )?(?:your (?:choice|call|pick|decision)|up to you|dealer s choice)'
+    r'(?:it is )?(?:your (?:choice|call|pick|decision)|up to you|dealer s choice|dealer choice)'
+    r'|(?:(?:i am |i m |i )?not (?:fussed|fussy|bothered|picky)|(?:i have )?no preference)'
     r'|(?:it )?(?:does not|do not|will not|would not) matter(?: (?:which|which one|to me|either way))?'
     r'|(?:i )?(?:honestly |really )?(?:do not|will not) (?:mind|care)(?: which| either way)?'
     r'(?: (?:one|option|way|route))?(?: you (?:go for|pick|choose|take|use|do))?'

@@ -225,6 +225,9 @@ RULES: tuple[Rule, ...] = (
          r'\b(?:i|we) (?:need|want|would like) (?P<x>(?:the|a|an|my|your|our|this|that) ' + _NP + r') '
          r'(?P<v>brought|taken|carried|moved|put|delivered) (?P<p>to|into|in|on|onto|over to|back to) ',
          lambda m: f'{_ACTIVE[m.group("v")]} {m.group("x")} {m.group("p")} '),
+    Rule('before anything else, go to X: first', r'(?:^|(?<=, ))before (?:anything|everything) else (?:, )?',
+         'first '),
+    Rule('hotel robot: the cart first: an address', r'^(?:[a-z]+ )?(?:robot|bot|drone|rover) : ', ''),
     Rule('give the rug a wide berth', rf'\bgive (?P<x>{_NP}) a (?:wide|good|big|very wide) berth\b',
          r'keep away from \g<x>'),
     Rule('do not cut across the lawn', r'\b(?:cut|shortcut|short cut) (?:across|through|over)\b',

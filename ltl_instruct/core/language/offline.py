@@ -191,7 +191,11 @@ class OfflineTranslator:
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
-                           'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills'})
+                           'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills', 'go', 'goes',
+                           'need', 'needs', 'spook', 'spooks', 'scare', 'scares', 'panic', 'panics', 'freak',
+                           'freaks', 'run', 'runs', 'chew', 'chews', 'knock', 'knocks', 'jump', 'jumps'})
+_PLACE_PREPS = frozenset({'on', 'in', 'under', 'behind', 'next', 'by', 'near', 'beside', 'between', 'above',
+                          'below', 'inside', 'over', 'at', 'to'})
 NEGATIVE_VERBS = frozenset({'ignore', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade', 'miss', 'exit',
                             'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee', 'circumvent', 'spare',
                             'leave', 'drop', 'scratch', 'lose', 'pass', 'release', 'free', 'not'})
@@ -382,9 +386,18 @@ class _Reader:
         if cut <= 0:
             return sentence
         tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
-        if len(tail) < 2 or 'you' in tail or tail in (['you', 'know', 'why'],) or \
-                any(t in chatter.REQUEST_WORDS for t in tail[1:3]) or tail[1] in ('not', 'never'):
-            return sentence if tail != ['you', 'know', 'why'] else self._noted_cut(sentence, cut)
+        if tail == ['you', 'know', 'why']:
+            return self._noted_cut(sentence, cut)
+        if len(tail) >= 3 and tail[0] in ('it', 'they', 'he', 'she') and tail[1] in (
+                'will', 'would', 'might', 'could', 'can', 'may') and tail[2] not in ('be', 'you'):
+            return self._noted_cut(sentence, cut)   # "..., it'll fry your wheels"
+        if len(tail) >= 3 and tail[0] in ('i', 'we') and tail[1] in ('am', 'are', 'm', 're') and \
+                tail[2] not in ('going', 'asking', 'telling', 'sending', 'to'):
+            return self._noted_cut(sentence, cut)   # "..., I'm not fussy", "we are in a hurry"
+        if len(tail) < 2 or 'you' in tail or tail[1] in ('not', 'never'):
+            return sentence
+        if any(t in chatter.REQUEST_WORDS - ({'need'} if tail[0] == 'the' else set()) for t in tail[1:3]):
+            return sentence   # "..., we want the hall avoided"; but "the bikes need counting" says why
         first = tail[0]
         if first in ('i', 'we', 'somebody', 'someone', 'everyone', 'nobody', 'my', 'our', 'his', 'her',
                      'their'):
@@ -397,7 +410,9 @@ class _Reader:
                 return sentence   # "they are in the kitchen", "it is the red one", "it is up to you"
             return self._noted_cut(sentence, cut)
         if first == 'the' and not {'one', 'ones', 'that', 'which'} & set(tail) and any(
-                t in _REASON_VERBS and t not in ('is', 'are', 'was', 'were') for t in tail[2:]):
+                t in _REASON_VERBS and (t not in ('is', 'are', 'was', 'were') or k + 1 < len(tail) and
+                                        tail[k + 1] not in DETS and tail[k + 1] not in _PLACE_PREPS)
+                for k, t in enumerate(tail) if k >= 2):
             return self._noted_cut(sentence, cut)   # "..., the neighbours complain"
         return sentence
 

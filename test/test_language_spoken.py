@@ -506,7 +506,8 @@ FOUND_LATE = [
     ('Go to the den, I need you to avoid the hall.', 'F near[den] & G !near[hall]'),
     # fillers and verbs said another way
     ('Could you maybe head over to the piano?', 'F near[piano]'),
-    ('Visit the mailbox like at least 2 times today.', 'F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))'),
+    ('Visit the mailbox like at least 2 times today.',
+     'F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))'),
     ('Go to the desk, and when you get there carry on to the lobby.', 'F (near[desk] & F near[lobby])'),
     ('Bring the mail in to the kitchen table.',
      'F (near[mail] & F (pick[mail] & F (near[kitchen_table] & F release[mail, kitchen_table])))'),
@@ -517,7 +518,8 @@ FOUND_LATE = [
     # "but first a, then b": both before the goal said
     ('I want you at the dock door, but first stop at the office and then the pallet jack.',
      'F (near[office] & F (near[pallet_jack] & F near[dock_door]))'),
-    ('Go to the gate, but first go to the shed, then the barn.', 'F (near[shed] & F (near[barn] & F near[gate]))'),
+    ('Go to the gate, but first go to the shed, then the barn.',
+     'F (near[shed] & F (near[barn] & F near[gate]))'),
     ('Go to the gate, but first go to the shed. Then go to the barn.',
      'F (near[shed] & F (near[gate] & F near[barn]))'),
     # a statement about the scene is not a place to go
@@ -535,7 +537,8 @@ FOUND_LATE = [
     ('After going to the coop, avoid the garden. Then go to the tractor.',
      'F (near[coop] & G !near[garden] & F near[tractor])'),
     ('After going to the coop, avoid the garden.', 'F (near[coop] & G !near[garden])'),
-    ('Once you have been to the garden you cannot go to the carpet.', 'G (near[garden] -> X G !near[carpet])'),
+    ('Once you have been to the garden you cannot go to the carpet.',
+     'G (near[garden] -> X G !near[carpet])'),
     # scopes: the way back, a leg named by a goal said again shorter, after dropping off
     ("Go to the mailbox and then come back to the porch, and while you're returning, avoid the flower bed.",
      'F (near[mailbox] & (!near[flower_bed] U near[porch]))'),

@@ -379,8 +379,13 @@ def statement_verb(tokens: Sequence[str], np_end: int) -> int:
     return next((k for k in range(2, np_end + 1) if k < len(tokens) and (tokens[k] in FINITE_VERBS or (
         # "the kids left their shoes": a verb, not the side of something ("left of", "the left door")
         tokens[k] == 'left' and tokens[k + 1:k + 2] != ['of'] and tokens[k + 1:k + 2] != [] and
-        (tokens[k + 1] in DETERMINERS or tokens[k + 1] in ('stuff', 'things', 'everything', 'toys', 'it',
-                                                             'them', 'some', 'all', 'trash', 'garbage')))) and tokens[k - 1] not in ('that', 'which', 'who', 'is', 'are')), -1)
+        (tokens[k + 1] in DETERMINERS or tokens[k + 1] in _LEFT_OBJECTS))) and
+        tokens[k - 1] not in ('that', 'which', 'who', 'is', 'are')), -1)
+
+
+# Words after "left" that make it a verb ("the kids left stuff everywhere").
+_LEFT_OBJECTS = frozenset({'stuff', 'things', 'everything', 'toys', 'it', 'them', 'some', 'all', 'trash',
+                           'garbage'})
 
 
 def is_filler(tokens: Sequence[str], known_verbs: frozenset[str]) -> bool:

@@ -103,7 +103,7 @@ class _Clause:
 class _Scope:
     kind: str = 'global'   # global, until, onway, after, carry, after_pick, after_release
     target: Optional[NounPhrase] = None
-    event: str = 'near'    # for until: near / pick / release
+    event: str = 'near'    # for until: near / pick / release; for after: goal ("after going to X") / near
     then: tuple[NounPhrase, ...] = ()   # for until near: places reached after the target, in order
 
 
@@ -187,15 +187,15 @@ class OfflineTranslator:
         return Translation(instruction, formula, self.name, tuple(notes), extra)
 
 
-# Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
                            'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills', 'go', 'goes',
                            'need', 'needs', 'spook', 'spooks', 'scare', 'scares', 'panic', 'panics', 'freak',
                            'freaks', 'run', 'runs', 'chew', 'chews', 'knock', 'knocks', 'jump', 'jumps'})
-_PLACE_PREPS = frozenset({'on', 'in', 'under', 'behind', 'next', 'by', 'near', 'beside', 'between', 'above',
-                          'below', 'inside', 'over', 'at', 'to'})
+# Words after "is/are" that say where something is ("they are next to the door"), not why.
+_PLACE_PREPS = chatter.PREPOSITIONS | {'next', 'above', 'below'}
+# Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
 NEGATIVE_VERBS = frozenset({'ignore', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade', 'miss', 'exit',
                             'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee', 'circumvent', 'spare',
                             'leave', 'drop', 'scratch', 'lose', 'pass', 'release', 'free', 'not'})
@@ -404,9 +404,8 @@ class _Reader:
             return self._noted_cut(sentence, cut)
         if first in ('he', 'she', 'they', 'it') and tail[1] in ('is', 'are', 'was', 'were', 'has', 'have',
                                                                 'keeps', 'gets', 'bites', 'barks'):
-            if tail[2:3] and tail[2] in DETS | {'on', 'in', 'under', 'behind', 'next', 'by', 'near', 'beside',
-                                                 'between', 'above', 'below', 'inside', 'over', 'fine', 'ok',
-                                                 'okay', 'up', 'your', 'important', 'better'}:
+            if tail[2:3] and tail[2] in DETS | _PLACE_PREPS | {'fine', 'ok', 'okay', 'your', 'important',
+                                                               'better'}:
                 return sentence   # "they are in the kitchen", "it is the red one", "it is up to you"
             return self._noted_cut(sentence, cut)
         if first == 'the' and not {'one', 'ones', 'that', 'which'} & set(tail) and any(
@@ -714,14 +713,10 @@ class _Reader:
     def _is_avoidance_clause(self, tokens: list[str]) -> bool:
         """Whether a clause only says what to keep away from ("and either way avoid the hall")."""
         words = [t for t in self._strip_fillers(tokens) if t not in PUNCT]
-        for lead in (['either', 'way'], ['in', 'any', 'case'], ['regardless'], ['no', 'matter', 'which'],
-                     ['whichever', 'you', 'choose'], ['in', 'both', 'cases'], ['in', 'either', 'case']):
-            if words[:len(lead)] == lead:
-                words = [t for t in self._strip_fillers(words[len(lead):]) if t not in PUNCT]
-        return any(words[:len(lead)] == lead for lead in (
-            ['avoid'], ['never'], ['keep', 'away'], ['stay', 'away'], ['keep', 'clear'], ['stay', 'clear'],
-            ['steer', 'clear'], ['keep', 'out'], ['stay', 'out'], ['do', 'not', 'go'], ['do', 'not', 'pass'],
-            ['do', 'not', 'enter'], ['do', 'not', 'fly'], ['do', 'not', 'come'], ['do', 'not', 'get']))
+        marker = next((m for m in GLOBAL_MARKERS if tuple(words[:len(m)]) == m), ())
+        if marker:
+            words = [t for t in self._strip_fillers(words[len(marker):]) if t not in PUNCT]
+        return bool(words) and self._avoid_start(words) is not None
 
     def _read_optional(self, tokens: list[str], nxt: list[str]) -> bool:
         """Read 'you can also stop by X, but no more than once': X is optional, its visits bounded."""
@@ -1589,8 +1584,9 @@ class _Reader:
             if np is not None:
                 # "while returning to the hall": on the way to it (again, if it was a goal before)
                 return _Scope('onway', self._resolve(np, place=True), 'back' if back else 'while'), np.end
-        if w in ('returning', 'coming') and tokens[j + 1:j + 2] != ['to'] and tokens[i - 1] in ('while', 'when') \
-                and self.last_place is not None and not self.task.last_step(('deliver',)):
+        if w in ('returning', 'coming') and tokens[j + 1:j + 2] != ['to'] and \
+                tokens[i - 1] in ('while', 'when') and self.last_place is not None and \
+                not self.task.last_step(('deliver',)):
             # "..., then come back to the porch, and while you're returning, avoid X": the way back
             end = j + 1 + (tokens[j + 1:j + 2] in (['back'], ['home']))
             return _Scope('onway', self.last_place, 'back'), end
@@ -1650,8 +1646,8 @@ class _Reader:
         if np is None:
             return None, i
         # "after going to X" (event 'goal'): X is a step of the task; "once you have been to X": a rule
-        return _Scope('after', self._resolve(np, place=True), 'goal' if tokens[i - 1] == 'after' else 'near'), \
-            np.end
+        event = 'goal' if tokens[i - 1] == 'after' else 'near'
+        return _Scope('after', self._resolve(np, place=True), event), np.end
 
     def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:
         if np.pronoun in ('there', 'here') and self.last_place is not None:
@@ -2033,8 +2029,8 @@ class _Reader:
         if kind == 'after' and scope is not None and scope.target is not None:
             step = self.task.find_step(scope.target.descriptor, scope.target.head
                                        if scope.target.descriptor.name == scope.target.head else '')
-            if step is None and not self.task.chain and (self.after_scope == 'conditional' or
-                                                          scope.event != 'goal'):
+            rule = self.after_scope == 'conditional' or scope.event != 'goal'
+            if step is None and not self.task.chain and rule:
                 # no goal to hang it on: "once you have visited a, avoid b" holds whenever a happens
                 a = _near(scope.target.descriptor)
                 never = _and(*_never(targets))
@@ -2961,15 +2957,12 @@ class _Reader:
             self._add_targets(targets, joiner, ordered)
             if clause.first and tail and self.first_leads:
                 self.first_tail = tail[0]   # "..., but first a, then b": b goes before them too
-        elif clause.connector == 'seq' and self.first_tail is not None and self.first_tail in self.task.chain:
-            at = self.task.chain.index(self.first_tail)
+        elif (anchor := self._insert_anchor(clause)) is not None:
+            at = self.task.chain.index(anchor)
             self._add_targets(targets, joiner, ordered)
             self.task.chain.insert(at, self.task.chain.pop())
-        elif self.insert_before is not None and self.insert_before in self.task.chain:
-            at = self.task.chain.index(self.insert_before)
-            self._add_targets(targets, joiner, ordered)
-            self.task.chain.insert(at, self.task.chain.pop())
-            self.insert_before = None
+            if anchor is self.insert_before:
+                self.insert_before = None
         else:
             before = self.task.last_step(('visit', 'deliver'))
             self._add_targets(targets, joiner, ordered)
@@ -3000,6 +2993,15 @@ class _Reader:
                                                    _near(targets[0])))
             self.task.chain = [st for st in self.task.chain if st is not new_step]
             self.conditional = None
+
+    def _insert_anchor(self, clause: _Clause) -> Optional[Step]:
+        """Return the step a new goal goes before ("but first a, then b": a's tail), if any."""
+        chain = self.task.chain
+        if clause.connector == 'seq' and self.first_tail is not None and self.first_tail in chain:
+            return self.first_tail
+        if self.insert_before is not None and self.insert_before in chain:
+            return self.insert_before
+        return None
 
     def _unknown_verb(self, tokens: list[str], k: int) -> Optional[int]:
         """Where the place starts after a verb the rules do not know ("hit the mail cart"), else None.

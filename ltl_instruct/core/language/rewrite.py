@@ -545,6 +545,11 @@ def apply_exclusions(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+def _clause_cut(seg: list[str], joiners: tuple[str, ...]) -> int:
+    """Where a comma and one of ``joiners`` start the next clause of a correction (-1: nowhere)."""
+    return next((k for k in range(1, len(seg) - 1) if seg[k] == ',' and seg[k + 1] in joiners), -1)
+
+
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
     i = 0
@@ -567,8 +572,7 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         after = out[stop:]
         marker = out[i]
         result = _correct(prev, marker, seg, notes)
-        cut = next((k for k in range(1, len(seg) - 1)
-                    if seg[k] == ',' and seg[k + 1] in ('then', 'and', 'but')), -1)
+        cut = _clause_cut(seg, ('then', 'and', 'but'))
         if result is None and cut > 0:
             # "then the scanner, no, the fax machine, then my desk": the correction ends at the clause
             result = _correct(prev, marker, seg[:cut], notes)
@@ -706,7 +710,8 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
             break
     d_new = next((k for k in range(1, min(len(new), 4)) if new[k] in DETERMINERS), -1)
     d_old = next((k for k in range(1, min(len(old), 4)) if old[k] in DETERMINERS), -1)
-    j = next((j for j in range(d_new + 1, min(len(new), d_new + 4)) if new[j] == 'one'), -1) if d_new > 0 else -1
+    j = next((j for j in range(d_new + 1, min(len(new), d_new + 4)) if new[j] == 'one'), -1) \
+        if d_new > 0 else -1
     if j > 0 and d_old > 0 and new[0] == old[0] and new[1:d_new] == old[1:d_old]:
         # "bring the remote on the couch to the stand. no, bring the one on the armchair" / "the
         # blue one": another thing of the same kind, the rest of the step as said
@@ -790,8 +795,8 @@ def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[st
             np = PhraseParser().parse(said, 0)
             if np is None or np.end != len(said) - 1:
                 return None
-            said = [] if len(spans) >= 2 and np.head in (spans[-1].head if said[-1] == 'first'
-                                                          else spans[-2].head,) else said
+            moved = None if len(spans) < 2 else spans[-1] if said[-1] == 'first' else spans[-2]
+            said = [] if moved is not None and np.head == moved.head else said
         if len(spans) < 2 or [t for t in said if t not in ('around', 'round', 'please', 'instead')]:
             return None
         a, b = spans[-2:]
@@ -1007,7 +1012,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if count_fix is not None:
             notes.append('the count was corrected')
             # "visit it three times - scratch that, twice is plenty - and then go to my office"
-            cut = next((k for k in range(1, len(seg) - 1) if seg[k] == ',' and seg[k + 1] in ('then', 'and')), -1)
+            cut = _clause_cut(seg, ('then', 'and'))
             return count_fix + (seg[cut:] if cut > 0 else [])
         if tgt in ('', 'the last thing', 'the last one', 'the last part', 'that last part', 'that', 'it',
                    'the last bit', 'that last one', 'last thing', 'last part', 'that part', 'that last bit',
@@ -1027,7 +1032,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 if prev[start] in _VERBS and start + 1 < obj_end and prev[start + 1] in DETERMINERS:
                     notes.append('the last step was replaced')
                     return prev[:start] + new[:1] + prev[start + 1:obj_end] + new[2:]
-            if len(new) > 1 and new[0] in _VERBS and new[1] not in ('it', 'them') and last.start > 0 and prev[last.start - 1] == new[0]:
+            if len(new) > 1 and new[0] in _VERBS and new[1] not in ('it', 'them') and last.start > 0 and \
+                    prev[last.start - 1] == new[0]:
                 new = new[1:]   # "..., and avoid the hall. ignore the last thing, avoid the den instead"
             if new:
                 notes.append('the last goal was replaced')

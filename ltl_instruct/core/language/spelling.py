@@ -139,7 +139,11 @@ class Speller:
         for pre in _PREFIXES:
             if word.startswith(pre) and len(word) - len(pre) >= 3 and word[len(pre):] in w:
                 return True
-        # two words run together ("loveseat", "nightlight"): both halves of four letters or more
+        return self._run_together(word)
+
+    def _run_together(self, word: str) -> bool:
+        """Two listed words run together ("loveseat", "nightlight"): both halves of four letters or more."""
+        w = self.words
         return any(word[:k] in w and word[k:] in w for k in range(4, len(word) - 3))
 
     def correct(self, word: str) -> Optional[str]:
@@ -182,9 +186,7 @@ class Speller:
             if out is None and len(word) >= 8:
                 # two neighbouring letters swapped in a compound ("wrokbench": work + bench), when
                 # exactly one swap gives two listed words run together
-                w = self.words
-                fits = {c for c, kind in _slips(word) if kind == 'swap' and any(
-                    c[:k] in w and c[k:] in w for k in range(4, len(c) - 3))}
+                fits = {c for c, kind in _slips(word) if kind == 'swap' and self._run_together(c)}
                 out = fits.pop() if len(fits) == 1 else None
         self._cache[word] = out
         return out

@@ -14,7 +14,7 @@ from ltl_instruct.core.language.learned.evaluation import evaluate
 from ltl_instruct.core.language.learned.model import GoalBaseline, ParserConfig, WordVocabulary
 from ltl_instruct.core.language.learned.programs import OutputVocabulary
 from ltl_instruct.core.language.learned.training import (
-    ParserTrainer, RewardCache, TrainingConfig, epoch_message, new_parser, train_baseline,
+    ParserTrainer, RewardCache, TrainingConfig, epoch_message, new_parser, parser_name_match, train_baseline,
 )
 
 
@@ -51,11 +51,12 @@ def train_city(data_dir: str, city: str, config: TrainingConfig = TrainingConfig
     words = WordVocabulary.build([d.instruction for d in train] + list(lmap.names))
     out_vocab = OutputVocabulary(lmap.props)
     rewards = RewardCache(out_vocab, lmap)
+    match = parser_name_match(words, out_vocab, lmap.names) if parser_config.lexical_copy else None
     alive = []
     for r in range(restarts if probe_epochs > 0 else 1):
         run_config = dataclasses.replace(config, seed=config.seed + r)
-        alive.append(ParserTrainer(new_parser(words, out_vocab, parser_config, run_config.seed, lmap.names),
-                                   words, train, lmap, run_config, rewards))
+        parser = new_parser(words, out_vocab, parser_config, run_config.seed, name_match=match)
+        alive.append(ParserTrainer(parser, words, train, lmap, run_config, rewards))
 
     def train_to(trainer: ParserTrainer, epochs: int, deadline: float) -> None:
         while trainer.log.epochs_run < min(epochs, config.epochs) and time.monotonic() - started <= deadline:

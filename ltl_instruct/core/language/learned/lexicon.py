@@ -59,7 +59,8 @@ def word_name_score(word: str, name_keys: Sequence[str]) -> float:
         return 1.0
     if len(key) >= NEAR_MISS_MIN_LETTERS:
         for n in name_keys:
-            if len(n) >= NEAR_MISS_MIN_LETTERS and difflib.SequenceMatcher(None, key, n).ratio() >= NEAR_MISS_RATIO:
+            if len(n) >= NEAR_MISS_MIN_LETTERS and \
+                    difflib.SequenceMatcher(None, key, n).ratio() >= NEAR_MISS_RATIO:
                 return NEAR_MISS_WEIGHT
     return 0.0
 
@@ -69,8 +70,8 @@ def name_match_matrix(vocabulary: Sequence[str], names: Sequence[str], tokenize)
     keys = [name_words(n, tokenize) for n in names]
     m = np.zeros((len(vocabulary), len(names)), dtype=np.float32)
     for w, word in enumerate(vocabulary):
-        for l, k in enumerate(keys):
+        for landmark, k in enumerate(keys):
             if k:
-                m[w, l] = word_name_score(word, k) / len(k)
+                m[w, landmark] = word_name_score(word, k) / len(k)
     df = (m > 0).sum(axis=1, keepdims=True)
     return (m / np.maximum(df, 1)).astype(np.float32)

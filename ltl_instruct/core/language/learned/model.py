@@ -45,7 +45,7 @@ import numpy as np
 import torch
 from torch import nn
 
-from ltl_instruct.core.language.learned.lexicon import ascii_fold, name_match_matrix
+from ltl_instruct.core.language.learned.lexicon import ascii_fold
 from ltl_instruct.core.language.learned.programs import OutputVocabulary, allowed_mask, stack_effect
 
 PAD, UNK = '<pad>', '<unk>'
@@ -124,8 +124,11 @@ class SemanticParser(nn.Module):
 
     def __init__(self, num_words: int, out_vocab: OutputVocabulary, config: ParserConfig,
                  name_match: Optional[np.ndarray] = None) -> None:
-        """Build the network; ``name_match`` (num_words, landmarks) is the lexicon matrix (zeros if None;
-        a loaded model gets it from its state dict)."""
+        """Build the network.
+
+        ``name_match`` (num_words, landmarks) is the lexicon matrix (zeros if None; a
+        loaded model gets it from its state dict).
+        """
         super().__init__()
         self.config = config
         self.out_vocab = out_vocab
@@ -150,7 +153,8 @@ class SemanticParser(nn.Module):
             match = torch.zeros(num_words, n_props) if name_match is None else torch.as_tensor(
                 np.asarray(name_match, dtype=np.float32))
             if tuple(match.shape) != (num_words, n_props):
-                raise ValueError(f'name_match must have shape {(num_words, n_props)}, got {tuple(match.shape)}')
+                raise ValueError(f'name_match must have shape {(num_words, n_props)}, '
+                                 f'got {tuple(match.shape)}')
             self.register_buffer('name_match', match)
             # start with a clear preference for the landmarks the instruction names
             self.copy_weight = nn.Parameter(torch.tensor(2.0))

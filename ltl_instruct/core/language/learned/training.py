@@ -256,16 +256,23 @@ def train_baseline(baseline: GoalBaseline, words: WordVocabulary, demos: Sequenc
 
 def new_parser(words: WordVocabulary, out_vocab: OutputVocabulary,
                config: ParserConfig = ParserConfig(), seed: int = 0,
-               names: Optional[Sequence[str]] = None) -> SemanticParser:
+               names: Optional[Sequence[str]] = None, name_match: Optional[np.ndarray] = None
+               ) -> SemanticParser:
     """Build a freshly initialised parser (seeded).
 
-    ``names`` are the landmarks' names as written in the map, for the copy scores
-    (default: the propositions with spaces for underscores).
+    For the copy scores: ``name_match`` if given (see :func:`parser_name_match`; several
+    seeds of one map share it), else the matrix of ``names``, the landmarks' names as
+    written in the map (default: the propositions with spaces for underscores).
     """
     torch.manual_seed(seed)
-    match = None
-    if config.lexical_copy:
-        if names is None:
-            names = [p.replace('_', ' ') for p in out_vocab.props]
-        match = name_match_matrix(words.words, names, tokenize)
-    return SemanticParser(words.size, out_vocab, config, match)
+    if config.lexical_copy and name_match is None:
+        name_match = parser_name_match(words, out_vocab, names)
+    return SemanticParser(words.size, out_vocab, config, name_match if config.lexical_copy else None)
+
+
+def parser_name_match(words: WordVocabulary, out_vocab: OutputVocabulary,
+                      names: Optional[Sequence[str]] = None) -> np.ndarray:
+    """Return the copy scores' name-match matrix (``lexicon.name_match_matrix``) for a vocabulary and map."""
+    if names is None:
+        names = [p.replace('_', ' ') for p in out_vocab.props]
+    return name_match_matrix(words.words, names, tokenize)

@@ -49,24 +49,27 @@ def test_a_planner_that_starts_late_still_plans_the_waiting_instruction(ros_env)
     planner = NodeGraph(['fmt_planner'], default_params_file(), env=env, log_dir=logs)
     try:
         with GraphClient('late_planner_client') as client:
-            deadline = time.monotonic() + 30
-            while time.monotonic() < deadline and (client.node.count_subscribers('task_spec') < 3
-                                                   or client.received.map is None):
-                time.sleep(0.05)
+            # everything but the planner listens (an instruction sent before the translator
+            # listens would be lost: that, not the planner, once made this test time out)
+            assert client.wait_for_graph(timeout=60.0, need_sim=True, need_planner=False), \
+                (client.missing(need_sim=True, need_planner=False), _logs(logs))
             iid = client.send(formula='F near[tv]')
             time.sleep(2.0)                    # task_progression is waiting for a planner now
             assert client.terminal(iid) is None, client.received.statuses.get(iid)
             planner.start()
             # a liveness bound, not a speed figure: a planner process starting on a loaded
             # 2-core machine (imports, discovery, the first map) has taken over 20 s
-            status = client.wait_terminal(iid, timeout=60.0)
-            log = (logs / 'task_progression.log').read_text()
-            assert status is not None, ('no terminal status', log)
-            assert status['status'] == 'planned', (status.get('error'), log)
+            status = client.wait_until(lambda: client.terminal(iid), 60.0)
+            assert status is not None, ('no terminal status', client.received.statuses.get(iid), _logs(logs))
+            assert status['status'] == 'planned', (status.get('error'), _logs(logs))
             assert not nodes.dead() and not planner.dead()
     finally:
         planner.stop()
         nodes.stop()
+
+
+def _logs(logs) -> str:
+    return '\n'.join(f'--- {p.name}\n{p.read_text(errors="replace")[-3000:]}' for p in sorted(logs.glob('*.log')))
 
 
 def _request() -> SegmentRequest:

@@ -175,18 +175,29 @@ class GraphClient:
                     return None
                 self._cond.wait(min(left, 0.1))
 
-    def wait_for_graph(self, timeout: float = 20.0, need_sim: bool = False) -> bool:
-        """Wait until the pipeline nodes listen (and, with ``need_sim``, the map has come)."""
+    def missing(self, need_sim: bool = False, need_planner: bool = True) -> list[str]:
+        """What the pipeline still lacks, as seen from this client (empty: all listen)."""
+        # the translator listens to instruction; the grounder and task_progression listen to
+        # task_spec (besides this client); the planner listens to plan_request
+        checks = [('ltl_translator (instruction)', self.instruction_pub.get_subscription_count() >= 1),
+                  ('grounder and task_progression (task_spec)', self.node.count_subscribers('task_spec') >= 3),
+                  ('referent_grounder (referent_map)', self.node.count_publishers('referent_map') >= 1),
+                  ('task_progression (task_status)', self.node.count_publishers('task_status') >= 1)]
+        if need_planner:
+            checks.append(('fmt_planner (plan_request)', self.node.count_subscribers('plan_request') >= 1))
+        if need_sim:
+            checks.append(('a map', self.received.map is not None))
+        return [name for name, ok in checks if not ok]
+
+    def wait_for_graph(self, timeout: float = 20.0, need_sim: bool = False, need_planner: bool = True) -> bool:
+        """Wait until the pipeline nodes listen (with ``need_sim``, also until the map has come).
+
+        An instruction published before the translator listens is lost (reliable, volatile
+        QoS), so wait for this before the first ``send``.
+        """
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
-            # every pipeline node is up: the translator, the grounder and task_progression
-            # listen to task_spec (besides this client), the planner to plan_request
-            ready = (self.instruction_pub.get_subscription_count() >= 1
-                     and self.node.count_subscribers('task_spec') >= 3
-                     and self.node.count_publishers('referent_map') >= 1
-                     and self.node.count_publishers('task_status') >= 1
-                     and self.node.count_subscribers('plan_request') >= 1)
-            if ready and (not need_sim or self.received.map is not None):
+            if not self.missing(need_sim, need_planner):
                 return True
             time.sleep(0.05)
         return False

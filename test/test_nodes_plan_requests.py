@@ -69,7 +69,8 @@ def test_a_planner_that_starts_late_still_plans_the_waiting_instruction(ros_env)
 
 
 def _logs(logs) -> str:
-    return '\n'.join(f'--- {p.name}\n{p.read_text(errors="replace")[-3000:]}' for p in sorted(logs.glob('*.log')))
+    return '\n'.join(f'--- {p.name}\n{p.read_text(errors="replace")[-3000:]}'
+                     for p in sorted(logs.glob('*.log')))
 
 
 def _request() -> SegmentRequest:

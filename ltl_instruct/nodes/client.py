@@ -176,11 +176,12 @@ class GraphClient:
                 self._cond.wait(min(left, 0.1))
 
     def missing(self, need_sim: bool = False, need_planner: bool = True) -> list[str]:
-        """What the pipeline still lacks, as seen from this client (empty: all listen)."""
+        """Return the pipeline parts not listening yet, as seen from this client (empty: all are)."""
         # the translator listens to instruction; the grounder and task_progression listen to
         # task_spec (besides this client); the planner listens to plan_request
         checks = [('ltl_translator (instruction)', self.instruction_pub.get_subscription_count() >= 1),
-                  ('grounder and task_progression (task_spec)', self.node.count_subscribers('task_spec') >= 3),
+                  ('grounder and task_progression (task_spec)',
+                   self.node.count_subscribers('task_spec') >= 3),
                   ('referent_grounder (referent_map)', self.node.count_publishers('referent_map') >= 1),
                   ('task_progression (task_status)', self.node.count_publishers('task_status') >= 1)]
         if need_planner:
@@ -189,7 +190,8 @@ class GraphClient:
             checks.append(('a map', self.received.map is not None))
         return [name for name, ok in checks if not ok]
 
-    def wait_for_graph(self, timeout: float = 20.0, need_sim: bool = False, need_planner: bool = True) -> bool:
+    def wait_for_graph(self, timeout: float = 20.0, need_sim: bool = False,
+                       need_planner: bool = True) -> bool:
         """Wait until the pipeline nodes listen (with ``need_sim``, also until the map has come).
 
         An instruction published before the translator listens is lost (reliable, volatile

@@ -70,6 +70,39 @@ def test_metrics_are_checked_on_automata_not_strings() -> None:
     assert summary['referent_wer'] == pytest.approx(2 / 6, abs=1e-3)
 
 
+REFUSED = 'go to the kitchen and stay there until the trash bag is in the dumpster, then avoid the hall'
+
+
+def test_a_refusal_carries_its_best_reading_and_the_metrics_score_its_referents() -> None:
+    with pytest.raises(LtlInstructError) as err:
+        make_translator().translate(REFUSED)   # still refused: the "until" is not dropped silently
+    details = err.value.details
+    assert 'stay there until' in details['part'] and 'stay there until' in details['left_out'][0]
+    assert equivalent(parse_formula(details['best_reading']),
+                      parse_formula('F (near[kitchen] & G !near[hall])'))
+    assert details['referents'] == ['kitchen', 'hall'] and details['avoid'] == ['hall']
+    gold = parse_formula('F (near[kitchen] & (near[kitchen] U release[trash_bag, dumpster])) & G !near[hall]')
+    s = evaluate(make_translator(), [Example(REFUSED, gold, 't:1')]).summary()
+    assert s['translation_errors'] == 1 and s['refusals_with_best_reading'] == 1
+    assert s['temporal_alignment'] == 0.0   # a refusal is never aligned
+    # gold referents: kitchen, trash_bag, dumpster, hall; the best reading has kitchen and hall
+    assert s['referent_wer'] == pytest.approx(2 / 4) and s['referent_wer_strict'] == 1.0
+
+
+def test_the_dialog_offers_a_refusals_best_reading() -> None:
+    replies = iter([REFUSED, 'yes'])
+    said: list[str] = []
+    assert interactive(make_translator(), lambda _: next(replies), said.append) == 0
+    assert said[0].startswith('error [TRANSLATION_ERROR]') and 'Best reading' in said[1]
+    assert 'Warning: could not read "stay there until' in said[2]
+    final = json.loads(said[-1])
+    assert final['referents'] == ['kitchen', 'hall'] and final['warnings']
+    replies = iter(['qwzx vvv', 'no'])   # nothing to read: no reading offered
+    said = []
+    assert interactive(make_translator(), lambda _: next(replies), said.append) == 1
+    assert not any('Best reading' in line for line in said)
+
+
 def test_translate_command_single_and_batch(tmp_path: Path, capsys: Any) -> None:
     assert main(['translate', 'go to the sofa, then the door', '--json']) == 0
     out = json.loads(capsys.readouterr().out)
@@ -77,13 +110,18 @@ def test_translate_command_single_and_batch(tmp_path: Path, capsys: Any) -> None
     assert out['subgoals'][0].startswith('Subgoal 1')
     src = tmp_path / 'in.jsonl'
     src.write_text('{"instruction": "never go near the stove", "id": 7}\n{"instruction": "qwzx vvv"}\n'
-                   'not json\n')
+                   'not json\n' + json.dumps({'instruction': REFUSED}) + '\n')
     dst = tmp_path / 'out.jsonl'
     assert main(['translate', '--input', str(src), '--output', str(dst)]) == 1
     rows = [json.loads(x) for x in dst.read_text().splitlines()]
     assert rows[0]['formula'] == 'G !near[stove]' and rows[0]['avoid'] == ['stove'] and rows[0]['id'] == 7
     assert rows[1]['error']['code'] == 'TRANSLATION_ERROR' and rows[1]['instruction'] == 'qwzx vvv'
     assert rows[2]['error']['code'] == 'INVALID_INPUT'
+    assert 'referents' not in rows[1]   # nothing read
+    assert rows[3]['error']['code'] == 'TRANSLATION_ERROR' and 'formula' not in rows[3]
+    assert rows[3]['referents'] == ['kitchen', 'hall'] and rows[3]['avoid'] == ['hall']
+    assert main(['translate', REFUSED]) == 1
+    assert 'best reading without that part (not a plan): F' in capsys.readouterr().out
     assert main(['translate']) == 2
 
 

@@ -16,9 +16,8 @@ from typing import Any, Callable, Optional
 
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
 from ltl_instruct.core.language import BACKENDS, Translation, make_translator, verification_for
-from ltl_instruct.core.language.verification import warnings_of
 from ltl_instruct.core.language.datasets import iter_instructions
-from ltl_instruct.core.language.verification import classify_reply
+from ltl_instruct.core.language.verification import best_reading_of, classify_reply, warnings_of
 
 HELP = 'translate English instructions into task formulas'
 
@@ -88,7 +87,20 @@ def run(args: argparse.Namespace) -> int:
         return _batch(translator, args.input, args.output)
     if not args.instruction:
         raise InvalidInputError('give an instruction, --input FILE, or --interactive')
-    t = translator.translate(args.instruction)
+    try:
+        t = translator.translate(args.instruction)
+    except LtlInstructError as e:
+        guess = best_reading_of(e, args.instruction, translator.name)
+        if guess is None:
+            raise
+        if args.json:
+            partial = record(guess)
+            print(json.dumps({'instruction': args.instruction, 'error': e.to_dict(),
+                              'referents': partial['referents'], 'avoid': partial['avoid']}, indent=2))
+        else:
+            print(f'error [{e.code.value}]: {e.message}')
+            print(f'best reading without that part (not a plan): {guess.formula}')
+        return 1
     r = record(t)
     if args.json:
         print(json.dumps(r, indent=2))
@@ -124,6 +136,10 @@ def _batch(translator: Any, path: str, out_path: Optional[str]) -> int:
                     rec = record(translator.translate(obj['instruction']))
                 except LtlInstructError as e:
                     rec = {'instruction': obj['instruction'], 'error': e.to_dict()}
+                    guess = best_reading_of(e, obj['instruction'])
+                    if guess is not None:   # what the rest of the instruction names, formula withheld
+                        partial = record(guess)
+                        rec['referents'], rec['avoid'] = partial['referents'], partial['avoid']
                     failures += 1
                 for key, value in obj.items():
                     rec.setdefault(key, value)
@@ -158,7 +174,13 @@ def interactive(translator: Any, ask: Callable[[str], str], say: Callable[[str],
             say(verification_for(t).text())
         except LtlInstructError as e:
             say(f'error [{e.code.value}]: {e.message}')
-            if t is None:
+            guess = best_reading_of(e, instruction, translator.name)
+            if guess is not None:
+                # the rest of the instruction, read: the person may take it, correct it, or type a formula
+                t = guess
+                say('Best reading without that part (nothing moves unless you answer yes):')
+                say(verification_for(t).text())
+            elif t is None:
                 say('Rephrase the instruction, or type a formula (prefix "formula:").')
         try:
             reply = classify_reply(ask('reply> '))

@@ -8,7 +8,11 @@ For each example the translator's formula is compared with the gold one:
   the gold ones they align with (same position in the referent lists), so a
   misspelt referent does not hide a correct temporal structure.
 - **referent WER**: word error rate of the predicted referent list against the
-  gold list, each descriptor one word (corpus level: edits / gold words).
+  gold list, each descriptor one word (corpus level: edits / gold words). A refused
+  instruction counts with the referents of the ``best_reading`` its error carries (the
+  instruction read without the parts that could not be placed), as referent resolution
+  is scored apart from the temporal structure in the LIMP paper; without one, every gold
+  referent is an error. ``referent_wer_strict`` counts every refusal as all errors.
 - **avoidance WER**: the same on the descriptors under an explicit negation.
 - **spatial WER**: the same on the descriptors that carry spatial relations.
 
@@ -26,7 +30,7 @@ from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language.base import Translation, Translator
 from ltl_instruct.core.language.datasets import Example
 from ltl_instruct.core.spec import (
-    Atom, Descriptor, Formula, Not, avoided_referents_of, referents_of,
+    Atom, Descriptor, Formula, Not, avoided_referents_of, parse_formula, referents_of,
 )
 from ltl_instruct.core.spec.ast import And, Or, _Binary, _Unary
 
@@ -107,6 +111,8 @@ class Scores:
     aligned: int = 0
     ref_edits: int = 0
     ref_words: int = 0
+    strict_ref_edits: int = 0   # refusals counted as all errors, best readings ignored
+    best_readings: int = 0   # refusals that carried a best reading
     avoid_edits: int = 0
     avoid_words: int = 0
     spatial_edits: int = 0
@@ -123,12 +129,25 @@ class Scores:
             'examples': self.count, 'translation_errors': self.errors,
             'equivalence_accuracy': rate(self.equivalent, self.count),
             'temporal_alignment': rate(self.aligned, self.count),
+            'refusals_with_best_reading': self.best_readings,
             'referent_wer': rate(self.ref_edits, self.ref_words),
+            'referent_wer_strict': rate(self.strict_ref_edits, self.ref_words),
             'avoidance_wer': rate(self.avoid_edits, self.avoid_words),
             'spatial_wer': rate(self.spatial_edits, self.spatial_words),
             'mean_ms_per_instruction': round(1000 * self.seconds / self.count, 3) if self.count else None,
             'max_ms_per_instruction': round(1000 * self.max_seconds, 3),
         }
+
+
+def _best_reading(error: LtlInstructError) -> Optional[Formula]:
+    """The ``best_reading`` a refusal carries (see ``OfflineTranslator``), or None."""
+    text = error.details.get('best_reading')
+    if not isinstance(text, str):
+        return None
+    try:
+        return parse_formula(text)
+    except LtlInstructError:
+        return None
 
 
 def _spatial(ds: Sequence[Descriptor]) -> list[str]:
@@ -160,15 +179,19 @@ def evaluate(translator: Translator, examples: Sequence[Example],
         if isinstance(got, LtlInstructError):
             scores.errors += 1
             pred: Optional[Formula] = None
-            pred_refs: list[Descriptor] = []
-            pred_avoid: list[Descriptor] = []
             error: Optional[str] = got.message
+            partial = _best_reading(got)
+            scores.best_readings += partial is not None
+            pred_refs: list[Descriptor] = [] if partial is None else list(referents_of(partial))
+            pred_avoid: list[Descriptor] = [] if partial is None else list(avoided_referents_of(partial))
         else:
             pred, error = got.formula, None
             pred_refs = list(referents_of(pred))
             pred_avoid = list(avoided_referents_of(pred))
         scores.ref_edits += edit_distance([str(d) for d in gold_refs], [str(d) for d in pred_refs])
         scores.ref_words += len(gold_refs)
+        scores.strict_ref_edits += len(gold_refs) if pred is None else \
+            edit_distance([str(d) for d in gold_refs], [str(d) for d in pred_refs])
         scores.avoid_edits += edit_distance([str(d) for d in gold_avoid], [str(d) for d in pred_avoid])
         scores.avoid_words += len(gold_avoid)
         gs, ps = _spatial(gold_refs), _spatial(pred_refs)

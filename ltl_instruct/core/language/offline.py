@@ -56,7 +56,7 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
-    referents_of,
+    avoided_referents_of, referents_of,
 )
 
 MAX_INSTRUCTION_CHARS = 2000
@@ -173,7 +173,10 @@ class OfflineTranslator:
         tokens = rewrite_idioms(tokens)
         reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope)
         try:
-            formula = reader.read(tokens)
+            formula = reader.read(list(tokens))
+        except TranslationError as e:
+            self._attach_best_reading(e, tokens)
+            raise
         except (IndexError, KeyError, ValueError, AttributeError, RecursionError, AssertionError) as e:
             # a bug in the rules, reported as one (typed), never a crash of the caller
             raise LtlInstructError(f'the offline translator failed on this instruction ({type(e).__name__}: '
@@ -185,6 +188,27 @@ class OfflineTranslator:
             # clauses guessed at or left out: the verification dialog shows these as warnings, first
             extra['unread'] = [u.note() for u in reader.unread]
         return Translation(instruction, formula, self.name, tuple(notes), extra)
+
+
+    def _attach_best_reading(self, error: TranslationError, tokens: list[str]) -> None:
+        """Add to a refusal what the rest of the instruction says, read with every clause allowed to degrade.
+
+        The refusal stands (an order or avoidance that cannot be read is not dropped silently),
+        but its details carry ``best_reading`` (the formula without the unreadable parts),
+        its ``referents`` and ``avoid``, and ``left_out`` (what that reading guessed or left
+        out): the verification dialog offers the reading to be confirmed or corrected, and a
+        caller learns which places the instruction names.
+        """
+        reader = _Reader(self.avoid_scope, [], self.landmarks, self.once_scope, self.after_scope,
+                         lenient=True)
+        try:
+            guess = reader.read(list(tokens))
+        except (LtlInstructError, IndexError, KeyError, ValueError, AttributeError, RecursionError,
+                AssertionError):
+            return
+        error.details.update(best_reading=str(guess), referents=[str(d) for d in referents_of(guess)],
+                             avoid=[str(d) for d in avoided_referents_of(guess)],
+                             left_out=[u.note() for u in reader.unread])
 
 
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
@@ -337,7 +361,8 @@ class _Reader:
     """Reads the clauses of one instruction into a :class:`_Task`."""
 
     def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = (),
-                 once_scope: str = 'run', after_scope: str = 'goal') -> None:
+                 once_scope: str = 'run', after_scope: str = 'goal', lenient: bool = False) -> None:
+        self.lenient = lenient   # every clause may degrade, constraints too (for a refusal's best reading)
         self.once_scope = once_scope
         self.after_scope = after_scope
         self.no_revisits = False   # "visit each place only once", "no revisiting"
@@ -578,7 +603,7 @@ class _Reader:
         Returns the scope that carries to the next clause.
         """
         unread = len(self.unread)
-        if not fallback.may_degrade(clause.tokens):
+        if not self.lenient and not fallback.may_degrade(clause.tokens):
             out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
             self.read_parts += not sentence or len(self.unread) == unread
             return out

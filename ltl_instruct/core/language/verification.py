@@ -75,6 +75,24 @@ def warnings_of(translation: Translation) -> tuple[str, ...]:
     return tuple(str(u) for u in unread)
 
 
+def best_reading_of(error: LtlInstructError, instruction: str, backend: str = 'offline'
+                    ) -> Optional[Translation]:
+    """Return the best reading a refusal carries (``details['best_reading']``) as a translation, or None.
+
+    The reading leaves out the parts that could not be placed; they become its warnings
+    (``extra['unread']``), so the dialog shows them first and the person decides.
+    """
+    text = error.details.get('best_reading') if isinstance(error.details, dict) else None
+    if not isinstance(text, str):
+        return None
+    try:
+        formula = parse_formula(text)
+    except LtlInstructError:
+        return None
+    left_out = [str(u) for u in error.details.get('left_out') or ()] or [error.message]
+    return Translation(instruction, formula, backend, (), {'unread': left_out, 'refused': error.message})
+
+
 def verification_for(translation: Translation | Formula) -> Verification:
     """Build the referents and English subgoals of a translation (the automaton's English)."""
     from ltl_instruct.core.automaton.english import describe_task

@@ -189,7 +189,6 @@ class OfflineTranslator:
             extra['unread'] = [u.note() for u in reader.unread]
         return Translation(instruction, formula, self.name, tuple(notes), extra)
 
-
     def _attach_best_reading(self, error: TranslationError, tokens: list[str]) -> None:
         """Add to a refusal what the rest of the instruction says, read with every clause allowed to degrade.
 

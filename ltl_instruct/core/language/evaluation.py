@@ -140,7 +140,7 @@ class Scores:
 
 
 def _best_reading(error: LtlInstructError) -> Optional[Formula]:
-    """The ``best_reading`` a refusal carries (see ``OfflineTranslator``), or None."""
+    """Return the ``best_reading`` a refusal carries (see ``OfflineTranslator``), or None."""
     text = error.details.get('best_reading')
     if not isinstance(text, str):
         return None

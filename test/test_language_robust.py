@@ -478,7 +478,7 @@ ROUND_THIRTEEN = [
      'F (near[marker::isnextto(supply_cabinet)] & F (pick[marker::isnextto(supply_cabinet)] & '
      'F near[conference_room]))'),
     ('Visit the nurses station, then room twelve, then room fourteen.',
-     'F (near[nurses_station] & F (near[room_12] & F near[room_14]))'),
+     'F (near[nurses_station] & F (near[room_twelve] & F near[room_fourteen]))'),
     ('Get over to the loading bay as fast as you can.', 'F near[loading_bay]'),
     ('Could you see if there is any mail in the mailbox?', 'F near[mailbox]'),
 ]

@@ -592,3 +592,26 @@ def test_after_scope_conditional_reads_after_as_a_rule() -> None:
     assert equivalent(got, parse_formula('G (near[coop] -> X G !near[garden])')), got
     with pytest.raises(TranslationError):
         OfflineTranslator(after_scope='sometimes')
+
+
+# Found on blind sets H and I (our own sentences for what they showed)
+FOUND_ROUND_H = [
+    # "while you carry it" (present tense) scopes the avoidance to the carrying, not after the drop
+    ('Take the kettle to the counter and stay away from the cat while you carry it.',
+     'F (near[kettle] & F (pick[kettle] & (!near[cat] U (near[counter] & F release[kettle, counter]))))'),
+    ('Bring the trolley to the lift, and while you push it keep clear of the stairs.',
+     'F (near[trolley] & F (pick[trolley] & (!near[stairs] U (near[lift] & F release[trolley, lift]))))'),
+    # hesitations anywhere, once the corrections they mark have been read
+    ('go to the uh supply room, um, then the office', 'F (near[supply_room] & F near[office])'),
+    ('Go to the break room. Hm, no, the lounge.', 'F near[lounge]'),
+    ('avoid the the stairs and go to the hall', 'F near[hall] & G !near[stairs]'),
+    # a possessive keeps its s; a number stays as written
+    ("Go to the manager's office and then locker seven",
+     'F (near[managers_office] & F near[locker_seven])'),
+    ('go to dock 4', 'F near[dock_4]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', FOUND_ROUND_H)
+def test_readings_found_on_blind_sets_h_and_i(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -238,6 +238,44 @@ _CHANGES = frozenset({'change', 'changed', 'correction', 'update', 'updated', 'n
                       'instead', 'wait', 'sorry', 'amended', 'different'})
 
 
+# Sounds of hesitation, said anywhere ("the uh gate", "feed silo, uh, then"); "er" after "the" is the ER.
+HESITATIONS = frozenset({'uh', 'uhh', 'uhm', 'um', 'umm', 'erm', 'er', 'hm', 'hmm', 'hmmm', 'mmm', 'mm',
+                         'ehm', 'eh', 'ah', 'ahh'})
+
+
+def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
+    """Drop sounds of hesitation and a word said twice in a row ("avoid the the shop"), anywhere."""
+    out: list[str] = []
+    dropped: list[str] = []
+    twice: list[str] = []
+    skip_comma = False
+    for k, t in enumerate(tokens):
+        if t in HESITATIONS and not (t == 'er' and out and out[-1] == 'the'):
+            dropped.append(t)
+            if out and out[-1] == ',' and k + 1 < len(tokens) and tokens[k + 1] in PUNCT:
+                out.pop()   # "silo, uh, then": one comma stays
+            skip_comma = not out or out[-1] in PUNCT   # "C. Hmm, scratch that": no comma left at the start
+            continue
+        if t == ',' and skip_comma:
+            skip_comma = False
+            continue
+        skip_comma = False
+        if out and t == out[-1] and t in DOUBLED:
+            twice.append(t)
+            continue
+        out.append(t)
+    if dropped:
+        notes.append(f'left out "{" ".join(dropped)}" (hesitation)')
+    if twice:
+        notes.append(f'read "{" ".join(twice)}", said twice in a row, once')
+    return out
+
+
+# Words said twice in a row by slip ("the the"), never twice on purpose.
+DOUBLED = frozenset({'the', 'a', 'an', 'to', 'go', 'and', 'then', 'of', 'at', 'in', 'on', 'by', 'near',
+                     'from', 'avoid', 'never', 'is', 'it', 'that'})
+
+
 def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
     """Remove a heading before a colon that opens a sentence ("Morning routine for you, robot: ..."), noted.
 

@@ -169,7 +169,8 @@ class OfflineTranslator:
         tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
                                                  notes))
         tokens = orders.apply_reverse(resolve_list_references(tokens, notes), notes)
-        tokens = apply_exclusions(apply_corrections(tokens, notes), notes)
+        # hesitations mark corrections ("the dishwasher, erm, the sink"): dropped once those are read
+        tokens = chatter.strip_hesitations(apply_exclusions(apply_corrections(tokens, notes), notes), notes)
         tokens = rewrite_idioms(tokens)
         reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope)
         try:
@@ -210,6 +211,9 @@ class OfflineTranslator:
                              left_out=[u.note() for u in reader.unread])
 
 
+# "while you carry it", "as you're pushing the cart": the time the object is held.
+_CARRY_NOW = frozenset({'carry', 'carries', 'hold', 'holds', 'transport', 'push', 'pushing', 'pull',
+                        'pulling', 'wheel', 'wheeling', 'haul', 'hauling', 'lug', 'lugging', 'tow', 'towing'})
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
@@ -1614,7 +1618,8 @@ class _Reader:
             # "..., then come back to the porch, and while you're returning, avoid X": the way back
             end = j + 1 + (tokens[j + 1:j + 2] in (['back'], ['home']))
             return _Scope('onway', self.last_place, 'back'), end
-        if w in ('carrying', 'holding', 'transporting', 'bringing', 'taking', 'moving', 'returning'):
+        if w in ('carrying', 'holding', 'transporting', 'bringing', 'taking', 'moving', 'returning') or (
+                tokens[i - 1] in ('while', 'as') and w in _CARRY_NOW):
             k = j + 1
             np = self.phrases.parse(tokens, k)
             end = np.end if np is not None else k

@@ -229,13 +229,8 @@ def singular(word: str) -> str:
 
 
 def name_of(words: Sequence[str]) -> str:
-    """Snake-case name from name words; cardinal number words after a noun become digits."""
-    out = []
-    for k, w in enumerate(w.lower() for w in words):   # acronyms ("the IT office") are upper case
-        if k > 0 and w in NUMBER_WORDS and w not in ('once', 'twice', 'thrice'):
-            w = str(NUMBER_WORDS[w])
-        out.append(w)
-    name = '_'.join(out)
+    """Snake-case name from name words; a number stays as written ("aisle seven", "dock 3")."""
+    name = '_'.join(w.lower() for w in words)   # acronyms ("the IT office") are upper case
     if name and not name[0].isalpha():
         name = 'n_' + name
     return name

@@ -43,12 +43,15 @@ _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance)
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
-    (r"\bi'm\b", 'i am'), (r"\b(that|there|it|what|where|here|who)'s\b", r'\1 is'),
+    (r"\bi'm\b", 'i am'),
+    (r"\b(that|there|it|what|where|here|who|he|she|how|why|when|everything|everyone|nothing)'s\b", r'\1 is'),
+    (r"\blet's\b", 'let us'),
     # "the table's fine", "the red one's locked": "is", not a possessive, before how a thing is
     (r"'s(?= (?:fine|ok|okay|alright|safe|locked|closed|shut|open|broken|blocked|up|out|off|empty|full|wet|"
      r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
      r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp)\b)", ' is'),
-    (r"'d\b", ' would'), (r"'s\b", ''), (r"s'(?=\s)", 's'),
+    # a possessive keeps its s, as the data sets' names do ("the supervisor's desk": supervisors_desk)
+    (r"'d\b", ' would'), (r"'s\b", 's'), (r"s'(?=\s)", 's'),
 )
 
 ORDINAL_DIGITS: dict[str, str] = {

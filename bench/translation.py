@@ -23,7 +23,8 @@ DATA = Path(__file__).resolve().parents[1].parent / 'shared' / 'datasets'
 # each set with the translator options of its conventions (see the README, "translate")
 SETS: dict[str, tuple[Path, dict[str, str]]] = {
     'dev': (DATA / 'spatial-temporal-dev' / 'dev.jsonl', {}),
-    'drone': (DATA / 'efficient-eng-2-ltl' / 'drone-planning.jsonl', {'avoid_scope': 'goal'}),
+    'drone': (DATA / 'efficient-eng-2-ltl' / 'drone-planning.jsonl',
+              {'avoid_scope': 'goal', 'numbers': 'digits'}),
     'lifted': (DATA / 'lang2ltl' / 'lifted.csv', {'once_scope': 'next', 'after_scope': 'conditional'}),
 }
 

@@ -39,6 +39,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help='offline: avoidance convention (default: goal for drone-planning, else global)')
     parser.add_argument('--once-scope', choices=('run', 'next'), default=None,
                         help='offline: "only once" convention (default: next for lifted.csv, else run)')
+    parser.add_argument('--numbers', choices=('words', 'digits'), default=None,
+                        help='offline: numbers in names (default: digits for drone-planning, else words)')
     parser.add_argument('--after-scope', choices=('goal', 'conditional'), default=None,
                         help='offline: "after X, avoid Y" convention (default: conditional for lifted.csv, '
                              'else goal)')
@@ -53,6 +55,8 @@ def run(args: argparse.Namespace) -> int:
         args.once_scope = 'next' if 'lifted' in ds.name else 'run'
     if args.after_scope is None:
         args.after_scope = 'conditional' if 'lifted' in ds.name else 'goal'
+    if args.numbers is None:
+        args.numbers = 'digits' if 'drone-planning' in ds.name else 'words'
     options = _options(args)
     if args.backend == 'offline' and ds.landmarks:
         options['landmarks'] = ds.landmarks   # lifted propositions are names given in advance
@@ -67,6 +71,7 @@ def run(args: argparse.Namespace) -> int:
         summary['avoid_scope'] = args.avoid_scope
         summary['once_scope'] = args.once_scope
         summary['after_scope'] = args.after_scope
+        summary['numbers'] = args.numbers
     failures = [r.to_dict() for r in scores.results if not r.equivalent][:args.failures]
     if args.json:
         print(json.dumps({**summary, 'failures': failures}, indent=2))

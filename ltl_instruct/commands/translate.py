@@ -40,6 +40,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--once-scope', choices=('run', 'next'), default='run',
                         help='offline backend: "visit X only once, then Y" for the whole run (run) or until '
                              'Y (next, lang2ltl\'s strictly ordered visits)')
+    parser.add_argument('--numbers', choices=('words', 'digits'), default='words',
+                        help='offline backend: a number in a name as said ("aisle seven": aisle_seven) or as '
+                             'digits ("landmark one": landmark_1, drone-planning)')
     parser.add_argument('--after-scope', choices=('goal', 'conditional'), default='goal',
                         help='offline backend: "after going to X, avoid Y" with X a goal (goal) or as a rule '
                              'if X is ever reached (conditional, lang2ltl)')
@@ -48,7 +51,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def _options(args: argparse.Namespace) -> dict[str, Any]:
     if args.backend == 'offline':
         return {'avoid_scope': args.avoid_scope, 'once_scope': getattr(args, 'once_scope', 'run'),
-                'after_scope': getattr(args, 'after_scope', None) or 'goal'}
+                'after_scope': getattr(args, 'after_scope', None) or 'goal',
+                'numbers': getattr(args, 'numbers', None) or 'words'}
     if args.backend == 'learned':
         return {'model_path': args.model_path}
     opts: dict[str, Any] = {'timeout_s': args.timeout}

@@ -22,7 +22,8 @@ def make_translator(backend: str = 'offline', **options: Any) -> Translator:
     Parameters
     ----------
     backend:
-        ``'offline'`` (rules; options ``avoid_scope``, ``once_scope``, ``landmarks``), ``'llm'``
+        ``'offline'`` (rules; options ``avoid_scope``, ``once_scope``, ``after_scope``, ``numbers``,
+        ``landmarks``), ``'llm'``
         (options of :class:`~ltl_instruct.core.language.llm.LlmTranslator`: ``base_url``,
         ``model``, ``api_key``, ``examples_path``, ``k``, ``retries``, ``timeout_s``...), or
         ``'learned'`` (option ``model_path``; the backend of

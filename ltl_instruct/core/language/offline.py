@@ -131,12 +131,16 @@ class OfflineTranslator:
         makes X a goal and avoids Y from there on, ``F (near[x] & G !near[y])``; "once you
         have been to X, ..." stays a rule. ``'conditional'`` reads both as lang2ltl does, a
         rule that holds if X is ever reached: ``G (near[x] -> X G !near[y])``.
+    numbers:
+        ``'words'`` (default, as the blind sets' golds write them): a number in a name stays as
+        said, "aisle seven" is ``aisle_seven`` and "dock 3" ``dock_3``. ``'digits'``: a number
+        word after a noun becomes digits, "landmark one" is ``landmark_1`` (drone-planning).
     """
 
     name = 'offline'
 
     def __init__(self, avoid_scope: str = 'global', landmarks: Sequence[str] = (),
-                 once_scope: str = 'run', after_scope: str = 'goal') -> None:
+                 once_scope: str = 'run', after_scope: str = 'goal', numbers: str = 'words') -> None:
         if avoid_scope not in ('global', 'goal'):
             raise TranslationError(f'avoid_scope must be global or goal, not {avoid_scope!r}',
                                    ErrorCode.INVALID_INPUT)
@@ -147,8 +151,12 @@ class OfflineTranslator:
         if after_scope not in ('goal', 'conditional'):
             raise TranslationError(f'after_scope must be goal or conditional, not {after_scope!r}',
                                    ErrorCode.INVALID_INPUT)
+        if numbers not in ('words', 'digits'):
+            raise TranslationError(f'numbers must be words or digits, not {numbers!r}',
+                                   ErrorCode.INVALID_INPUT)
         self.once_scope = once_scope
         self.after_scope = after_scope
+        self.numbers = numbers
         self.landmarks = tuple(landmarks)
         _speller()   # the word list is read once, here, not inside the first translation
 
@@ -172,7 +180,8 @@ class OfflineTranslator:
         # hesitations mark corrections ("the dishwasher, erm, the sink"): dropped once those are read
         tokens = chatter.strip_hesitations(apply_exclusions(apply_corrections(tokens, notes), notes), notes)
         tokens = rewrite_idioms(tokens)
-        reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope)
+        reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope,
+                         digits=self.numbers == 'digits')
         try:
             formula = reader.read(list(tokens))
         except TranslationError as e:
@@ -200,7 +209,7 @@ class OfflineTranslator:
         caller learns which places the instruction names.
         """
         reader = _Reader(self.avoid_scope, [], self.landmarks, self.once_scope, self.after_scope,
-                         lenient=True)
+                         lenient=True, digits=self.numbers == 'digits')
         try:
             guess = reader.read(list(tokens))
         except (LtlInstructError, IndexError, KeyError, ValueError, AttributeError, RecursionError,
@@ -289,7 +298,21 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
     speller = _speller()
     known = {w for name in landmarks for w in name.replace('_', ' ').split()}
     out = list(tokens)
+    # names said in the instruction: a listed word anywhere, an unlisted one only before (the first
+    # spelling of a name is taken as meant: "the jetty ... the jety")
+    listed = frozenset(t for t in tokens if len(t) >= 4 and (t in speller.words or t in speller.lexicon))
     for k, w in enumerate(tokens):
+        if w == 'than' and (k == 0 or tokens[k - 1] in PUNCT or tokens[k - 1] in ('and', 'but')):
+            out[k] = 'then'   # "the rose bed, than the pond": no comparison before it
+            notes.append('read "than" as "then"')
+            continue
+        twin = None
+        if w not in known and len(w) >= 4 and w not in speller.words and w not in speller.lexicon:
+            twin = speller.near_twin(w, listed | {t for t in tokens[:k] if len(t) >= 4 and speller.known(t)})
+        if twin is not None:
+            out[k] = twin
+            notes.append(f'read "{w}" as "{twin}" (said so elsewhere in the instruction)')
+            continue
         if w == 'too' and 0 < k < len(tokens) - 1 and tokens[k - 1] not in PUNCT and \
                 tokens[k + 1] in ('the', 'my', 'your', 'our', 'a', 'an', 'that', 'this'):
             out[k] = 'to'   # "carry the seed bag too the greenhouse"
@@ -364,12 +387,13 @@ class _Reader:
     """Reads the clauses of one instruction into a :class:`_Task`."""
 
     def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = (),
-                 once_scope: str = 'run', after_scope: str = 'goal', lenient: bool = False) -> None:
+                 once_scope: str = 'run', after_scope: str = 'goal', lenient: bool = False,
+                 digits: bool = False) -> None:
         self.lenient = lenient   # every clause may degrade, constraints too (for a refusal's best reading)
         self.once_scope = once_scope
         self.after_scope = after_scope
         self.no_revisits = False   # "visit each place only once", "no revisiting"
-        self.phrases = PhraseParser(landmarks)
+        self.phrases = PhraseParser(landmarks, digits)
         self.rules = RuleReader(self.phrases, conditional_after=after_scope == 'conditional')
         self.task = _Task()
         self.avoid_scope = avoid_scope

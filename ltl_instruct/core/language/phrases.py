@@ -228,9 +228,18 @@ def singular(word: str) -> str:
     return word
 
 
-def name_of(words: Sequence[str]) -> str:
-    """Snake-case name from name words; a number stays as written ("aisle seven", "dock 3")."""
-    name = '_'.join(w.lower() for w in words)   # acronyms ("the IT office") are upper case
+def name_of(words: Sequence[str], digits: bool = False) -> str:
+    """Snake-case name from name words; a number stays as written ("aisle seven", "dock 3").
+
+    With ``digits`` a cardinal number word after a noun becomes digits ("landmark one":
+    ``landmark_1``, as the drone-planning data set names its landmarks).
+    """
+    out = []
+    for k, w in enumerate(w.lower() for w in words):   # acronyms ("the IT office") are upper case
+        if digits and k > 0 and w in NUMBER_WORDS and w not in ('once', 'twice', 'thrice'):
+            w = str(NUMBER_WORDS[w])
+        out.append(w)
+    name = '_'.join(out)
     if name and not name[0].isalpha():
         name = 'n_' + name
     return name
@@ -262,7 +271,8 @@ def _attach(d: Descriptor, appositive: Descriptor, same: bool = False) -> Option
 class PhraseParser:
     """Parses noun phrases in a token list; remembers the last ones for pronouns and "the one"."""
 
-    def __init__(self, landmarks: Sequence[str] = ()) -> None:
+    def __init__(self, landmarks: Sequence[str] = (), digits: bool = False) -> None:
+        self.digits = digits   # number words in names become digits (see name_of)
         self.last: Optional[NounPhrase] = None
         self._last_key: tuple[str, ...] = ()
         self._before_last: Optional[NounPhrase] = None
@@ -313,7 +323,7 @@ class PhraseParser:
                 j += 1   # "location b": the landmark b
             lm = self._landmark(tokens, j)
             if lm is not None:
-                np = NounPhrase(Descriptor(name_of(list(lm))), start, j + len(lm), lm[-1])
+                np = NounPhrase(Descriptor(name_of(list(lm), self.digits)), start, j + len(lm), lm[-1])
                 if depth == 0:
                     self.last = np
                 return np
@@ -407,7 +417,7 @@ class PhraseParser:
             else:
                 relations.append(Relation(comparator, (arg1.descriptor,)))
                 i = arg1.end
-        np = NounPhrase(Descriptor(name_of(words), tuple(relations)), start, i, head,
+        np = NounPhrase(Descriptor(name_of(words, self.digits), tuple(relations)), start, i, head,
                         'one' if one else '')
         if depth == 0 and not (tokens[start] == words[0] and words[0] in NAME_VERBS):
             self.last = np   # not a verb tried as a noun ("bring me the blue one": one is not a bring)

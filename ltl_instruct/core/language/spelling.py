@@ -39,7 +39,8 @@ _RANK = {'double': 0, 'swap': 0, 'sound': 1, 'vowel': 1, 'missing': 2, 'extra': 
 # Slips allowed by word length: a short word is one slip from too many others.
 # A neighbouring key is never tried: it turns too many real words into others ("copier").
 # Nor a stray letter removed ("steeple" -> "steele"), nor a vowel for a vowel ("goggles").
-_MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 99, 'missing': 5, 'extra': 99, 'key': 99}
+# A vowel for a vowel is tried from nine letters ("maintenence"), where two real words rarely differ so.
+_MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 9, 'missing': 5, 'extra': 99, 'key': 99}
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
 # Rank below which a word counts as common (a four-letter slip is corrected only to a common word).
 _COMMON = 12000
@@ -146,6 +147,17 @@ class Speller:
         w = self.words
         return any(word[:k] in w and word[k:] in w for k in range(4, len(word) - 3))
 
+    def near_twin(self, word: str, others: Iterable[str]) -> Optional[str]:
+        """Return the word of ``others`` that ``word`` is one slip from, if ``word`` is unknown.
+
+        A name typed twice in one instruction, once with a slip ("the jetty ... the jety"),
+        is the same name: any one slip counts, from four letters.
+        """
+        if len(word) < 4 or not word.isalpha() or word in self.words or word in self.lexicon:
+            return None   # (a listed word only: "jety" passes for jet + y, but it is no word)
+        fits = {c for c, kind in _slips(word) if c in others and c != word and not _inflection(word, c)}
+        return fits.pop() if len(fits) == 1 else None
+
     def correct(self, word: str) -> Optional[str]:
         """Return the word ``word`` was probably meant to be, or None to keep it as it is."""
         if word in self._cache:
@@ -158,15 +170,16 @@ class Speller:
                 self._cache[word] = core[0]
                 return core[0]
         if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word):
-            best: Optional[tuple[int, int, str]] = None
+            best: Optional[tuple[int, bool, int, str]] = None
             for cand, kind in _slips(word):
                 rank = self.words.get(cand)
                 if rank is None or len(word) < _MIN_LENGTH[kind] or _inflection(word, cand):
                     continue
-                key = (_RANK[kind], rank, cand)
+                # a thing robots are sent to wins a tie of slips ("frige": fridge, not fringe)
+                key = (_RANK[kind], cand not in DOMAIN_WORDS, rank, cand)
                 if best is None or key < best:
                     best = key
-            out = best[2] if best is not None else None
+            out = best[3] if best is not None else None
             if out is None and len(word) == 4:
                 # a four-letter word with one letter dropped ("towl"): only when one common word fits
                 fits = {c for c, kind in _slips(word) if kind == 'missing' and

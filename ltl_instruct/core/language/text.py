@@ -20,6 +20,7 @@ TYPOS: dict[str, str] = {
     'thats': 'that is', 'theres': 'there is', 'its': 'it is', 'didnt': 'did not', 'isnt': 'is not',
     'goto': 'go to', 'infront': 'in front', 'nxt': 'next', 'frist': 'first', 'secnd': 'second',
     'avoiid': 'avoid', 'aviod': 'avoid', 'fridg': 'fridge', 'bathrom': 'bathroom', 'thn': 'then',
+    'tonite': 'tonight', 'nite': 'night', 'lest': 'least',
     'untill': 'until', 'til': 'until', 'till': 'until', 'b4': 'before', 'w': 'with', 'thru': 'through',
     'ok': 'okay', 'tv': 'tv', 'behing': 'behind', 'betwen': 'between', 'betweeen': 'between',
     'nevr': 'never', 'alway': 'always', 'alwasy': 'always', 'twond': 'second', 'oppposite': 'opposite',

@@ -609,6 +609,17 @@ FOUND_ROUND_H = [
     ("Go to the manager's office and then locker seven",
      'F (near[managers_office] & F near[locker_seven])'),
     ('go to dock 4', 'F near[dock_4]'),
+    # spelling: a name typed twice, "than" for "then", a domain word on a tie, a long vowel slip
+    ('Fly over the pier, then the marina. Keep off the beach on the way to the marnia.',
+     'F (near[pier] & (!near[beach] U near[marina]))'),
+    ('go to the shed, than the pond, and than the gate',
+     'F (near[shed] & F (near[pond] & F near[gate]))'),
+    ('go to the frige', 'F near[fridge]'),
+    ('go to the maintenence room', 'F near[maintenance_room]'),
+    # chat spelling and a reason said with no comma before it
+    ('take the mugs 2 the sink pls its so messy',
+     'F (near[mugs] & F (pick[mugs] & F (near[sink] & F release[mugs, sink])))'),
+    ('go 2 the couch im so tired', 'F near[couch]'),
 ]
 
 

@@ -223,6 +223,11 @@ class OfflineTranslator:
 # "while you carry it", "as you're pushing the cart": the time the object is held.
 _CARRY_NOW = frozenset({'carry', 'carries', 'hold', 'holds', 'transport', 'push', 'pushing', 'pull',
                         'pulling', 'wheel', 'wheeling', 'haul', 'hauling', 'lug', 'lugging', 'tow', 'towing'})
+# Words after which "it is", "i am"... go on the same clause ("until it is clean", "so that i am").
+_NO_CUT_BEFORE = chatter.PREPOSITIONS | frozenset({
+    'until', 'till', 'because', 'if', 'when', 'while', 'that', 'so', 'after', 'before', 'once', 'and', 'or',
+    'but', 'where', 'whether', 'unless', 'since', 'as', 'than', 'what', 'which', 'who', 'know', 'think',
+    'sure', 'unless', 'whenever', 'wherever', 'though', 'although', 'then', 'not', 'say', 'see', 'mean'})
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
@@ -428,6 +433,23 @@ class _Reader:
 
     # ----------------------------------------------------------------- structure
     def _drop_trailing_reason(self, sentence: list[str]) -> list[str]:
+        """Leave out a last part that says why, after a comma or, unmarked, a subject and its verb.
+
+        "throw away the pizza box it is so gross", "go to the fridge i am starving": a comma
+        is read before "it is", "i am"... when what precedes cannot lead into it.
+        """
+        out = self._drop_reason_after_comma(sentence)
+        if out is not sentence or len(sentence) < 6:
+            return out
+        for k in range(len(sentence) - 3, 2, -1):
+            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she') and sentence[k + 1] in (
+                    'am', 'is', 'are', 'was', 'were') and sentence[k - 1] not in PUNCT and \
+                    sentence[k - 1] not in _NO_CUT_BEFORE and sentence[k - 1] not in DETS:
+                cut = self._drop_reason_after_comma(sentence[:k] + [','] + sentence[k:])
+                return sentence if len(cut) == len(sentence) + 1 else cut
+        return sentence
+
+    def _drop_reason_after_comma(self, sentence: list[str]) -> list[str]:
         """Leave out a last comma part that says why ("..., the neighbours complain", "..., she's jumpy").
 
         Only a part with a subject other than the robot (I, we, she, somebody, my husband, the

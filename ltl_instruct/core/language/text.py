@@ -20,7 +20,8 @@ TYPOS: dict[str, str] = {
     'thats': 'that is', 'theres': 'there is', 'its': 'it is', 'didnt': 'did not', 'isnt': 'is not',
     'goto': 'go to', 'infront': 'in front', 'nxt': 'next', 'frist': 'first', 'secnd': 'second',
     'avoiid': 'avoid', 'aviod': 'avoid', 'fridg': 'fridge', 'bathrom': 'bathroom', 'thn': 'then',
-    'tonite': 'tonight', 'nite': 'night', 'lest': 'least',
+    'tonite': 'tonight', 'nite': 'night', 'lest': 'least', 'idc': 'i do not care', 'omg': 'oh',
+    'rwo': 'row',
     'untill': 'until', 'til': 'until', 'till': 'until', 'b4': 'before', 'w': 'with', 'thru': 'through',
     'ok': 'okay', 'tv': 'tv', 'behing': 'behind', 'betwen': 'between', 'betweeen': 'between',
     'nevr': 'never', 'alway': 'always', 'alwasy': 'always', 'twond': 'second', 'oppposite': 'opposite',
@@ -137,9 +138,10 @@ def tokenize(text: str) -> list[str]:
     if 'ur ' in s:   # "on ur way": "ur" before a noun is "your", elsewhere "you are"
         s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best)\b)',
                    'your ', s)
-    if ' 2 ' in s:   # "go 2 the break room": chat spelling of "to" after a verb of motion, before a place
+    if ' 2 ' in s:   # "go 2 the break room", "the towels 2 the cart": chat spelling of "to" before a place
+        s = re.sub(r'(?<=[a-z]) 2 (?=(?:the|my|our|your|this|that|either|both)\b)', ' to ', s)
         s = re.sub(r'\b(go|head|come|get|walk|drive|fly|run|move|back|over|down|up|way|next|close) 2 '
-                   r'(?=(?:the|my|our|your|a|an|this|that)\b)', r'\1 to ', s)
+                   r'(?=(?:a|an)\b)', r'\1 to ', s)
     if ' form ' in s:
         s = _FORM_RE.sub(r'\1 from', s)
     out: list[str] = []

@@ -620,6 +620,13 @@ FOUND_ROUND_H = [
     ('take the mugs 2 the sink pls its so messy',
      'F (near[mugs] & F (pick[mugs] & F (near[sink] & F release[mugs, sink])))'),
     ('go 2 the couch im so tired', 'F near[couch]'),
+    # "once you have been to X, avoid Y" makes X a goal, as "after going to X" does
+    ('Once you have been to the shed, keep away from the pond, then go to the gate.',
+     'F (near[shed] & G !near[pond] & F near[gate])'),
+    # a slip to a domain word the vocabulary lacks, a dropped double letter, "ping pong" kept
+    ('go to the toastr', 'F near[toaster]'),
+    ('pick up the remote controler', 'F (near[remote_controller] & F pick[remote_controller])'),
+    ('stay away from the ping pong table', 'G !near[ping_pong_table]'),
 ]
 
 

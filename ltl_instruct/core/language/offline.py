@@ -128,8 +128,8 @@ class OfflineTranslator:
         with none after it keeps "exactly once".
     after_scope:
         ``'goal'`` (default, the development set's convention): "after going to X, avoid Y"
-        makes X a goal and avoids Y from there on, ``F (near[x] & G !near[y])``; "once you
-        have been to X, ..." stays a rule. ``'conditional'`` reads both as lang2ltl does, a
+        makes X a goal and avoids Y from there on, ``F (near[x] & G !near[y])``, and so does
+        "once you have been to X, ...". ``'conditional'`` reads both as lang2ltl does, a
         rule that holds if X is ever reached: ``G (near[x] -> X G !near[y])``.
     numbers:
         ``'words'`` (default, as the blind sets' golds write them): a number in a name stays as
@@ -1720,8 +1720,9 @@ class _Reader:
         np = self.phrases.parse(tokens, k)
         if np is None:
             return None, i
-        # "after going to X" (event 'goal'): X is a step of the task; "once you have been to X": a rule
-        event = 'goal' if tokens[i - 1] == 'after' else 'near'
+        # "after going to X", "once you have been to X" (event 'goal'): X is a step of the task, as
+        # every data set's golds read it; "when you are at X": a rule
+        event = 'goal' if tokens[i - 1] in ('after', 'once') else 'near'
         return _Scope('after', self._resolve(np, place=True), event), np.end
 
     def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:

@@ -44,6 +44,8 @@ _MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 9, 'missing': 5, 'ex
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
 # Rank below which a word counts as common (a four-letter slip is corrected only to a common word).
 _COMMON = 12000
+# The frequency rank given to a domain word the vocabulary lacks ("freezr": freezer).
+_DOMAIN_RANK = 8000
 # Household, office and outdoor words a robot is sent to that the vocabulary lacks
 # (it was built from encyclopaedia and book text); they are words, not slips.
 DOMAIN_WORDS = frozenset('''
@@ -58,6 +60,7 @@ skillet saucepan trivet stovetop rangehood sconce lampshade cistern mulch trowel
 fishtank terrarium hamster gerbil parakeet budgie cockatiel poodle labrador tupperware thermos minibar
 kiosk deli gazebo hangar tarmac workbench toolbox wheelbarrow sprinkler gutter chimney mantel copier
 shredder printer scanner fridge freezer cooktop pantry closet dresser vanity hamper goggles mitt grater
+charger stethoscope stroller thermometer sideboard bookshelf radiator
 '''.split())
 
 
@@ -131,6 +134,8 @@ class Speller:
             stem = word[:-len(suf)]
             if not word.endswith(suf) or len(stem) < 3:
                 continue
+            if suf in _DOUBLING and stem[-1] not in _VOWELS and stem + stem[-1] + suf in w:
+                return False   # "controler" is "controller" with the doubled letter dropped
             if stem in w or stem + 'e' in w or (suf[0] == 'i' and stem + 'y' in w) or (
                     suf in _DOUBLING and len(stem) > 3 and stem[-1] == stem[-2] and stem[:-1] in w):
                 return True
@@ -155,7 +160,8 @@ class Speller:
         """
         if len(word) < 4 or not word.isalpha() or word in self.words or word in self.lexicon:
             return None   # (a listed word only: "jety" passes for jet + y, but it is no word)
-        fits = {c for c, kind in _slips(word) if c in others and c != word and not _inflection(word, c)}
+        fits = {c for c, kind in _slips(word) if c in others and c != word and not _inflection(word, c)
+                and (kind not in ('vowel', 'key') or len(word) >= 6)}   # "ping pong" is no slip
         return fits.pop() if len(fits) == 1 else None
 
     def correct(self, word: str) -> Optional[str]:
@@ -172,7 +178,7 @@ class Speller:
         if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word):
             best: Optional[tuple[int, bool, int, str]] = None
             for cand, kind in _slips(word):
-                rank = self.words.get(cand)
+                rank = self.words.get(cand, _DOMAIN_RANK if cand in DOMAIN_WORDS else None)
                 if rank is None or len(word) < _MIN_LENGTH[kind] or _inflection(word, cand):
                     continue
                 # a thing robots are sent to wins a tie of slips ("frige": fridge, not fringe)

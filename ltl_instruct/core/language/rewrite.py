@@ -1233,7 +1233,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
 
 
 def _or_group(prev: list[str]) -> Optional[tuple[int, int, list[NounPhrase]]]:
-    """Find the last either-or group of phrases in ``prev`` ("the gazebo or the shed"): start, end, phrases."""
+    """Find the last either-or group of phrases in ``prev`` ("the gazebo or the shed"): start, end, parts."""
     spans = _np_spans(prev)
     for k in range(len(spans) - 1, 0, -1):
         a, b = spans[k - 1], spans[k]

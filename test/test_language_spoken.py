@@ -653,6 +653,15 @@ FOUND_ROUND_H = [
     ('Go to the pool or the gym. Actually make that the gym or the sauna.', 'F near[gym] | F near[sauna]'),
     ('Go to the lift or the stairs - no, not the stairs, make it the ramp.', 'F near[lift] | F near[ramp]'),
     ('Go to the kiosk or the bench... actually just make it the bench.', 'F near[bench]'),
+    # "the south ones", "lost and found", "the last 2", labelled lists, forms of address
+    ('Fly over either the east solar rows or the west ones.',
+     'F near[east_solar_rows] | F near[west_solar_rows]'),
+    ('take the wallet to the lost and found', 'F (near[wallet] & F (pick[wallet] & F (near[lost_and_found] & '
+     'F release[wallet, lost_and_found])))'),
+    ('there is a mop, a bucket and a broom. go to either of the last 2', 'F near[bucket] | F near[broom]'),
+    ('Towers A, B and C are on the hill. Inspect the middle one.', 'F near[tower_b]'),
+    ('Gates 4, 5 and 6 - go to the last, then the first.', 'F (near[gate_6] & F near[gate_4])'),
+    ('Would you go to the piano, dear?', 'F near[piano]'),
 ]
 
 

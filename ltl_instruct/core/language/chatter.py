@@ -248,10 +248,15 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
     out: list[str] = []
     dropped: list[str] = []
     twice: list[str] = []
+    addressed: list[str] = []
     skip_comma = False
     for k, t in enumerate(tokens):
-        if t in HESITATIONS and not (t == 'er' and out and out[-1] == 'the'):
-            dropped.append(t)
+        before = tokens[k - 1] if k > 0 else '.'
+        after = tokens[k + 1] if k + 1 < len(tokens) else '.'
+        vocative = t in VOCATIVES and before in PUNCT and after in PUNCT or \
+            t == 'k' and (before in '.;!?' or after in '.;!?')   # "..., dear?", "k go to the desk"
+        if t in HESITATIONS and not (t == 'er' and out and out[-1] == 'the') or vocative:
+            (addressed if vocative else dropped).append(t)
             if out and out[-1] == ',' and k + 1 < len(tokens) and tokens[k + 1] in PUNCT:
                 out.pop()   # "silo, uh, then": one comma stays
             skip_comma = not out or out[-1] in PUNCT   # "C. Hmm, scratch that": no comma left at the start
@@ -266,9 +271,16 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
         out.append(t)
     if dropped:
         notes.append(f'left out "{" ".join(dropped)}" (hesitation)')
+    if addressed:
+        notes.append(f'left out "{" ".join(addressed)}" (a form of address)')
     if twice:
         notes.append(f'read "{" ".join(twice)}", said twice in a row, once')
     return out
+
+
+# Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
+VOCATIVES = frozenset({'dear', 'honey', 'sweetie', 'buddy', 'pal', 'mate', 'love', 'sir', 'madam', 'maam',
+                       'robot', 'drone', 'bot', 'friend', 'darling', 'hun', 'bro', 'dude'})
 
 
 # Words said twice in a row by slip ("the the"), never twice on purpose.

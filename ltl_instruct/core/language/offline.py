@@ -53,7 +53,7 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
     Step, Task as _Task, at_least, at_most, conjoin as _and, disjoin as _or, exactly, near_atom as _near,
     never_all as _never, render, until_avoid as _until_avoid,
 )
-from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, tokenize
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, tokenize
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
     avoided_referents_of, referents_of,
@@ -174,7 +174,7 @@ class OfflineTranslator:
                                      f'the limit is {MAX_INSTRUCTION_CHARS}')
         started = time.perf_counter()
         notes: list[str] = []
-        tokens = tokenize(chatter.strip_parentheticals(instruction, notes))
+        tokens = expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes)))
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         tokens = _correct_spelling(tokens, notes, self.landmarks)

@@ -370,7 +370,8 @@ class PhraseParser:
                 return None
             ref = self.last
             return NounPhrase(ref.descriptor, start, i, ref.head, pronoun)
-        one = words[-1] == 'one' and (len(words) == 1 or words[-2] in PLACEHOLDER_ADJECTIVES)
+        one = words[-1] in ('one', 'ones') and (len(words) == 1 or words[-2] in PLACEHOLDER_ADJECTIVES) and \
+            (words[-1] == 'one' or len(words) > 1)   # "the north vine rows or the south ones"
         if one:
             base = self.last.descriptor.name if self.last is not None else ''
             if len(words) == 1:

@@ -56,6 +56,8 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"'d\b", ' would'), (r"'s\b", 's'), (r"s'(?=\s)", 's'),
 )
 
+_NUMBER_NAMES = ('zero', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine')
+
 ORDINAL_DIGITS: dict[str, str] = {
     '1st': 'first', '2nd': 'second', '3rd': 'third', '4th': 'fourth', '5th': 'fifth',
     '6th': 'sixth', '7th': 'seventh', '8th': 'eighth', '9th': 'ninth', '10th': 'tenth',
@@ -142,6 +144,10 @@ def tokenize(text: str) -> list[str]:
         s = re.sub(r'(?<=[a-z]) 2 (?=(?:the|my|our|your|this|that|either|both)\b)', ' to ', s)
         s = re.sub(r'\b(go|head|come|get|walk|drive|fly|run|move|back|over|down|up|way|next|close) 2 '
                    r'(?=(?:a|an)\b)', r'\1 to ', s)
+    if 'lost and found' in s:   # one place, not two
+        s = s.replace('lost and found', 'lost_and_found')
+    s = re.sub(r'\b(first|last|other|next) ([2-9])\b(?! ?(?:m|cm|meters|metres|feet|ft)\b)',
+               lambda m: f'{m.group(1)} {_NUMBER_NAMES[int(m.group(2))]}', s)   # "the last 2"
     if ' form ' in s:
         s = _FORM_RE.sub(r'\1 from', s)
     out: list[str] = []
@@ -159,4 +165,38 @@ def tokenize(text: str) -> list[str]:
             out.append(w)
     while out and out[0] in PUNCT:
         out.pop(0)
+    return out
+
+
+_LABEL_RE = re.compile(r'^(?:[a-z]|[a-z]?\d{1,3}[a-z]?)$')
+
+
+def expand_labels(tokens: list[str]) -> list[str]:
+    """Name each labelled thing of a list in full: "turbines A, B and C" -> "turbine A, turbine B, ...".
+
+    Labels are single letters or short numbers ("gates A1, A2 and A3"), after a plural noun,
+    listed with commas and a last "and" or "or"; a later "the middle one" then means turbine B.
+    """
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        t = tokens[i]
+        labels: list[int] = []
+        if len(t) > 3 and t.endswith('s') and t.isalpha() and i + 1 < len(tokens):
+            j = i + 1
+            while j < len(tokens) and _LABEL_RE.match(tokens[j].lower()):
+                labels.append(j)
+                if j + 1 < len(tokens) and tokens[j + 1] in (',', 'and', 'or'):
+                    j += 2 if tokens[j + 1] != ',' or tokens[j + 2:j + 3] not in (['and'], ['or']) else 3
+                else:
+                    break
+        if len(labels) >= 2 and any(tokens[m - 1] in ('and', 'or') for m in labels[1:]):
+            noun = t[:-2] if t.endswith(('ches', 'shes', 'xes', 'sses')) else t[:-1]
+            end = labels[-1] + 1
+            for k in range(i + 1, end):
+                out.extend([noun, tokens[k]] if k in labels else [tokens[k]])
+            i = end
+            continue
+        out.append(t)
+        i += 1
     return out

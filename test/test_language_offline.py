@@ -193,6 +193,19 @@ def test_empty_or_garbage_is_a_typed_error(bad: str) -> None:
         T.translate(bad)
 
 
+def test_a_bug_before_the_reader_is_a_typed_error(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A rule that fails while corrections are read is INTERNAL_ERROR, never a raw exception."""
+    from ltl_instruct.core.language import offline
+
+    def broken(tokens: list[str], notes: list[str]) -> list[str]:
+        return [tokens[len(tokens)]]   # the kind of slip a rule makes: IndexError
+
+    monkeypatch.setattr(offline, 'apply_corrections', broken)
+    with pytest.raises(LtlInstructError) as err:
+        offline.OfflineTranslator().translate('go to the sofa, no wait, the chair')
+    assert err.value.code is ErrorCode.INTERNAL_ERROR and 'IndexError' in err.value.message
+
+
 def test_huge_instruction_is_refused() -> None:
     with pytest.raises(LtlInstructError) as e:
         T.translate('go to the sofa then ' * 500)

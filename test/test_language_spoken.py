@@ -662,6 +662,21 @@ FOUND_ROUND_H = [
     ('Towers A, B and C are on the hill. Inspect the middle one.', 'F near[tower_b]'),
     ('Gates 4, 5 and 6 - go to the last, then the first.', 'F (near[gate_6] & F near[gate_4])'),
     ('Would you go to the piano, dear?', 'F near[piano]'),
+    # polite frames, "making your way", "meet me at", "maintain distance", "or else", "whatever you do"
+    ('Would you be so kind as to take the vase to the hall table? I would be much obliged.',
+     'F (near[vase] & F (pick[vase] & F (near[hall_table] & F release[vase, hall_table])))'),
+    ('Would you be a dear and go to the pantry? And do keep away from the oven.',
+     'F near[pantry] & G !near[oven]'),
+    ('could you start making your way to the lobby', 'F near[lobby]'),
+    ('meet me at the gate or the fountain', 'F near[gate] | F near[fountain]'),
+    ('fly to the tower and maintain a safe distance from the cables', 'F near[tower] & G !near[cables]'),
+    ('go to the red door, or else the blue one', 'F near[red_door] | F near[blue_door]'),
+    ('go to the barn but whatever you do keep away from the bull', 'F near[barn] & G !near[bull]'),
+    ('go to the shed, and when you are done there go to the porch', 'F (near[shed] & F near[porch])'),
+    ('Put the cup either on the shelf or in the sink.',
+     'F (near[cup] & F (pick[cup] & (F (near[shelf] & F release[cup, shelf]) | '
+     'F (near[sink] & F release[cup, sink]))))'),
+    ('The office, please, as quick as you can.', 'F near[office]'),
 ]
 
 

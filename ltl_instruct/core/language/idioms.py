@@ -547,6 +547,35 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<m>more|less|fewer|rather|other|no later|no sooner|earlier|later) then\b', r'\g<m> than'),
     Rule('on your way over to the garden', r'\b(?P<w>on (?:your|the) way) (?:over|across|down|up) '
          r'(?=to |towards )', r'\g<w> '),
+    Rule('would you be so kind as to carry the tin',
+         r'\b(?:(?:would|could|will) you (?:please )?)?be (?:so |very |so very )?(?:kind|good) '
+         r'(?:as|enough) to\b',
+         ''),
+    Rule('would you be a dear and go',
+         r'\b(?:(?:would|could|will) you )?be a (?:dear|star|love|darling) and\b', ''),
+    Rule('do keep away from the radiator: an emphatic "do"',
+         r'(?<!you )\bdo (?:please )?(?=(?:keep|stay|avoid|go|bring|take|visit|come|check|head|remember|'
+         r'steer|fly)\b)', ''),
+    Rule('making your way to the desk',
+         r'\bmak(?:e|ing) (?:your|its) way (?:over |back |down |up |across )?(?=to\b)', 'go '),
+    Rule('go to the henhouse or the shed does not matter which',
+         r'(?<=[a-z]) (?=(?:it )?does not matter which\b)', ' , '),
+    Rule('does not matter which but whatever you do',
+         r'\b(?P<r>does not matter which(?: one)?) (?=but |and |so )', r'\g<r> , '),
+    Rule('go to the shed but whatever you do keep away from the fence',
+         r'(?<=[a-z])(?: ,)? (?:but|and|so) whatever (?:else )?you do(?: ,)? ', ' , whatever you do , '),
+    Rule('then when you are done there, the greenhouse',
+         r'\b(?:and )?(?:then )?(?:when|once) (?:you are|you have been|you have) (?:done|finished)'
+         r'(?: there| with that| with it| here)?\b', 'then'),
+    Rule('meet me at the atrium', r'\bmeet (?:me|us|them|him|her) (?=(?:at|by|in|near|outside) )', 'go '),
+    Rule('maintain distance from the cables',
+         r'\b(?:maintain|keep) (?:a |your )?(?:safe |good |wide )?distance (?:away )?from\b',
+         'keep away from'),
+    Rule('or else the green one', r'\bor else\b', 'or'),
+    Rule('put the keys either in the bowl or in the drawer',
+         r'\b(?P<v>put|place|bring|take|leave|drop|set) (?P<o>(?:the|my|your|a|an|this|that|those|these) '
+         r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) either (?P<p>in|on|into|onto|to|at|by|inside|under) ',
+         r'\g<v> \g<o> \g<p> either '),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

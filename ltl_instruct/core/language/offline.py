@@ -174,25 +174,17 @@ class OfflineTranslator:
                                      f'the limit is {MAX_INSTRUCTION_CHARS}')
         started = time.perf_counter()
         notes: list[str] = []
-        tokens = expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes)))
-        if not any(t not in PUNCT for t in tokens):
-            raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
-        tokens = _correct_spelling(tokens, notes, self.landmarks)
-        tokens = chatter.strip_headings(tokens, notes) if ':' in tokens else tokens
-        tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
-                                                 notes))
-        tokens = orders.apply_reverse(resolve_list_references(tokens, notes), notes)
-        # hesitations mark corrections ("the dishwasher, erm, the sink"): dropped once those are read
-        tokens = chatter.strip_hesitations(apply_exclusions(apply_corrections(tokens, notes), notes), notes)
-        tokens = rewrite_idioms(tokens)
-        reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope,
-                         digits=self.numbers == 'digits')
         try:
-            formula = reader.read(list(tokens))
-        except TranslationError as e:
-            self._attach_best_reading(e, tokens)
-            raise
-        except (IndexError, KeyError, ValueError, AttributeError, RecursionError, AssertionError) as e:
+            tokens = self._prepare(instruction, notes)
+            reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope,
+                             digits=self.numbers == 'digits')
+            try:
+                formula = reader.read(list(tokens))
+            except TranslationError as e:
+                self._attach_best_reading(e, tokens)
+                raise
+        except (IndexError, KeyError, ValueError, AttributeError, RecursionError, AssertionError,
+                TypeError) as e:
             # a bug in the rules, reported as one (typed), never a crash of the caller
             raise LtlInstructError(f'the offline translator failed on this instruction ({type(e).__name__}: '
                                    f'{e}); please report it', ErrorCode.INTERNAL_ERROR,
@@ -203,6 +195,20 @@ class OfflineTranslator:
             # clauses guessed at or left out: the verification dialog shows these as warnings, first
             extra['unread'] = [u.note() for u in reader.unread]
         return Translation(instruction, formula, self.name, tuple(notes), extra)
+
+    def _prepare(self, instruction: str, notes: list[str]) -> list[str]:
+        """Tokens of the instruction with typos, chatter, list references and corrections resolved."""
+        tokens = expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes)))
+        if not any(t not in PUNCT for t in tokens):
+            raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
+        tokens = _correct_spelling(tokens, notes, self.landmarks)
+        tokens = chatter.strip_headings(tokens, notes) if ':' in tokens else tokens
+        tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
+                                                 notes))
+        tokens = orders.apply_reverse(resolve_list_references(tokens, notes), notes)
+        # hesitations mark corrections ("the dishwasher, erm, the sink"): dropped once those are read
+        tokens = chatter.strip_hesitations(apply_exclusions(apply_corrections(tokens, notes), notes), notes)
+        return rewrite_idioms(tokens)
 
     def _attach_best_reading(self, error: TranslationError, tokens: list[str]) -> None:
         """Add to a refusal what the rest of the instruction says, read with every clause allowed to degrade.

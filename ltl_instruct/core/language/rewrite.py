@@ -716,7 +716,8 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     while end > 0 and prev[end - 1] in PUNCT:
         end -= 1
     b = end
-    while b > 0 and not (prev[b - 1] in '.;!?' or prev[b - 1] in (',', 'then', 'and') and prev[b] in _VERBS):
+    while b > 0 and not (prev[b - 1] in '.;!?' or prev[b - 1] in (',', 'then', 'and') and b < len(prev) and
+                         prev[b] in _VERBS):
         b -= 1
     if b < end and prev[b] != seg[0]:
         # "on the way to the hall avoid the stairs, no wait, avoid the door": the verb said again

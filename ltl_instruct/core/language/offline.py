@@ -484,6 +484,9 @@ class _Reader:
         if any(t in chatter.REQUEST_WORDS - ({'need'} if tail[0] == 'the' else set()) for t in tail[1:3]):
             return sentence   # "..., we want the hall avoided"; but "the bikes need counting" says why
         first = tail[0]
+        if len(tail) >= 3 and tail[1] in ('is', 'are') and tail[2].endswith('ing') and len(tail[2]) > 4 and \
+                first not in DETS and first not in chatter.PREPOSITIONS:
+            return self._noted_cut(sentence, cut)   # "..., grandma is sleeping"
         if first in ('i', 'we', 'somebody', 'someone', 'everyone', 'nobody', 'my', 'our', 'his', 'her',
                      'their'):
             return self._noted_cut(sentence, cut)

@@ -202,7 +202,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return nxt not in ('times', 'time', 'more')
     if w == 'can':   # "the soda can", "the can" are things; "you can go" is not
         after_det = i > 0 and tokens[i - 1] in CAN_DETERMINERS
-        return (have_name or after_det) and nxt not in ('you', 'i', 'we', 'go', 'be', 'not')
+        return (have_name or after_det) and nxt not in ('you', 'i', 'we', 'go', 'be', 'not', 'wait', 'come',
+                                                        'stay', 'do', 'have', 'get', 'see', 'hold', 'only',
+                                                        'also', 'still', 'always', 'never', 'just')
     if w in ('once', 'twice', 'thrice'):
         return False
     if w in NUMBER_WORDS or w.isdigit():

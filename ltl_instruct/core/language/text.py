@@ -52,6 +52,7 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"'s(?= (?:fine|ok|okay|alright|safe|locked|closed|shut|open|broken|blocked|up|out|off|empty|full|wet|"
      r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
      r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp)\b)", ' is'),
+    (r"'s(?= [a-z]+ing\b)", ' is'),   # "grandma's sleeping": "is", before a verb in -ing
     # a possessive keeps its s, as the data sets' names do ("the supervisor's desk": supervisors_desk)
     (r"'d\b", ' would'), (r"'s\b", 's'), (r"s'(?=\s)", 's'),
 )

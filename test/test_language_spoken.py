@@ -605,9 +605,9 @@ FOUND_ROUND_H = [
     ('go to the uh supply room, um, then the office', 'F (near[supply_room] & F near[office])'),
     ('Go to the break room. Hm, no, the lounge.', 'F near[lounge]'),
     ('avoid the the stairs and go to the hall', 'F near[hall] & G !near[stairs]'),
-    # a possessive keeps its s; a number stays as written
+    # a possessive drops its s; a number stays as written
     ("Go to the manager's office and then locker seven",
-     'F (near[managers_office] & F near[locker_seven])'),
+     'F (near[manager_office] & F near[locker_seven])'),
     ('go to dock 4', 'F near[dock_4]'),
     # spelling: a name typed twice, "than" for "then", a domain word on a tie, a long vowel slip
     ('Fly over the pier, then the marina. Keep off the beach on the way to the marnia.',

@@ -53,8 +53,9 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
      r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
      r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp)\b)", ' is'),
     (r"'s(?= [a-z]+ing\b)", ' is'),   # "grandma's sleeping": "is", before a verb in -ing
-    # a possessive keeps its s, as the data sets' names do ("the supervisor's desk": supervisors_desk)
-    (r"'d\b", ' would'), (r"'s\b", 's'), (r"s'(?=\s)", 's'),
+    # a possessive drops its 's, as most data sets' names do ("the supervisor's desk": supervisor_desk;
+    # "the kids' table": kids_table)
+    (r"'d\b", ' would'), (r"'s\b", ''), (r"s'(?=\s)", 's'),
 )
 
 _NUMBER_NAMES = ('zero', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine')

@@ -689,6 +689,17 @@ FOUND_ROUND_H = [
     ("avoid the nursery, the baby's sleeping", 'G !near[nursery]'),
     ('The oven can wait: go there only after the sink.', 'F near[oven] & (!near[oven] U near[sink])'),
     ('the pond is off limits tho', 'G !near[pond]'),
+    # from blind set M: "scratch that, X" replaces, "your first stop is", "need checking",
+    # "wherever's clearer", "X after all", "as long as you never", "that's where I need you"
+    ('Fly to the water tower. Scratch that, the grain silo.', 'F near[grain_silo]'),
+    ('Bring the ladder to bay one. Scratch that, bay two.',
+     'F (near[ladder] & F (pick[ladder] & F (near[bay_two] & F release[ladder, bay_two])))'),
+    ('Your first stop is the lab. Your last stop is the lobby.', 'F (near[lab] & F near[lobby])'),
+    ('Both the pump and the tank need checking.', 'F near[pump] & F near[tank]'),
+    ('Land on the east pad or the west pad, wherever is clearer.', 'F near[east_pad] | F near[west_pad]'),
+    ('Go to the desk. No, the door. Sorry, the desk after all.', 'F near[desk]'),
+    ('Fly to the weir, as long as you never go over the island.', 'F near[weir] & G !near[island]'),
+    ("The fume cupboard behind the sink, that's where I need you.", 'F near[fume_cupboard::isbehind(sink)]'),
 ]
 
 

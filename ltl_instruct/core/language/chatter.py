@@ -114,7 +114,9 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('as', 'fast', 'as', 'you', 'can'), ('as', 'quickly', 'as', 'possible'), ('as', 'fast', 'as', 'possible'),
     ('thank', 'you', 'ever', 'so', 'much'),
     ('if', 'you', 'please'), ('i', 'would', 'be', 'much', 'obliged'), ('i', 'would', 'be', 'grateful'),
-    ('much', 'obliged'), ('though',), ('anyway',), ('anyways',),
+    ('much', 'obliged'), ('though',), ('anyway',), ('anyways',), ('that', 'is', 'where', 'i', 'need', 'you'),
+    ('that', 'is', 'where', 'i', 'want', 'you'), ('that', 'is', 'where', 'you', 'need', 'to', 'go'),
+    ('and', 'take', 'a', 'look'), ('and', 'have', 'a', 'look'), ('and', 'wait'), ('and', 'wait', 'there'),
     ('many', 'thanks'), ('when', 'you', 'are', 'ready'), ('whenever', 'you', 'are', 'ready'),
     ('in', 'a', 'minute'), ('straight', 'away'), ('under', 'any', 'circumstances'), ('whatever', 'happens'),
     ('first', 'thing'), ('first', 'thing', 'tomorrow'), ('first', 'thing', 'in', 'the', 'morning'),
@@ -554,7 +556,8 @@ _REMARK_RE = re.compile(
     r'|(?:that|the) order (?:matters|is important)(?: to (?:me|us))?'
     r'|(?:any|any one|anyone|either one|whichever one|whichever)'
     r'(?: of (?:them|those|these|the (?:two|three|four|five)(?: \w+)?))?(?: (?:will do|is fine|works))?'
-    r'|whichever(?: one)? you (?:get to|reach|see|like|want|prefer|come to)(?: first)?'
+    r'|whichever(?: one)? you (?:get to|reach|see|like|want|prefer|come to|find|spot)(?: first)?'
+    r'|wherever(?: is| s)? (?:clearer|closer|nearer|quieter|easier|safer|less \w+)'
     r'|whichever(?: one)? (?:is |s )?(?:easier|easiest|closer|nearer|quicker|faster|nearest)'
     r'(?: (?:for you|to you|to get to))?'
     r'|(?:either|any|either one|any one) works(?: (?:for me|fine))?(?: honestly)?'

@@ -515,6 +515,8 @@ class _Reader:
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
             self.first_tail = None
+            while len(sentence) > 1 and sentence[-1] == ',':
+                sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
             sentence = self._drop_trailing_reason(sentence)
             if self._places_only(sentence):
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
@@ -592,8 +594,10 @@ class _Reader:
                     i + 1 >= n or sentence[i + 1] in DETS or sentence[i + 1] in STOPWORDS):
                 return False   # a verb, not a name ("bin store" is a place, "bin the cups" is no list)
             np = self.phrases.parse(sentence, i)
-            if np is None or np.pronoun not in ('', 'one') or np.end <= i or np.end > n or not all(
-                    _is_word(w) for w in sentence[i:np.end] if w not in PUNCT) or any(
+            if np is None or np.pronoun not in ('', 'one') or np.end <= i or np.end > n or not (all(
+                    _is_word(w) for w in sentence[i:np.end] if w not in PUNCT) or _is_word(np.head) and all(
+                    w.isalpha() and any(v in w for v in 'aeiouy') for w in sentence[i:np.end]
+                    if w not in PUNCT)) or any(
                     w in chatter.FINITE_VERBS or w in _REFLEXIVE for w in sentence[i:np.end]) or (
                     np.end - i == 1 and sentence[i] in chatter.INTERJECTIONS):
                 return False   # no words it knows ("qwzx vvv"), or a statement ("my keys fell behind...")

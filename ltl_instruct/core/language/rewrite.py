@@ -398,8 +398,8 @@ def _strip_corr(seg: list[str]) -> list[str]:
             seg = seg[1:]   # "make it the taxi rank": "it" goes with "make"
         seg = seg[1:]
     while seg and seg[-1] in (',', 'instead', 'please', 'then', 'rather') or seg[-2:] in (
-            ['i', 'mean'], ['i', 'meant']):
-        seg = seg[:-2] if seg[-1] in ('mean', 'meant') else seg[:-1]
+            ['i', 'mean'], ['i', 'meant'], ['after', 'all']):
+        seg = seg[:-2] if seg[-1] in ('mean', 'meant', 'all') else seg[:-1]
     return seg
 
 
@@ -937,6 +937,13 @@ def _leave_be(prev: list[str], seg: list[str], notes: list[str]) -> Optional[lis
 
 
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    named = {w for sp in _np_spans(prev) for w in prev[sp.start:sp.end]} if marker in _CANCEL else set()
+    if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and (
+            seg[1] in DETERMINERS or seg[1] in _VERBS or seg[1] in named):
+        # "scratch that, the observatory dome", "scratch that, bay two": what replaces it
+        marker = 'no'
+        if seg[1] not in DETERMINERS and seg[1] not in _VERBS:
+            seg = [','] + ['the'] + seg[1:]
     said_no = marker == 'no' or 'no' in seg[:3]
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row

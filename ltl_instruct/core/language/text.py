@@ -146,6 +146,9 @@ def tokenize(text: str) -> list[str]:
         s = re.sub(r'(?<=[a-z]) 2 (?=(?:the|my|our|your|this|that|either|both)\b)', ' to ', s)
         s = re.sub(r'\b(go|head|come|get|walk|drive|fly|run|move|back|over|down|up|way|next|close) 2 '
                    r'(?=(?:a|an)\b)', r'\1 to ', s)
+    if ' need' in s:   # "the barn and the trough need checking": a request to check them
+        s = re.sub(r'(?:\bboth )?\b((?:the|my|your|our) [^,.;:!?]+?) (?:need|needs) (?:checking|checked|'
+                   r'a check|inspecting|inspected|a look|looking at)\b', r'check \1', s)
     if 'lost and found' in s:   # one place, not two
         s = s.replace('lost and found', 'lost_and_found')
     s = re.sub(r'\b(first|last|other|next) ([2-9])\b(?! ?(?:m|cm|meters|metres|feet|ft)\b)',

@@ -591,8 +591,8 @@ RULES: tuple[Rule, ...] = (
          r'(?P<j>, and |, then |, | and | then )(?P<x>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) last$',
          r'\g<j>finally \g<x>'),
     Rule('your first stop is the linen room',
-         r'\b(?:your|the) (?:first|next|second|third|fourth|final|last) (?:stop|destination|goal|port of call)'
-         r' (?:is|will be|should be|has to be)\b', 'go to'),
+         r'\b(?:your|the) (?:first|next|second|third|fourth|final|last) '
+         r'(?:stop|destination|goal|port of call) (?:is|will be|should be|has to be)\b', 'go to'),
     Rule('go to the outfall, as long as you never go over the island',
          r'(?: ,)? as long as (?:you )?(?=never |do not |avoid |stay |keep |steer )', ' , and '),
     Rule('once you have clocked in at the desk: a stop there',

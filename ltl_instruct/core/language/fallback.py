@@ -149,7 +149,8 @@ class Snapshot:
         The translation's notes, which the reader appends to (restored by truncation).
     """
 
-    _SHARED = ('phrases', 'rules', 'notes')   # kept as they are (the parser's memory of names is harmless)
+    # kept as they are (the parser's memory of names is harmless; a refusal recorded stays recorded)
+    _SHARED = ('phrases', 'rules', 'notes', 'first_error', 'record')
 
     def __init__(self, reader: Any, notes: list[str]) -> None:
         self._reader = reader

@@ -176,13 +176,17 @@ class OfflineTranslator:
         notes: list[str] = []
         try:
             tokens = self._prepare(instruction, notes)
+            # one pass: a clause that cannot be read is recorded, left out, and the rest read on, so
+            # a refusal carries the best reading of the rest without a second reading
             reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope,
-                             digits=self.numbers == 'digits')
+                             digits=self.numbers == 'digits', record=True)
             try:
                 formula = reader.read(list(tokens))
             except TranslationError as e:
-                self._attach_best_reading(e, tokens)
-                raise
+                raise reader.first_error or e
+            if reader.first_error is not None:
+                _attach_best_reading(reader.first_error, formula, reader)
+                raise reader.first_error
         except (IndexError, KeyError, ValueError, AttributeError, RecursionError, AssertionError,
                 TypeError) as e:
             # a bug in the rules, reported as one (typed), never a crash of the caller
@@ -210,25 +214,20 @@ class OfflineTranslator:
         tokens = chatter.strip_hesitations(apply_exclusions(apply_corrections(tokens, notes), notes), notes)
         return rewrite_idioms(tokens)
 
-    def _attach_best_reading(self, error: TranslationError, tokens: list[str]) -> None:
-        """Add to a refusal what the rest of the instruction says, read with every clause allowed to degrade.
 
-        The refusal stands (an order or avoidance that cannot be read is not dropped silently),
-        but its details carry ``best_reading`` (the formula without the unreadable parts),
-        its ``referents`` and ``avoid``, and ``left_out`` (what that reading guessed or left
-        out): the verification dialog offers the reading to be confirmed or corrected, and a
-        caller learns which places the instruction names.
-        """
-        reader = _Reader(self.avoid_scope, [], self.landmarks, self.once_scope, self.after_scope,
-                         lenient=True, digits=self.numbers == 'digits')
-        try:
-            guess = reader.read(list(tokens))
-        except (LtlInstructError, IndexError, KeyError, ValueError, AttributeError, RecursionError,
-                AssertionError):
-            return
-        error.details.update(best_reading=str(guess), referents=[str(d) for d in referents_of(guess)],
-                             avoid=[str(d) for d in avoided_referents_of(guess)],
-                             left_out=[u.note() for u in reader.unread])
+
+def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Reader') -> None:
+    """Add to a refusal what the rest of the instruction says (read with the unreadable parts left out).
+
+    The refusal stands (an order or avoidance that cannot be read is not dropped silently),
+    but its details carry ``best_reading`` (the formula without the unreadable parts), its
+    ``referents`` and ``avoid``, and ``left_out`` (what that reading guessed or left out):
+    the verification dialog offers the reading to be confirmed or corrected, and a caller
+    learns which places the instruction names.
+    """
+    error.details.update(best_reading=str(guess), referents=[str(d) for d in referents_of(guess)],
+                         avoid=[str(d) for d in avoided_referents_of(guess)],
+                         left_out=[u.note() for u in reader.unread])
 
 
 # "while you carry it", "as you're pushing the cart": the time the object is held.
@@ -403,9 +402,12 @@ class _Reader:
     """Reads the clauses of one instruction into a :class:`_Task`."""
 
     def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = (),
-                 once_scope: str = 'run', after_scope: str = 'goal', lenient: bool = False,
+                 once_scope: str = 'run', after_scope: str = 'goal', record: bool = False,
                  digits: bool = False) -> None:
-        self.lenient = lenient   # every clause may degrade, constraints too (for a refusal's best reading)
+        # with record, a clause that may not degrade and cannot be read is kept as first_error (the
+        # instruction is refused) and left out, and reading goes on: the rest is the best reading
+        self.record = record
+        self.first_error: Optional[TranslationError] = None
         self.once_scope = once_scope
         self.after_scope = after_scope
         self.no_revisits = False   # "visit each place only once", "no revisiting"
@@ -670,10 +672,21 @@ class _Reader:
         Returns the scope that carries to the next clause.
         """
         unread = len(self.unread)
-        if not self.lenient and not fallback.may_degrade(clause.tokens):
-            out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
-            self.read_parts += not sentence or len(self.unread) == unread
-            return out
+        if not fallback.may_degrade(clause.tokens):
+            if not self.record:
+                out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
+                self.read_parts += not sentence or len(self.unread) == unread
+                return out
+            snap = fallback.Snapshot(self, self.notes)
+            try:
+                out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
+                self.read_parts += not sentence or len(self.unread) == unread
+                return out
+            except TranslationError as e:
+                self.first_error = self.first_error or e   # the refusal names the first part not read
+                snap.restore()
+                self._degrade(clause, scope, e)
+                return scope
         snap = fallback.Snapshot(self, self.notes)
         try:
             out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)

@@ -215,7 +215,6 @@ class OfflineTranslator:
         return rewrite_idioms(tokens)
 
 
-
 def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Reader') -> None:
     """Add to a refusal what the rest of the instruction says (read with the unreadable parts left out).
 

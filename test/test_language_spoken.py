@@ -700,6 +700,20 @@ FOUND_ROUND_H = [
     ('Go to the desk. No, the door. Sorry, the desk after all.', 'F near[desk]'),
     ('Fly to the weir, as long as you never go over the island.', 'F near[weir] & G !near[island]'),
     ("The fume cupboard behind the sink, that's where I need you.", 'F near[fume_cupboard::isbehind(sink)]'),
+    # the delivery an "after dropping off X" names; "while carrying anything" holds for every delivery;
+    # "drop the avoidance part"; "the dog's outside" (is)
+    ('bring the mug to the sink and then the towel to the rail. after dropping off the mug, keep away '
+     'from the oven',
+     'F (near[mug] & F (pick[mug] & F (near[sink] & F (release[mug, sink] & G !near[oven] & '
+     'F (near[towel] & F (pick[towel] & F (near[rail] & F release[towel, rail])))))))'),
+    ('Take the pen and the stapler to the desk, and avoid the printer while you are carrying anything.',
+     'F (near[pen] & F (pick[pen] & (!near[printer] U (near[desk] & F release[pen, desk])))) & '
+     'F (near[stapler] & F (pick[stapler] & (!near[printer] U (near[desk] & F release[stapler, desk]))))'),
+    ('Take the box to the van and avoid the pond while carrying it. Actually, drop the avoidance part.',
+     'F (near[box] & F (pick[box] & F (near[van] & F release[box, van])))'),
+    ("Put the milk in the fridge and keep clear of the dog while carrying it. Oh wait, I meant the cat, "
+     "the dog's outside.",
+     'F (near[milk] & F (pick[milk] & (!near[cat] U (near[fridge] & F release[milk, fridge]))))'),
 ]
 
 

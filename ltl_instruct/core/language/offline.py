@@ -229,6 +229,8 @@ def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Read
                          left_out=[u.note() for u in reader.unread])
 
 
+# "while you're carrying anything": what is carried in every delivery of the instruction.
+_ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'either', 'each', 'both'})
 # "while you carry it", "as you're pushing the cart": the time the object is held.
 _CARRY_NOW = frozenset({'carry', 'carries', 'hold', 'holds', 'transport', 'push', 'pushing', 'pull',
                         'pulling', 'wheel', 'wheeling', 'haul', 'hauling', 'lug', 'lugging', 'tow', 'towing'})
@@ -1697,6 +1699,9 @@ class _Reader:
         if w in ('carrying', 'holding', 'transporting', 'bringing', 'taking', 'moving', 'returning') or (
                 tokens[i - 1] in ('while', 'as') and w in _CARRY_NOW):
             k = j + 1
+            if k < len(tokens) and tokens[k] in _ANY_LOAD:
+                # "while you're carrying anything": every delivery
+                return _Scope('carry', None, 'all'), k + 1 + (tokens[k + 1:k + 2] == ['of'])
             np = self.phrases.parse(tokens, k)
             end = np.end if np is not None else k
             if end < len(tokens) and tokens[end] in ('back', 'over'):
@@ -1724,7 +1729,8 @@ class _Reader:
             end = np.end if np is not None else k
             while end < len(tokens) and tokens[end] in ('off', 'down'):
                 end += 1
-            return _Scope('after_release'), end
+            # "after dropping off the cup": the delivery of the cup, not the last one
+            return _Scope('after_release', np if np is not None and not np.pronoun else None), end
         if tokens[i - 1] == 'while' and w in ('go', 'walk', 'drive', 'fly', 'head', 'move', 'travel', 'get'):
             k = j + 1
             while k < len(tokens) and tokens[k] in GOAL_PARTICLES - {'there', 'here'}:
@@ -1754,6 +1760,14 @@ class _Reader:
         # every data set's golds read it; "when you are at X": a rule
         event = 'goal' if tokens[i - 1] in ('after', 'once') else 'near'
         return _Scope('after', self._resolve(np, place=True), event), np.end
+
+    def _delivery_of(self, np: NounPhrase) -> Optional[Step]:
+        """The top-level delivery whose object ``np`` names (the same thing, or the same head word)."""
+        for st in reversed(self.task.chain):
+            if st.kind == 'deliver' and any(t == np.descriptor or t.name.split('_')[-1] == np.head
+                                            for t in st.targets):
+                return st
+        return None
 
     def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:
         if np.pronoun in ('there', 'here') and self.last_place is not None:
@@ -2119,6 +2133,12 @@ class _Reader:
             return
         if kind == 'carry':
             step = self.task.last_step(('deliver',))
+            if scope is not None and scope.event == 'all':
+                every = [st for st in self.task._all_steps() if st.kind == 'deliver']
+                for st in every:
+                    st.carry_avoid.extend(targets)
+                if every:
+                    return
             if step is not None:
                 step.carry_avoid.extend(targets)
                 return
@@ -2129,6 +2149,9 @@ class _Reader:
                 return
         if kind == 'after_release':
             step = self.task.last_step(('deliver',))
+            if scope is not None and scope.target is not None:
+                named = self._delivery_of(scope.target)
+                step = named or step
             if step is not None:
                 step.after_release_avoid.extend(targets)
                 return

@@ -617,7 +617,9 @@ _RETRACT: tuple[tuple[str, ...], ...] = (
     ('no', 'need', 'to', 'stay', 'away', 'from'),
     ('do', 'not', 'need', 'to', 'stay', 'away', 'from'), ('can', 'go', 'near'), ('it', 'is', 'safe'),
     ('do', 'not', 'worry', 'about'),
-)
+) + tuple((verb, 'the', what, part)   # "drop the avoidance part"
+          for verb in ('drop', 'forget', 'ignore', 'skip', 'scratch', 'remove', 'cancel')
+          for what in ('avoidance', 'avoid', 'avoiding', 'keep', 'away') for part in ('part', 'bit'))
 
 
 def _retract_avoidance(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:

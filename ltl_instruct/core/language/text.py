@@ -53,6 +53,9 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
      r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
      r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp)\b)", ' is'),
     (r"'s(?= [a-z]+ing\b)", ' is'),   # "grandma's sleeping": "is", before a verb in -ing
+    # "the dog's outside", "the cat's in the kitchen": "is", before where a thing is
+    (r"'s(?= (?:outside|inside|here|there|away|asleep|awake|home|upstairs|downstairs|in|at|on|under|behind|"
+     r"out|around|nearby|next to|by the)\b)", ' is'),
     # a possessive drops its 's, as most data sets' names do ("the supervisor's desk": supervisor_desk;
     # "the kids' table": kids_table)
     (r"'d\b", ' would'), (r"'s\b", ''), (r"s'(?=\s)", 's'),

@@ -1762,7 +1762,7 @@ class _Reader:
         return _Scope('after', self._resolve(np, place=True), event), np.end
 
     def _delivery_of(self, np: NounPhrase) -> Optional[Step]:
-        """The top-level delivery whose object ``np`` names (the same thing, or the same head word)."""
+        """Return the top-level delivery whose object ``np`` names (the same thing, or its head word)."""
         for st in reversed(self.task.chain):
             if st.kind == 'deliver' and any(t == np.descriptor or t.name.split('_')[-1] == np.head
                                             for t in st.targets):

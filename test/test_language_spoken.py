@@ -714,6 +714,8 @@ FOUND_ROUND_H = [
     ("Put the milk in the fridge and keep clear of the dog while carrying it. Oh wait, I meant the cat, "
      "the dog's outside.",
      'F (near[milk] & F (pick[milk] & (!near[cat] U (near[fridge] & F release[milk, fridge]))))'),
+    # "X before you go to Y" is "Y only after X", as "X before Y" (the route order for drone-planning)
+    ('Stop at the kiosk before you go to the gate.', 'F near[gate] & (!near[gate] U near[kiosk])'),
 ]
 
 

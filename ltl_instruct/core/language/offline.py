@@ -3263,7 +3263,8 @@ class _Reader:
             if nps:
                 others = [np.descriptor for np in nps]
                 moved = self.task.chain.pop()
-                if word == 'before' and k > 1:  # "before going to Y": the route order only
+                if word == 'before' and k > 1 and self.avoid_scope == 'goal':
+                    # "before going to Y" in drone-planning's conventions: the route order only
                     self.task.chain.append(moved)
                     self.task.chain.extend(Step('visit', [d]) for d in others)
                 elif word == 'before':

@@ -716,6 +716,11 @@ FOUND_ROUND_H = [
      'F (near[milk] & F (pick[milk] & (!near[cat] U (near[fridge] & F release[milk, fridge]))))'),
     # "X before you go to Y" is "Y only after X", as "X before Y" (the route order for drone-planning)
     ('Stop at the kiosk before you go to the gate.', 'F near[gate] & (!near[gate] U near[kiosk])'),
+    # "behind X and next to Y" describes one thing; "after to" for "then"; "should you", "beforehand"
+    ('Find the cart that is behind the shed and next to the hose.',
+     'F near[cart::isbehind(shed)::isnextto(hose)]'),
+    ('Go first to the bakery, after to the bank.', 'F (near[bakery] & F near[bank])'),
+    ('Should you go into the lab at all, stop at the sink beforehand.', '!near[lab] W near[sink]'),
 ]
 
 

@@ -595,6 +595,12 @@ RULES: tuple[Rule, ...] = (
          r'(?:stop|destination|goal|port of call) (?:is|will be|should be|has to be)\b', 'go to'),
     Rule('go to the outfall, as long as you never go over the island',
          r'(?: ,)? as long as (?:you )?(?=never |do not |avoid |stay |keep |steer )', ' , and '),
+    Rule('go first to the skeleton, after to the gift shop: "after" for "then"',
+         r' , after (?=to )', ' , then '),
+    Rule('should you need to pass through the kitchen at all: "if"',
+         r'\bshould you (?:need to |have to |want to |happen to |ever )?', 'if you '),
+    Rule('stop at the wash station beforehand', r'\b(?:beforehand|before hand|in advance|ahead of time)\b',
+         'first'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -229,6 +229,17 @@ def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Read
                          left_out=[u.note() for u in reader.unread])
 
 
+def _after_relation(tokens: Sequence[str], i: int) -> bool:
+    """Whether the phrase just before ``tokens[i]`` is the object of a relation ("behind the library").
+
+    Then "and next to the lamp post" adds a relation to the same thing, not a next goal.
+    """
+    k = max((m for m in range(max(0, i - 6), i) if tokens[m] in DETS), default=-1)
+    return k > 0 and tokens[k - 1] in ('behind', 'under', 'on', 'above', 'below', 'near', 'by', 'of',
+                                       'beside', 'inside', 'underneath', 'beneath', 'opposite', 'between',
+                                       'to')
+
+
 # "while you're carrying anything": what is carried in every delivery of the instruction.
 _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'either', 'each', 'both'})
 # "while you carry it", "as you're pushing the cart": the time the object is held.
@@ -1001,6 +1012,8 @@ class _Reader:
                     boundary, skip = 'or', j - i
                 elif j < n and (tokens[j] in CLAUSE_STARTERS or t in (',', 'and') and tokens[j - 1] in (
                         ',', 'and') and self._unknown_verb(tokens, j) is not None) and t != 'while' and not (
+                        t == 'and' and _starts(tokens, j, ['next', 'to']) and _after_relation(tokens, i)
+                ) and not (
                         tokens[j] in ('at', 'in', 'on', 'twice', 'three', 'exactly', 'order', 'and')
                         and not _starts(tokens, j, ['on', 'the', 'way']) and not _starts(
                             tokens, j, ['on', 'your', 'way'])):

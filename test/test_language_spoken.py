@@ -721,6 +721,10 @@ FOUND_ROUND_H = [
      'F near[cart::isbehind(shed)::isnextto(hose)]'),
     ('Go first to the bakery, after to the bank.', 'F (near[bakery] & F near[bank])'),
     ('Should you go into the lab at all, stop at the sink beforehand.', '!near[lab] W near[sink]'),
+    # "no no, the other one, the X"; "not twice, three times"
+    ('Go to the blue gate. No no, the other one, the red gate.', 'F near[red_gate]'),
+    ('Check the tank twice. No wait, not twice, three times.',
+     'F (near[tank] & F (!near[tank] & F (near[tank] & F (!near[tank] & F near[tank]))))'),
 ]
 
 

@@ -384,6 +384,8 @@ def _np_spans(tokens: list[str]) -> list[NounPhrase]:
 
 
 def _strip_corr(seg: list[str]) -> list[str]:
+    if seg[:4] in (['the', 'other', 'one', ','], ['no', 'the', 'other', 'one']) and len(seg) > 4:
+        seg = seg[4:] if seg[3] == ',' else seg[5:]   # "no no, the other one, the green door"
     while seg and seg[0] in (',', 'i', 'mean', 'meant', 'just', 'wait', 'no', 'actually', 'sorry', 'er',
                              'um', 'hmm', 'oh', 'make', 'that', 'rather', 'go', 'to', 'do', 'instead', 'it'):
         if seg[0] == 'it' and (len(seg) < 2 or seg[1] in PUNCT or seg[1] in ('is', 'was')):
@@ -1324,6 +1326,8 @@ _BOUNDS = (('more', 'than'), ('no', 'more', 'than'), ('not', 'more', 'than'))
 def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     """'visit X twice. no wait, exactly once': the count said before is replaced (with its modifier)."""
     counts = ('once', 'twice', 'thrice')
+    if seg[:1] == ['not'] and ',' in seg[1:5]:
+        seg = seg[seg.index(',') + 1:]   # "no wait, not twice, once": the count after the comma
     words = [t for t in seg if t not in PUNCT]
     new = next((k for k, w in enumerate(seg) if w in counts or (w in NUMBER_WORDS and k + 1 < len(seg)
                                                                 and seg[k + 1] == 'times')), -1)

@@ -723,6 +723,9 @@ FOUND_ROUND_H = [
     ('Should you go into the lab at all, stop at the sink beforehand.', '!near[lab] W near[sink]'),
     # "no no, the other one, the X"; "not twice, three times"
     ('Go to the blue gate. No no, the other one, the red gate.', 'F near[red_gate]'),
+    ('Go to the bank and then the post office, but only after the cash machine.',
+     'F (near[bank] & F near[post_office]) & (!near[bank] U near[cash_machine]) & '
+     '(!near[post_office] U near[cash_machine])'),
     ('Check the tank twice. No wait, not twice, three times.',
      'F (near[tank] & F (!near[tank] & F (near[tank] & F (!near[tank] & F near[tank]))))'),
 ]

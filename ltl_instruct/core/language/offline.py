@@ -451,6 +451,7 @@ class _Reader:
         self.scene: list[Descriptor] = []   # the things a "there is ..." clause named last
         self.unread: list[fallback.Unread] = []   # clauses the rules could not read (guessed or left out)
         self.read_parts = 0   # clauses and sentences read by the rules
+        self.sentence_start = 0   # where the current sentence's steps start in the chain
         self.last_deliver_verb = ''   # for a delivery with the verb left out ("..., then the cup to X")
         self.connector = 'and'   # how the goal clause being read joins the one before it
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
@@ -529,6 +530,7 @@ class _Reader:
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
             self.first_tail = None
+            self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
             sentence = self._drop_trailing_reason(sentence)
@@ -2513,6 +2515,9 @@ class _Reader:
             prev = self.task.last_step(('visit', 'deliver'))
             if prev is None:
                 return False
+            said = [st for st in self.task.chain[self.sentence_start:] if st.kind in ('visit', 'deliver')]
+            # "go to A and then B, but only after C": the whole route said in this sentence waits
+            guarded = said if len(said) > 1 and prev in said and lead[:2] != ['only', 'once'] else [prev]
             picked = any(w in s[k:k + 4] for w in ('picked', 'grabbed', 'collected', 'fetched'))
             k = self._skip_event_verbs(s, k)
             if picked:
@@ -2530,7 +2535,7 @@ class _Reader:
             nps, joiner, end = self._np_list(s, k)
             if not nps:
                 return False
-            for x in prev.targets:
+            for x in [t for st in guarded for t in st.targets]:
                 if joiner == 'or':   # "only after you've been to either the bank or the post office"
                     reach = _or([_near(p.descriptor) for p in nps])
                     self.task.constraints.append(Until(Not(_near(x)), reach))

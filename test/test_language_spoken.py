@@ -726,6 +726,10 @@ FOUND_ROUND_H = [
     ('Go to the bank and then the post office, but only after the cash machine.',
      'F (near[bank] & F near[post_office]) & (!near[bank] U near[cash_machine]) & '
      '(!near[post_office] U near[cash_machine])'),
+    # lists of things described as "one by X, one under Y"; a count before a comma list names it
+    ('There are three mats: one by the door, one under the sink and one behind the tub. Go to the second.',
+     'F near[mat::isbelow(sink)]'),
+    ('There are two vans in the yard, a white van and a red van. Go to the second one.', 'F near[red_van]'),
     ('Check the tank twice. No wait, not twice, three times.',
      'F (near[tank] & F (!near[tank] & F (near[tank] & F (!near[tank] & F near[tank]))))'),
 ]

@@ -471,7 +471,8 @@ class PhraseParser:
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
             if sep == 'and' and tokens[i] == ',' and j == i + 1 and nxt.descriptor.relations and \
-                    nxt.pronoun in ('', 'one'):
+                    nxt.pronoun in ('', 'one') and not (tokens[j] == 'one' and phrases[-1].pronoun == 'one'):
+                # (but "one by the sink, one under the skylight" is a list of two)
                 # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
                 merged = _attach(phrases[-1].descriptor, nxt.descriptor, nxt.pronoun == 'one')
                 if merged is not None:

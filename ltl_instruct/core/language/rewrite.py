@@ -78,9 +78,20 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             if counted is not None and counted.end <= s - 1:
                 category = singular(counted.head)   # "three bins by the gate: a green one, ..."
         elif s >= 2 and tokens[s - 1] == ',':
-            continue
+            # "two carts in the corridor, a housekeeping cart and a minibar cart": the count names them
+            back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
+            q = next((q for q in range(s - 2, back, -1) if tokens[q] in NUMBER_WORDS and tokens[q] != 'one'),
+                     -1)
+            counted = parser.parse(tokens, q + 1) if q >= 0 else None
+            if counted is None or counted.end > s - 1 or _count_of(tokens[q]) != len(nps):
+                continue
+            category = singular(counted.head)
         return s, end, nps, category
     return None
+
+
+def _count_of(word: str) -> int:
+    return NUMBER_WORDS.get(word, int(word) if word.isdigit() else 0)
 
 
 _MENTIONED: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -226,6 +237,9 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                     out += joined(list(range(NUMBER_WORDS[w])))
                     i += 3
                     continue
+                if nxt in ('latter', 'former') and n != 2:
+                    raise TranslationError(f'"the {nxt}" needs a list of two, not of {n}',
+                                           details={'part': f'the {nxt}'})
                 if nxt in ('last', 'latter') and ends:
                     out += joined([n - 1])
                     i += 2 + one

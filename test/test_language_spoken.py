@@ -730,6 +730,12 @@ FOUND_ROUND_H = [
     ('There are three mats: one by the door, one under the sink and one behind the tub. Go to the second.',
      'F near[mat::isbelow(sink)]'),
     ('There are two vans in the yard, a white van and a red van. Go to the second one.', 'F near[red_van]'),
+    ('There are two delivery vans: one by the gate, one behind the shed. Go to the second.',
+     'F near[delivery_van::isbehind(shed)]'),
+    ('There are three mugs: a red one by the sink, a blue one on the shelf and a green one by the kettle. '
+     'Bring the blue one to the table.',
+     'F (near[blue_mug::isabove(shelf)] & F (pick[blue_mug::isabove(shelf)] & F (near[table] & '
+     'F release[blue_mug::isabove(shelf), table])))'),
     ('Check the tank twice. No wait, not twice, three times.',
      'F (near[tank] & F (!near[tank] & F (near[tank] & F (!near[tank] & F near[tank]))))'),
 ]

@@ -471,8 +471,9 @@ class PhraseParser:
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
             if sep == 'and' and tokens[i] == ',' and j == i + 1 and nxt.descriptor.relations and \
-                    nxt.pronoun in ('', 'one') and not (tokens[j] == 'one' and phrases[-1].pronoun == 'one'):
-                # (but "one by the sink, one under the skylight" is a list of two)
+                    nxt.pronoun in ('', 'one') and not (tokens[j] in ('one', 'a', 'an') and
+                                                        phrases[-1].pronoun == 'one'):
+                # (but "one by the sink, one under the skylight", "a red one by X, a blue one by Y" are lists)
                 # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
                 merged = _attach(phrases[-1].descriptor, nxt.descriptor, nxt.pronoun == 'one')
                 if merged is not None:

@@ -76,7 +76,7 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             q = next((q for q in range(s - 2, max(-1, s - 8), -1) if tokens[q] in NUMBER_WORDS), -1)
             counted = parser.parse(tokens, q + 1) if q >= 0 else None
             if counted is not None and counted.end <= s - 1:
-                category = singular(counted.head)   # "three bins by the gate: a green one, ..."
+                category = _kind_name(counted)   # "three bins by the gate: a green one, ..."
         elif s >= 2 and tokens[s - 1] == ',':
             # "two carts in the corridor, a housekeeping cart and a minibar cart": the count names them
             back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
@@ -85,9 +85,39 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             counted = parser.parse(tokens, q + 1) if q >= 0 else None
             if counted is None or counted.end > s - 1 or _count_of(tokens[q]) != len(nps):
                 continue
-            category = singular(counted.head)
+            category = _kind_name(counted)
         return s, end, nps, category
     return None
+
+
+def _the_described_one(tokens: list[str], nps: list[NounPhrase], tail: list[str], category: str) -> list[str]:
+    """Name in full "the blue one" of a scene list ("a red one by the desk, a blue one by the door").
+
+    Only where one listed thing alone has the word: "the blue chair by the door", the place it
+    was described by kept.
+    """
+    items = [[category if w == 'one' else w for w in _np_text(tokens, np)] for np in nps]
+    out: list[str] = []
+    k = 0
+    while k < len(tail):
+        if k + 2 < len(tail) and tail[k] in DETERMINERS and tail[k + 2] == 'one':
+            word = tail[k + 1]
+            hits = [it for it in items if word in it[1:2]]
+            if len(hits) == 1:
+                out += hits[0]
+                k += 3
+                continue
+        out.append(tail[k])
+        k += 1
+    return out
+
+
+def _kind_name(counted: NounPhrase) -> str:
+    """Return the kind a count names, as one word ("two shopping carts": shopping_cart)."""
+    words = counted.descriptor.name.split('_')
+    if words[-1] != counted.head:
+        return singular(counted.head)
+    return '_'.join(words[:-1] + [singular(words[-1])])
 
 
 def _count_of(word: str) -> int:
@@ -154,7 +184,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             # "a hammer, a saw, a drill: bring the saw to the bench": the list only sets the scene
             notes.append('list of ' + ', '.join(str(np.descriptor) for np in nps) + ': the scene')
             return tokens[end + 1:]
-        if category and any(tokens[np.end - 1] == 'one' for np in nps):
+        if category and any(tokens[np.end - 1] == 'one' or np.pronoun == 'one' for np in nps):
             # "two doors, a red one and a blue one. Go through the blue one": the ones are doors; the
             # enumeration only sets the scene
             notes.append(f'"one" read as "{category}"')
@@ -169,6 +199,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                     'each', 'all', 'both', 'every', 'these', 'those', 'them') or tokens[k] in NUMBER_WORDS),
                     s)
                 return tokens[:verb_end] + listed + tail
+            tail = _the_described_one(tokens, nps, tail, category)
             return tokens[:keep + 1] + [category if t == 'one' and k > 0 and tail[k - 1] not in DETERMINERS
                                         else t for k, t in enumerate(tail)]
         return tokens

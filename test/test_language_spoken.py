@@ -736,6 +736,9 @@ FOUND_ROUND_H = [
      'Bring the blue one to the table.',
      'F (near[blue_mug::isabove(shelf)] & F (pick[blue_mug::isabove(shelf)] & F (near[table] & '
      'F release[blue_mug::isabove(shelf), table])))'),
+    # "backwards" after a list; "the one I named first"
+    ('visit the shed, the barn and the silo backwards', 'F (near[silo] & F (near[barn] & F near[shed]))'),
+    ('the oven, the sink and the fridge. go to the one I named first', 'F near[oven]'),
     ('Check the tank twice. No wait, not twice, three times.',
      'F (near[tank] & F (!near[tank] & F (near[tank] & F (!near[tank] & F near[tank]))))'),
 ]

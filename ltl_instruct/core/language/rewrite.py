@@ -135,8 +135,19 @@ _MENTIONED: tuple[tuple[str, ...], ...] = tuple(sorted((
 ), key=lambda t: -len(t)))
 
 
+_SAID_FIRST = tuple((lead, 'one', 'i') + (verb, when) for lead in ('the', 'whichever')
+                    for verb in ('said', 'named', 'mentioned', 'listed') for when in ('first', 'last'))
+
+
 def _drop_mentions(tail: list[str]) -> list[str]:
-    """Remove "(that) I mentioned" after a position word: "the second item I mentioned"."""
+    """Remove "(that) I mentioned" after a position word: "the second item I mentioned".
+
+    "The one I named first" (or "whichever one I said last") is the first (last) one.
+    """
+    for m in _SAID_FIRST:
+        for k in range(len(tail) - len(m) + 1):
+            if tuple(tail[k:k + len(m)]) == m:
+                tail = tail[:k] + ['the', m[-1], 'one'] + tail[k + len(m):]
     out: list[str] = []
     i = 0
     while i < len(tail):

@@ -176,7 +176,8 @@ def tokenize(text: str) -> list[str]:
     return out
 
 
-_LABEL_RE = re.compile(r'^(?:[a-z]|[a-z]?\d{1,3}[a-z]?)$')
+_LABEL_RE = re.compile(r'^(?:[a-z]|[a-z]?\d{1,3}[a-z]?|one|two|three|four|five|six|seven|eight|nine|ten|'
+                       r'eleven|twelve)$')
 
 
 def expand_labels(tokens: list[str]) -> list[str]:

@@ -90,8 +90,8 @@ STOPWORDS = frozenset('''
 and or then to from at in into on onto with for until while before after when once but so if of as because
 also too again there here please it them that which who whom where is are be been being was were you i we
 me us he she they finally instead order every all way time times twice thrice exactly least most more
-backwards than no not never do does did go going gone went get got visit visited reach reached the a an my your
-our this these those some any each both either neither can could would will should must may might shall
+backwards than no not never do does did go going gone went get got visit visited reach reached the a an my
+your our this these those some any each both either neither can could would will should must may might shall
 has have had make sure just now first lastly last next then around up down off out over through past via
 whichever whatever matter care which else other others until till avoid avoiding away stay keep clear
 while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant

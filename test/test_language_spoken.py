@@ -736,6 +736,16 @@ FOUND_ROUND_H = [
      'Bring the blue one to the table.',
      'F (near[blue_mug::isabove(shelf)] & F (pick[blue_mug::isabove(shelf)] & F (near[table] & '
      'F release[blue_mug::isabove(shelf), table])))'),
+    # corrections: "not the pot, the pan" (its place kept), "no not X, Y", "instead of either",
+    # "the yellow one" for the thing that had a colour
+    ('Take the jug on the table to the sink - wait, not the jug, the vase.',
+     'F (near[vase::isabove(table)] & F (pick[vase::isabove(table)] & F (near[sink] & '
+     'F release[vase::isabove(table), sink])))'),
+    ('bring the rug to the hall, no not the hall, the porch',
+     'F (near[rug] & F (pick[rug] & F (near[porch] & F release[rug, porch])))'),
+    ('Go to the pond or the pier. Actually, make it the boathouse instead of either.', 'F near[boathouse]'),
+    ('bring the red cup to the kitchen, wait no, the blue one',
+     'F (near[blue_cup] & F (pick[blue_cup] & F (near[kitchen] & F release[blue_cup, kitchen])))'),
     # "backwards" after a list; "the one I named first"
     ('visit the shed, the barn and the silo backwards', 'F (near[silo] & F (near[barn] & F near[shed]))'),
     ('the oven, the sink and the fridge. go to the one I named first', 'F near[oven]'),

@@ -483,6 +483,12 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     if not spans:
         return None
     target = next((sp for sp in reversed(spans) if sp.head == np.head), None)
+    if target is None and np.pronoun == 'one' and new[1:2] and new[1] in _COLOURS:
+        # "the green towel to the bathroom, wait no, the yellow one": the one that had a colour
+        coloured = [sp for sp in spans if prev[sp.start + 1:sp.start + 2] and prev[sp.start + 1] in _COLOURS]
+        if len(coloured) == 1:
+            sp = coloured[0]
+            return prev[:sp.start + 1] + [new[1]] + prev[sp.start + 2:]
     if target is None:
         # a noun inside a phrase: "put the book on the shelf, uh, the top shelf I mean"
         inner = PhraseParser()
@@ -633,6 +639,15 @@ def _clause_cut(seg: list[str], joiners: tuple[str, ...]) -> int:
 
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
+    said: list[str] = []
+    for k, t in enumerate(tokens):
+        said.append(t)
+        if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and tokens[k - 1] in PUNCT:
+            said.append(',')   # ", no not the couch, the armchair": "no" then what it corrects
+    return _apply_corrections(said, notes)
+
+
+def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     i = 0
     out = list(tokens)
     guard = 0
@@ -1023,6 +1038,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if seg[:len(lead)] == lead and seg[len(lead):len(lead) + 1] and seg[len(lead)] in DETERMINERS:
                 # "actually just make it the taxi rank": the phrase alone ("just" kept: only that)
                 seg, stripped = (['just'] if lead[0] == 'just' else []) + seg[len(lead):], True
+        if 'instead' in seg and seg[-1] in ('either', 'both', 'them', 'those'):
+            choice = _replace_alternatives(prev, _strip_corr(seg))
+            if choice is not None:   # "make it the gazebo instead of either"
+                notes.append(f'corrected the choice: {" ".join(seg)}')
+                return choice
         if seg[:1] == ['not'] and len(seg) > 2:
             choice = _replace_alternatives(prev, _strip_corr(seg))
             if choice is not None:   # "the workshop or the basement, actually not the basement, the attic"
@@ -1030,6 +1050,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 return choice
             # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
             named = PhraseParser().parse(seg, 1)
+            swapped = _replace_named(prev, seg, named) if named is not None and not named.pronoun else None
+            if swapped is not None:
+                notes.append(f'corrected: {" ".join(seg)}')
+                return swapped
             if named is not None and not named.pronoun and seg[named.end:named.end + 1] == [','] and any(
                     sp.head == named.head for sp in _np_spans(prev)):
                 seg, stripped = seg[named.end + 1:], True
@@ -1300,6 +1324,29 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     return None
 
 
+_COLOURS = frozenset('red blue green yellow orange purple pink brown black white grey gray silver gold beige '
+                     'navy teal'.split())
+
+
+def _replace_named(prev: list[str], seg: list[str], named: NounPhrase) -> Optional[list[str]]:
+    """Replace the phrase named in "..., not the pot, the pan" (its place kept if none is said)."""
+    if seg[named.end:named.end + 1] != [',']:
+        return None
+    new = _strip_corr(seg[named.end + 1:])
+    nnp = PhraseParser().parse(new, 0) if new else None
+    if nnp is None or nnp.end != len(new) or nnp.pronoun:
+        return None
+    hit = next((sp for sp in reversed(_np_spans(prev)) if sp.head == named.head or
+                sp.descriptor.name == named.descriptor.name), None)
+    if hit is None:
+        return None
+    if hit.descriptor.relations and not nnp.descriptor.relations:
+        cut = _relation_start(prev, hit)
+        if cut is not None:   # "take the pot on the stove ..., not the pot, the pan": the pan on the stove
+            return prev[:hit.start] + new + prev[cut:]
+    return prev[:hit.start] + new + prev[hit.end:]
+
+
 def _or_group(prev: list[str]) -> Optional[tuple[int, int, list[NounPhrase]]]:
     """Find the last either-or group of phrases in ``prev`` ("the gazebo or the shed"): start, end, parts."""
     spans = _np_spans(prev)
@@ -1335,6 +1382,13 @@ def _replace_alternatives(prev: list[str], new: list[str]) -> Optional[list[str]
         if hit is None:
             return None
         return prev[:hit.start] + words + prev[hit.end:]
+    for tail in (['instead', 'of', 'either'], ['instead', 'of', 'either', 'of', 'them'],
+                 ['instead', 'of', 'both'], ['instead', 'of', 'them'], ['instead', 'of', 'those']):
+        if new[-len(tail):] == tail:
+            one = PhraseParser().parse(new, 0)
+            if one is not None and one.end == len(new) - len(tail):
+                # "make it the gazebo instead of either": the whole choice is replaced
+                return prev[:start] + new[:one.end] + prev[end:]
     if 'or' not in new:
         return None
     said, _, stop = PhraseParser().parse_list(new, 0)

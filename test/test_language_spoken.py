@@ -746,6 +746,10 @@ FOUND_ROUND_H = [
     ('Go to the pond or the pier. Actually, make it the boathouse instead of either.', 'F near[boathouse]'),
     ('bring the red cup to the kitchen, wait no, the blue one',
      'F (near[blue_cup] & F (pick[blue_cup] & F (near[kitchen] & F release[blue_cup, kitchen])))'),
+    # "off the shelf": it is on the shelf
+    ('take the book off the shelf and put it on the desk',
+     'F (near[book::isabove(shelf)] & F (pick[book::isabove(shelf)] & F (near[desk] & '
+     'F release[book::isabove(shelf), desk])))'),
     # "backwards" after a list; "the one I named first"
     ('visit the shed, the barn and the silo backwards', 'F (near[silo] & F (near[barn] & F near[shed]))'),
     ('the oven, the sink and the fridge. go to the one I named first', 'F near[oven]'),

@@ -2793,14 +2793,15 @@ class _Reader:
                 self.notes.append(f'"{" ".join(rest[:src.end])}" read as {d}')
                 rest = rest[src.end:]
         if rest and rest[0] in ('from', 'off') and len(objs) == 1:
-            # "the blanket from the closet", "the remote off the couch": where the object is, as nearness
+            # "the blanket from the closet": where the object is, as nearness; "the remote off the
+            # couch": it is on the couch (isabove)
             src = self.phrases.parse(rest, 1, destination_stops=True)
             if src is not None and not src.pronoun:
                 o = objs[0]
                 d = Descriptor(o.descriptor.name, o.descriptor.relations + (
-                    Relation('isnextto', (src.descriptor,)),))
+                    Relation('isabove' if rest[0] == 'off' else 'isnextto', (src.descriptor,)),))
                 objs = [NounPhrase(d, o.start, o.end, o.head)]
-                self.notes.append(f'"from {src.descriptor}" read as {d}')
+                self.notes.append(f'"{rest[0]} {src.descriptor}" read as {d}')
                 rest = rest[src.end:]
         for o in objs:
             self.last_object = o

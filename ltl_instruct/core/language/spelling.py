@@ -175,6 +175,15 @@ class Speller:
             if core:
                 self._cache[word] = core[0]
                 return core[0]
+        if len(word) >= 6 and word.isascii() and word.isalpha() and word.endswith(('er', 'ers')) and \
+                word not in self.words and word not in self.lexicon and self.known(word):
+            # known only as an agent noun made up ("techer": tech + er), yet one dropped letter from a
+            # common word ("teacher"): the common word ("sanding" stays: sand + ing is a word)
+            common = sorted((self.words[c], c) for c, kind in _slips(word) if kind == 'missing' and
+                            self.words.get(c, _COMMON) < 5000 and not _inflection(word, c))
+            if len(common) == 1:
+                self._cache[word] = common[0][1]
+                return common[0][1]
         if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word):
             best: Optional[tuple[int, bool, int, str]] = None
             for cand, kind in _slips(word):

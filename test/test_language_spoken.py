@@ -750,6 +750,11 @@ FOUND_ROUND_H = [
     ("put the chalk on the techer's desk",
      'F (near[chalk] & F (pick[chalk] & F (near[teacher_desk] & F release[chalk, teacher_desk])))'),
     ('go to the sanding station', 'F near[sanding_station]'),
+    # "carry it to X and drop it there" is one delivery; ", fly it up to X" carries it
+    ('pick up the box, carry it to the shed and drop it there',
+     'F (near[box] & F (pick[box] & F (near[shed] & F release[box, shed])))'),
+    ('Pick up the parcel, fly it up to the roof and leave it there.',
+     'F (near[parcel] & F (pick[parcel] & F (near[roof] & F release[parcel, roof])))'),
     # "off the shelf": it is on the shelf
     ('take the book off the shelf and put it on the desk',
      'F (near[book::isabove(shelf)] & F (pick[book::isabove(shelf)] & F (near[desk] & '

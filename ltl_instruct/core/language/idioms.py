@@ -178,7 +178,7 @@ RULES: tuple[Rule, ...] = (
          r'set down|put down|handed over|parted with) (?P<p>it|them))\b',
          lambda m: f'{m.group("c")} you drop {_held(m)} off'),
     Rule('pick up the cup and fly it over to the sink: moving what is held is carrying it',
-         r'\b(?P<a>and|then|,) (?:fly|drive|walk|wheel|roll|float|ride|move|bring|take) (?P<o>it|them) '
+         r'(?P<a>\band|\bthen|,) (?:fly|drive|walk|wheel|roll|float|ride|move|bring|take) (?P<o>it|them) '
          r'(?:over |across |back |down |up |out |along )?(?P<p>to|into|onto)\b', r'\g<a> carry \g<o> \g<p>'),
     Rule('bring it home: home is where it goes',
          rf'\b(?P<v>take|bring|carry|return|get|haul|fetch) (?P<x>it|them|(?:the|a|an|my|your|our|this|that|'
@@ -601,6 +601,10 @@ RULES: tuple[Rule, ...] = (
          r'\bshould you (?:need to |have to |want to |happen to |ever )?', 'if you '),
     Rule('stop at the wash station beforehand', r'\b(?:beforehand|before hand|in advance|ahead of time)\b',
          'first'),
+    Rule('carry it to the shed and drop it there: one delivery',
+         r'\b(?P<d>(?:to|into|onto|on|in|up to|over to) (?:the|my|your|our) (?:[a-z0-9_]+ ){0,4}?[a-z0-9_]+)'
+         r'(?: ,)? and (?:then )?(?:drop|leave|put|set|place|release|dump|stash) (?:it|them) (?:down |off )?'
+         r'(?:there|in there|on there)\b', r'\g<d>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -755,6 +755,15 @@ FOUND_ROUND_H = [
      'F (near[box] & F (pick[box] & F (near[shed] & F release[box, shed])))'),
     ('Pick up the parcel, fly it up to the roof and leave it there.',
      'F (near[parcel] & F (pick[parcel] & F (near[roof] & F release[parcel, roof])))'),
+    # the leg between two goals; "from the moment you reach X"; "once it's down"
+    ('Go to the lobby, then the lift. Between those two, stay clear of the fountain.',
+     'F (near[lobby] & (!near[fountain] U near[lift]))'),
+    ('Go to the desk, then the door, then the lab. Between the desk and the door, keep away from the bin.',
+     'F (near[desk] & (!near[bin] U (near[door] & F near[lab])))'),
+    ('Go to the kiosk. From the moment you have been there, stay away from the pond. Then go to the gate.',
+     'F (near[kiosk] & G !near[pond] & F near[gate])'),
+    ("Put the mug on the shelf, and once it's down stay away from the sink.",
+     'F (near[mug] & F (pick[mug] & F (near[shelf] & F (release[mug, shelf] & G !near[sink]))))'),
     # "off the shelf": it is on the shelf
     ('take the book off the shelf and put it on the desk',
      'F (near[book::isabove(shelf)] & F (pick[book::isabove(shelf)] & F (near[desk] & '

@@ -605,6 +605,17 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<d>(?:to|into|onto|on|in|up to|over to) (?:the|my|your|our) (?:[a-z0-9_]+ ){0,4}?[a-z0-9_]+)'
          r'(?: ,)? and (?:then )?(?:drop|leave|put|set|place|release|dump|stash) (?:it|them) (?:down |off )?'
          r'(?:there|in there|on there)\b', r'\g<d>'),
+    Rule('between those two, stay clear of the door: the leg to the last goal',
+         r'(?<!leg )(?<!way )(?<!stretch )(?<!part )(?<!bit )\bbetween (?:those|these|the) two'
+         r'(?: (?:places|stops|goals|points|spots))?\b', 'on the way there'),
+    Rule('between the desk and the waiting room, keep away from X: that leg of the route',
+         r'^between (?P<a>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) and '
+         r'(?P<b>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) ,', r'on the way from \g<a> to \g<b> ,'),
+    Rule('from the moment you reach the scanner',
+         r'\bfrom the (?:moment|minute|second|instant|time) (?:that )?', 'once '),
+    Rule('once it is down, stay away from X: once it has been put down',
+         r'\bonce (?:it is|they are|it has been|they have been) (?:down|put down|in place|dropped off|'
+         r'delivered|set down)\b', 'once you have put it down'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -764,6 +764,8 @@ FOUND_ROUND_H = [
      'F (near[kiosk] & G !near[pond] & F near[gate])'),
     ("Put the mug on the shelf, and once it's down stay away from the sink.",
      'F (near[mug] & F (pick[mug] & F (near[shelf] & F (release[mug, shelf] & G !near[sink]))))'),
+    # "and the door after that" is the next goal, not an unordered one
+    ('go to the sofa, and the door after that', 'F (near[sofa] & F near[door])'),
     # "off the shelf": it is on the shelf
     ('take the book off the shelf and put it on the desk',
      'F (near[book::isabove(shelf)] & F (pick[book::isabove(shelf)] & F (near[desk] & '

@@ -616,6 +616,9 @@ RULES: tuple[Rule, ...] = (
     Rule('once it is down, stay away from X: once it has been put down',
          r'\bonce (?:it is|they are|it has been|they have been) (?:down|put down|in place|dropped off|'
          r'delivered|set down)\b', 'once you have put it down'),
+    Rule('and the yoga mat after that: "after that" said after the goal',
+         r'(?P<j>(?:, )?(?:and|then) )(?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) after '
+         r'(?:that|this|it)(?= ,| \.|$)', r'\g<j>after that \g<x>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -762,6 +762,7 @@ FOUND_ROUND_H = [
      'F (near[desk] & (!near[bin] U (near[door] & F near[lab])))'),
     ('Go to the kiosk. From the moment you have been there, stay away from the pond. Then go to the gate.',
      'F (near[kiosk] & G !near[pond] & F near[gate])'),
+    ('go from the second floor to the purple room', 'F (near[second_floor] & F near[purple_room])'),
     ("Put the mug on the shelf, and once it's down stay away from the sink.",
      'F (near[mug] & F (pick[mug] & F (near[shelf] & F (release[mug, shelf] & G !near[sink]))))'),
     # "and the door after that" is the next goal, not an unordered one

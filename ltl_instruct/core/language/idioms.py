@@ -612,7 +612,8 @@ RULES: tuple[Rule, ...] = (
          r'^between (?P<a>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) and '
          r'(?P<b>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) ,', r'on the way from \g<a> to \g<b> ,'),
     Rule('from the moment you reach the scanner',
-         r'\bfrom the (?:moment|minute|second|instant|time) (?:that )?', 'once '),
+         r'\bfrom the (?:moment|minute|second|instant|time) (?:that )?(?=(?:you|we|it|they|the robot|i) )',
+         'once '),
     Rule('once it is down, stay away from X: once it has been put down',
          r'\bonce (?:it is|they are|it has been|they have been) (?:down|put down|in place|dropped off|'
          r'delivered|set down)\b', 'once you have put it down'),

@@ -686,32 +686,24 @@ class _Reader:
         Returns the scope that carries to the next clause.
         """
         unread = len(self.unread)
-        if not fallback.may_degrade(clause.tokens):
-            if not self.record:
-                out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
-                self.read_parts += not sentence or len(self.unread) == unread
-                return out
-            snap = fallback.Snapshot(self, self.notes)
-            try:
-                out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
-                self.read_parts += not sentence or len(self.unread) == unread
-                return out
-            except TranslationError as e:
-                self.first_error = self.first_error or e   # the refusal names the first part not read
-                snap.restore()
-                self._degrade(clause, scope, e)
-                return scope
-        snap = fallback.Snapshot(self, self.notes)
+        strict = not fallback.may_degrade(clause.tokens)   # an order, avoidance or count is never guessed
+        snap = fallback.Snapshot(self, self.notes) if self.record or not strict else None
         try:
             out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
             # a sentence counts as read where none of its clauses had to be guessed or left out
             self.read_parts += not sentence or len(self.unread) == unread
             return out
         except TranslationError as e:
+            if snap is None:
+                raise
+            if strict:   # refused, and recorded: the rest is still read for the best reading
+                self.first_error = self.first_error or e   # the refusal names the first part not read
             snap.restore()
             self._degrade(clause, scope, e)
             return scope
         except (IndexError, KeyError, ValueError, AttributeError, AssertionError) as e:
+            if strict:
+                raise
             # a rule that fails on these words: the words are treated as unread, not the instruction
             snap.restore()
             self._degrade(clause, scope, TranslationError(f'the rules failed on "{" ".join(clause.tokens)}" '

@@ -29,8 +29,9 @@ from ltl_instruct.core.automaton import compile_automaton, distinguishing_pair
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language.base import Translation, Translator
 from ltl_instruct.core.language.datasets import Example
+from ltl_instruct.core.language.verification import best_reading_of
 from ltl_instruct.core.spec import (
-    Atom, Descriptor, Formula, Not, avoided_referents_of, parse_formula, referents_of,
+    Atom, Descriptor, Formula, Not, avoided_referents_of, referents_of,
 )
 from ltl_instruct.core.spec.ast import And, Or, _Binary, _Unary
 
@@ -139,17 +140,6 @@ class Scores:
         }
 
 
-def _best_reading(error: LtlInstructError) -> Optional[Formula]:
-    """Return the ``best_reading`` a refusal carries (see ``OfflineTranslator``), or None."""
-    text = error.details.get('best_reading')
-    if not isinstance(text, str):
-        return None
-    try:
-        return parse_formula(text)
-    except LtlInstructError:
-        return None
-
-
 def _spatial(ds: Sequence[Descriptor]) -> list[str]:
     return [str(d) for d in ds if d.relations]
 
@@ -180,7 +170,8 @@ def evaluate(translator: Translator, examples: Sequence[Example],
             scores.errors += 1
             pred: Optional[Formula] = None
             error: Optional[str] = got.message
-            partial = _best_reading(got)
+            guess = best_reading_of(got, ex.instruction)
+            partial = None if guess is None else guess.formula
             scores.best_readings += partial is not None
             pred_refs: list[Descriptor] = [] if partial is None else list(referents_of(partial))
             pred_avoid: list[Descriptor] = [] if partial is None else list(avoided_referents_of(partial))

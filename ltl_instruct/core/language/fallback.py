@@ -150,7 +150,7 @@ class Snapshot:
     """
 
     # kept as they are (the parser's memory of names is harmless; a refusal recorded stays recorded)
-    _SHARED = ('phrases', 'rules', 'notes', 'first_error', 'record')
+    _SHARED = ('phrases', 'rules', 'notes', 'first_error')
 
     def __init__(self, reader: Any, notes: list[str]) -> None:
         self._reader = reader

@@ -146,19 +146,14 @@ class OfflineTranslator:
 
     def __init__(self, avoid_scope: str = 'global', landmarks: Sequence[str] = (),
                  once_scope: str = 'run', after_scope: str = 'goal', numbers: str = 'words') -> None:
-        if avoid_scope not in ('global', 'goal'):
-            raise TranslationError(f'avoid_scope must be global or goal, not {avoid_scope!r}',
-                                   ErrorCode.INVALID_INPUT)
-        if once_scope not in ('run', 'next'):
-            raise TranslationError(f'once_scope must be run or next, not {once_scope!r}',
-                                   ErrorCode.INVALID_INPUT)
+        for option, value, allowed in (('avoid_scope', avoid_scope, ('global', 'goal')),
+                                       ('once_scope', once_scope, ('run', 'next')),
+                                       ('after_scope', after_scope, ('goal', 'conditional')),
+                                       ('numbers', numbers, ('words', 'digits'))):
+            if value not in allowed:
+                raise TranslationError(f'{option} must be {" or ".join(allowed)}, not {value!r}',
+                                       ErrorCode.INVALID_INPUT)
         self.avoid_scope = avoid_scope
-        if after_scope not in ('goal', 'conditional'):
-            raise TranslationError(f'after_scope must be goal or conditional, not {after_scope!r}',
-                                   ErrorCode.INVALID_INPUT)
-        if numbers not in ('words', 'digits'):
-            raise TranslationError(f'numbers must be words or digits, not {numbers!r}',
-                                   ErrorCode.INVALID_INPUT)
         self.once_scope = once_scope
         self.after_scope = after_scope
         self.numbers = numbers
@@ -179,7 +174,7 @@ class OfflineTranslator:
             # one pass: a clause that cannot be read is recorded, left out, and the rest read on, so
             # a refusal carries the best reading of the rest without a second reading
             reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope,
-                             digits=self.numbers == 'digits', record=True)
+                             digits=self.numbers == 'digits')
             try:
                 formula = reader.read(list(tokens))
             except TranslationError as e:
@@ -235,9 +230,8 @@ def _after_relation(tokens: Sequence[str], i: int) -> bool:
     Then "and next to the lamp post" adds a relation to the same thing, not a next goal.
     """
     k = max((m for m in range(max(0, i - 6), i) if tokens[m] in DETS), default=-1)
-    return k > 0 and tokens[k - 1] in ('behind', 'under', 'on', 'above', 'below', 'near', 'by', 'of',
-                                       'beside', 'inside', 'underneath', 'beneath', 'opposite', 'between',
-                                       'to')
+    return k > 0 and any((rel := match_relation(tokens, m)) is not None and rel[1] == k
+                         for m in range(max(0, k - 5), k))
 
 
 # "while you're carrying anything": what is carried in every delivery of the instruction.
@@ -249,7 +243,7 @@ _CARRY_NOW = frozenset({'carry', 'carries', 'hold', 'holds', 'transport', 'push'
 _NO_CUT_BEFORE = chatter.PREPOSITIONS | frozenset({
     'until', 'till', 'because', 'if', 'when', 'while', 'that', 'so', 'after', 'before', 'once', 'and', 'or',
     'but', 'where', 'whether', 'unless', 'since', 'as', 'than', 'what', 'which', 'who', 'know', 'think',
-    'sure', 'unless', 'whenever', 'wherever', 'though', 'although', 'then', 'not', 'say', 'see', 'mean'})
+    'sure', 'whenever', 'wherever', 'though', 'although', 'then', 'not', 'say', 'see', 'mean'})
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
@@ -335,6 +329,7 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
             continue
         twin = None
         if w not in known and len(w) >= 4 and w not in speller.words and w not in speller.lexicon:
+            # (built only for an unlisted word, which is rare: no cost on most instructions)
             twin = speller.near_twin(w, listed | {t for t in tokens[:k] if len(t) >= 4 and speller.known(t)})
         if twin is not None:
             out[k] = twin
@@ -414,11 +409,9 @@ class _Reader:
     """Reads the clauses of one instruction into a :class:`_Task`."""
 
     def __init__(self, avoid_scope: str, notes: list[str], landmarks: Sequence[str] = (),
-                 once_scope: str = 'run', after_scope: str = 'goal', record: bool = False,
-                 digits: bool = False) -> None:
-        # with record, a clause that may not degrade and cannot be read is kept as first_error (the
-        # instruction is refused) and left out, and reading goes on: the rest is the best reading
-        self.record = record
+                 once_scope: str = 'run', after_scope: str = 'goal', digits: bool = False) -> None:
+        # a clause that may not degrade and cannot be read is kept as first_error (the instruction
+        # is refused) and left out, and reading goes on: the rest is the refusal's best reading
         self.first_error: Optional[TranslationError] = None
         self.once_scope = once_scope
         self.after_scope = after_scope
@@ -687,15 +680,13 @@ class _Reader:
         """
         unread = len(self.unread)
         strict = not fallback.may_degrade(clause.tokens)   # an order, avoidance or count is never guessed
-        snap = fallback.Snapshot(self, self.notes) if self.record or not strict else None
+        snap = fallback.Snapshot(self, self.notes)
         try:
             out = self._read_sentence(clause.tokens) if sentence else self._read_clause(clause, scope)
             # a sentence counts as read where none of its clauses had to be guessed or left out
             self.read_parts += not sentence or len(self.unread) == unread
             return out
         except TranslationError as e:
-            if snap is None:
-                raise
             if strict:   # refused, and recorded: the rest is still read for the best reading
                 self.first_error = self.first_error or e   # the refusal names the first part not read
             snap.restore()

@@ -115,8 +115,12 @@ LIST_PREPOSITIONS = frozenset({'to', 'over', 'through', 'past', 'into', 'onto', 
 PLACE_NOUNS = frozenset({'location', 'landmark', 'place', 'waypoint', 'point'})
 
 # Words before "one" that make it a placeholder ("the blue one") rather than a number ("landmark one").
-PLACEHOLDER_ADJECTIVES = frozenset('''
-red blue green yellow orange purple pink brown black white grey gray silver gold golden big small large little
+# Colour words ("the yellow one" corrects the thing said with a colour).
+COLOURS = frozenset('''
+red blue green yellow orange purple pink brown black white grey gray silver gold golden beige navy teal
+'''.split())
+PLACEHOLDER_ADJECTIVES = COLOURS | frozenset('''
+big small large little
 tall short long round square other same left right near far front back upper lower top bottom middle new old
 wooden metal plastic glass open closed empty full clean dirty dark light first second third last closest
 nearest farthest furthest next previous main north south east west northern southern eastern western inner

@@ -19,7 +19,8 @@ from typing import Optional
 from ltl_instruct.core.errors import TranslationError
 from ltl_instruct.core.language import chatter
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, NounPhrase, PhraseParser, is_name_word, singular,
+    COLOURS, DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, NounPhrase, PhraseParser, is_name_word,
+    match_relation, singular,
 )
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 from ltl_instruct.core.spec import Descriptor
@@ -483,9 +484,9 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     if not spans:
         return None
     target = next((sp for sp in reversed(spans) if sp.head == np.head), None)
-    if target is None and np.pronoun == 'one' and new[1:2] and new[1] in _COLOURS:
+    if target is None and np.pronoun == 'one' and new[1:2] and new[1] in COLOURS:
         # "the green towel to the bathroom, wait no, the yellow one": the one that had a colour
-        coloured = [sp for sp in spans if prev[sp.start + 1:sp.start + 2] and prev[sp.start + 1] in _COLOURS]
+        coloured = [sp for sp in spans if prev[sp.start + 1:sp.start + 2] and prev[sp.start + 1] in COLOURS]
         if len(coloured) == 1:
             sp = coloured[0]
             return prev[:sp.start + 1] + [new[1]] + prev[sp.start + 2:]
@@ -513,11 +514,7 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     new_words = new
     if target.head == np.head and target.descriptor.relations and not np.descriptor.relations and \
             np.pronoun != 'one' and len([w for w in new if w not in DETERMINERS]) > 1:
-        # "the blue stool under the bar ... make that the red stool": only the name is corrected,
-        # the place it was described by stays
-        cut = _relation_start(prev, target)
-        if cut is not None:
-            return prev[:target.start] + new + prev[cut:]
+        return _renamed(prev, target, new, np)   # only the name is corrected, not where it is
     if np.pronoun == 'one' or 'one' in new[:np.end]:
         old = prev[target.start:target.end]
         old_name_end = target.start
@@ -554,18 +551,19 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     return prev[:start] + new_words + prev[end:]
 
 
-_RELATION_WORDS = frozenset({'behind', 'between', 'next', 'on', 'under', 'in', 'above', 'below', 'by', 'near',
-                             'beside', 'that', 'which', 'underneath', 'beneath', 'inside', 'opposite'})
-
-
 def _relation_start(prev: list[str], target: NounPhrase) -> Optional[int]:
-    """Where the relations of the phrase ``target`` start in ``prev`` ("under the bar"), if anywhere."""
-    for k in range(target.start + 1, target.end):
-        w = prev[k]
-        if w in _RELATION_WORDS or w in ('left', 'right', 'front') and k + 1 < target.end and \
-                prev[k + 1] == 'of' or w == 'to' and prev[k + 1:k + 3] in (['the', 'left'], ['the', 'right']):
-            return k
-    return None
+    """Return where the relations of the phrase ``target`` start in ``prev`` ("under the bar"), or None."""
+    return next((k for k in range(target.start + 1, target.end)
+                 if prev[k] in ('that', 'which') or match_relation(prev, k) is not None), None)
+
+
+def _renamed(prev: list[str], hit: NounPhrase, new: list[str], new_np: NounPhrase) -> list[str]:
+    """Put ``new`` for the phrase ``hit``; where only the thing is said again, its place stays.
+
+    "the blue stool under the bar ... make that the red stool": the red stool under the bar.
+    """
+    cut = _relation_start(prev, hit) if hit.descriptor.relations and not new_np.descriptor.relations else None
+    return prev[:hit.start] + new + prev[cut if cut is not None else hit.end:]
 
 
 def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]:
@@ -1038,16 +1036,15 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if seg[:len(lead)] == lead and seg[len(lead):len(lead) + 1] and seg[len(lead)] in DETERMINERS:
                 # "actually just make it the taxi rank": the phrase alone ("just" kept: only that)
                 seg, stripped = (['just'] if lead[0] == 'just' else []) + seg[len(lead):], True
-        if 'instead' in seg and seg[-1] in ('either', 'both', 'them', 'those'):
+        instead_of_all = 'instead' in seg and seg[-1] in ('either', 'both', 'them', 'those')
+        if seg[:1] == ['not'] and len(seg) > 2 or instead_of_all:
+            # "the workshop or the basement, actually not the basement, the attic", "make it the
+            # gazebo instead of either"
             choice = _replace_alternatives(prev, _strip_corr(seg))
-            if choice is not None:   # "make it the gazebo instead of either"
+            if choice is not None:
                 notes.append(f'corrected the choice: {" ".join(seg)}')
                 return choice
         if seg[:1] == ['not'] and len(seg) > 2:
-            choice = _replace_alternatives(prev, _strip_corr(seg))
-            if choice is not None:   # "the workshop or the basement, actually not the basement, the attic"
-                notes.append(f'corrected the choice: {" ".join(seg)}')
-                return choice
             # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
             named = PhraseParser().parse(seg, 1)
             swapped = _replace_named(prev, seg, named) if named is not None and not named.pronoun else None
@@ -1324,10 +1321,6 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     return None
 
 
-_COLOURS = frozenset('red blue green yellow orange purple pink brown black white grey gray silver gold beige '
-                     'navy teal'.split())
-
-
 def _replace_named(prev: list[str], seg: list[str], named: NounPhrase) -> Optional[list[str]]:
     """Replace the phrase named in "..., not the pot, the pan" (its place kept if none is said)."""
     if seg[named.end:named.end + 1] != [',']:
@@ -1338,13 +1331,8 @@ def _replace_named(prev: list[str], seg: list[str], named: NounPhrase) -> Option
         return None
     hit = next((sp for sp in reversed(_np_spans(prev)) if sp.head == named.head or
                 sp.descriptor.name == named.descriptor.name), None)
-    if hit is None:
-        return None
-    if hit.descriptor.relations and not nnp.descriptor.relations:
-        cut = _relation_start(prev, hit)
-        if cut is not None:   # "take the pot on the stove ..., not the pot, the pan": the pan on the stove
-            return prev[:hit.start] + new + prev[cut:]
-    return prev[:hit.start] + new + prev[hit.end:]
+    # "take the pot on the stove ..., not the pot, the pan": the pan on the stove
+    return None if hit is None else _renamed(prev, hit, new, nnp)
 
 
 def _or_group(prev: list[str]) -> Optional[tuple[int, int, list[NounPhrase]]]:
@@ -1408,9 +1396,7 @@ def _replace_relation(prev: list[str], new: list[str]) -> Optional[list[str]]:
     k = next((i for i, t in enumerate(new) if t == ','), len(new))
     if new[k + 1:k + 2] == ['not']:
         new = new[:k]   # "..., not under it": what it replaces
-    if not new or not (new[0] in _RELATION_WORDS - {'that', 'which'} or new[:3] in (
-            ['in', 'front', 'of'], ['to', 'the', 'left'], ['to', 'the', 'right']) or
-            new[0] in ('left', 'right') and new[1:2] == ['of']):
+    if not new or match_relation(new, 0) is None:
         return None
     target = next((sp for sp in reversed(_np_spans(prev)) if sp.descriptor.relations), None)
     cut = _relation_start(prev, target) if target is not None else None

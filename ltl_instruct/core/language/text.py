@@ -61,7 +61,6 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"'d\b", ' would'), (r"'s\b", ''), (r"s'(?=\s)", 's'),
 )
 
-_NUMBER_NAMES = ('zero', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine')
 
 ORDINAL_DIGITS: dict[str, str] = {
     '1st': 'first', '2nd': 'second', '3rd': 'third', '4th': 'fourth', '5th': 'fifth',
@@ -74,6 +73,9 @@ NUMBER_WORDS: dict[str, int] = {
     'fourteen': 14, 'fifteen': 15, 'sixteen': 16, 'seventeen': 17, 'eighteen': 18, 'nineteen': 19,
     'twenty': 20,
 }
+
+# The word for a number ("2": two), from the cardinals above.
+_NUMBER_NAME: dict[int, str] = {n: w for w, n in NUMBER_WORDS.items() if w not in ('once', 'twice', 'thrice')}
 
 ORDINALS: dict[str, int] = {
     'first': 1, 'second': 2, 'third': 3, 'fourth': 4, 'fifth': 5, 'sixth': 6, 'seventh': 7,
@@ -155,7 +157,7 @@ def tokenize(text: str) -> list[str]:
     if 'lost and found' in s:   # one place, not two
         s = s.replace('lost and found', 'lost_and_found')
     s = re.sub(r'\b(first|last|other|next) ([2-9])\b(?! ?(?:m|cm|meters|metres|feet|ft)\b)',
-               lambda m: f'{m.group(1)} {_NUMBER_NAMES[int(m.group(2))]}', s)   # "the last 2"
+               lambda m: f'{m.group(1)} {_NUMBER_NAME[int(m.group(2))]}', s)   # "the last 2"
     if ' form ' in s:
         s = _FORM_RE.sub(r'\1 from', s)
     out: list[str] = []
@@ -176,8 +178,8 @@ def tokenize(text: str) -> list[str]:
     return out
 
 
-_LABEL_RE = re.compile(r'^(?:[a-z]|[a-z]?\d{1,3}[a-z]?|one|two|three|four|five|six|seven|eight|nine|ten|'
-                       r'eleven|twelve)$')
+_LABEL_RE = re.compile(r'^(?:[a-z]|[a-z]?\d{1,3}[a-z]?)$')   # "A", "3", "a1"; or a number word:
+_NUMBER_LABELS = frozenset(_NUMBER_NAME.values())
 
 
 def expand_labels(tokens: list[str]) -> list[str]:
@@ -193,7 +195,7 @@ def expand_labels(tokens: list[str]) -> list[str]:
         labels: list[int] = []
         if len(t) > 3 and t.endswith('s') and t.isalpha() and i + 1 < len(tokens):
             j = i + 1
-            while j < len(tokens) and _LABEL_RE.match(tokens[j].lower()):
+            while j < len(tokens) and (_LABEL_RE.match(tokens[j].lower()) or tokens[j] in _NUMBER_LABELS):
                 labels.append(j)
                 if j + 1 < len(tokens) and tokens[j + 1] in (',', 'and', 'or'):
                     j += 2 if tokens[j + 1] != ',' or tokens[j + 2:j + 3] not in (['and'], ['or']) else 3

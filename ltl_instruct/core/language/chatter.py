@@ -250,6 +250,43 @@ HESITATIONS = frozenset({'uh', 'uhh', 'uhm', 'um', 'umm', 'erm', 'er', 'hm', 'hm
                          'ehm', 'eh', 'ah', 'ahh'})
 
 
+# Words after which a phrase cannot end: a pause after one is never a correction ("at the, um, ...").
+_DANGLING = DETERMINERS | PREPOSITIONS | frozenset({'and', 'then', 'or', 'but', 'than'})
+
+
+def join_restarts(tokens: list[str], notes: list[str]) -> list[str]:
+    """Close a pause inside a phrase: "then the, uh, the spice rack" is "then the spice rack".
+
+    Runs before the corrections are read, where "X, uh, Y" may replace X by Y: after a word
+    that cannot end a phrase (a determiner, a preposition, "then") the pause corrects nothing,
+    and the word said again after it ("the, uh, the") is read once.
+    """
+    out: list[str] = []
+    k = 0
+    dropped: list[str] = []
+    while k < len(tokens):
+        t = tokens[k]
+        if t in HESITATIONS:
+            kept = out[:]
+            while kept and kept[-1] == ',':
+                kept.pop()
+            j = k + 1
+            while j < len(tokens) and tokens[j] in (',',) + tuple(HESITATIONS):
+                j += 1
+            if kept and kept[-1] in _DANGLING and j < len(tokens) and tokens[j] not in PUNCT:
+                if tokens[j] == kept[-1]:
+                    j += 1   # "the, uh, the": once
+                dropped += [w for w in tokens[k:j] if w != ',']
+                out = kept
+                k = j
+                continue
+        out.append(t)
+        k += 1
+    if dropped:
+        notes.append(f'left out "{" ".join(dropped)}" (a pause inside a phrase)')
+    return out
+
+
 def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
     """Drop sounds of hesitation and a word said twice in a row ("avoid the the shop"), anywhere."""
     out: list[str] = []
@@ -544,6 +581,10 @@ _REMARK_RE = re.compile(
     r'(?:it is )?(?:your (?:choice|call|pick|decision)|up to you|dealer s choice|dealer choice)'
     r'|(?:(?:i am |i m |i )?not (?:fussed|fussy|bothered|picky)|(?:i have )?no preference)'
     r'|(?:it )?(?:does not|do not|will not|would not) matter(?: (?:which|which one|to me|either way))?'
+    r'(?: (?:first|order|comes first|you do first))?'
+    r'|no matter (?:which|what)(?: (?:order|one|way|one first|comes first))?'
+    r'|(?:what|whatever|whichever|which) (?:you )?(?:prefer|like|want|choose)(?: best| more)?'
+    r'|(?:you )?(?:choose|pick|decide)(?: which(?: one)?)?'
     r'|(?:i )?(?:honestly |really )?(?:do not|will not) (?:mind|care)(?: which| either way)?'
     r'(?: (?:one|option|way|route))?(?: you (?:go for|pick|choose|take|use|do))?'
     r'|take (?:your|as much) time(?: (?:as you need|about it|with it))?'
@@ -567,6 +608,35 @@ _REMARK_RE = re.compile(
     r'(?: (?:for )?(?:today|now|'
     r'tonight|this time))?'
     r')$')
+
+
+_REMARK_STARTS = frozenset({'either', 'whichever', 'i', 'any', 'both', 'no', 'it', 'does', 'do', 'your',
+                            'up', 'what', 'whatever', 'which', 'you', 'not'})
+
+
+_REMARK_VERBS = frozenset({'go', 'visit', 'pick', 'choose', 'take', 'bring', 'check', 'use', 'try', 'is',
+                           'are'})
+
+
+def set_off_remarks(tokens: list[str]) -> list[str]:
+    """Put a comma before a remark that ends a sentence unmarked ("... the loveseat either one is fine")."""
+    out: list[str] = []
+    start = 0
+    for i, t in enumerate(tokens + ['.']):
+        if t in '.;!?' or i == len(tokens):
+            sentence = tokens[start:i]
+            cut = next((j for j in range(2, len(sentence) - 1)
+                        if sentence[j] in _REMARK_STARTS and sentence[j - 1] not in PUNCT and
+                        sentence[j - 1] not in _DANGLING and sentence[j - 1] not in _REMARK_VERBS and
+                        is_remark(sentence[j:])), -1)
+            if cut > 0:
+                lead = max((k for k in range(cut) if sentence[k] in PUNCT), default=-1) + 1
+                if is_remark(sentence[lead:]):
+                    cut = -1   # "..., i am not fussy": set off already
+            out.extend(sentence[:cut] + [','] + sentence[cut:] if cut > 0 else sentence)
+            out.extend(tokens[i:i + 1])
+            start = i + 1
+    return out
 
 
 def is_remark(tokens: Sequence[str]) -> bool:

@@ -620,6 +620,41 @@ RULES: tuple[Rule, ...] = (
     Rule('and the yoga mat after that: "after that" said after the goal',
          r'(?P<j>(?:, )?(?:and|then) )(?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) after '
          r'(?:that|this|it)(?= ,| \.|$)', r'\g<j>after that \g<x>'),
+    Rule('after the reception, go to the coffee machine: the reception first',
+         r'^(?:so |and |then )?after (?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) , '
+         r'(?=(?:go|head|fly|visit|come|drive|move|proceed|check|land|stop|swing|pop)\b)',
+         r'go to \g<x> , then '),
+    Rule('and after again to the printer: then back to it',
+         r'(?P<j>, |\band )after again (?=to\b)', r'\g<j>then back '),
+    Rule('go to the copier and after to the printer: "after" alone is "then"',
+         r'(?P<j>, |\band )after (?=(?:to|go|come|land|fly|head|return|again|back|visit|check|drive|move|'
+         r'proceed|finish|continue|stop|swing|pop)\b)', r'\g<j>then '),
+    Rule('check the balcony and after the terrace: then the terrace',
+         r'\band after (?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+)(?= ,| \.|$| and\b)',
+         r'and then \g<x>'),
+    Rule('and at the end to my office: finally',
+         r'\b(?:at the end|in the end|at last|to finish|lastly) '
+         r'(?=(?:to|go|come|return|back|land|fly|head)\b)',
+         'finally '),
+    Rule('only once you have been by the fuse box: only after',
+         r'\bonly once (?=(?:you|we|the robot|it|i) )', 'only after '),
+    Rule('during the carrying: while carrying it',
+         r'\b(?:during|for) (?:the )?(?:carrying|carry|transport|transportation|delivery)\b',
+         'while carrying it'),
+    Rule('walk the route from the entrance to the fire door: that route',
+         r'\b(?:do|walk|run|drive|fly|make|complete|follow|take|ride) (?:the|that|this|a) '
+         r'(?:loop|route|run|circuit|lap|trip|path|round|leg) (?=from\b)', 'go '),
+    Rule('do the back porch to shed run: from the porch to the shed',
+         r'\b(?:do|make|walk|run|fly) the (?P<a>(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) to (?:the )?'
+         r'(?P<b>(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:run|loop|route|circuit|lap|trip|leg)\b',
+         r'go from the \g<a> to the \g<b>'),
+    Rule('two times back to back: twice in a row',
+         r'\b(?:two times|twice|2 times) (?:back to back|consecutively|one after the other|straight)\b',
+         'twice in a row'),
+    Rule('then repeat the same route once more: twice in a row',
+         r'(?: ,)? (?:and )?(?:then )?(?:repeat|do|redo) (?:the same route|that route|the route|'
+         r'the same loop|that loop|the loop|the same thing|the whole thing|the same)'
+         r'(?: once more| again| one more time)?(?= \.|$)', ' twice in a row'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -70,11 +70,13 @@ maybe perhaps possibly
 '''.split())
 DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
                            'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',
-                           'stash', 'store', 'push', 'relocate', 'chuck', 'haul', 'lug', 'ferry', 'cart'})
+                           'stash', 'store', 'push', 'relocate', 'chuck', 'haul', 'lug', 'ferry', 'cart',
+                           'wheel', 'tow', 'recycle'})
 PUT_VERBS = frozenset({'put', 'place', 'leave', 'drop', 'set', 'toss', 'throw', 'stick', 'stash', 'store',
                        'dump', 'chuck'})
 PICK_VERBS = frozenset({'pick', 'grab', 'fetch', 'collect', 'get', 'retrieve', 'lift'})
 TRASH = Descriptor('trash_can')
+RECYCLING = Descriptor('recycling_bin')   # where "recycle the can" drops it
 
 NOT_BEFORE_VERB = frozenset({'you', 'i', 'we', 'to', 'must', 'should', 'please', 'and', 'then', 'or', ',',
                              'can', 'will', 'would', 'could', 'not', 'also', 'just', 'first', 'never',

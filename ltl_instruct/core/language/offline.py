@@ -40,6 +40,7 @@ from ltl_instruct.core.language.lexicon import (
     DELIVER_VERBS, EVENT_WORDS, FILLERS, GOAL_PARTICLES, GOAL_VERBS, GOAL_VERBS_SEED, IGNORED_CLAUSES,
     NOISE_TAILS, NOT_BEFORE_VERB, ORDER_TAILS, PATROL_WORDS, PICK_VERBS, PUT_VERBS, RULE_WORDS,
     RUN_ON_NOT_AFTER, STAY_BY_FIRST_WORD as _STAY_BY_FIRST, STRICT_ORDER_TAILS, STRONG_VERBS, TRASH,
+    RECYCLING,
 )
 from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
@@ -206,8 +207,9 @@ class OfflineTranslator:
                                                  notes))
         tokens = orders.apply_reverse(resolve_list_references(tokens, notes), notes)
         # hesitations mark corrections ("the dishwasher, erm, the sink"): dropped once those are read
-        tokens = chatter.strip_hesitations(apply_exclusions(apply_corrections(tokens, notes), notes), notes)
-        return rewrite_idioms(tokens)
+        tokens = chatter.strip_hesitations(
+            apply_exclusions(apply_corrections(chatter.join_restarts(tokens, notes), notes), notes), notes)
+        return rewrite_idioms(chatter.set_off_remarks(tokens))
 
 
 def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Reader') -> None:
@@ -1695,7 +1697,7 @@ class _Reader:
             end = j + 1 + (tokens[j + 1:j + 2] in (['back'], ['home']))
             return _Scope('onway', self.last_place, 'back'), end
         if w in ('carrying', 'holding', 'transporting', 'bringing', 'taking', 'moving', 'returning') or (
-                tokens[i - 1] in ('while', 'as') and w in _CARRY_NOW):
+                tokens[i - 1] in ('while', 'as', 'when') and w in _CARRY_NOW):
             k = j + 1
             if k < len(tokens) and tokens[k] in _ANY_LOAD:
                 # "while you're carrying anything": every delivery
@@ -2747,6 +2749,8 @@ class _Reader:
         binned = verb in ('bin', 'dump', 'chuck') and 'in' not in tokens
         if verb in ('throw', 'toss', 'chuck') and ('away' in tokens[:4] or 'out' in tokens[:2]) or binned:
             implicit_dest = TRASH
+        elif verb == 'recycle' and not {'in', 'into', 'to'} & set(tokens):
+            implicit_dest = RECYCLING
         if _starts(tokens, 0, ['pick', 'up']) or verb in ('throw', 'toss', 'chuck') and tokens[1:2] in (
                 ['away'], ['out']):
             k = 2
@@ -2834,7 +2838,7 @@ class _Reader:
                 return False
         dest_ds = [d.descriptor for d in dests] or ([implicit_dest] if implicit_dest else [])
         if implicit_dest is not None and not dests:
-            self.notes.append('"throw away" releases the object at the implicit trash_can')
+            self.notes.append(f'"{verb}" releases the object at the implicit {implicit_dest}')
         if not dest_ds:
             self._check_leftover(rest, tokens)
             for o in objs:

@@ -377,6 +377,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
 
 # ------------------------------------------------------------------ self-corrections
 
+_NOT_A_NAME_END = frozenset({'to', 'at', 'in', 'on', 'by', 'of', 'and', 'or', 'then', 'i', 'you', 'we', 'is',
+                             'are', 'go', 'not', 'the', 'a', 'an', 'that', 'what', 'it', 'do', 'if'})
 _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('no', 'wait'), ('oh', 'wait'), ('wait',), ('sorry',), ('er',), ('um',), ('uh',), ('i', 'mean'),
     ('i', 'meant'), ('actually',), ('scratch', 'that'), ('forget',), ('ignore',), ('never', 'mind'),
@@ -388,7 +390,7 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'), ('hang', 'on'),
     ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
     ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'), ('no', 'actually'), ('no', 'i', 'mean'),
-    ('no', 'make', 'that'), ('no', 'rather'),
+    ('no', 'make', 'that'), ('no', 'rather'), ('no', 'make', 'it'), ('ehm',), ('mm',), ('mmm',),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
                      'leave'})
@@ -400,10 +402,22 @@ _VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'd
                        'deliver', 'carry', 'return', 'avoid'}
 
 
+# Markers that correct even where no comma sets them off, right after a name ("the couch sorry to the
+# bed", "the armchair no wait the rocking chair"), as unpunctuated speech has them.
+_BARE_MARKERS = frozenset({('sorry',), ('no', 'wait'), ('wait', 'no'), ('no', 'sorry'), ('sorry', 'no'),
+                           ('i', 'mean'), ('i', 'meant'), ('no', 'actually'), ('no', 'make', 'that'),
+                           ('no', 'make', 'it'), ('or', 'rather'), ('no', 'no'), ('oops',), ('correction',),
+                           ('my', 'bad'), ('no', 'i', 'mean')})
+
+
 def _marker_at(tokens: list[str], i: int) -> int:
     if i > 0 and tokens[i - 1] not in PUNCT and tokens[i - 1] not in ('hmm', 'oh', 'wait', 'actually', 'er',
                                                                       'um', 'sorry', 'no'):
-        return 0
+        bare = next((m for m in _BARE_MARKERS if tuple(tokens[i:i + len(m)]) == m), None)
+        if bare is None or tokens[i - 1] in DETERMINERS or tokens[i - 1] in _NOT_A_NAME_END or \
+                i + len(bare) >= len(tokens) or tokens[i + len(bare)] in PUNCT:
+            return 0
+        return len(bare) if len(bare) > 1 or bare != ('no', 'no') else 2
     for m in _MARKERS:
         if tuple(tokens[i:i + len(m)]) == m:
             if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',',):
@@ -1425,6 +1439,9 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     if seg[:1] == ['not'] and ',' in seg[1:5]:
         seg = seg[seg.index(',') + 1:]   # "no wait, not twice, once": the count after the comma
     words = [t for t in seg if t not in PUNCT]
+    if len(words) == 1 and words[0] in NUMBER_WORDS and words[0] not in counts and (
+            'times' in prev or any(t in counts for t in prev)):
+        seg = words = [words[0], 'times']   # "two times, no, make it three": three times
     new = next((k for k, w in enumerate(seg) if w in counts or (w in NUMBER_WORDS and k + 1 < len(seg)
                                                                 and seg[k + 1] == 'times')), -1)
     bare = bool(words) and (words[-1] in counts or words[-1] == 'times') and len(words) <= 4
@@ -1433,6 +1450,10 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
         return None
     mod = next((m for m in _COUNT_MODS if tuple(seg[new - len(m):new]) == m), ())
     new_words = list(mod) + seg[new:new + (1 if seg[new] in counts else 2)]
+    tail = seg[new + (1 if seg[new] in counts else 2):]
+    if not (tail[:1] == [','] and tail[1:2] and tail[1] in ('then', 'and', 'after', 'but', 'and', 'before') or
+            tail[:1] in (['then'], ['and'])):
+        tail = []   # "twice, no, make that three times, then go back to the desk": the rest is read on
     for p in range(len(prev) - 1, -1, -1):
         end = p + 1 if prev[p] in counts else (p + 1 if prev[p] == 'times' and p > 0 and
                                                prev[p - 1] in NUMBER_WORDS else -1)
@@ -1446,6 +1467,6 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
             cs = max((k for k in range(cut) if prev[k] in PUNCT), default=-1) + 1
             neg = 2 if prev[cs:cs + 2] == ['do', 'not'] else 1 if prev[cs:cs + 1] == ['never'] else 0
             if neg:
-                return prev[:cs] + prev[cs + neg:cut] + new_words + prev[end:]
-        return prev[:cut] + new_words + prev[end:]
+                return prev[:cs] + prev[cs + neg:cut] + new_words + prev[end:] + tail
+        return prev[:cut] + new_words + prev[end:] + tail
     return None

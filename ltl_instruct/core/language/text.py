@@ -47,6 +47,7 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'),
     (r"\b(that|there|it|what|where|here|who|he|she|how|why|when|everything|everyone|nothing)'s\b", r'\1 is'),
+    (r"\b(either|whichever|which|each|this|that|any|neither) one's\b", r'\1 one is'),   # "either one's fine"
     (r"\blet's\b", 'let us'),
     # "the table's fine", "the red one's locked": "is", not a possessive, before how a thing is
     (r"'s(?= (?:fine|ok|okay|alright|safe|locked|closed|shut|open|broken|blocked|up|out|off|empty|full|wet|"
@@ -56,6 +57,11 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     # "the dog's outside", "the cat's in the kitchen": "is", before where a thing is
     (r"'s(?= (?:outside|inside|here|there|away|asleep|awake|home|upstairs|downstairs|in|at|on|under|behind|"
      r"out|around|nearby|next to|by the)\b)", ' is'),
+    # "my brother's drum kit": a person's things are named without the person (drum_kit)
+    (r"\b(?:my|your|our|his|her|their) (?:little |big |older |younger |baby )?(?:brother|sister|mom|mum|dad|"
+     r"mother|father|son|daughter|wife|husband|grandma|grandpa|grandmother|grandfather|aunt|uncle|cousin|"
+     r"kid|boss|partner|roommate|flatmate|friend|girlfriend|boyfriend|neighbor|neighbour|colleague)'s\b",
+     'the'),
     # a possessive drops its 's, as most data sets' names do ("the supervisor's desk": supervisor_desk;
     # "the kids' table": kids_table)
     (r"'d\b", ' would'), (r"'s\b", ''), (r"s'(?=\s)", 's'),

@@ -14,6 +14,7 @@ sees the final intent:
 """
 from __future__ import annotations
 
+import re
 from typing import Optional
 
 from ltl_instruct.core.errors import TranslationError
@@ -410,6 +411,13 @@ _BARE_MARKERS = frozenset({('sorry',), ('no', 'wait'), ('wait', 'no'), ('no', 's
                            ('my', 'bad'), ('no', 'i', 'mean')})
 
 
+# Words after the thing a scope's clause names ("avoid the canteen while you carry it").
+_SCOPE_WORDS = frozenset({'while', 'until', 'till', 'on', 'when', 'after', 'before', 'during', 'as', 'once'})
+# The verb of a replacement said again ("forget the dog, avoid the cat").
+_REPLACED_VERB_WORDS = frozenset({'avoid', 'stay', 'keep', 'away', 'from', 'clear', 'of', 'steer', 'go', 'to',
+                                  'visit', 'near', 'instead', 'just'})
+
+
 def _marker_at(tokens: list[str], i: int) -> int:
     if i > 0 and tokens[i - 1] not in PUNCT and tokens[i - 1] not in ('hmm', 'oh', 'wait', 'actually', 'er',
                                                                       'um', 'sorry', 'no'):
@@ -649,8 +657,25 @@ def _clause_cut(seg: list[str], joiners: tuple[str, ...]) -> int:
     return next((k for k in range(1, len(seg) - 1) if seg[k] == ',' and seg[k + 1] in joiners), -1)
 
 
+_CLEFT = re.compile(
+    r'\b(?:it is|it s|its) (?P<x>(?:the|my|your|our|that) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:that |which )?'
+    r'(?:you |we |the robot )?(?:(?:need|have|ought|want|got) to |should |must |gotta |are to |can not |'
+    r'cannot )?(?:avoid|stay away from|keep away from|steer clear of|keep clear of|stay clear of)'
+    r'(?= [,.;!?]|$)')
+
+
+def _uncleft(tokens: list[str]) -> list[str]:
+    """'it is the cat you need to avoid': 'avoid the cat', said plainly, so a correction can use it."""
+    if 'it' not in tokens and 'its' not in tokens:
+        return tokens
+    text = ' '.join(tokens)
+    new = _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text)
+    return new.split() if new != text else tokens
+
+
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
+    tokens = _uncleft(tokens)
     said: list[str] = []
     for k, t in enumerate(tokens):
         said.append(t)
@@ -679,6 +704,15 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         seg = out[j:stop]
         after = out[stop:]
         marker = out[i]
+        lead = 1 if seg[:1] == [','] else 0
+        c = seg.index(',', lead) if ',' in seg[lead:] else -1
+        said = seg[lead:c] if c <= lead or seg[lead] in DETERMINERS else ['the'] + seg[lead:c]
+        if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
+            # "wait, the milk is already in there, I meant the juice": the reason, then the correction
+            notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
+            out = prev + [','] + seg[c + 1:] + after
+            i = len(prev) + 1
+            continue
         result = _correct(prev, marker, seg, notes)
         cut = _clause_cut(seg, ('then', 'and', 'but'))
         if result is None and cut > 0:
@@ -830,7 +864,18 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
         one = PhraseParser().parse(new, d_new)
         if obj is not None and one is not None and not obj.pronoun and one.end == len(new):
             new = new[:j] + [obj.head] + new[j + 1:] + old[obj.end:]
-    if any(t in ('it', 'them') for t in new):
+    scoped = False
+    if j > 0:
+        pass
+    elif d_new > 0 and d_old > 0 and new[0] == old[0] and new[1:d_new] == old[1:d_old]:
+        # "avoid the canteen while you carry it - no wait, avoid the lobby": another thing, the
+        # scope as said
+        obj = PhraseParser().parse(old, d_old)
+        other = PhraseParser().parse(new, d_new)
+        if obj is not None and other is not None and not obj.pronoun and other.end == len(new) and \
+                obj.end < len(old) and old[obj.end] in _SCOPE_WORDS:
+            new, scoped = new + old[obj.end:], True
+    if not scoped and any(t in ('it', 'them') for t in new):
         k = 1
         while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back', 'away', 'out'):
             k += 1
@@ -1196,6 +1241,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return None
         if new and chatter.is_statement(new, _np_end(new)):
             new = []   # "never mind the dog, it is outside": a reason, not a replacement
+        lead = next((k for k in range(len(new)) if new[k] not in _REPLACED_VERB_WORDS), len(new))
+        if 0 < lead < len(new) and new[lead] in DETERMINERS:
+            np = parser.parse(new, lead)
+            if np is not None and np.end == len(new) and not np.pronoun:
+                new = new[lead:]   # "forget the dog, avoid the cat": the thing replaced, its verb kept
         if new:
             notes.append(f'"{tgt}" was replaced')
             return prev[:hit.start] + new + prev[hit.end:]

@@ -40,7 +40,11 @@ _RANK = {'double': 0, 'swap': 0, 'sound': 1, 'vowel': 1, 'missing': 2, 'extra': 
 # A neighbouring key is never tried: it turns too many real words into others ("copier").
 # Nor a stray letter removed ("steeple" -> "steele"), nor a vowel for a vowel ("goggles").
 # A vowel for a vowel is tried from nine letters ("maintenence"), where two real words rarely differ so.
-_MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 9, 'missing': 5, 'extra': 99, 'key': 99}
+_MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 8, 'missing': 5, 'extra': 10, 'key': 99}
+# Below nine letters a vowel slip is taken only to a word this frequent or a domain word ("elevetor");
+# a stray letter only to one (a long word with a letter too many: "refridgerator").
+_VOWEL8_RANK = 10000
+_EXTRA_RANK = 20000
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
 # Rank below which a word counts as common (a four-letter slip is corrected only to a common word).
 _COMMON = 12000
@@ -57,10 +61,17 @@ pergola windsock paddock doghouse birdhouse forklift mezzanine urinal bidet bath
 washcloth bathmat loofah microwave dishwasher dryer humidifier dehumidifier thermostat baseboard router
 modem lectern easel corkboard turnstile lanyard daypack duffel keychain coaster placemat spatula whisk
 skillet saucepan trivet stovetop rangehood sconce lampshade cistern mulch trowel secateurs laptop
-fishtank terrarium hamster gerbil parakeet budgie cockatiel poodle labrador tupperware thermos minibar
+litterbox fishtank terrarium hamster gerbil parakeet budgie cockatiel poodle labrador tupperware thermos
+minibar
 kiosk deli gazebo hangar tarmac workbench toolbox wheelbarrow sprinkler gutter chimney mantel copier
 shredder printer scanner fridge freezer cooktop pantry closet dresser vanity hamper goggles mitt grater
 charger stethoscope stroller thermometer sideboard bookshelf radiator
+defibrillator extinguisher radiology pathology cardiology oncology pediatrics paediatrics maternity
+pharmacy wheelchair gurney ventilator nebulizer autoclave centrifuge incubator fume biohazard eyewash
+refrigerator freezer elevator escalator photocopier projector whiteboard corkboard noticeboard
+carton cartons pallet pallets racking conveyor loading forklift dumbwaiter intercom doorbell
+mailbox letterbox trashcan recycling compost greenhouse shed birdfeeder hedge flowerbed lawnmower
+hosepipe rooftop helideck antenna chimney gutters solar skylight atrium lobby mezzanine stairwell
 '''.split())
 
 
@@ -145,6 +156,8 @@ class Speller:
         for pre in _PREFIXES:
             if word.startswith(pre) and len(word) - len(pre) >= 3 and word[len(pre):] in w:
                 return True
+        if word.endswith('s') and len(word) > 4 and word[:-1] + 'ed' in w:
+            return True   # a plural of a word listed only inflected ("cartons": carton, from "cartoned")
         return self._run_together(word)
 
     def _run_together(self, word: str) -> bool:
@@ -190,11 +203,19 @@ class Speller:
                 rank = self.words.get(cand, _DOMAIN_RANK if cand in DOMAIN_WORDS else None)
                 if rank is None or len(word) < _MIN_LENGTH[kind] or _inflection(word, cand):
                     continue
+                if kind == 'vowel' and len(word) < 9 and rank >= _VOWEL8_RANK or \
+                        kind == 'extra' and rank >= _EXTRA_RANK:
+                    continue
                 # a thing robots are sent to wins a tie of slips ("frige": fridge, not fringe)
                 key = (_RANK[kind], cand not in DOMAIN_WORDS, rank, cand)
                 if best is None or key < best:
                     best = key
             out = best[3] if best is not None else None
+            if out is None and len(word) == 4:
+                # two letters swapped in a common four-letter word ("hihg"): only when one fits
+                swaps = {c for c, kind in _slips(word)
+                         if kind == 'swap' and self.words.get(c, _COMMON) < 3000}
+                out = swaps.pop() if len(swaps) == 1 else None
             if out is None and len(word) == 4:
                 # a four-letter word with one letter dropped ("towl"): only when one common word fits
                 fits = {c for c, kind in _slips(word) if kind == 'missing' and

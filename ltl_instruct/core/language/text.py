@@ -37,6 +37,8 @@ TYPOS: dict[str, str] = {
     'vaccum': 'vacuum', 'vacum': 'vacuum', 'vaccuum': 'vacuum', 'trolly': 'trolley',
     'flashlite': 'flashlight',
     'tho': 'though', 'thx': 'thanks',
+    'twise': 'twice', 'twic': 'twice', 'ovre': 'over', 'aera': 'area', 'carring': 'carrying', 'cary': 'carry',
+    'meting': 'meeting', 'carryng': 'carrying',
     'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".

@@ -251,7 +251,7 @@ HESITATIONS = frozenset({'uh', 'uhh', 'uhm', 'um', 'umm', 'erm', 'er', 'hm', 'hm
 
 
 # Words after which a phrase cannot end: a pause after one is never a correction ("at the, um, ...").
-_DANGLING = DETERMINERS | PREPOSITIONS | frozenset({'and', 'then', 'or', 'but', 'than'})
+_DANGLING = DETERMINERS | PREPOSITIONS | frozenset({'and', 'then', 'or', 'but', 'than', 'is', 'are', 'which'})
 
 
 def join_restarts(tokens: list[str], notes: list[str]) -> list[str]:

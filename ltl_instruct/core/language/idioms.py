@@ -655,6 +655,42 @@ RULES: tuple[Rule, ...] = (
          r'(?: ,)? (?:and )?(?:then )?(?:repeat|do|redo) (?:the same route|that route|the route|'
          r'the same loop|that loop|the loop|the same thing|the whole thing|the same)'
          r'(?: once more| again| one more time)?(?= \.|$)', ' twice in a row'),
+    Rule('avoid always the spilled coffee: always avoid it',
+         r'\b(?P<v>avoid|visit) (?P<a>always|also|too|again|ever) (?=(?:the|my|your|a|an|our)\b)',
+         r'\g<a> \g<v> '),
+    Rule('do not approach the office nor the glass wall: or',
+         r'^(?!.*\bneither\b)(?P<a>.*\b(?:not|never|avoid)\b.*?) nor (?=(?:the|my|your|a|an|our)\b)',
+         r'\g<a> or '),
+    Rule('do not come close to the smoking area never: once is enough',
+         r'^(?P<a>(?:.* )?(?:do not|avoid) .+?)(?: ,)? never$', r'\g<a> ever'),
+    Rule('never, ever go near it', r'\bnever , ever\b', 'never ever'),
+    Rule('at maximum one time: at most', r'\bat (?:maximum|max|the maximum|a maximum of)\b', 'at most'),
+    Rule('visit the printer minimum two times: at least',
+         r'\b(?:at minimum|minimum|at the minimum|a minimum of|min)\b(?= (?:one|two|three|four|five|once|'
+         r'twice|thrice|[0-9]+)\b)', 'at least'),
+    Rule('pass by the break room two times exactly: exactly two times',
+         r'\b(?P<n>(?:one|two|three|four|five) times?|once|twice|thrice) exactly\b', r'exactly \g<n>'),
+    Rule('exactly two trips, no more and no less: said once',
+         r'(?: ,| -)? (?:no more (?:and |, )?no less|not more (?:and |, )?not less|'
+         r'no less (?:and |, )?no more|'
+         r'not less (?:and |, )?not more|not zero (?:and |, )?not two|no fewer (?:and |, )?no more|'
+         r'not once more)(?= [,.;]|$)', ''),
+    Rule('only when you have been at the kit, you can go: only after',
+         r'^only (?:when|once) (?=(?:you|we|the robot) )', 'only after '),
+    Rule('only after you have been to the kitchen, you can go to the gym: the goal first',
+         r'^(?:and |but |so )?only after (?P<e>[^,;]+?) (?:, )+(?:then )?'
+         r'(?:(?:you|we) (?:can|may|are allowed to|'
+         r'should|must) )?(?P<m>(?:go|head|visit|proceed|enter|fly|come|move|drive|walk|land|stop|swing|pop|'
+         r'check)\b.*)$', r'\g<m> , but only after \g<e>'),
+    Rule('fly until the clock tower: to it',
+         r'\b(?P<v>fly|go|drive|walk|come|head|move|travel|proceed) until (?=(?:the|my|your|our)\b)',
+         r'\g<v> to '),
+    Rule('the plant at the left side of the elevator: left of it',
+         r'\b(?:at|on|to) the (?P<s>left|right)(?: hand)?(?: side)? of\b', r'\g<s> of'),
+    Rule('the plant which is standing left of the elevator: which is',
+         r'\b(?P<w>which|that) (?:is )?(?:standing|stands|stays|staying|sitting|sits|lying|lies|located|'
+         r'placed|'
+         r'kept|resting|rests)\b', r'\g<w> is'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

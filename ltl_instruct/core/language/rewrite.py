@@ -664,12 +664,18 @@ _CLEFT = re.compile(
     r'(?= [,.;!?]|$)')
 
 
+_MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
+
+
 def _uncleft(tokens: list[str]) -> list[str]:
-    """'it is the cat you need to avoid': 'avoid the cat', said plainly, so a correction can use it."""
-    if 'it' not in tokens and 'its' not in tokens:
+    """Say plainly what a correction says at length, so it can be read as one.
+
+    "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
+    """
+    if not {'it', 'its', 'i'} & set(tokens):
         return tokens
     text = ' '.join(tokens)
-    new = _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text)
+    new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
     return new.split() if new != text else tokens
 
 

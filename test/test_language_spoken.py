@@ -782,3 +782,94 @@ FOUND_ROUND_H = [
 @pytest.mark.parametrize('instruction,gold', FOUND_ROUND_H)
 def test_readings_found_on_blind_sets_h_and_i(instruction: str, gold: str) -> None:
     _check(instruction, gold)
+
+
+# Found on blind sets P-S (a family robot, a hospital and warehouse, non-native speakers, voice
+# transcripts); each sentence here is our own, written for the construction.
+FOUND_ROUND_P = [
+    # a pause inside a phrase corrects nothing; the word said again around it is read once
+    ('Go to the shed, then the, um, the greenhouse.', 'F (near[shed] & F near[greenhouse])'),
+    ('I need you at the, uh, the side gate.', 'F near[side_gate]'),
+    ('Visit the attic and then, er, the cellar.', 'F (near[attic] & F near[cellar])'),
+    ('Avoid the, um, the radiator and go to the sofa.', 'F near[sofa] & G !near[radiator]'),
+    # a remark that leaves the choice to the robot, with no comma before it
+    ('go to the bench or the swing either one is fine', 'F near[bench] | F near[swing]'),
+    ('head to the lamp by the sofa or the lamp by the desk i do not mind which',
+     'F near[lamp::isnextto(sofa)] | F near[lamp::isnextto(desk)]'),
+    ('Go to the red door or the blue door, what you prefer.', 'F near[red_door] | F near[blue_door]'),
+    ('Check the pantry and the cellar, no matter which order.', 'F near[pantry] & F near[cellar]'),
+    ('Stop at the east gate or the west gate, you choose.', 'F near[east_gate] | F near[west_gate]'),
+    # "after" alone for "then", and "at the end" for "finally"
+    ('Go to the gym and after to the pool.', 'F (near[gym] & F near[pool])'),
+    ('Visit the bakery and after the florist.', 'F (near[bakery] & F near[florist])'),
+    ('Fly over the barn and after land on the silo.', 'F (near[barn] & F near[silo])'),
+    ('Go to the hall, then to the study and at the end to the porch.',
+     'F (near[hall] & F (near[study] & F near[porch]))'),
+    ('After the bakery, go to the bank.', 'F (near[bakery] & F near[bank])'),
+    # a route said as a thing to do, done twice
+    ('Walk the loop from the porch to the mailbox twice in a row.',
+     'F (near[porch] & F (near[mailbox] & F (near[porch] & F near[mailbox])))'),
+    ('Do the garage to gate run twice back to back.',
+     'F (near[garage] & F (near[gate] & F (near[garage] & F near[gate])))'),
+    ('Go from the dock to the shed, then repeat the same route once more.',
+     'F (near[dock] & F (near[shed] & F (near[dock] & F near[shed])))'),
+    # the carrying said other ways
+    ('Bring the tray to the bar, and when you carry it, stay away from the stairs.',
+     'F (near[tray] & F (pick[tray] & (!near[stairs] U (near[bar] & F release[tray, bar]))))'),
+    ('Pick up the crate and drop it at the dock; during the carrying, avoid the ramp.',
+     'F (near[crate] & F (pick[crate] & (!near[ramp] U (near[dock] & F release[crate, dock]))))'),
+    ('Wheel the cart over to the lift.',
+     'F (near[cart] & F (pick[cart] & F (near[lift] & F release[cart, lift])))'),
+    ('Recycle the jam jar.',
+     'F (near[jam_jar] & F (pick[jam_jar] & F (near[recycling_bin] & F release[jam_jar, recycling_bin])))'),
+    # corrections said without commas, counts corrected, the rest of the instruction kept
+    ('take the mug to the desk sorry to the shelf',
+     'F (near[mug] & F (pick[mug] & F (near[shelf] & F release[mug, shelf])))'),
+    ('go to the stool no wait the bench', 'F near[bench]'),
+    ('circle the tower two times no make it three',
+     'F (near[tower] & F (!near[tower] & F (near[tower] & F (!near[tower] & F near[tower]))))'),
+    ('Visit the well twice, no, make that three times, then go to the barn.',
+     'F (near[well] & F (!near[well] & F (near[well] & F (!near[well] & F (near[well] & F near[barn])))))'),
+    ('Bring the blue cup to the sink, ehm, the green cup I mean.',
+     'F (near[green_cup] & F (pick[green_cup] & F (near[sink] & F release[green_cup, sink])))'),
+    # what to avoid corrected in a cleft, the scope kept
+    ('Go to the den and keep away from the heater. Actually forget the heater, it is the fan you should '
+     'avoid.',
+     'F near[den] & G !near[fan]'),
+    ('Carry the vase to the shelf and avoid the dog while you carry it - no wait, avoid the cat.',
+     'F (near[vase] & F (pick[vase] & (!near[cat] U (near[shelf] & F release[vase, shelf]))))'),
+    ('Go to the lamp on the table. Sorry, I wanted to say the lamp under the table.',
+     'F near[lamp::isbelow(table)]'),
+    # a person's things are named without the person; "one's" is "one is"
+    ("Stay away from my sister's guitar and go to the sofa.", 'F near[sofa] & G !near[guitar]'),
+    ("Land on the left roof or the right roof, whichever one's free.",
+     'F near[left_roof] | F near[right_roof]'),
+    # non-native word orders and words
+    ('Go to the porch and avoid always the wet paint.', 'F near[porch] & G !near[wet_paint]'),
+    ("Visit the shop, and don't approach the bins nor the crates.",
+     'F near[shop] & G !near[bins] & G !near[crates]'),
+    ('Go to the lobby at maximum one time.', '!near[lobby] W (near[lobby] & (near[lobby] W G !near[lobby]))'),
+    ('Check the pump minimum two times.', 'F (near[pump] & F (!near[pump] & F near[pump]))'),
+    ('Visit the lab two times exactly, no more and no less.',
+     '!near[lab] U (near[lab] & (near[lab] U (!near[lab] & (!near[lab] U (near[lab] & '
+     '(near[lab] W G !near[lab]))))))'),
+    ('Only when you have been to the sink, you can go to the stove.',
+     'F near[stove] & (!near[stove] U near[sink])'),
+    ('Only after the gate, go to the barn.', 'F near[barn] & (!near[barn] U near[gate])'),
+    ('Drone, fly until the water tower and hover there.', 'F near[water_tower]'),
+    ('Go to the chair which is standing at the right side of the window.',
+     'F near[chair::isrightof(window)]'),
+    ("Never, ever go near the grill. Ever.", 'G !near[grill]'),
+    # typos in long words the word list lacks or spells one letter apart
+    ('Go to the elevetor.', 'F near[elevator]'),
+    ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),
+    ('Put the juice in the refridgerator.',
+     'F (near[juice] & F (pick[juice] & F (near[refrigerator] & F release[juice, refrigerator])))'),
+    ('Throw away the cartons.',
+     'F (near[cartons] & F (pick[cartons] & F (near[trash_can] & F release[cartons, trash_can])))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', FOUND_ROUND_P)
+def test_readings_found_on_blind_sets_p_to_s(instruction: str, gold: str) -> None:
+    _check(instruction, gold)

@@ -860,6 +860,13 @@ FOUND_ROUND_P = [
     ('Go to the chair which is standing at the right side of the window.',
      'F near[chair::isrightof(window)]'),
     ("Never, ever go near the grill. Ever.", 'G !near[grill]'),
+    # "bring me" and where the person says they are: the delivery ends there
+    ("Bring me the charger. I'm on the sofa.",
+     'F (near[charger] & F (pick[charger] & F (near[sofa] & F release[charger, sofa])))'),
+    ("I'm at the desk, get me the stapler or the tape",
+     'F (near[stapler] & F (pick[stapler] & F (near[desk] & F release[stapler, desk]))) | '
+     'F (near[tape] & F (pick[tape] & F (near[desk] & F release[tape, desk])))'),
+    ('Bring me the cup.', 'F (near[cup] & F pick[cup])'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

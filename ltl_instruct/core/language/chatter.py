@@ -287,6 +287,41 @@ def join_restarts(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+_BRING_ME = frozenset({'bring', 'get', 'fetch', 'grab', 'take'})
+_WHERE_I_AM = re.compile(
+    r'(?:^|(?<=[,.;!?] ))(?:(?:and|but|so) )?i am (?:(?:sitting|lying|waiting|standing|out|over|up|down) )?'
+    r'(?P<p>on|at|in|by|next to|near) (?P<x>(?:the|my|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+)'
+    r'(?: (?:right now|now))?(?= [,.;!?]|$)')
+
+
+def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
+    """'Bring me the remote. I'm on the couch.': bring it to the couch, where the person is.
+
+    Without a place for "me" the delivery ends at the pick; the place the person says they are
+    at, in a clause of its own, is where "me" is.
+    """
+    if 'me' not in tokens or 'am' not in tokens:
+        return tokens
+    text = ' '.join(tokens)
+    where = _WHERE_I_AM.search(text)
+    verb = next((k for k in range(len(tokens) - 1) if tokens[k] in _BRING_ME and tokens[k + 1] == 'me'), -1)
+    if where is None or verb < 0:
+        return tokens
+    place = where.group('x').split()
+    rest = (text[:where.start()] + text[where.end():]).split()
+    while rest and rest[0] in PUNCT:
+        rest = rest[1:]
+    k = next((k for k in range(len(rest) - 1) if rest[k] in _BRING_ME and rest[k + 1] == 'me'), -1)
+    end = next((e for e in range(k + 2, len(rest)) if rest[e] in '.;!?' or rest[e] == ',' and (
+        e + 1 >= len(rest) or rest[e + 1] in ('then', 'and', 'but', 'after'))), len(rest))
+    if k < 0 or any(t in ('to', 'into', 'onto') for t in rest[k + 2:end]):
+        return tokens   # "bring me the cup to the table": the place is said
+    while end > k + 2 and rest[end - 1] in PUNCT:
+        end -= 1
+    notes.append(f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are')
+    return rest[:k + 1] + rest[k + 2:end] + ['to'] + place + rest[end:]
+
+
 def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
     """Drop sounds of hesitation and a word said twice in a row ("avoid the the shop"), anywhere."""
     out: list[str] = []

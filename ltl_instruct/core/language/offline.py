@@ -209,6 +209,7 @@ class OfflineTranslator:
         # hesitations mark corrections ("the dishwasher, erm, the sink"): dropped once those are read
         tokens = chatter.strip_hesitations(
             apply_exclusions(apply_corrections(chatter.join_restarts(tokens, notes), notes), notes), notes)
+        tokens = chatter.deliver_to_speaker(tokens, notes)
         return rewrite_idioms(chatter.set_off_remarks(tokens))
 
 

@@ -295,7 +295,7 @@ _WHERE_I_AM = re.compile(
 
 
 def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
-    """'Bring me the remote. I'm on the couch.': bring it to the couch, where the person is.
+    """Deliver "bring me X" to where the person says they are ("I'm on the couch").
 
     Without a place for "me" the delivery ends at the pick; the place the person says they are
     at, in a clause of its own, is where "me" is.

@@ -44,6 +44,10 @@ _PASSIVE = (r'(?:(?:must|has to|have to|should|needs to|need to|is to|are to|sha
 # movement verbs, plain, in -ing and as participles ("visit", "visiting", "visited")
 _GO = (r'(?:visit|go to|reach|enter|pass through|go through|move to|travel to|navigate to|get to|'
        r'make your way to|head to|find|come to|walk to|fly to|drive to)')
+# a thing named by up to four words, and the words that place one thing by another
+_THING = r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
+_WHERE = (r'(?:on top of|on|under|underneath|beneath|behind|in front of|next to|beside|by|near|left of|'
+          r'right of|to the left of|to the right of|above|below|inside|between)')
 _GOING = (r'(?:visiting|going to|reaching|entering|passing through|going through|moving to|traveling to|'
           r'travelling to|navigating to|getting to|heading to|finding|coming to|walking to|flying to)')
 _GONE = r'(?:visited|been to|gone to|reached|entered|passed through|gone through|found|arrived at)'
@@ -140,6 +144,12 @@ def _held(m: 're.Match[str]') -> str:
     if m.group('o'):
         return 'it' if m.group('o') == 'it' else 'them'
     return m.group('p')
+
+
+def _visits_needed(m: 're.Match[str]') -> str:
+    """'the feeder needs two visits at minimum': 'visit the feeder at least two times'."""
+    bound = (m.group('q') or m.group('m') or '').strip().replace('at minimum', 'at least')
+    return ' '.join(w for w in ('visit', m.group('x'), bound, m.group('n'), 'times') if w)
 
 
 def _repeat(m: 're.Match[str]') -> str:
@@ -691,6 +701,46 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<w>which|that) (?:is )?(?:standing|stands|stays|staying|sitting|sits|lying|lies|located|'
          r'placed|'
          r'kept|resting|rests)\b', r'\g<w> is'),
+    Rule('the laptop is on the ottoman; go to it: where a thing is, said as a statement',
+         rf'^(?:and |so |well )?(?P<x>(?:the|my|your|our|a|an) {_THING}) (?:is|are|should be|must be|might be|'
+         rf'may be|is probably|sits|lies|stands|is sitting|is lying|is standing|is kept|was left|got left|'
+         rf'is still|is somewhere) (?P<r>{_WHERE} (?:the|my|your|our) (?!(?:[a-z0-9_]+ ){{0,3}}?floor\b){_THING}'
+         rf'(?: and (?:the|my|your|our) {_THING})?)(?= [,;]|$)',
+         r'there is \g<x> \g<r>'),
+    Rule('behind the sofa there is a cable',
+         rf'^(?P<r>{_WHERE} (?:the|my|your|our) {_THING})(?: ,)? there (?:is|are) (?P<x>(?:a|an|the|some|two) '
+         rf'{_THING})(?= [,;]|$)', r'there is \g<x> \g<r>'),
+    Rule('and on that stretch keep away from the door: on the way there',
+         r'\bon (?:that|this|the) (?:second |last |final |next |same )?(?:stretch|leg|part|bit|segment|section)'
+         r'(?: of the (?:route|trip|way|journey|flight|run))?\b', 'on the way there'),
+    Rule('go to the grill, but the patio table has to come first: only after it',
+         rf'(?P<j>, |; )(?:but |and )?(?P<x>(?:the|my|your|our) {_THING}) (?:has to|must|needs to|should|'
+         rf'has got to|is to) (?:come|be visited|be done|be checked|go|happen|be) first\b',
+         r'\g<j>but only after \g<x>'),
+    Rule('stop at the ice machine a single time: once',
+         r'\b(?:a single time|one single time|one time only|a single visit)\b', 'once'),
+    Rule('the bird feeder needs two visits at minimum: at least twice',
+         rf'^(?P<x>(?:the|my|your|our) {_THING}) (?:needs|requires|gets|should get|must get) (?P<q>at least |'
+         rf'exactly |at most )?(?P<n>two|three|four|five|[0-9]+) (?:visits|checks|passes|trips)'
+         rf'(?P<m> at minimum| at least| at most| exactly)?(?= [,.;]|$)', _visits_needed),
+    Rule('make at least three passes over the bridge: visit it at least three times',
+         rf'\b(?:make|do|take|fly|want|need) (?P<q>at least |exactly |at most )?(?P<n>two|three|four|five|[0-9]+) '
+         rf'(?:passes|visits|trips|laps|rounds|flyovers|runs) (?:over|to|of|past|around|by) '
+         rf'(?P<x>(?:the|my|your|our) {_THING})(?P<m> at minimum| at least| exactly)?(?= [,.;]|$| and\b| then\b)',
+         lambda m: f'visit {m.group("x")} {m.group("q") or ""}{m.group("n")} times'),
+    Rule('the cereal box goes back in the pantry: put it there',
+         rf'^(?P<x>(?:the|my|your|our|this|that|these|those) {_THING}(?: and (?:the|my|your|our) {_THING})?)'
+         rf'(?: both| all)? (?:goes|go|belongs|belong|need to go|needs to go|should go|has to go|have to go|'
+         rf'must go)(?: back)?(?: out)? (?P<p>in|into|on|onto|to|inside|under)\b',
+         r'put \g<x> \g<p>'),
+    Rule('after surveying the orchard, head to the river: the orchard first',
+         rf'^(?:so |and |then )?after (?:surveying|visiting|checking|checking on|inspecting|going to|stopping at|'
+         rf'passing|flying over|photographing|scanning|cleaning|reaching|leaving) (?P<x>(?:the|my|your|our) '
+         rf'{_THING}) , (?=(?:go|head|fly|visit|come|drive|move|proceed|check|land|stop|swing|pop|return)\b)',
+         r'go to \g<x> , then '),
+    Rule('three passes over the bridge, and after the last one return to the base: then',
+         r'(?: ,)? (?:and )?after the (?:last|final) (?:one|pass|visit|time|lap|round|check)(?: ,)? '
+         r'(?=(?:go|return|head|fly|land|come|drive|proceed|move)\b)', ' , then '),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -240,6 +240,11 @@ def _after_relation(tokens: Sequence[str], i: int) -> bool:
 # "while you're carrying anything": what is carried in every delivery of the instruction.
 _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'either', 'each', 'both'})
 # "while you carry it", "as you're pushing the cart": the time the object is held.
+# "for the whole time": how long a rule holds, said after it; the rule holds throughout anyway.
+_WHOLE_TIME: tuple[tuple[str, ...], ...] = (
+    ('the', 'whole', 'time'), ('the', 'entire', 'time'), ('at', 'all', 'times'), ('all', 'the', 'time'),
+    ('throughout',), ('for', 'the', 'whole', 'trip'), ('for', 'the', 'whole', 'time'), ('all', 'day'),
+    ('the', 'whole', 'way'), ('the', 'entire', 'way'), ('for', 'the', 'whole', 'flight'))
 _CARRY_NOW = frozenset({'carry', 'carries', 'hold', 'holds', 'transport', 'push', 'pushing', 'pull',
                         'pulling', 'wheel', 'wheeling', 'haul', 'hauling', 'lug', 'lugging', 'tow', 'towing'})
 # Words after which "it is", "i am"... go on the same clause ("until it is clean", "so that i am").
@@ -507,7 +512,8 @@ class _Reader:
                                                                'better'}:
                 return sentence   # "they are in the kitchen", "it is the red one", "it is up to you"
             return self._noted_cut(sentence, cut)
-        if first == 'the' and not {'one', 'ones', 'that', 'which'} & set(tail) and any(
+        if first == 'the' and not {'one', 'ones', 'that', 'which'} & set(tail) and \
+                not chatter.has_constraint_word(tail) and any(
                 t in _REASON_VERBS and (t not in ('is', 'are', 'was', 'were') or k + 1 < len(tail) and
                                         tail[k + 1] not in DETS and tail[k + 1] not in _PLACE_PREPS)
                 for k, t in enumerate(tail) if k >= 2):
@@ -516,9 +522,9 @@ class _Reader:
 
     def _noted_cut(self, sentence: list[str], cut: int) -> list[str]:
         head = sentence[:cut]
-        if not [t for t in head if t not in PUNCT] or chatter.is_statement(
+        if not [t for t in head if t not in PUNCT and t not in FILLERS] or chatter.is_statement(
                 [t for t in head if t not in PUNCT]):
-            return sentence
+            return sentence   # "also, the beehive is off limits": nothing before it to say why for
         said = ' '.join(t for t in sentence[cut + 1:] if t not in PUNCT)
         self.notes.append(f'left out "{said}" (says why, asks for nothing)')
         return head + [t for t in sentence[cut + 1:] if t in '.;!?']
@@ -2243,6 +2249,10 @@ class _Reader:
         if not nps:
             return False
         rest = tokens[end:]
+        for tail in _WHOLE_TIME:
+            if tuple(rest[-len(tail):]) == tail and len(rest) > len(tail):
+                rest = rest[:-len(tail)]   # "the paint cans are off limits the whole time"
+                break
         hedges = ('strictly', 'totally', 'completely', 'absolutely', 'always', 'to', 'you', 'for', 'now',
                   'today', 'a', 'zone', 'area')
         if rest[:1] in (['is'], ['are']) and [t for t in rest[1:] if t not in hedges] in (
@@ -2253,13 +2263,15 @@ class _Reader:
             names = ', '.join(str(n.descriptor) for n in nps)
             self.notes.append(f'"{" ".join(tokens)}": kept away from {names}')
             return True
-        cut = next((k for k in range(1, len(rest)) if rest[k] in ('until', 'till', 'before', 'unless')), -1)
+        cut = next((k for k in range(1, len(rest)) if rest[k] in ('until', 'till', 'before', 'unless', 'once',
+                                                                   'after', 'when')), -1)
         if rest[:1] in (['is'], ['are']) and cut > 1 and [t for t in rest[1:cut] if t not in hedges] in (
                 ['off', 'limits'], ['out', 'of', 'bounds'], ['forbidden'], ['prohibited'], ['banned'],
                 ['restricted'], ['not', 'allowed'], ['no', 'go'], ['closed'], ['not', 'permitted']) and \
                 not none:
             # "the bench is off limits until you have visited the reel": not there until then
-            self.notes.append(f'"{" ".join(tokens[:end + cut])}": kept away from it, until then')
+            when = 'until then' if rest[cut] in ('until', 'till', 'before', 'unless') else 'from then on'
+            self.notes.append(f'"{" ".join(tokens[:end + cut])}": kept away from it, {when}')
             self._read_avoid(['avoid'] + tokens[:end] + rest[cut:], None)
             return True
         neg = ('cannot', 'never', 'not')

@@ -38,13 +38,14 @@ TYPOS: dict[str, str] = {
     'flashlite': 'flashlight',
     'tho': 'though', 'thx': 'thanks',
     'twise': 'twice', 'twic': 'twice', 'ovre': 'over', 'aera': 'area', 'carring': 'carrying', 'cary': 'carry',
-    'meting': 'meeting', 'carryng': 'carrying',
+    'meting': 'meeting', 'carryng': 'carrying', 'wiat': 'wait',
     'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
+    (r"\bdosn'?t\b", 'does not'), (r"\bdoesnt\b", 'does not'),
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'),

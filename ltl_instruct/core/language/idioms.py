@@ -702,16 +702,20 @@ RULES: tuple[Rule, ...] = (
          r'placed|'
          r'kept|resting|rests)\b', r'\g<w> is'),
     Rule('the laptop is on the ottoman; go to it: where a thing is, said as a statement',
-         rf'^(?:and |so |well )?(?P<x>(?:the|my|your|our|a|an) {_THING}) (?:is|are|should be|must be|might be|'
+         rf'^(?:and |so |well )?(?P<x>(?:the|my|your|our|a|an) {_THING}) '
+         rf'(?:is|are|should be|must be|might be|'
          rf'may be|is probably|sits|lies|stands|is sitting|is lying|is standing|is kept|was left|got left|'
-         rf'is still|is somewhere) (?P<r>{_WHERE} (?:the|my|your|our) (?!(?:[a-z0-9_]+ ){{0,3}}?floor\b){_THING}'
+         rf'is still|is somewhere) '
+         rf'(?P<r>{_WHERE} (?:the|my|your|our) (?!(?:[a-z0-9_]+ ){{0,3}}?floor\b){_THING}'
          rf'(?: and (?:the|my|your|our) {_THING})?)(?= [,;]|$)',
          r'there is \g<x> \g<r>'),
     Rule('behind the sofa there is a cable',
-         rf'^(?P<r>{_WHERE} (?:the|my|your|our) {_THING})(?: ,)? there (?:is|are) (?P<x>(?:a|an|the|some|two) '
+         rf'^(?P<r>{_WHERE} (?:the|my|your|our) {_THING})(?: ,)? there (?:is|are) '
+         rf'(?P<x>(?:a|an|the|some|two) '
          rf'{_THING})(?= [,;]|$)', r'there is \g<x> \g<r>'),
     Rule('and on that stretch keep away from the door: on the way there',
-         r'\bon (?:that|this|the) (?:second |last |final |next |same )?(?:stretch|leg|part|bit|segment|section)'
+         r'\bon (?:that|this|the) (?:second |last |final |next |same )?'
+         r'(?:stretch|leg|part|bit|segment|section)'
          r'(?: of the (?:route|trip|way|journey|flight|run))?\b', 'on the way there'),
     Rule('go to the grill, but the patio table has to come first: only after it',
          rf'(?P<j>, |; )(?:but |and )?(?P<x>(?:the|my|your|our) {_THING}) (?:has to|must|needs to|should|'
@@ -724,9 +728,11 @@ RULES: tuple[Rule, ...] = (
          rf'exactly |at most )?(?P<n>two|three|four|five|[0-9]+) (?:visits|checks|passes|trips)'
          rf'(?P<m> at minimum| at least| at most| exactly)?(?= [,.;]|$)', _visits_needed),
     Rule('make at least three passes over the bridge: visit it at least three times',
-         rf'\b(?:make|do|take|fly|want|need) (?P<q>at least |exactly |at most )?(?P<n>two|three|four|five|[0-9]+) '
+         rf'\b(?:make|do|take|fly|want|need) (?P<q>at least |exactly |at most )?'
+         rf'(?P<n>two|three|four|five|[0-9]+) '
          rf'(?:passes|visits|trips|laps|rounds|flyovers|runs) (?:over|to|of|past|around|by) '
-         rf'(?P<x>(?:the|my|your|our) {_THING})(?P<m> at minimum| at least| exactly)?(?= [,.;]|$| and\b| then\b)',
+         rf'(?P<x>(?:the|my|your|our) {_THING})(?P<m> at minimum| at least| exactly)?'
+         rf'(?= [,.;]|$| and\b| then\b)',
          lambda m: f'visit {m.group("x")} {m.group("q") or ""}{m.group("n")} times'),
     Rule('the cereal box goes back in the pantry: put it there',
          rf'^(?P<x>(?:the|my|your|our|this|that|these|those) {_THING}(?: and (?:the|my|your|our) {_THING})?)'
@@ -734,7 +740,8 @@ RULES: tuple[Rule, ...] = (
          rf'must go)(?: back)?(?: out)? (?P<p>in|into|on|onto|to|inside|under)\b',
          r'put \g<x> \g<p>'),
     Rule('after surveying the orchard, head to the river: the orchard first',
-         rf'^(?:so |and |then )?after (?:surveying|visiting|checking|checking on|inspecting|going to|stopping at|'
+         rf'^(?:so |and |then )?after (?:surveying|visiting|checking|checking on|inspecting|going to|'
+         rf'stopping at|'
          rf'passing|flying over|photographing|scanning|cleaning|reaching|leaving) (?P<x>(?:the|my|your|our) '
          rf'{_THING}) , (?=(?:go|head|fly|visit|come|drive|move|proceed|check|land|stop|swing|pop|return)\b)',
          r'go to \g<x> , then '),

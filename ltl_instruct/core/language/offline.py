@@ -2263,8 +2263,8 @@ class _Reader:
             names = ', '.join(str(n.descriptor) for n in nps)
             self.notes.append(f'"{" ".join(tokens)}": kept away from {names}')
             return True
-        cut = next((k for k in range(1, len(rest)) if rest[k] in ('until', 'till', 'before', 'unless', 'once',
-                                                                   'after', 'when')), -1)
+        cut = next((k for k in range(1, len(rest))
+                    if rest[k] in ('until', 'till', 'before', 'unless', 'once', 'after', 'when')), -1)
         if rest[:1] in (['is'], ['are']) and cut > 1 and [t for t in rest[1:cut] if t not in hedges] in (
                 ['off', 'limits'], ['out', 'of', 'bounds'], ['forbidden'], ['prohibited'], ['banned'],
                 ['restricted'], ['not', 'allowed'], ['no', 'go'], ['closed'], ['not', 'permitted']) and \

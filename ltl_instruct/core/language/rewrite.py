@@ -665,6 +665,10 @@ _CLEFT = re.compile(
 
 
 _MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
+_NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
+_SWAP_WORDS = frozenset({'swap', 'switch', 'replace', 'exchange', 'trade', 'change', 'substitute'})
+_SWAP = re.compile(rf'\b(?:{"|".join(sorted(_SWAP_WORDS))}) (?P<x>{_NP_RE}) (?:for|with|to|by) '
+                   rf'(?P<y>{_NP_RE})(?= [,.;!?]|$)')
 
 
 def _uncleft(tokens: list[str]) -> list[str]:
@@ -672,10 +676,12 @@ def _uncleft(tokens: list[str]) -> list[str]:
 
     "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
     """
-    if not {'it', 'its', 'i'} & set(tokens):
+    if not ({'it', 'its', 'i'} | _SWAP_WORDS) & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
+    # "swap the shed for the patio": the patio instead of the shed
+    new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
     return new.split() if new != text else tokens
 
 
@@ -712,7 +718,14 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         marker = out[i]
         lead = 1 if seg[:1] == [','] else 0
         c = seg.index(',', lead) if ',' in seg[lead:] else -1
-        said = seg[lead:c] if c <= lead or seg[lead] in DETERMINERS else ['the'] + seg[lead:c]
+        said = seg[lead:c] if c <= lead or seg[lead] in DETERMINERS | chatter.STATEMENT_SUBJECTS else \
+            ['the'] + seg[lead:c]   # "milk is already in there": a name said without its article
+        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 < len(seg) and \
+                seg[c + 1] in _VERBS and marker not in _CANCEL:
+            # "actually it has been washed already, put it in the dryer": the reason, then the step
+            notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
+            out = out[:j] + seg[c + 1:] + after
+            continue
         if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
@@ -832,7 +845,7 @@ def _np_end(words: list[str]) -> int:
 # Verbs of keeping away that a restatement may start with ("keep the dog out... I mean, keep away from it").
 _KEEP_VERBS = frozenset({'keep', 'stay', 'steer'})
 _DELIVERY = frozenset({'put', 'place', 'bring', 'take', 'throw', 'toss', 'move', 'carry', 'deliver', 'drop',
-                       'leave', 'set', 'stash', 'store', 'dump'})
+                       'leave', 'set', 'stash', 'store', 'dump', 'load', 'unload', 'hang', 'return', 'stick'})
 
 
 def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
@@ -855,6 +868,8 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
         return None
     old = prev[b:end]
     new = list(seg)
+    if len(new) > 2 and new[-1] == 'instead':
+        new = new[:-1]   # "no, take the yellow towel instead": the rest of the step as said
     for k in range(1, len(new) - 1):
         if new[k:k + 2] in (['instead', 'of'], ['rather', 'than']) or new[k] == 'not' and new[k - 1] == ',':
             new = new[:k - (new[k - 1] == ',')]   # "I meant avoid X, not the fan": what it replaces
@@ -879,7 +894,7 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
         obj = PhraseParser().parse(old, d_old)
         other = PhraseParser().parse(new, d_new)
         if obj is not None and other is not None and not obj.pronoun and other.end == len(new) and \
-                obj.end < len(old) and old[obj.end] in _SCOPE_WORDS:
+                obj.end < len(old) and old[obj.end] in _SCOPE_WORDS | {'to', 'into', 'onto', 'in', 'on'}:
             new, scoped = new + old[obj.end:], True
     if not scoped and any(t in ('it', 'them') for t in new):
         k = 1
@@ -1193,6 +1208,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append('the avoidance was retracted')
             return _remove_clause(prev, pos) + rest
         new = _strip_corr(rest)
+        if new and new[0] not in DETERMINERS and new[0] not in _VERBS and len(new) <= 4 and all(
+                w.isalpha() and w not in chatter.CONSTRAINT_WORDS and w not in PUNCT for w in new):
+            new = ['the'] + new   # "scratch that, broom closet": a name said without its article
         count_fix = _count_correction(prev, seg)
         if count_fix is not None:
             notes.append('the count was corrected')

@@ -65,7 +65,7 @@ litterbox fishtank terrarium hamster gerbil parakeet budgie cockatiel poodle lab
 minibar
 kiosk deli gazebo hangar tarmac workbench toolbox wheelbarrow sprinkler gutter chimney mantel copier
 shredder printer scanner fridge freezer cooktop pantry closet dresser vanity hamper goggles mitt grater
-charger stethoscope stroller thermometer sideboard bookshelf radiator
+charger stethoscope stroller thermometer sideboard bookshelf radiator washer
 defibrillator extinguisher radiology pathology cardiology oncology pediatrics paediatrics maternity
 pharmacy wheelchair gurney ventilator nebulizer autoclave centrifuge incubator fume biohazard eyewash
 refrigerator freezer elevator escalator photocopier projector whiteboard corkboard noticeboard

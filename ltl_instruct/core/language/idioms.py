@@ -755,25 +755,29 @@ RULES: tuple[Rule, ...] = (
          r'^(?:[a-z]+ ){1,2}(?:needs|wants|would like) you (?=(?:at|in|by|over|near|to|downstairs|upstairs|'
          r'outside)\b)', 'i need you '),
     Rule('do not go down the front hallway: the hallway as a place',
-         r'\bgo (?:down|along|up|through) (?=(?:the|my|your|our) (?:[a-z0-9_]+ ){0,2}?(?:hallway|hall|corridor|'
+         r'\bgo (?:down|along|up|through) '
+         r'(?=(?:the|my|your|our) (?:[a-z0-9_]+ ){0,2}?(?:hallway|hall|corridor|'
          r'street|path|road|alley|aisle|lane|passage|driveway)\b)', 'go to '),
     Rule('do not cut through the garden to get there: on the way there',
          r'(?: ,)? (?:to get there|getting there|while getting there|as you get there|on your way there|'
          r'to reach it|reaching it)(?= [,.;]|$)', ' on the way there'),
     Rule('do not cut through the garden: go through it',
          r'\b(?:cut|cutting) (?:through|across)\b', 'go through'),
-    Rule('do not bump into the bicycles: go near them', r'\b(?:bump|bumping|crash|crashing|run|running) into\b',
+    Rule('do not bump into the bicycles: go near them',
+         r'\b(?:bump|bumping|crash|crashing|run|running) into\b',
          'go near'),
     Rule('pantry first, back porch after that: then',
          rf'^(?P<a>(?:the |my )?{_THING}) first , (?:and )?(?:then )?(?P<b>(?:the |my )?{_THING}) '
          rf'(?:after that|next|second|afterwards|after|later)$', r'go to \g<a> , then to \g<b>'),
-    Rule('take yourself over to the closet: go there', r'\b(?:take|get|bring|drag|haul|move) yourself\b', 'go'),
+    Rule('take yourself over to the closet: go there',
+         r'\b(?:take|get|bring|drag|haul|move) yourself\b', 'go'),
     Rule('the treadmill can wait until you have been to the dispenser: not before',
          rf'^(?P<x>(?:the|my|your|our) {_THING}) (?:can|will have to|has to|must|should|needs to) wait '
          rf'(?=(?:until|till)\b)', r'do not go to \g<x> '),
     Rule('not till after you have visited the amp: not until', r'\bnot (?:until|till) after\b', 'not until'),
     Rule('once you have been to the basket, and not before, go to the footstool: only after',
-         r'^(?:once|after|when) (?P<e>[^,]+?) , (?:and )?not (?:before|earlier|sooner)(?: that)? , (?P<m>.+)$',
+         r'^(?:once|after|when) (?P<e>[^,]+?) , (?:and )?not (?:before|earlier|sooner)(?: that)? , '
+         r'(?P<m>.+)$',
          r'\g<m> , but only after \g<e>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),

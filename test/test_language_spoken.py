@@ -867,6 +867,45 @@ FOUND_ROUND_P = [
      'F (near[stapler] & F (pick[stapler] & F (near[desk] & F release[stapler, desk]))) | '
      'F (near[tape] & F (pick[tape] & F (near[desk] & F release[tape, desk])))'),
     ('Bring me the cup.', 'F (near[cup] & F pick[cup])'),
+    # where a thing is, said as a statement, describes the thing "it" then names
+    ('The mug is on the windowsill; go over to it.', 'F near[mug::isabove(windowsill)]'),
+    ('my glasses should be next to the lamp, go to them', 'F near[glasses::isnextto(lamp)]'),
+    ('Under the bench there is a ball; go find it.', 'F near[ball::isbelow(bench)]'),
+    # the leg of a route named as a stretch, a leg, or the getting there
+    ('Go to the porch, then walk to the gate, and on that stretch keep away from the bins.',
+     'F (near[porch] & (!near[bins] U near[gate]))'),
+    ('After inspecting the roof, fly to the mast; the antenna must be avoided on that leg.',
+     'F (near[roof] & (!near[antenna] U near[mast]))'),
+    ("Go to the barn, and don't cut through the paddock to get there.", '!near[paddock] U near[barn]'),
+    ('go to the shed and dont bump into the mower getting there', '!near[mower] U near[shed]'),
+    # an order said as what has to come first, fragments, waiting
+    ('Go to the pool, but the shower has to come first.', 'F near[pool] & (!near[pool] U near[shower])'),
+    ('Kitchen first, garage after that.', 'F (near[kitchen] & F near[garage])'),
+    ("The garden can wait until you've been to the shed.", '!near[garden] U near[shed]'),
+    ("Once you've been to the tap, and not before, go to the trough.",
+     'F near[trough] & (!near[trough] U near[tap])'),
+    ('Wait at the bench or the swing.', 'F near[bench] | F near[swing]'),
+    ('Grandpa needs you at the garage door.', 'F near[garage_door]'),
+    ('Take yourself over to the study.', 'F near[study]'),
+    # counts said as passes, visits needed, a single time
+    ('Make two passes over the pond.', 'F (near[pond] & F (!near[pond] & F near[pond]))'),
+    ('The hen house needs three visits at minimum.',
+     'F (near[hen_house] & F (!near[hen_house] & F (near[hen_house] & F (!near[hen_house] & '
+     'F near[hen_house]))))'),
+    ('Stop at the gate a single time.', '!near[gate] U (near[gate] & (near[gate] W G !near[gate]))'),
+    # where a thing belongs is a delivery; rules that hold the whole time, or from an event on
+    ('The scissors go back in the drawer.',
+     'F (near[scissors] & F (pick[scissors] & F (near[drawer] & F release[scissors, drawer])))'),
+    ('Go to the den. Also, the fireplace is off limits the whole time.', 'F near[den] & G !near[fireplace]'),
+    ("Visit the gate, then the barn; the pond is off limits from the moment you've been at the gate.",
+     'F (near[gate] & G !near[pond] & F near[barn])'),
+    # corrections that keep the rest of the step, swap a goal, or give a reason first
+    ('bring the red cup to the table. no, bring the blue cup instead',
+     'F (near[blue_cup] & F (pick[blue_cup] & F (near[table] & F release[blue_cup, table])))'),
+    ('Go to the bank, then the shop, then home. Actually, swap the shop for the bakery.',
+     'F (near[bank] & F (near[bakery] & F near[home]))'),
+    ("Put the shirt in the washer. Actually it's been washed already, put it in the closet.",
+     'F (near[shirt] & F (pick[shirt] & F (near[closet] & F release[shirt, closet])))'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

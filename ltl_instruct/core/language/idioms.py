@@ -721,8 +721,9 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<j>, |; )(?:but |and )?(?P<x>(?:the|my|your|our) {_THING}) (?:has to|must|needs to|should|'
          rf'has got to|is to) (?:come|be visited|be done|be checked|go|happen|be) first\b',
          r'\g<j>but only after \g<x>'),
-    Rule('stop at the ice machine a single time: once',
-         r'\b(?:a single time|one single time|one time only|a single visit)\b', 'once'),
+    Rule('stop at the ice machine a single time: exactly once',
+         r'\b(?:a single time|one single time|one time only|a single visit|just the one time)\b',
+         'exactly once'),
     Rule('the bird feeder needs two visits at minimum: at least twice',
          rf'^(?P<x>(?:the|my|your|our) {_THING}) (?:needs|requires|gets|should get|must get) (?P<q>at least |'
          rf'exactly |at most )?(?P<n>two|three|four|five|[0-9]+) (?:visits|checks|passes|trips)'

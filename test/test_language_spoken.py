@@ -906,6 +906,11 @@ FOUND_ROUND_P = [
      'F (near[bank] & F (near[bakery] & F near[home]))'),
     ("Put the shirt in the washer. Actually it's been washed already, put it in the closet.",
      'F (near[shirt] & F (pick[shirt] & F (near[closet] & F release[shirt, closet])))'),
+    # a rule that binds one alternative only, named as "it" or as "the X one"
+    ("Go to the pond or the orchard. If it's the orchard, keep away from the hives.",
+     'F near[pond] | F near[orchard] & G !near[hives]'),
+    ('Head to the east stairs or the west stairs, but if you go with the west one, avoid the lift.',
+     'F near[east_stairs] | F near[west_stairs] & G !near[lift]'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

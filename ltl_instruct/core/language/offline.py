@@ -2442,18 +2442,30 @@ class _Reader:
         if last is None or len(last.targets) < 2:
             return False
         k = 1 if tokens[:1] in (['but'], ['and'], ['so'], ['though']) else 0
-        if tokens[k:k + 2] != ['if', 'you']:
+        if tokens[k:k + 3] in (['if', 'it', 'is'], ['if', 'that', 'is'], ['if', 'it', 'was']):
+            j = k + 3   # "if it's the shed, don't go near the wasp nest"
+        elif tokens[k:k + 2] != ['if', 'you']:
             return False
-        j = self._skip_event_verbs(tokens, k + 2)
+        else:
+            j = self._skip_event_verbs(tokens, k + 2)
         while j < len(tokens) and tokens[j] in ('choose', 'pick', 'decide', 'opt', 'on', 'for', 'with',
                                                 'end', 'take', 'use', 'up', 'at', 'go', 'to', 'select'):
             j += 1
         np = self.phrases.parse(tokens, j)
-        return np is not None and self._resolve(np, place=True).descriptor in last.targets
+        return np is not None and self._alternative(np, last.targets) in last.targets
+
+    def _alternative(self, np: NounPhrase, targets: Sequence[Descriptor]) -> Descriptor:
+        """The alternative a condition names: "the passenger one" is the passenger elevator."""
+        d = self._resolve(np, place=True).descriptor
+        if d in targets or not d.name.endswith('_one'):
+            return d
+        mod = d.name[:-len('one')]
+        fits = [t for t in targets if t.name.startswith(mod)]
+        return fits[0] if len(fits) == 1 else d
 
     def _read_conditional(self, tokens: list[str]) -> None:
         """Read 'if you go into X at all, check Y first' as ``!near[x] W near[y]``."""
-        j = 1
+        j = 3 if tokens[1:3] in (['it', 'is'], ['that', 'is'], ['it', 'was']) else 1   # "if it's the shed"
         while j < len(tokens) and tokens[j] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
                 'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already',
                 'end', 'opt', 'settle', 'with', 'take', 'use', 'select'}:
@@ -2464,6 +2476,10 @@ class _Reader:
                                    details={'part': ' '.join(tokens)})
         rest = [t for t in tokens[np.end:] if t not in ('at', 'all')]
         last = self.task.last_step(('visit',))
+        if last is not None and len(last.targets) > 1:
+            alt = self._alternative(np, last.targets)
+            if alt != np.descriptor:
+                np = NounPhrase(alt, np.start, np.end, np.head)
         if 'choose' in tokens[:j] or 'pick' in tokens[:j] or 'decide' in tokens[:j] or (
                 last is not None and len(last.targets) > 1 and np.descriptor in last.targets):
             # "if you choose X, avoid Y": the avoidance binds only that alternative.

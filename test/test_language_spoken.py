@@ -911,6 +911,17 @@ FOUND_ROUND_P = [
      'F near[pond] | F near[orchard] & G !near[hives]'),
     ('Head to the east stairs or the west stairs, but if you go with the west one, avoid the lift.',
      'F near[east_stairs] | F near[west_stairs] & G !near[lift]'),
+    # avoiding something until you get there: on the way there
+    ('fly to the mast but stay away from the wires until you get there', '!near[wires] U near[mast]'),
+    # two things of one kind told apart by a word before the shared noun
+    ('Go to the north or the south gate, whichever is open.', 'F near[north_gate] | F near[south_gate]'),
+    ('Visit the upstairs and the downstairs bathroom.',
+     'F near[upstairs_bathroom] & F near[downstairs_bathroom]'),
+    ('Take the white towel to the bath - sorry, the cream one.',
+     'F (near[cream_towel] & F (pick[cream_towel] & F (near[bath] & F release[cream_towel, bath])))'),
+    # "it" in a thing's own relation is what the last thing was placed by, not that thing
+    ('Go to the stool left of the bar or the stool right of it.',
+     'F near[stool::isleftof(bar)] | F near[stool::isrightof(bar)]'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

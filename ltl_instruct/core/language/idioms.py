@@ -48,6 +48,10 @@ _GO = (r'(?:visit|go to|reach|enter|pass through|go through|move to|travel to|na
 _THING = r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
 _WHERE = (r'(?:on top of|on|under|underneath|beneath|behind|in front of|next to|beside|by|near|left of|'
           r'right of|to the left of|to the right of|above|below|inside|between)')
+# words that tell two things of one kind apart ("the east or the west stairs")
+_SIDE = (r'(?:east|west|north|south|left|right|front|back|upper|lower|upstairs|downstairs|inner|outer|'
+         r'near|far|main|side|top|bottom|middle|first|second|third|big|small|large|red|blue|green|yellow|'
+         r'white|black|grey|gray|brown|old|new|kids|guest|master)')
 _GOING = (r'(?:visiting|going to|reaching|entering|passing through|going through|moving to|traveling to|'
           r'travelling to|navigating to|getting to|heading to|finding|coming to|walking to|flying to)')
 _GONE = r'(?:visited|been to|gone to|reached|entered|passed through|gone through|found|arrived at)'
@@ -780,6 +784,13 @@ RULES: tuple[Rule, ...] = (
          r'^(?:once|after|when) (?P<e>[^,]+?) , (?:and )?not (?:before|earlier|sooner)(?: that)? , '
          r'(?P<m>.+)$',
          r'\g<m> , but only after \g<e>'),
+    Rule('the east or the west nurses station: each named in full',
+         rf'\bthe (?P<a>{_SIDE}) (?P<j>or|and) (?:the )?(?P<b>{_SIDE}) '
+         rf'(?P<n>[a-z0-9_]+(?: [a-z0-9_]+){{0,2}}?)'
+         rf'(?= [,.;]|$| and\b| or\b| then\b| but\b| first\b| whichever\b| if\b)',
+         r'the \g<a> \g<n> \g<j> the \g<b> \g<n>'),
+    Rule('stay away from the wires until you get there: on the way there',
+         r'\buntil (?:you|we|the robot) (?:get|arrive|are|make it) there\b', 'on the way there'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -118,6 +118,7 @@ PLACE_NOUNS = frozenset({'location', 'landmark', 'place', 'waypoint', 'point'})
 # Colour words ("the yellow one" corrects the thing said with a colour).
 COLOURS = frozenset('''
 red blue green yellow orange purple pink brown black white grey gray silver gold golden beige navy teal
+cream tan maroon violet turquoise cyan magenta lilac lavender ivory khaki olive charcoal crimson
 '''.split())
 PLACEHOLDER_ADJECTIVES = COLOURS | frozenset('''
 big small large little
@@ -422,7 +423,12 @@ class PhraseParser:
                 relations.append(Relation(comparator, (arg1.descriptor, arg2.descriptor)))
                 i = arg2.end
             else:
-                relations.append(Relation(comparator, (arg1.descriptor,)))
+                target = arg1.descriptor
+                if arg1.pronoun in ('it', 'that') and target.relations and target.name == name_of(
+                        words, self.digits) and len(target.relations[0].args) == 1:
+                    # "the chair left of the board or the chair right of it": it is the board
+                    target = target.relations[0].args[0]
+                relations.append(Relation(comparator, (target,)))
                 i = arg1.end
         np = NounPhrase(Descriptor(name_of(words, self.digits), tuple(relations)), start, i, head,
                         'one' if one else '')

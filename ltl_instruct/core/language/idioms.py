@@ -18,6 +18,7 @@ from __future__ import annotations
 import re
 from typing import Callable, NamedTuple, Union
 
+from ltl_instruct.core.language.phrases import singular
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS
 
 _NUM = r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+)'
@@ -148,6 +149,15 @@ def _held(m: 're.Match[str]') -> str:
     if m.group('o'):
         return 'it' if m.group('o') == 'it' else 'them'
     return m.group('p')
+
+
+def _each_named(m: 're.Match[str]') -> str:
+    """'the first and third floors': 'the first floor and the third floor' (one of each)."""
+    words = m.group('n').split()
+    if m.group('j') == 'and':
+        words[-1] = singular(words[-1])
+    n = ' '.join(words)
+    return f'the {m.group("a")} {n} {m.group("j")} the {m.group("b")} {n}'
 
 
 def _visits_needed(m: 're.Match[str]') -> str:
@@ -788,7 +798,7 @@ RULES: tuple[Rule, ...] = (
          rf'\bthe (?P<a>{_SIDE}) (?P<j>or|and) (?:the )?(?P<b>{_SIDE}) '
          rf'(?P<n>[a-z0-9_]+(?: [a-z0-9_]+){{0,2}}?)'
          rf'(?= [,.;]|$| and\b| or\b| then\b| but\b| first\b| whichever\b| if\b)',
-         r'the \g<a> \g<n> \g<j> the \g<b> \g<n>'),
+         _each_named),
     Rule('stay away from the wires until you get there: on the way there',
          r'\buntil (?:you|we|the robot) (?:get|arrive|are|make it) there\b', 'on the way there'),
     Rule('once you have clocked in at the desk: a stop there',

@@ -922,6 +922,31 @@ FOUND_ROUND_P = [
     # "it" in a thing's own relation is what the last thing was placed by, not that thing
     ('Go to the stool left of the bar or the stool right of it.',
      'F near[stool::isleftof(bar)] | F near[stool::isrightof(bar)]'),
+    # a held thing named again in a rule about it; carrying rules over a choice or a list of deliveries
+    ("Collect the blood kit and take it to the ward. Don't go to the ward before you have the kit.",
+     'F (near[blood_kit] & F (pick[blood_kit] & F (near[ward] & F release[blood_kit, ward]))) & '
+     '(!near[ward] U pick[blood_kit])'),
+    ('Bring either the mop or the broom to the hall; keep clear of the rug while you carry it.',
+     'F (near[mop] & F (pick[mop] & (!near[rug] U (near[hall] & F release[mop, hall])))) | '
+     'F (near[broom] & F (pick[broom] & (!near[rug] U (near[hall] & F release[broom, hall]))))'),
+    ('Take the cup and the bowl to the sink, and avoid the cat while carrying them.',
+     'F (near[cup] & F (pick[cup] & (!near[cat] U (near[sink] & F release[cup, sink])))) & '
+     'F (near[bowl] & F (pick[bowl] & (!near[cat] U (near[sink] & F release[bowl, sink]))))'),
+    # a correction marked as one; a pause before a new step corrects nothing
+    ('Put the plates in the cupboard - correction, put them on the table.',
+     'F (near[plates] & F (pick[plates] & F (near[table] & F release[plates, table])))'),
+    ('Go to the hall, and then after the hall, um, go to the porch.', 'F (near[hall] & F near[porch])'),
+    # counts said before the place or with what follows the last visit
+    ('Go exactly one time to the kiosk, after go to the gate.',
+     '(!near[kiosk] U (near[kiosk] & (near[kiosk] W G !near[kiosk]))) & F (near[kiosk] & F near[gate])'),
+    ('Visit the well at least two times, and after the second time go to the barn.',
+     'F (near[well] & F (!near[well] & F (near[well] & F near[barn])))'),
+    ('Check the pump at least twice during the round.', 'F (near[pump] & F (!near[pump] & F near[pump]))'),
+    # headings and trailing remarks
+    ('Go to the lobby. Important: never go near the fountain.', 'F near[lobby] & G !near[fountain]'),
+    ('check the sink before the stove i need both checked', 'F near[stove] & (!near[stove] U near[sink])'),
+    ('Go to the den or the study; only one of the two, never both of them.',
+     'F near[den] & G !near[study] | F near[study] & G !near[den]'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

@@ -233,7 +233,7 @@ routine routines plan plans task tasks errand errands job jobs chore chores inst
 itinerary mission missions schedule steps step program programme todo list checklist rundown
 orders assignment assignments duty duties workflow procedure protocol today tonight
 morning afternoon evening plan rules rule note notes reminder reminders request requests things favours
-favors jobs bits
+favors jobs bits important warning caution attention heads ps nb careful update
 '''.split())
 
 
@@ -252,6 +252,13 @@ HESITATIONS = frozenset({'uh', 'uhh', 'uhm', 'um', 'umm', 'erm', 'er', 'hm', 'hm
 
 # Words after which a phrase cannot end: a pause after one is never a correction ("at the, um, ...").
 _DANGLING = DETERMINERS | PREPOSITIONS | frozenset({'and', 'then', 'or', 'but', 'than', 'is', 'are', 'which'})
+
+
+# Verbs that open a step of their own: a pause before one corrects nothing.
+_CLAUSE_VERBS = frozenset('''
+go head visit come fly drive walk then bring take put avoid stay keep return stop land move proceed swing pop
+just please finally
+'''.split())
 
 
 def join_restarts(tokens: list[str], notes: list[str]) -> list[str]:
@@ -273,6 +280,13 @@ def join_restarts(tokens: list[str], notes: list[str]) -> list[str]:
             j = k + 1
             while j < len(tokens) and tokens[j] in (',',) + tuple(HESITATIONS):
                 j += 1
+            if kept and j < len(tokens) and tokens[j] in _CLAUSE_VERBS and kept[-1] not in PUNCT and \
+                    tokens[k - 1] == ',':
+                # "after the bookcase, um, go to the window seat": a pause before a new step, no correction
+                dropped.append(t)
+                out = kept + [',']
+                k = j
+                continue
             if kept and kept[-1] in _DANGLING and j < len(tokens) and tokens[j] not in PUNCT:
                 if tokens[j] == kept[-1]:
                     j += 1   # "the, uh, the": once
@@ -620,6 +634,8 @@ _REMARK_RE = re.compile(
     r'|no matter (?:which|what)(?: (?:order|one|way|one first|comes first))?'
     r'|(?:what|whatever|whichever|which) (?:you )?(?:prefer|like|want|choose)(?: best| more)?'
     r'|(?:you )?(?:choose|pick|decide)(?: which(?: one)?)?'
+    r'|i (?:need|want) (?:both|all|each|them all|all of them|both of them) '
+    r'(?:checked|done|visited|covered|seen)'
     r'|(?:i )?(?:honestly |really )?(?:do not|will not) (?:mind|care)(?: which| either way)?'
     r'(?: (?:one|option|way|route))?(?: you (?:go for|pick|choose|take|use|do))?'
     r'|take (?:your|as much) time(?: (?:as you need|about it|with it))?'
@@ -653,8 +669,8 @@ _REMARK_VERBS = frozenset({'go', 'visit', 'pick', 'choose', 'take', 'bring', 'ch
                            'are'})
 
 
-def set_off_remarks(tokens: list[str]) -> list[str]:
-    """Put a comma before a remark that ends a sentence unmarked ("... the loveseat either one is fine")."""
+def set_off_remarks(tokens: list[str], notes: list[str]) -> list[str]:
+    """Leave out a remark that ends a sentence unmarked ("... the loveseat either one is fine"), noted."""
     out: list[str] = []
     start = 0
     for i, t in enumerate(tokens + ['.']):
@@ -668,7 +684,9 @@ def set_off_remarks(tokens: list[str]) -> list[str]:
                 lead = max((k for k in range(cut) if sentence[k] in PUNCT), default=-1) + 1
                 if is_remark(sentence[lead:]):
                     cut = -1   # "..., i am not fussy": set off already
-            out.extend(sentence[:cut] + [','] + sentence[cut:] if cut > 0 else sentence)
+            if cut > 0:
+                notes.append(f'left out "{" ".join(sentence[cut:])}" (asks for nothing)')
+            out.extend(sentence[:cut] if cut > 0 else sentence)
             out.extend(tokens[i:i + 1])
             start = i + 1
     return out

@@ -801,6 +801,23 @@ RULES: tuple[Rule, ...] = (
          _each_named),
     Rule('stay away from the wires until you get there: on the way there',
          r'\buntil (?:you|we|the robot) (?:get|arrive|are|make it) there\b', 'on the way there'),
+    Rule('not before you visited the changing room and also the shower: and',
+         r'\band also (?=(?:the|my|your|our)\b)', 'and '),
+    Rule('it must be only one of the two, never both of them: not both',
+         r'\bnever both(?: of them| of those| of the two)?\b', 'not both'),
+    Rule('go exactly one time to the coffee machine: the count after the place',
+         rf'\b(?P<v>go|fly|stop|head|come|drive) (?P<c>exactly |at least |at most |only )?'
+         rf'(?P<n>once|twice|thrice|'
+         rf'(?:one|two|three|four|five) times?) (?P<p>to|at|by|over|past) (?P<x>(?:the|my|your|our) {_THING})'
+         rf'(?= [,.;]|$| and\b| then\b)', r'\g<v> \g<p> \g<x> \g<c>\g<n>'),
+    Rule('and after the second time go to the copier: then',
+         r'(?: ,)? (?:and )?after the (?:second|third|fourth|2nd|3rd) (?:one|pass|visit|time|lap|round)'
+         r'(?: ,)? '
+         r'(?=(?:go|return|head|fly|land|come|drive|proceed|move)\b)', ' , then '),
+    Rule('and then after the bookcase, go to the window seat: the bookcase first',
+         rf'(?P<j>(?:, |\band )(?:then )?)after (?P<x>(?:the|my|your|our) {_THING}) ,? '
+         rf'(?=(?:go|head|fly|visit|come|drive|move|proceed|check|land|stop|swing|pop|return)\b)',
+         r'\g<j>to \g<x> , then '),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -123,6 +123,9 @@ NOISE_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('at', 'least', 'once'), ('at', 'any', 'time'), ('at', 'any', 'instant'), ('ever',),
     ('as', 'many', 'times', 'as', 'you', 'want'), ('as', 'many', 'times', 'as', 'you', 'like'),
     ('as', 'often', 'as', 'you', 'want'), ('as', 'often', 'as', 'you', 'like'), ('in', 'the', 'future'),
+    ('during', 'the', 'round'), ('during', 'your', 'round'), ('on', 'your', 'round'),
+    ('during', 'the', 'shift'),
+    ('during', 'your', 'shift'), ('during', 'the', 'patrol'), ('on', 'this', 'run'), ('during', 'the', 'run'),
 ), key=lambda t: -len(t)))
 ORDER_TAILS: tuple[tuple[str, ...], ...] = (
     ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),

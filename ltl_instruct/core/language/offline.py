@@ -210,7 +210,7 @@ class OfflineTranslator:
         tokens = chatter.strip_hesitations(
             apply_exclusions(apply_corrections(chatter.join_restarts(tokens, notes), notes), notes), notes)
         tokens = chatter.deliver_to_speaker(tokens, notes)
-        return rewrite_idioms(chatter.set_off_remarks(tokens))
+        return rewrite_idioms(chatter.set_off_remarks(tokens, notes))
 
 
 def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Reader') -> None:
@@ -1668,6 +1668,18 @@ class _Reader:
                 np = self.phrases.parse(tokens, h)
                 if np is not None:
                     return _Scope('carry'), np.end
+        h = i + 1 if tokens[i:i + 1] == ['you'] else i
+        while h < len(tokens) and tokens[h] in ('still', 'already', 'actually'):
+            h += 1
+        if tokens[i - 1] in ('until', 'till', 'before', 'once', 'after', 'when') and \
+                tokens[h:h + 1] in (['have'], ['got'], ['hold']) and h + 1 < len(tokens) and \
+                (tokens[h + 1] in DETS or tokens[h + 1] in ('it', 'them')):
+            # "don't go to the lab before you have the tray": until it is picked up
+            np = self.phrases.parse(tokens, h + 1)
+            if np is not None:
+                if not np.pronoun:
+                    self.last_object = np
+                return _Scope('after_pick'), np.end
         j = i
         while j < len(tokens) and tokens[j] in ('you', 'have', 'are', 'i', 'it', 'is', 'been', 'the',
                                                 'robot', 'they', 'we', 'has', 'was', 'were', 'that'):
@@ -2021,7 +2033,10 @@ class _Reader:
                 raise TranslationError('cannot read a constraint that holds until one of several places',
                                        details={'part': ' '.join(rest[:end])})
             held = next((d for st in self.task._all_steps() if st.kind in ('pick', 'deliver')
-                         for d in st.targets if nps and d.name == nps[0].descriptor.name),
+                         for d in st.targets if nps and (d.name == nps[0].descriptor.name or (
+                             # "the sample tray ... before you have the tray": the same tray
+                             d.name.endswith('_' + nps[0].descriptor.name) and
+                             not nps[0].descriptor.relations))),
                         None) if holding else None
             if held is not None and event == 'near':
                 # "until you have the keys": until they are picked up (the keys named before)
@@ -2140,6 +2155,15 @@ class _Reader:
             return
         if kind == 'carry':
             step = self.task.last_step(('deliver',))
+            group = self.task.last_step(('deliver', 'any', 'all'))
+            inner = [st for c in group.chains for st in c if st.kind == 'deliver'] if group is not None and \
+                group.kind in ('any', 'all') else []
+            if inner:
+                # "bring a blanket or a pillow ... while you carry it", "take the first two ... while
+                # carrying them": every delivery of that choice or list
+                for st in inner:
+                    st.carry_avoid.extend(targets)
+                return
             if scope is not None and scope.event == 'all':
                 every = [st for st in self.task._all_steps() if st.kind == 'deliver']
                 for st in every:

@@ -397,7 +397,8 @@ _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', '
                      'leave'})
 # Markers that restate a whole clause ("on second thought, bring it to the couch").
 _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
-                      'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my'})
+                      'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my', 'correction', 'ehm', 'mm',
+                      'mmm'})
 # Words that start a clause of their own (the verbs of goals and deliveries).
 _VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
                        'deliver', 'carry', 'return', 'avoid'}

@@ -947,6 +947,32 @@ FOUND_ROUND_P = [
     ('check the sink before the stove i need both checked', 'F near[stove] & (!near[stove] U near[sink])'),
     ('Go to the den or the study; only one of the two, never both of them.',
      'F near[den] & G !near[study] | F near[study] & G !near[den]'),
+    # a list of three with "and then" before the last: one after the other
+    ('check the boiler, the meter, and then the tap', 'F (near[boiler] & F (near[meter] & F near[tap]))'),
+    # list positions said as numbers, as "the one I mentioned last", "whatever comes after", "the outer two"
+    ('In the shed there is a rake, a spade and a hoe; check number two and then number three.',
+     'F (near[spade] & F near[hoe])'),
+    ('I bought apples, pears and plums. Put whichever I mentioned first in the bowl.',
+     'F (near[apples] & F (pick[apples] & F (near[bowl] & F release[apples, bowl])))'),
+    ("Along the hall there's a clock, a mirror and a vase. Go to whatever comes after the mirror.",
+     'F near[vase]'),
+    ("On the shelf there's a jar, a tin and a box. Visit the outer two.", 'F near[jar] & F near[box]'),
+    # what the person needs where, where they want the robot, what they left
+    ('I need both the drill and the saw in the shed.',
+     'F (near[drill] & F (pick[drill] & F (near[shed] & F release[drill, shed]))) & '
+     'F (near[saw] & F (pick[saw] & F (near[shed] & F release[saw, shed])))'),
+    ('The bench is where I want you.', 'F near[bench]'),
+    ('I left my keys somewhere around here, can you find them?', 'F near[keys]'),
+    # a delivery said twice, across sentences; "throw it out"
+    ('Can you get rid of the peel? Just throw it out.',
+     'F (near[peel] & F (pick[peel] & F (near[trash_can] & F release[peel, trash_can])))'),
+    # drone routes: a flyover of either, a heading, a landing at the end, what is in the grip
+    ('Do a flyover of either the dam or the weir, and finish by landing at the hut.',
+     'F ((near[dam] | near[weir]) & F near[hut])'),
+    ('Route: the quarry, then the mill, ending with a landing at the yard.',
+     'F (near[quarry] & F (near[mill] & F near[yard]))'),
+    ('Fetch the parcel and drop it off at the depot, keeping away from the mast while it is in your grip.',
+     'F (near[parcel] & F (pick[parcel] & (!near[mast] U (near[depot] & F release[parcel, depot]))))'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

@@ -233,7 +233,7 @@ routine routines plan plans task tasks errand errands job jobs chore chores inst
 itinerary mission missions schedule steps step program programme todo list checklist rundown
 orders assignment assignments duty duties workflow procedure protocol today tonight
 morning afternoon evening plan rules rule note notes reminder reminders request requests things favours
-favors jobs bits important warning caution attention heads ps nb careful update
+favors jobs bits important warning caution attention heads ps nb careful update route path flightplan
 '''.split())
 
 

@@ -818,6 +818,35 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<j>(?:, |\band )(?:then )?)after (?P<x>(?:the|my|your|our) {_THING}) ,? '
          rf'(?=(?:go|head|fly|visit|come|drive|move|proceed|check|land|stop|swing|pop|return)\b)',
          r'\g<j>to \g<x> , then '),
+    Rule('check the heater, the detector, and then the fuse box: one after the other',
+         rf'(?P<a>(?:the|my|your|our) {_THING}) , (?P<b>(?:the|my|your|our) {_THING}) ,? and then '
+         rf'(?=(?:the|my|your|our|go|come|head|back|return|visit|check|finally)\b)',
+         r'\g<a> , then \g<b> , and then '),
+    Rule('throw it out: away', r'\b(?P<v>throw|toss|chuck) (?P<o>it|them) (?:out|away)\b',
+         r'\g<v> away \g<o>'),
+    Rule('i need the tape measure and the hammer in the garage: bring them there',
+         rf'^(?:i|we) (?:need|want|would like) (?:both )?(?P<x>(?:the|my|your|our) {_THING}'
+         rf'(?: and (?:the|my|your|our) {_THING})?) (?:in|on|at|by) (?P<y>(?:the|my|your|our) {_THING})$',
+         r'bring \g<x> to \g<y>'),
+    Rule('the coat stand is where I want you: go there',
+         rf'^(?P<x>(?:the|my|your|our) {_THING}) is where (?:i|we) (?:want|need) (?:you|the robot)'
+         rf'(?: to (?:be|go))?$', r'go to \g<x>'),
+    Rule('do a flyover of either the field or the vineyard: fly over',
+         r'\b(?:do|make|perform) an? (?:flyover|fly over|fly-by|flyby|pass|overflight) (?:of|over) '
+         r'(?=either\b)',
+         'fly over '),
+    Rule('ending with a landing at the fire station: then land there',
+         r'(?: ,)? (?:ending|finishing) (?:with a landing|up|by landing|with landing) (?=at|on)',
+         ' , then land '),
+    Rule('keeping away from the flagpole while it is in your grip: while carrying it',
+         r'\bwhile (?:it is|they are) (?:in your (?:grip|hands|hand|claws|gripper|arms|grasp)|being carried|'
+         r'on board|aboard)\b', 'while carrying it'),
+    Rule('drop it off, keeping away from the flagpole: keep away',
+         r', (?:keeping|staying|steering) (?=(?:away|clear)\b)', ', keep '),
+    Rule('I left my phone charger somewhere around here, can you find it: go to it',
+         rf'^(?:i|we) (?:left|dropped|lost|put|forgot|misplaced) (?P<x>(?:my|the|a|our) {_THING}) '
+         rf'(?:somewhere|around here|over there|here|there|in here)(?: around here| nearby| over there)? , '
+         rf'(?:can|could|would) you (?:find|get|fetch|locate|look for) (?:it|them)$', r'go to \g<x>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

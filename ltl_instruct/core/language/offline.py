@@ -2890,6 +2890,14 @@ class _Reader:
             else:
                 return False
         dest_ds = [d.descriptor for d in dests] or ([implicit_dest] if implicit_dest else [])
+        last = self.task.chain[-1] if self.task.chain else None
+        if len(objs) == 1 and tokens[k:k + 1] in (['it'], ['them']) and last is not None and \
+                last.kind == 'deliver' and last.targets == [objs[0].descriptor] and \
+                last.dests == dest_ds and not [t for t in rest if t not in PUNCT] and \
+                len(self.task.chain) - 1 < self.sentence_start:   # said in a sentence before
+            # "get rid of the wrapper? just throw it out": the same delivery said again
+            self.notes.append(f'"{" ".join(tokens)}": the delivery of {objs[0].descriptor} said again')
+            return True
         if implicit_dest is not None and not dests:
             self.notes.append(f'"{verb}" releases the object at the implicit {implicit_dest}')
         if not dest_ds:

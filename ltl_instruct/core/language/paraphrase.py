@@ -307,8 +307,8 @@ def _passes(tokens: list[str]) -> list[str]:
     before = text[:m.start()].split()
     after = text[m.end():].split()
     np = PhraseParser().parse(after, 0)
-    if np is None:
-        return tokens
+    if np is None or after[:1] == ['either']:
+        return tokens   # "do a flyover of either the field or the vineyard": a choice (see idioms)
     count = m.group(3)
     times = ['once'] if count in ('a', 'an', 'a single', 'one', '1') else [count, 'times']
     if m.group(2) in ('made', 'done', 'did', 'taken', 'flown', 'performed', 'completed'):

@@ -165,12 +165,44 @@ def _drop_mentions(tail: list[str]) -> list[str]:
     return out
 
 
+_POSITION_SAID = tuple((re.compile(p), r) for p, r in (
+    # "visit number two and then number three": the second one, the third one
+    (r'\b(?P<v>visit|to|check|then|and|survey|inspect|grab|take|bring|avoid|get|fetch|pick|put|move) '
+     r'number (?P<n>one|two|three|four|five|six)\b', lambda m: m.group('v') + ' the ' + {
+         'one': 'first', 'two': 'second', 'three': 'third', 'four': 'fourth', 'five': 'fifth',
+         'six': 'sixth'}[m.group('n')] + ' one'),
+    # "whichever I mentioned last", "the one I said first"
+    (r'\b(?:whichever|whatever|the one|the thing|the item)(?: one)? (?:i|you) '
+     r'(?:mentioned|said|named|listed) '
+     r'(?P<w>last|first)\b', r'the \g<w> one'),
+    # "whatever comes after the notice board"
+    (r'\b(?:whatever|whichever|what) (?:comes|is|sits|stands) '
+     r'(?P<w>right after|after|right before|before|next to) '
+     r'(?=the\b)', r'the one \g<w> '),
+    # "the outer two": the first and the last
+    (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
+))
+
+
+def _say_positions(tokens: list[str]) -> list[str]:
+    """Say list positions the way the resolver reads them ("number two" is "the second one")."""
+    if not {'number', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer', 'outside', 'end', 'is',
+            'sits', 'stands'} & set(tokens):
+        return tokens
+    text = ' '.join(tokens)
+    new = text
+    for pattern, repl in _POSITION_SAID:
+        new = pattern.sub(repl, new)
+    return new.split() if new != text else tokens
+
+
 def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     """Replace references by list position ("the second one") with the phrase they point to.
 
     Only applies where an enumeration is followed by such a reference; the
     enumeration itself only sets the scene and is removed.
     """
+    tokens = _say_positions(tokens)
     found = _find_list(tokens)
     if found is None:
         for k in range(len(tokens) - 2):

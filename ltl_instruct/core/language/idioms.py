@@ -800,7 +800,8 @@ RULES: tuple[Rule, ...] = (
          rf'(?= [,.;]|$| and\b| or\b| then\b| but\b| first\b| whichever\b| if\b)',
          _each_named),
     Rule('stay away from the wires until you get there: on the way there',
-         r'\buntil (?:you|we|the robot) (?:get|arrive|are|make it) there\b', 'on the way there'),
+         r'\buntil (?:you|we|the robot) (?:get there|arrive(?: there)?|are there|make it there|reach it|'
+         r'get to it)(?= [,.;]|$)', 'on the way there'),
     Rule('not before you visited the changing room and also the shower: and',
          r'\band also (?=(?:the|my|your|our)\b)', 'and '),
     Rule('it must be only one of the two, never both of them: not both',
@@ -847,6 +848,42 @@ RULES: tuple[Rule, ...] = (
          rf'^(?:i|we) (?:left|dropped|lost|put|forgot|misplaced) (?P<x>(?:my|the|a|our) {_THING}) '
          rf'(?:somewhere|around here|over there|here|there|in here)(?: around here| nearby| over there)? , '
          rf'(?:can|could|would) you (?:find|get|fetch|locate|look for) (?:it|them)$', r'go to \g<x>'),
+    Rule('inspect the tank before the chimney, and the chimney before the dish: the verb said again',
+         r'^(?P<h>(?!visit\b)[a-z]+(?: [a-z]+)? (?:the|my|your|our) [a-z0-9_ ]+? before (?:the|my|your|our) '
+         r'[a-z0-9_ ]+?) , and (?=(?:the|my|your|our) [a-z0-9_ ]+? before )', r'\g<h> , and visit '),
+    Rule('the aquarium and the bird cage are off limits: avoid both',
+         rf'^(?P<x>(?:the|my|your|our) {_THING}(?: , (?:the|my|your|our) {_THING})*(?: ,)? and '
+         rf'(?:the|my|your|our) {_THING}) are (?:both |all )?'
+         rf'(?:off limits|out of bounds|forbidden|not allowed|'
+         rf'banned|a no go|no go|dangerous|unsafe)(?P<t>(?= until| till| before| once| after| when| for)|$)',
+         r'avoid \g<x>'),
+    Rule('then drop down to the third floor: go there',
+         r'\b(?:drop|come|go|fly|climb|descend|head|move) (?:back )?down to\b', 'go to'),
+    Rule('I left my phone charger somewhere around here. Go find it: where it is',
+         rf'^(?:i|we) (?:left|dropped|lost|forgot|misplaced) (?P<x>(?:my|the|a|our) {_THING})'
+         rf'(?: somewhere| around here| over there| in here| nearby| here| there)+$', r'there is \g<x>'),
+    Rule('you may go out on the balcony: go there',
+         r'\bgo out (?:on|onto|to|into) (?=(?:the|my|your|our)\b)', 'go to '),
+    Rule('when you leave the porch for the shed, keep away from the bed: on that leg',
+         rf'\b(?:when|while|as) you (?:leave|go from|head from|fly from|move from) (?P<a>(?:the|my|your|our) '
+         rf'{_THING}) (?:for|to|towards|toward) (?P<b>(?:the|my|your|our) {_THING})(?= ,)',
+         r'on the way from \g<a> to \g<b>'),
+    Rule('just one of them, stay away from the other: not both',
+         r'(?: ,| -)? (?:just |only )?one of them ,? (?:and )?'
+         r'(?:stay away from|avoid|keep away from|keep clear of|'
+         r'do not go near|steer clear of) the other(?: one)?(?= [,.;]|$)', ' , not both'),
+    Rule('either inspect the billboard first and then the gas station, or the other way round',
+         rf'^(?:either )?(?P<v>go to|visit|inspect|check|fly over|fly to|survey|stop at) '
+         rf'(?P<a>(?:the|my|your|our) {_THING})(?: first)? (?:and )?then (?:to )?'
+         rf'(?P<b>(?:the|my|your|our) {_THING}) ,? or (?:do it |go )?'
+         rf'(?:the other way (?:round|around)|vice versa|in the opposite order|the reverse|in reverse)$',
+         r'either \g<v> \g<a> and then \g<b> , or \g<v> \g<b> and then \g<a>'),
+    Rule('go to the last one first, and after it the first one: then',
+         r'\band after (?:it|that|this|them) (?=(?:the|my|your|our)\b)', 'and then '),
+    Rule('hold there for a bit: hover there',
+         r'\bhold (?:there|position there|it there|it)'
+         r'(?: for a (?:bit|while|moment|second|minute|few seconds))?\b',
+         'hover there'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

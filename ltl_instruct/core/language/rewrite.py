@@ -179,6 +179,10 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'\b(?:whatever|whichever|what) (?:comes|is|sits|stands) '
      r'(?P<w>right after|after|right before|before|next to) '
      r'(?=the\b)', r'the one \g<w> '),
+    # "I'm looking at a barn, a silo and a tractor": the list of a scene
+    (r'(?:^|(?<=[.;!?] ))(?:i am|we are) (?:looking at|seeing|facing|in front of) '
+     r'(?=(?:a|an|two|three|some) )',
+     'there is '),
     # "the outer two": the first and the last
     (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
 ))
@@ -187,7 +191,7 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
 def _say_positions(tokens: list[str]) -> list[str]:
     """Say list positions the way the resolver reads them ("number two" is "the second one")."""
     if not {'number', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer', 'outside', 'end', 'is',
-            'sits', 'stands'} & set(tokens):
+            'sits', 'stands', 'looking', 'seeing', 'facing', 'front'} & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = text

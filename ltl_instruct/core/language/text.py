@@ -40,7 +40,8 @@ TYPOS: dict[str, str] = {
     'twise': 'twice', 'twic': 'twice', 'ovre': 'over', 'aera': 'area', 'carring': 'carrying', 'cary': 'carry',
     'meting': 'meeting', 'carryng': 'carrying', 'wiat': 'wait',
     'dinning': 'dining', 'glas': 'glass', 'bord': 'board', 'cupbord': 'cupboard', 'cubbord': 'cupboard',
-    'backwrds': 'backwards', 'fridege': 'fridge', 'frige': 'fridge', 'livng': 'living',
+    'backwrds': 'backwards', 'heatr': 'heater', 'mashine': 'machine', 'machin': 'machine',
+    'fridege': 'fridge', 'frige': 'fridge', 'livng': 'living',
     'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".

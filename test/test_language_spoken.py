@@ -605,9 +605,9 @@ FOUND_ROUND_H = [
     ('go to the uh supply room, um, then the office', 'F (near[supply_room] & F near[office])'),
     ('Go to the break room. Hm, no, the lounge.', 'F near[lounge]'),
     ('avoid the the stairs and go to the hall', 'F near[hall] & G !near[stairs]'),
-    # a possessive drops its s; a number stays as written
+    # a possessive keeps its s (no apostrophe); a number stays as written
     ("Go to the manager's office and then locker seven",
-     'F (near[manager_office] & F near[locker_seven])'),
+     'F (near[managers_office] & F near[locker_seven])'),
     ('go to dock 4', 'F near[dock_4]'),
     # spelling: a name typed twice, "than" for "then", a domain word on a tie, a long vowel slip
     ('Fly over the pier, then the marina. Keep off the beach on the way to the marnia.',
@@ -748,7 +748,7 @@ FOUND_ROUND_H = [
      'F (near[blue_cup] & F (pick[blue_cup] & F (near[kitchen] & F release[blue_cup, kitchen])))'),
     # a made-up agent noun one letter from a common word; "sanding" stays
     ("put the chalk on the techer's desk",
-     'F (near[chalk] & F (pick[chalk] & F (near[teacher_desk] & F release[chalk, teacher_desk])))'),
+     'F (near[chalk] & F (pick[chalk] & F (near[teachers_desk] & F release[chalk, teachers_desk])))'),
     ('go to the sanding station', 'F near[sanding_station]'),
     # "carry it to X and drop it there" is one delivery; ", fly it up to X" carries it
     ('pick up the box, carry it to the shed and drop it there',

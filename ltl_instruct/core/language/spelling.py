@@ -237,6 +237,10 @@ class Speller:
                 # exactly one swap gives two listed words run together
                 fits = {c for c, kind in _slips(word) if kind == 'swap' and self._run_together(c)}
                 out = fits.pop() if len(fits) == 1 else None
+        if out is None and len(word) > 6 and word.endswith('s') and not word.endswith('ss') and \
+                word not in self.words and word not in self.lexicon:
+            base = self.correct(word[:-1])   # a possessive or plural of a misspelt word ("techer's")
+            out = base + 's' if base is not None and (base in self.words or base in DOMAIN_WORDS) else None
         self._cache[word] = out
         return out
 

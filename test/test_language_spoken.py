@@ -991,6 +991,20 @@ FOUND_ROUND_P = [
     ('Hall, den, porch: go to the last one first, and after it the first one.',
      'F (near[porch] & F near[hall])'),
     ('Climb to the roof, hold there for a bit, then drop down to the yard.', 'F (near[roof] & F near[yard])'),
+    # "your" for "you're"; "only go to X once you've": only after; one of a kind, named after a comma
+    ('bring the mug to the desk and dont go near the cat while your carrying it',
+     'F (near[mug] & F (pick[mug] & (!near[cat] U (near[desk] & F release[mug, desk]))))'),
+    ("Visit the lab and then the gym, but only go to the lab once you've been to the office.",
+     'F (near[lab] & F near[gym]) & (!near[lab] U near[office])'),
+    ('Check one of the sinks, the left sink or the right sink, not both.',
+     'F near[left_sink] & G !near[right_sink] | F near[right_sink] & G !near[left_sink]'),
+    ("Go to the porch, and from there to the gate don't go near the hedge.",
+     'F (near[porch] & (!near[hedge] U near[gate]))'),
+    ('Take the box and put it either on the shelf or in the bin.',
+     'F (near[box] & F (pick[box] & (F (near[shelf] & F release[box, shelf]) | '
+     'F (near[bin] & F release[box, bin]))))'),
+    # possessives keep their s
+    ("Go to the nurse's office.", 'F near[nurses_office]'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

@@ -884,6 +884,21 @@ RULES: tuple[Rule, ...] = (
          r'\bhold (?:there|position there|it there|it)'
          r'(?: for a (?:bit|while|moment|second|minute|few seconds))?\b',
          'hover there'),
+    Rule('dont go near it while your carrying it: you are',
+         r'\b(?P<w>while|when|as) your (?=(?:carrying|holding|moving|taking|bringing|transporting|going|'
+         r'heading|returning|walking|flying|driving|there|on)\b)', r'\g<w> you are '),
+    Rule('but only go to the lab once you have been to the supply room: only after',
+         rf'\bonly (?P<v>go|head|visit|enter|come|fly) (?P<r>(?:to |into |in )?(?:the|my|your|our) {_THING}) '
+         rf'once (?=(?:you|we|the robot) )', r'\g<v> \g<r> only after '),
+    Rule('check one of the printers, the colour one or the laser one: either',
+         rf'\bone of the [a-z]+s , (?=(?:the|my|your|our) {_THING} or )', 'either '),
+    Rule('and from there to the packing area keep away from the conveyor: on the way there',
+         rf'(?P<j>, (?:and )?|\band )(?:then go|from there) to (?P<b>(?:the|my|your|our) {_THING}) '
+         rf'(?=(?:do not|never|avoid|stay away|keep away|steer clear|keep clear)\b)',
+         r'\g<j>then go to \g<b> , and on the way there '),
+    Rule('put it either on the shelf or in the bin: one of two places',
+         r'\b(?P<v>put|place|leave|drop|set|stick|hang|store|take|bring) (?P<o>it|them) either '
+         r'(?=(?:in|on|into|onto|at|inside|under|by|next to|to)\b)', r'\g<v> \g<o> '),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

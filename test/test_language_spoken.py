@@ -1005,6 +1005,33 @@ FOUND_ROUND_P = [
      'F (near[bin] & F release[box, bin]))))'),
     # possessives keep their s
     ("Go to the nurse's office.", 'F near[nurses_office]'),
+    # lists in turn; order said as what you have to do first, or as waiting
+    ('Go to the gate, the barn, the silo and finally the house.',
+     'F (near[gate] & F (near[barn] & F (near[silo] & F near[house])))'),
+    ('Go to the study, though you have to visit the hall first.',
+     'F near[study] & (!near[study] U near[hall])'),
+    ("Wait until you've been to the porch before going into the hall.",
+     'F near[hall] & (!near[hall] U near[porch])'),
+    ('Keep out of the attic till you have visited both the den and the loft.',
+     '(!near[attic] U near[den]) & (!near[attic] U near[loft])'),
+    # scopes said other ways
+    ('En route to the shed, keep away from the pond.', '!near[pond] U near[shed]'),
+    ('Go to the sofa without ever getting close to the heater.', 'F near[sofa] & G !near[heater]'),
+    ('Get to the hall. From then on, the stairs are off limits.', 'F (near[hall] & G !near[stairs])'),
+    ("Grab the bag and take it to the car. Once it's in your hands, keep away from the dog.",
+     'F (near[bag] & F (pick[bag] & G !near[dog] & F (near[car] & F release[bag, car])))'),
+    # choices and counts said other ways
+    ('Go to one of the two doors, the red door or the blue door, but not to both.',
+     'F near[red_door] & G !near[blue_door] | F near[blue_door] & G !near[red_door]'),
+    ('Go to the desk; you can stop at the fridge, but never more than once.',
+     'F near[desk] & (!near[fridge] W (near[fridge] & (near[fridge] W G !near[fridge])))'),
+    ('Go to the den or the hall - nah, make it both.', 'F near[den] & F near[hall]'),
+    # deliveries onto things; corrections of a place inside a phrase, or of a colour
+    ('Move the lamp onto the desk.',
+     'F (near[lamp] & F (pick[lamp] & F (near[desk] & F release[lamp, desk])))'),
+    ('Put the towel on the rail, wait, not the rail, the hook.',
+     'F (near[towel] & F (pick[towel] & F (near[hook] & F release[towel, hook])))'),
+    ('go to the red bin, sry wrong colour, the blue one', 'F near[blue_bin]'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

@@ -160,6 +160,16 @@ def _each_named(m: 're.Match[str]') -> str:
     return f'the {m.group("a")} {n} {m.group("j")} the {m.group("b")} {n}'
 
 
+_LIST_THEN = (r'(?P<l>(?:the|my|your|our) [a-z0-9_]+(?: [a-z0-9_]+){0,3}?(?: , (?:the|my|your|our) '
+              r'[a-z0-9_]+(?: [a-z0-9_]+){0,3}?){1,5})(?: ,)? and (?P<w>finally|lastly|last of all|at last) '
+              r'(?=(?:the|my|your|our|to|go|come|head|return|back)\b)')
+
+
+def _in_turn(m: 're.Match[str]') -> str:
+    """'the bench, the shelf, the lamp and finally the exit': each after the one before."""
+    return m.group('l').replace(' , ', ' , then ') + f' , and {m.group("w")} '
+
+
 def _visits_needed(m: 're.Match[str]') -> str:
     """'the feeder needs two visits at minimum': 'visit the feeder at least two times'."""
     bound = (m.group('q') or m.group('m') or '').strip().replace('at minimum', 'at least')
@@ -540,7 +550,7 @@ RULES: tuple[Rule, ...] = (
     Rule('swing by a couple of times', r'\ba couple (?:of )?(?:times|visits|passes|trips|rounds)\b', 'twice'),
     Rule('just the once', r'\b(?:just|only) the once\b', 'exactly once'),
     Rule('exactly twice, no more, no fewer',
-         rf'\b(?P<c>exactly (?:once|twice|thrice|{_NUM} times?)) ,? no more ,? (?:and |or |but )?'
+         rf'\b(?P<c>exactly (?:once|twice|thrice|{_NUM} times?))(?: ,)? no more(?: ,)? (?:and |or |but )?'
          rf'no (?:fewer|less)\b', r'\g<c>'),
     Rule('exactly once, go to the attic: the count said before the clause it counts',
          rf'^(?P<c>(?:exactly |at most |at least |only |just )?(?:once|twice|thrice|{_NUM} times))(?: ,)? '
@@ -548,7 +558,7 @@ RULES: tuple[Rule, ...] = (
          r'(?:(?! then | and | or )[^,])+)$',
          r'\g<rest> \g<c>'),
     Rule('twice, two separate trips',
-         rf'\b(?P<c>twice|thrice|{_NUM} {_KIND}times) ,? (?:so |that is |i mean |as in )?(?P<n>{_NUM}) '
+         rf'\b(?P<c>twice|thrice|{_NUM} {_KIND}times)(?: ,)? (?:so |that is |i mean |as in )?(?P<n>{_NUM}) '
          rf'{_KIND}(?:trips|visits|times|passes|stops|occasions)'
          rf'(?: (?:to|at|by|over) (?:the (?:[a-z]+ ){{0,2}}?[a-z]+|it|there)'
          rf'(?= ,|$| before| then| and| after))?',
@@ -565,7 +575,7 @@ RULES: tuple[Rule, ...] = (
          r'(?:(?P=p) )?', r'\g<v> \g<p> either \g<a> or '),
     Rule('mind the cables: keep away from them', r'(?<!never )\bmind (?=the |your |that |those |any )',
          'avoid '),
-    Rule('once, and only once', r'\bonce ,? and only once\b', 'exactly once'),
+    Rule('once, and only once', r'\bonce(?: ,)? and only once\b', 'exactly once'),
     Rule('three times minimum', rf'\b(?P<c>{_NUM} times|twice) (?:at (?:a )?)?minimum\b', r'at least \g<c>'),
     Rule('no more then once: "then" for "than" after a comparison',
          r'\b(?P<m>more|less|fewer|rather|other|no later|no sooner|earlier|later) then\b', r'\g<m> than'),
@@ -607,7 +617,8 @@ RULES: tuple[Rule, ...] = (
          r'\bgo back and forth between (?P<a>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) and '
          r'(?P<b>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?P<c>twice|thrice|[a-z0-9]+ times)\b',
          r'go from \g<a> to \g<b> \g<c> in a row'),
-    Rule('exactly twice, no more', rf'\b(?P<c>(?:exactly|just|only) {_COUNT}) ,? no more(?: than that)?\b',
+    Rule('exactly twice, no more',
+         rf'\b(?P<c>(?:exactly|just|only) {_COUNT})(?: ,)? no more(?: than that)?\b',
          r'\g<c>'),
     Rule('go sit by the couch',
          r'\bgo (?:and )?(?:sit|stand|wait|park|hover|stay) (?=(?:by|next to|near|beside|at) )', 'go '),
@@ -816,11 +827,11 @@ RULES: tuple[Rule, ...] = (
          r'(?: ,)? '
          r'(?=(?:go|return|head|fly|land|come|drive|proceed|move)\b)', ' , then '),
     Rule('and then after the bookcase, go to the window seat: the bookcase first',
-         rf'(?P<j>(?:, |\band )(?:then )?)after (?P<x>(?:the|my|your|our) {_THING}) ,? '
+         rf'(?P<j>(?:, |\band )(?:then )?)after (?P<x>(?:the|my|your|our) {_THING})(?: ,)? '
          rf'(?=(?:go|head|fly|visit|come|drive|move|proceed|check|land|stop|swing|pop|return)\b)',
          r'\g<j>to \g<x> , then '),
     Rule('check the heater, the detector, and then the fuse box: one after the other',
-         rf'(?P<a>(?:the|my|your|our) {_THING}) , (?P<b>(?:the|my|your|our) {_THING}) ,? and then '
+         rf'(?P<a>(?:the|my|your|our) {_THING}) , (?P<b>(?:the|my|your|our) {_THING})(?: ,)? and then '
          rf'(?=(?:the|my|your|our|go|come|head|back|return|visit|check|finally)\b)',
          r'\g<a> , then \g<b> , and then '),
     Rule('throw it out: away', r'\b(?P<v>throw|toss|chuck) (?P<o>it|them) (?:out|away)\b',
@@ -869,13 +880,13 @@ RULES: tuple[Rule, ...] = (
          rf'{_THING}) (?:for|to|towards|toward) (?P<b>(?:the|my|your|our) {_THING})(?= ,)',
          r'on the way from \g<a> to \g<b>'),
     Rule('just one of them, stay away from the other: not both',
-         r'(?: ,| -)? (?:just |only )?one of them ,? (?:and )?'
+         r'(?: ,| -)? (?:just |only )?one of them(?: ,)? (?:and )?'
          r'(?:stay away from|avoid|keep away from|keep clear of|'
          r'do not go near|steer clear of) the other(?: one)?(?= [,.;]|$)', ' , not both'),
     Rule('either inspect the billboard first and then the gas station, or the other way round',
          rf'^(?:either )?(?P<v>go to|visit|inspect|check|fly over|fly to|survey|stop at) '
          rf'(?P<a>(?:the|my|your|our) {_THING})(?: first)? (?:and )?then (?:to )?'
-         rf'(?P<b>(?:the|my|your|our) {_THING}) ,? or (?:do it |go )?'
+         rf'(?P<b>(?:the|my|your|our) {_THING})(?: ,)? or (?:do it |go )?'
          rf'(?:the other way (?:round|around)|vice versa|in the opposite order|the reverse|in reverse)$',
          r'either \g<v> \g<a> and then \g<b> , or \g<v> \g<b> and then \g<a>'),
     Rule('go to the last one first, and after it the first one: then',
@@ -891,7 +902,7 @@ RULES: tuple[Rule, ...] = (
          rf'\bonly (?P<v>go|head|visit|enter|come|fly) (?P<r>(?:to |into |in )?(?:the|my|your|our) {_THING}) '
          rf'once (?=(?:you|we|the robot) )', r'\g<v> \g<r> only after '),
     Rule('check one of the printers, the colour one or the laser one: either',
-         rf'\bone of the [a-z]+s , (?=(?:the|my|your|our) {_THING} or )', 'either '),
+         rf'\bone of the (?:two |three )?[a-z]+s , (?=(?:the|my|your|our) {_THING} or )', 'either '),
     Rule('and from there to the packing area keep away from the conveyor: on the way there',
          rf'(?P<j>, (?:and )?|\band )(?:then go|from there) to (?P<b>(?:the|my|your|our) {_THING}) '
          rf'(?=(?:do not|never|avoid|stay away|keep away|steer clear|keep clear)\b)',
@@ -899,6 +910,49 @@ RULES: tuple[Rule, ...] = (
     Rule('put it either on the shelf or in the bin: one of two places',
          r'\b(?P<v>put|place|leave|drop|set|stick|hang|store|take|bring) (?P<o>it|them) either '
          r'(?=(?:in|on|into|onto|at|inside|under|by|next to|to)\b)', r'\g<v> \g<o> '),
+    Rule('go to the patio, though you have to visit the grill first: only after',
+         rf', (?:though|but|although|and) (?:you|we) (?:have to|must|need to|should|will have to) '
+         rf'(?:visit|go to|stop at|check|see|pass by|hit) (?P<x>(?:the|my|your|our) {_THING}) '
+         rf'first(?= [,.;]|$)',
+         r', but only after \g<x>'),
+    Rule('wait until you have been to the mudroom before going into the kitchen: only after',
+         rf'^wait until (?P<e>you (?:have|ve) [a-z ]+? (?:the|my|your|our) {_THING}) before (?:going|heading|'
+         rf'moving|you go) (?:into|to|in|inside) (?P<x>(?:the|my|your|our) {_THING})$',
+         r'go to \g<x> , but only after \g<e>'),
+    Rule('without ever getting close to the candles: near them',
+         r'\bwithout (?P<e>ever )?(?:getting|going|coming|moving) (?:too )?(?:close to|near|next to)\b',
+         lambda m: f'without {m.group("e") or ""}going near'),
+    Rule('en route to the bathroom: on the way', r'\ben route (?=to\b)', 'on the way '),
+    Rule('from then on, the desk lamp is off limits: avoid it from then on',
+         rf'^(?P<w>from then on|from that point on|from that point onwards|from then onwards|after that|'
+         rf'afterwards|thereafter) , (?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '
+         rf'(?:off limits|out of bounds|'
+         rf'forbidden|not allowed|a no go)$', r'\g<w> , avoid \g<x>'),
+    Rule('once it is in your hands: once picked up',
+         r'\b(?P<c>once|when|after) (?:it is|they are) '
+         r'(?:in your (?:hands|hand|grip|gripper|possession|arms)|'
+         r'on board|aboard|picked up)\b', r'\g<c> you have picked it up'),
+    Rule('for the rest of the task: from then on',
+         r'(?: ,)? (?:for the rest of the (?:task|trip|run|mission|job|day|way)|'
+         r'for the remainder(?: of the task)?)'
+         r'(?= [,.;]|$)', ''),
+    Rule('but not to both: not both', r'\bnot (?:to|at|into) both\b', 'not both'),
+    Rule('you can stop at the snack cabinet, but never more than once: at most once',
+         rf'\b(?:you can|you may|feel free to) (?P<v>stop at|visit|go to|pass by|swing by|check) '
+         rf'(?P<x>(?:the|my|your|our) {_THING})(?: ,)? but (?:never|not|no) more than once\b',
+         r'\g<v> \g<x> at most once'),
+    Rule('visit the sink precisely two times: exactly', r'\b(?:precisely|strictly)(?= (?:once|twice|one|two|'
+         r'three|four|five|[0-9]))', 'exactly'),
+    Rule('go see what is up with the heater: check it',
+         r'\b(?:see|check|look at|find out|to) (?:what is|whats) (?:up|going on|wrong|happening) with\b',
+         'check'),
+    Rule('go to the bench, the shelf, the lamp and finally the exit: one after the other', _LIST_THEN,
+         _in_turn),
+    Rule('keep out of the guest room till you have visited both the closet and the bath: each',
+         rf'^(?P<a>.+?) (?P<u>until|till) '
+         rf'(?P<e>you (?:have|ve) (?:visited|been to|checked|seen|reached)) both '
+         rf'(?P<x>(?:the|my|your|our) {_THING}) and (?P<y>(?:the|my|your|our) {_THING})$',
+         r'\g<a> \g<u> \g<e> \g<x> . \g<a> \g<u> \g<e> \g<y>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

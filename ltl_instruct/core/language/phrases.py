@@ -408,8 +408,9 @@ class PhraseParser:
             if rel is None:
                 break
             comparator, k = rel
-            if destination_stops and not lead and tokens[j] in DESTINATION_PREPS:
-                break
+            if not lead and (destination_stops and tokens[j] in DESTINATION_PREPS or
+                             tokens[j] in ('onto', 'into')):
+                break   # "move the plant onto the sill": where it goes, never where it is
             arg1 = self.parse(tokens, k, destination_stops, depth + 1)
             if arg1 is None:
                 break

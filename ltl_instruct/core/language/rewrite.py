@@ -1126,6 +1126,11 @@ def _leave_be(prev: list[str], seg: list[str], notes: list[str]) -> Optional[lis
     return kept + ([','] if kept and kept[-1] not in PUNCT and rest else []) + rest
 
 
+# Words around "both" in "nah, make it both", "actually no, go to both of them".
+_BOTH_FILLERS = frozenset({'just', 'actually', 'no', 'make', 'it', 'do', 'go', 'to', 'visit', 'of', 'them',
+                           'then', 'instead'})
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     named = {w for sp in _np_spans(prev) for w in prev[sp.start:sp.end]} if marker in _CANCEL else set()
     if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and (
@@ -1135,6 +1140,15 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if seg[1] not in DETERMINERS and seg[1] not in _VERBS:
             seg = [','] + ['the'] + seg[1:]
     said_no = marker == 'no' or 'no' in seg[:3]
+    both = [t for t in seg if t not in PUNCT and t not in _BOTH_FILLERS]
+    if both == ['both'] and 'or' in prev:
+        # "the kitchen or the dining room - nah, make it both": each of them
+        at = max(k for k, t in enumerate(prev) if t == 'or')
+        out = prev[:at] + ['and'] + prev[at + 1:]
+        start = max((k for k in range(at) if out[k] in '.;!?'), default=-1) + 1
+        out = out[:start] + [t for t in out[start:at] if t != 'either'] + out[at:]
+        notes.append('the choice was made both')
+        return out
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
         stripped = False
@@ -1146,7 +1160,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 marker, seg, stripped = m[0], seg[len(m):], True
                 break
         for wrong in (['that', 'is', 'wrong'], ['that', 'was', 'wrong'], ['that', 'is', 'not', 'right'],
-                      ['i', 'got', 'that', 'wrong'], ['that', 'is', 'a', 'mistake'], ['wrong', 'one']):
+                      ['i', 'got', 'that', 'wrong'], ['that', 'is', 'a', 'mistake'], ['wrong', 'one'],
+                      ['wrong', 'colour'], ['wrong', 'color'], ['wrong', 'room'], ['wrong', 'place']):
             if seg[:len(wrong)] == wrong and seg[len(wrong):len(wrong) + 1] == [',']:
                 seg, stripped = seg[len(wrong) + 1:], True   # "no, sorry, that's wrong, avoid the hall"
         for lead in (['just', 'make', 'it'], ['make', 'it'], ['just', 'make', 'that']):
@@ -1454,8 +1469,16 @@ def _replace_named(prev: list[str], seg: list[str], named: NounPhrase) -> Option
     nnp = PhraseParser().parse(new, 0) if new else None
     if nnp is None or nnp.end != len(new) or nnp.pronoun:
         return None
-    hit = next((sp for sp in reversed(_np_spans(prev)) if sp.head == named.head or
+    spans = _np_spans(prev)
+    hit = next((sp for sp in reversed(spans) if sp.head == named.head or
                 sp.descriptor.name == named.descriptor.name), None)
+    if hit is None:
+        # "put the blanket on the bed, wait, not the bed, the sofa": a phrase inside a phrase
+        parser = PhraseParser()
+        inner = (parser.parse(prev, p) for sp in reversed(spans) for p in range(sp.end - 1, sp.start, -1)
+                 if prev[p] in DETERMINERS)
+        hit = next((sub for sub in inner if sub is not None and not sub.pronoun and sub.head == named.head),
+                   None)
     # "take the pot on the stove ..., not the pot, the pan": the pan on the stove
     return None if hit is None else _renamed(prev, hit, new, nnp)
 

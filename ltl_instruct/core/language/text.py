@@ -41,7 +41,8 @@ TYPOS: dict[str, str] = {
     'meting': 'meeting', 'carryng': 'carrying', 'wiat': 'wait',
     'dinning': 'dining', 'glas': 'glass', 'bord': 'board', 'cupbord': 'cupboard', 'cubbord': 'cupboard',
     'backwrds': 'backwards', 'heatr': 'heater', 'mashine': 'machine', 'machin': 'machine',
-    'fridege': 'fridge', 'frige': 'fridge', 'livng': 'living',
+    'fridege': 'fridge', 'frige': 'fridge', 'livng': 'living', 'ony': 'only', 'benind': 'behind',
+    'sry': 'sorry', 'srry': 'sorry', 'nah': 'no',
     'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".

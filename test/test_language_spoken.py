@@ -1014,6 +1014,8 @@ FOUND_ROUND_P = [
      'F near[hall] & (!near[hall] U near[porch])'),
     ('Keep out of the attic till you have visited both the den and the loft.',
      '(!near[attic] U near[den]) & (!near[attic] U near[loft])'),
+    ("You can go to the porch, but not until you've been to both the shed and the gate.",
+     'F near[porch] & (!near[porch] U near[shed]) & (!near[porch] U near[gate])'),
     # scopes said other ways
     ('En route to the shed, keep away from the pond.', '!near[pond] U near[shed]'),
     ('Go to the sofa without ever getting close to the heater.', 'F near[sofa] & G !near[heater]'),

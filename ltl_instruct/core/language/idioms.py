@@ -949,7 +949,7 @@ RULES: tuple[Rule, ...] = (
     Rule('go to the bench, the shelf, the lamp and finally the exit: one after the other', _LIST_THEN,
          _in_turn),
     Rule('keep out of the guest room till you have visited both the closet and the bath: each',
-         rf'^(?P<a>.+?) (?P<u>until|till) '
+         rf'^(?P<a>(?:keep|stay|avoid|do not|never|steer) .+?) (?P<u>until|till) '
          rf'(?P<e>you (?:have|ve) (?:visited|been to|checked|seen|reached)) both '
          rf'(?P<x>(?:the|my|your|our) {_THING}) and (?P<y>(?:the|my|your|our) {_THING})$',
          r'\g<a> \g<u> \g<e> \g<x> . \g<a> \g<u> \g<e> \g<y>'),

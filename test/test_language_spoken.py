@@ -1034,6 +1034,19 @@ FOUND_ROUND_P = [
     ('Put the towel on the rail, wait, not the rail, the hook.',
      'F (near[towel] & F (pick[towel] & F (near[hook] & F release[towel, hook])))'),
     ('go to the red bin, sry wrong colour, the blue one', 'F near[blue_bin]'),
+    # reasons that name what keeps a person busy; "X is next"; "the first one's where I need you"
+    ("Go in the study at most once, mum's on a call.",
+     '!near[study] W (near[study] & (near[study] W G !near[study]))'),
+    ("the shed's next, but not until you've visited the gate", 'F near[shed] & (!near[shed] U near[gate])'),
+    ("There's a bench, a swing and a slide. The first one's where I need you - don't go near the others.",
+     'F near[bench] & G !near[swing] & G !near[slide]'),
+    # inverted and run-on word orders
+    ('Bring at my desk the stapler or the tape, one of them is enough.',
+     'F (near[stapler] & F (pick[stapler] & F (near[desk] & F release[stapler, desk]))) | '
+     'F (near[tape] & F (pick[tape] & F (near[desk] & F release[tape, desk])))'),
+    ('Go to the bank and after to the shop, or otherwise go to the park.',
+     'F (near[bank] & F near[shop]) | F near[park]'),
+    ('on your way to the shed um steer clear of the pond', '!near[pond] U near[shed]'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

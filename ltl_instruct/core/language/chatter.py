@@ -257,7 +257,7 @@ _DANGLING = DETERMINERS | PREPOSITIONS | frozenset({'and', 'then', 'or', 'but', 
 # Verbs that open a step of their own: a pause before one corrects nothing.
 _CLAUSE_VERBS = frozenset('''
 go head visit come fly drive walk then bring take put avoid stay keep return stop land move proceed swing pop
-just please finally
+just please finally steer never do
 '''.split())
 
 
@@ -281,7 +281,7 @@ def join_restarts(tokens: list[str], notes: list[str]) -> list[str]:
             while j < len(tokens) and tokens[j] in (',',) + tuple(HESITATIONS):
                 j += 1
             if kept and j < len(tokens) and tokens[j] in _CLAUSE_VERBS and kept[-1] not in PUNCT and \
-                    tokens[k - 1] == ',':
+                    kept[-1] not in _DANGLING:
                 # "after the bookcase, um, go to the window seat": a pause before a new step, no correction
                 dropped.append(t)
                 out = kept + [',']
@@ -634,6 +634,7 @@ _REMARK_RE = re.compile(
     r'|no matter (?:which|what)(?: (?:order|one|way|one first|comes first))?'
     r'|(?:what|whatever|whichever|which) (?:you )?(?:prefer|like|want|choose)(?: best| more)?'
     r'|(?:you )?(?:choose|pick|decide)(?: which(?: one)?)?'
+    r'|(?:either|one|any) of (?:them|those|the two) (?:is|will be|would be) (?:enough|fine|ok|okay|plenty)'
     r'|i (?:need|want) (?:both|all|each|them all|all of them|both of them) '
     r'(?:checked|done|visited|covered|seen)'
     r'|(?:i )?(?:honestly |really )?(?:do not|will not) (?:mind|care)(?: which| either way)?'

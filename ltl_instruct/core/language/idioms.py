@@ -842,7 +842,9 @@ RULES: tuple[Rule, ...] = (
          r'bring \g<x> to \g<y>'),
     Rule('the coat stand is where I want you: go there',
          rf'^(?P<x>(?:the|my|your|our) {_THING}) is where (?:i|we) (?:want|need) (?:you|the robot)'
-         rf'(?: to (?:be|go))?$', r'go to \g<x>'),
+         rf'(?: to (?:be|go))?(?= -| ,| ;|$)', r'go to \g<x>'),
+    Rule('the drum kit is next: go there next',
+         rf'^(?P<x>(?:(?:the|my|your|our) )?{_THING}) is (?:next|up next)(?= [,.;]|$)', r'go to \g<x> next'),
     Rule('do a flyover of either the field or the vineyard: fly over',
          r'\b(?:do|make|perform) an? (?:flyover|fly over|fly-by|flyby|pass|overflight) (?:of|over) '
          r'(?=either\b)',
@@ -949,10 +951,20 @@ RULES: tuple[Rule, ...] = (
     Rule('go to the bench, the shelf, the lamp and finally the exit: one after the other', _LIST_THEN,
          _in_turn),
     Rule('keep out of the guest room till you have visited both the closet and the bath: each',
-         rf'^(?P<a>(?:keep|stay|avoid|do not|never|steer) .+?) (?P<u>until|till) '
+         rf'^(?P<a>(?:keep|stay|avoid|do not|never|steer) .+?|(?:the|my|your|our) {_THING} (?:is|are) '
+         rf'(?:off limits|out of bounds|forbidden)) (?P<u>until|till) '
          rf'(?P<e>you (?:have|ve) (?:visited|been to|checked|seen|reached)) both '
          rf'(?P<x>(?:the|my|your|our) {_THING}) and (?P<y>(?:the|my|your|our) {_THING})$',
          r'\g<a> \g<u> \g<e> \g<x> . \g<a> \g<u> \g<e> \g<y>'),
+    Rule('and to the turnstile you go only after: go to it',
+         rf'\b(?P<j>and |, )?to (?P<x>(?:the|my|your|our) {_THING}) you (?:go|may go|can go|should go)\b',
+         r'\g<j>go to \g<x>'),
+    Rule('bring at my desk the bottle or the can: the thing, then where',
+         rf'\b(?P<v>bring|take|put|carry|deliver) (?:at|to) (?P<d>(?:the|my|your|our) {_THING}) '
+         rf'(?P<o>(?:the|a|an|my|your|our) {_THING}(?: (?:or|and) (?:the|a|an|my|your|our) {_THING})?)'
+         rf'(?= [,.;]|$)',
+         r'\g<v> \g<o> to \g<d>'),
+    Rule('or otherwise go to the legal office: or', r'\bor (?:otherwise|else|alternatively)\b', 'or'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -240,6 +240,9 @@ def _after_relation(tokens: Sequence[str], i: int) -> bool:
 # "while you're carrying anything": what is carried in every delivery of the instruction.
 _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'either', 'each', 'both'})
 # "while you carry it", "as you're pushing the cart": the time the object is held.
+# What keeps a person busy ("dad's on a call"): a reason, not a place.
+_BUSY = frozenset({'call', 'phone', 'meeting', 'break', 'nap', 'shift', 'zoom', 'computer', 'asleep', 'busy',
+                   'working', 'napping', 'sleeping', 'resting', 'studying', 'cooking', 'lunch', 'dinner'})
 # "for the whole time": how long a rule holds, said after it; the rule holds throughout anyway.
 _WHOLE_TIME: tuple[tuple[str, ...], ...] = (
     ('the', 'whole', 'time'), ('the', 'entire', 'time'), ('at', 'all', 'times'), ('all', 'the', 'time'),
@@ -495,6 +498,8 @@ class _Reader:
         if len(tail) >= 3 and tail[0] in ('i', 'we') and tail[1] in ('am', 'are', 'm', 're') and \
                 tail[2] not in ('going', 'asking', 'telling', 'sending', 'to'):
             return self._noted_cut(sentence, cut)   # "..., I'm not fussy", "we are in a hurry"
+        if len(tail) >= 3 and tail[1] in ('is', 'are') and tail[-1] in _BUSY:
+            return self._noted_cut(sentence, cut)   # "..., dad's on a call", "..., she is in a meeting"
         if len(tail) < 2 or 'you' in tail or tail[1] in ('not', 'never'):
             return sentence
         if any(t in chatter.REQUEST_WORDS - ({'need'} if tail[0] == 'the' else set()) for t in tail[1:3]):
@@ -2567,8 +2572,11 @@ class _Reader:
                 obj = self._resolve(obj)
                 for x in prev.targets:
                     self.task.constraints.append(Until(Not(_near(x)), Atom('pick', (obj.descriptor,))))
-                self.task.chain.insert(self.task.chain.index(prev), Step('pick', [obj.descriptor]))
-                self._check_leftover(s[obj.end:], s)
+                if not any(st.kind in ('pick', 'deliver') and obj.descriptor in st.targets
+                           for st in self.task._all_steps()):
+                    self.task.chain.insert(self.task.chain.index(prev), Step('pick', [obj.descriptor]))
+                # "only after you have picked it up": the particle after the pronoun
+                self._check_leftover(s[obj.end + (s[obj.end:obj.end + 1] == ['up']):], s)
                 return True
             nps, joiner, end = self._np_list(s, k)
             if not nps:

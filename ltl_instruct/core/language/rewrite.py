@@ -703,6 +703,10 @@ _CLEFT = re.compile(
 
 _MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
 _NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
+# "better you start from the printer and finish with the copier": the route, said plainly
+_START_FINISH = re.compile(rf'\b(?:(?:it is )?better |maybe |instead )?(?:you )?(?:start|begin) '
+                           rf'(?:from|with|at) '
+                           rf'(?P<a>{_NP_RE}) and (?:then )?(?:finish|end) (?:with|at|up at) (?P<b>{_NP_RE})')
 _SWAP_WORDS = frozenset({'swap', 'switch', 'replace', 'exchange', 'trade', 'change', 'substitute'})
 _SWAP = re.compile(rf'\b(?:{"|".join(sorted(_SWAP_WORDS))}) (?P<x>{_NP_RE}) (?:for|with|to|by) '
                    rf'(?P<y>{_NP_RE})(?= [,.;!?]|$)')
@@ -713,10 +717,11 @@ def _uncleft(tokens: list[str]) -> list[str]:
 
     "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
     """
-    if not ({'it', 'its', 'i'} | _SWAP_WORDS) & set(tokens):
+    if not ({'it', 'its', 'i', 'start', 'begin'} | _SWAP_WORDS) & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
+    new = _START_FINISH.sub(lambda m: f'go to {m.group("a")} then {m.group("b")}', new)
     # "swap the shed for the patio": the patio instead of the shed
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
     return new.split() if new != text else tokens

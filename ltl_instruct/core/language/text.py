@@ -54,7 +54,9 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'),
     (r"\b(that|there|it|what|where|here|who|he|she|how|why|when|everything|everyone|nothing)'s\b", r'\1 is'),
-    (r"\b(either|whichever|which|each|this|that|any|neither) one's\b", r'\1 one is'),   # "either one's fine"
+    (r"\b(either|whichever|which|each|this|that|any|neither|first|second|third|last|other|middle|red|blue|"
+     r"green|left|right|big|small) one's\b", r'\1 one is'),   # "either one's fine", "the first one's"
+    (r"'s(?= (?:next|first|last|after|before|then)\b)", ' is'),   # "the drum kit's next"
     (r"\blet's\b", 'let us'),
     # "the table's fine", "the red one's locked": "is", not a possessive, before how a thing is
     (r"'s(?= (?:fine|ok|okay|alright|safe|locked|closed|shut|open|broken|blocked|up|out|off|empty|full|wet|"

@@ -1047,6 +1047,19 @@ FOUND_ROUND_P = [
     ('Go to the bank and after to the shop, or otherwise go to the park.',
      'F (near[bank] & F near[shop]) | F near[park]'),
     ('on your way to the shed um steer clear of the pond', '!near[pond] U near[shed]'),
+    # things named with "stand"; legs said as stretches or "going from A to B"; "though you need not go in"
+    ('go to the coat stand next to the door', 'F near[coat_stand::isnextto(door)]'),
+    ('Go to the gate, then the barn, and on the stretch from the gate to the barn steer clear of the pond.',
+     'F (near[gate] & (!near[pond] U near[barn]))'),
+    ('start at the desk then head to the lift, and keep away from the plant going from the desk to the lift',
+     'F (near[desk] & (!near[plant] U near[lift]))'),
+    ("Only enter the attic after visiting the hall, though you don't have to go into the attic at all.",
+     '!near[attic] W near[hall]'),
+    # what people are doing, and why, asks nothing of the robot
+    ('Could you go to the bench, please? My grandmother is resting there after the long walk.',
+     'F near[bench]'),
+    ('Visit the orchids and keep clear of the fountain throughout, because the floor around it was waxed.',
+     'F near[orchids] & G !near[fountain]'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

@@ -474,6 +474,50 @@ def carries_constraint(tokens: Sequence[str]) -> bool:
     return has_constraint_word(words) or 'avoid' in words or any(w.startswith('avoid') for w in words)
 
 
+# People a statement may be about ("a visitor thinks she dropped a glove").
+PERSON_NOUNS = frozenset('''
+lady gentleman man woman visitor visitors customer customers family guest guests curator librarian manager
+archivist inspector cleaner cleaners staff kid kids child children grandmother grandfather grandma grandpa
+mum mom dad mother father wife husband son daughter boss colleague neighbour neighbor neighbours neighbors
+teacher nurse doctor patient patients boy girl baby baby's toddler student students supplier delivery driver
+gardener chef waiter owner tenant landlord friend friends people someone somebody everyone everybody nobody
+'''.split())
+# Words that make a clause a constraint even when it says why ("because you must not ...").
+_STRONG = frozenset({'not', 'never', 'avoid', 'only', 'until', 'till', 'unless', 'away', 'stay', 'keep',
+                     'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit', 'bring', 'take', 'put'})
+
+
+def is_reason(tail: Sequence[str]) -> bool:
+    """Whether a part is a reason said after the request ("..., because the floor was just waxed")."""
+    if len(tail) < 3 or tail[0] not in ('because', 'since', 'as', 'cos', 'cause'):
+        return False
+    if tail[0] == 'as' and tail[1] not in DETERMINERS and tail[1] not in STATEMENT_SUBJECTS:
+        return False   # "as soon as", "as well"
+    return not _STRONG & set(tail)
+
+
+def is_person_statement(tokens: Sequence[str]) -> bool:
+    """Whether a clause is said about people, not asked of the robot ("a lady says ...", "I can't leave").
+
+    Its subject is a person (I, we, she, a visitor, my grandmother) and "you" or the robot is
+    never named; "I need", "I'd like", "we want" are requests and never count.
+    """
+    if len(tokens) < 3 or 'you' in tokens or 'robot' in tokens or 'drone' in tokens or 'your' in tokens:
+        return False
+    k = 0
+    if tokens[0] in ('i', 'we', 'he', 'she', 'someone', 'somebody', 'everyone', 'nobody'):
+        k = 1
+    elif tokens[0] in DETERMINERS and tokens[1] in PERSON_NOUNS:
+        k = 2
+    elif tokens[0] in DETERMINERS and len(tokens) > 3 and tokens[2] in PERSON_NOUNS:
+        k = 3
+    if not k or k >= len(tokens):
+        return False
+    verb = tokens[k]
+    return verb not in REQUEST_WORDS and verb not in ('need', 'needs', 'want', 'wants', 'would', 'd', 'like',
+                                                      'will', 'must', 'should', 'have', 'has')
+
+
 def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     """Whether a clause describes the world rather than asking the robot for something.
 

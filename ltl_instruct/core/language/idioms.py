@@ -965,6 +965,22 @@ RULES: tuple[Rule, ...] = (
          rf'(?= [,.;]|$)',
          r'\g<v> \g<o> to \g<d>'),
     Rule('or otherwise go to the legal office: or', r'\bor (?:otherwise|else|alternatively)\b', 'or'),
+    Rule('on the stretch from the desk to the lift: the way from one to the other',
+         rf'\bon the (?:stretch|leg|part|bit|way|trip|walk|drive|flight) '
+         rf'(?P<a>from (?:the|my|your|our) {_THING} to '
+         rf'(?:the|my|your|our) {_THING})\b', r'on the way \g<a>'),
+    Rule('on the way from the desk to the lift steer clear of the fountain: a comma',
+         rf'\b(?P<a>on the way from (?:the|my|your|our) {_THING} to (?:the|my|your|our) {_THING}) '
+         rf'(?=(?:steer|keep|stay|avoid|do not|never)\b)', r'\g<a> , '),
+    Rule('keep away from the fountain going from the desk to the lift: on the way',
+         rf'\b(?:going|walking|driving|flying|moving|heading) (?P<a>from (?:the|my|your|our) {_THING} to '
+         rf'(?:the|my|your|our) {_THING})(?= [,.;]|$)', r'on the way \g<a>'),
+    Rule('only enter the workshop after visiting the kit, though you do not have to go in at all: if at all',
+         rf'^only (?:enter|go to|go into|visit) (?P<x>(?:the|my|your|our) {_THING}) after '
+         rf'(?:visiting|checking|going to|stopping at|you visit|you have visited|you check|you go to) '
+         rf'(?P<y>(?:the|my|your|our) {_THING}) , (?:though|but|and) you do not (?:have|need) '
+         rf'to (?:go into|go to|enter|visit|go in)(?: (?:the|my|your|our) {_THING}| it| there)?(?: at all)?$',
+         r'if you go into \g<x> at all , visit \g<y> first'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

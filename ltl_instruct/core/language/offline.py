@@ -54,7 +54,9 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
     Step, Task as _Task, at_least, at_most, conjoin as _and, disjoin as _or, exactly, near_atom as _near,
     never_all as _never, render, until_avoid as _until_avoid,
 )
-from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, tokenize
+from ltl_instruct.core.language.text import (
+    NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, join_compounds, tokenize,
+)
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
     avoided_referents_of, referents_of,
@@ -198,7 +200,7 @@ class OfflineTranslator:
 
     def _prepare(self, instruction: str, notes: list[str]) -> list[str]:
         """Tokens of the instruction with typos, chatter, list references and corrections resolved."""
-        tokens = expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes)))
+        tokens = join_compounds(expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes))))
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         tokens = _correct_spelling(tokens, notes, self.landmarks)
@@ -498,6 +500,8 @@ class _Reader:
         if len(tail) >= 3 and tail[0] in ('i', 'we') and tail[1] in ('am', 'are', 'm', 're') and \
                 tail[2] not in ('going', 'asking', 'telling', 'sending', 'to'):
             return self._noted_cut(sentence, cut)   # "..., I'm not fussy", "we are in a hurry"
+        if chatter.is_reason(tail):
+            return self._noted_cut(sentence, cut)   # "..., because the floor was just waxed"
         if len(tail) >= 3 and tail[1] in ('is', 'are') and tail[-1] in _BUSY:
             return self._noted_cut(sentence, cut)   # "..., dad's on a call", "..., she is in a meeting"
         if len(tail) < 2 or 'you' in tail or tail[1] in ('not', 'never'):
@@ -1188,6 +1192,10 @@ class _Reader:
                 if ok and not rest:
                     return scope
                 self.task.chain.append(step)
+        if chatter.is_person_statement(tokens):
+            # "a lady says her book is on it", "my grandmother is resting there": about people, not the robot
+            self.notes.append(f'left out "{s}" (said about people, asks for nothing)')
+            return scope
         for lead in (['there', 'is'], ['there', 'are'], ['i', 'see'], ['i', 'can', 'see'], ['we', 'have'],
                      ['here', 'is'], ['where', 'is'], ['you', 'will', 'see'], ['you', 'can', 'see']):
             if _starts(clause.tokens, 0, lead) or _starts(tokens, 0, lead):

@@ -77,6 +77,26 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
 )
 
 
+# Things named with "stand" ("the umbrella stand next to the door"): one name, not the verb.
+_STAND_THINGS = frozenset('''
+umbrella music coat plant tv hat cake microphone mic bike display flower night fruit magazine newspaper lamp
+easel book laptop monitor phone speaker guitar drum shoe boot wine key taxi bus lemonade kiosk news towel soap
+'''.split())
+
+
+def join_compounds(tokens: list[str]) -> list[str]:
+    """Join a thing named with "stand" into one word ("umbrella stand": umbrella_stand)."""
+    if 'stand' not in tokens:
+        return tokens
+    out: list[str] = []
+    for t in tokens:
+        if t == 'stand' and out and out[-1] in _STAND_THINGS:
+            out[-1] = out[-1] + '_stand'
+            continue
+        out.append(t)
+    return out
+
+
 ORDINAL_DIGITS: dict[str, str] = {
     '1st': 'first', '2nd': 'second', '3rd': 'third', '4th': 'fourth', '5th': 'fifth',
     '6th': 'sixth', '7th': 'seventh', '8th': 'eighth', '9th': 'ninth', '10th': 'tenth',

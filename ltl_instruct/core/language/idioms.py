@@ -981,6 +981,47 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<y>(?:the|my|your|our) {_THING}) , (?:though|but|and) you do not (?:have|need) '
          rf'to (?:go into|go to|enter|visit|go in)(?: (?:the|my|your|our) {_THING}| it| there)?(?: at all)?$',
          r'if you go into \g<x> at all , visit \g<y> first'),
+    Rule('I would be very grateful if you went over to the cupboard: please go',
+         r'\b(?:i would|i d|we would|we d) be (?:very |so |really |most |ever so )?(?:grateful|glad|happy|'
+         r'pleased) '
+         r'if you (?:could |would )?(?:went|go|head|headed|made your way|popped|nipped)\b', 'please go'),
+    Rule('I would be grateful if you kept away from the hives: please keep',
+         r'\b(?:i would|i d|we would|we d) be (?:very |so |really |most |ever so )?(?:grateful|glad|happy|'
+         r'pleased) '
+         r'if you (?:could |would )?(?P<v>kept|stayed|avoided)\b',
+         lambda m: 'please ' + {'kept': 'keep', 'stayed': 'stay', 'avoided': 'avoid'}[m.group('v')]),
+    Rule('I would rather you did not reach the shelf before: do not',
+         r'\b(?:i would|i d|we would|we d) (?:rather|prefer(?: it if)?) (?:you|the robot) (?:did not|didn t|'
+         r'do not|'
+         r'wouldn t|would not) ', 'do not '),
+    Rule('what I need is for you to get to the theatre: go there',
+         r'\bwhat (?:i|we) (?:need|would like|d like|want) is for you to (?:get to|go to|go over to|head to|'
+         r'visit)\b',
+         'go to'),
+    Rule('making sure you have checked the ticket office before that: only after',
+         r'(?: ,)? (?:making sure|make sure|being sure|ensuring) (?P<e>you (?:have|ve) [a-z]+ (?:the|my|your|'
+         r'our) '
+         r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:before that|beforehand|first)(?= [,.;]|'
+         r'$)', r' , but only after \g<e>'),
+    Rule('or the other way about: round', r'\bthe other way about\b', 'the other way round'),
+    Rule('or else the one next to the arch: or', r'\bor else (?=(?:the|my|your|our)\b)', 'or '),
+    Rule('nip out through the north door: go through',
+         r'\b(?:nip|pop|duck|slip|step) (?:out |over |across |round |down |up )?(?P<p>through|to|into|'
+         r'over to)\b',
+         r'go \g<p>'),
+    Rule('steer round the exhibition: clear of it', r'\bsteer (?:round|around|well clear of|wide of)\b',
+         'steer clear of'),
+    Rule('keep your distance from the pallets: away from them',
+         r'\b(?:keep|maintain) (?:your|a safe|a good) distance (?:from|to)\b', 'keep away from'),
+    Rule('give it a wide berth: keep away from it',
+         r'\bgive (?P<x>it|them|(?:the|that|those|this) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) a (?:wide|good|'
+         r'big) berth\b',
+         r'keep away from \g<x>'),
+    Rule('keep away from that wheelbarrow: the wheelbarrow',
+         r'\b(?P<v>away from|clear of|near|avoid|to|visit) (?:that|those|this|'
+         r'these) (?=[a-z])', r'\g<v> the '),
+    Rule('more than once in total: the count said once',
+         r'(?<=\bonce) in total\b|(?<=\btimes) in total\b', ''),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

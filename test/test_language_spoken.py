@@ -1074,6 +1074,9 @@ FOUND_ROUND_P = [
     ('Please give the hose a wide berth and go over to the pond.', 'F near[pond] & G !near[hose]'),
     ("Go to the garden, and don't stop at the chimes more than once in total.",
      'F near[garden] & (!near[chimes] W (near[chimes] & (near[chimes] W G !near[chimes])))'),
+    # a stop added between the last two
+    ('Go to the shed, then the gate. Wait, stop at the well in between.',
+     'F (near[shed] & F (near[well] & F near[gate]))'),
     # typos in long words the word list lacks or spells one letter apart
     ('Go to the elevetor.', 'F near[elevator]'),
     ('Check the fire extinguiser.', 'F near[fire_extinguisher]'),

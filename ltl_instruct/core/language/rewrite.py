@@ -1131,6 +1131,31 @@ def _leave_be(prev: list[str], seg: list[str], notes: list[str]) -> Optional[lis
     return kept + ([','] if kept and kept[-1] not in PUNCT and rest else []) + rest
 
 
+_INSERT_LEADS = frozenset({'add', 'also', 'just', 'stop', 'at', 'to', 'by', 'swing', 'pop', 'and', 'please',
+                           'in'})
+
+
+def _insert_between(prev: list[str], seg: list[str]) -> Optional[list[str]]:
+    """'go to the garage, then the driveway. wait, stop at the mailbox in between': between the two."""
+    words = [t for t in seg if t not in PUNCT]
+    k = next((k for k in range(len(words) - 1) if words[k:k + 2] == ['in', 'between'] or
+              words[k:k + 2] == ['between', 'them'] or words[k:k + 2] == ['between', 'those']), -1)
+    if k < 0 or [t for t in words[k + 2:] if t not in ('them', 'those', 'the', 'two', 'both')]:
+        return None
+    lead = 0
+    while lead < k and words[lead] in _VERBS | _INSERT_LEADS:
+        lead += 1
+    np = PhraseParser().parse(words, lead)
+    if np is None or np.end != k or np.pronoun:
+        return None
+    end = max((p for p in range(len(prev)) if prev[p] in '.;!?' and p < len(prev) - 1), default=-1)
+    sentence_start = end + 1
+    at = max((p for p in range(sentence_start, len(prev)) if prev[p] == 'then'), default=-1)
+    if at < 0:
+        return None
+    return prev[:at + 1] + words[lead:np.end] + [',', 'then'] + prev[at + 1:]
+
+
 # Words around "both" in "nah, make it both", "actually no, go to both of them".
 _BOTH_FILLERS = frozenset({'just', 'actually', 'no', 'make', 'it', 'do', 'go', 'to', 'visit', 'of', 'them',
                            'then', 'instead'})
@@ -1145,6 +1170,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if seg[1] not in DETERMINERS and seg[1] not in _VERBS:
             seg = [','] + ['the'] + seg[1:]
     said_no = marker == 'no' or 'no' in seg[:3]
+    between = _insert_between(prev, seg)
+    if between is not None:
+        notes.append('a stop was added between the last two')
+        return between
     both = [t for t in seg if t not in PUNCT and t not in _BOTH_FILLERS]
     if both == ['both'] and 'or' in prev:
         # "the kitchen or the dining room - nah, make it both": each of them

@@ -1074,6 +1074,10 @@ FOUND_ROUND_P = [
     ('Please give the hose a wide berth and go over to the pond.', 'F near[pond] & G !near[hose]'),
     ("Go to the garden, and don't stop at the chimes more than once in total.",
      'F near[garden] & (!near[chimes] W (near[chimes] & (near[chimes] W G !near[chimes])))'),
+    # "A and B in any order, then C": C after both, so one of the two orders, then C
+    ('Stop by the kiosk and the fountain, any order is fine, and then come to the lobby.',
+     'F (near[kiosk] & F (near[fountain] & F near[lobby])) | '
+     'F (near[fountain] & F (near[kiosk] & F near[lobby]))'),
     # a stop added between the last two
     ('Go to the shed, then the gate. Wait, stop at the well in between.',
      'F (near[shed] & F (near[well] & F near[gate]))'),

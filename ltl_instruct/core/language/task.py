@@ -9,6 +9,7 @@ development set's conventions. The count builders (:func:`at_least`, :func:`at_m
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from itertools import permutations
 from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import TranslationError
@@ -105,7 +106,10 @@ def render(steps: Sequence[Step]) -> Optional[Formula]:
         return None
     s, rest = steps[0], list(steps[1:])
     if s.kind == 'all':
-        # "A and B, then C": C after both
+        if rest and 1 < len(s.chains) <= 3:
+            # "A and B in any order, then C": C after both, so one of the orders of A and B, then C
+            orders = [render([st for c in perm for st in c] + rest) for perm in permutations(s.chains)]
+            return disjoin([o for o in orders if o is not None])
         parts = [render(list(c) + rest) for c in s.chains]
         return conjoin(*parts)
     if s.kind == 'any':

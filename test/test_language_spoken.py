@@ -1078,6 +1078,22 @@ FOUND_ROUND_P = [
     ('Stop by the kiosk and the fountain, any order is fine, and then come to the lobby.',
      'F (near[kiosk] & F (near[fountain] & F near[lobby])) | '
      'F (near[fountain] & F (near[kiosk] & F near[lobby]))'),
+    # lists said without commas
+    ('i see a mug a plate and a bowl. bring the second one to the sink',
+     'F (near[plate] & F (pick[plate] & F (near[sink] & F release[plate, sink])))'),
+    ('bring the cup the plate and the bowl to the sink',
+     'F (near[cup] & F (pick[cup] & F (near[sink] & F release[cup, sink]))) & '
+     'F (near[plate] & F (pick[plate] & F (near[sink] & F release[plate, sink]))) & '
+     'F (near[bowl] & F (pick[bowl] & F (near[sink] & F release[bowl, sink])))'),
+    # the order dropped by a correction; "but hit A and B first, any order"
+    ('Go to the gate before the barn. Hmm, never mind the order, just visit both.',
+     'F near[gate] & F near[barn]'),
+    ('Go to the loft only after the hall. Hmm, drop that condition, just go to the loft.', 'F near[loft]'),
+    ('go to the cot but hit the table and the bin first, any order',
+     'F near[cot] & (!near[cot] U near[table]) & (!near[cot] U near[bin])'),
+    # a delivery "without ever" going near something: never, not only while carrying
+    ('Put the cups in the sink without ever going near the cat.',
+     'F (near[cups] & F (pick[cups] & F (near[sink] & F release[cups, sink]))) & G !near[cat]'),
     # a stop added between the last two
     ('Go to the shed, then the gate. Wait, stop at the well in between.',
      'F (near[shed] & F (near[well] & F near[gate]))'),

@@ -1022,6 +1022,12 @@ RULES: tuple[Rule, ...] = (
          r'these) (?=[a-z])', r'\g<v> the '),
     Rule('more than once in total: the count said once',
          r'(?<=\bonce) in total\b|(?<=\btimes) in total\b', ''),
+    Rule('go to the crib but hit the table and the pail first, any order: only after both',
+         rf'(?P<g>(?:go to|visit|head to|get to) (?:the|my|your|our) {_THING})(?: ,)? but (?:hit|visit|check|'
+         rf'go to|'
+         rf'stop at|do) (?P<x>(?:the|my|your|our) {_THING}(?: and (?:the|my|your|our) {_THING})?) first'
+         rf'(?: ,)?(?: in any order| any order| in either order|'
+         rf' either order)?$', r'\g<g> , but only after \g<x>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -2960,7 +2960,7 @@ class _Reader:
         if last is not None and last.kind == 'pick' and last.targets[0] in obj_ds and len(obj_ds) == 1:
             last.kind, last.dests = 'deliver', list(dest_ds)
             if without:
-                self._read_avoid(without, _Scope('carry'))
+                self._read_avoid(without, None if 'ever' in without else _Scope('carry'))
             return True
         if last is not None and last.kind == 'any' and len(objs) == 1 and \
                 tokens[k] in ('it', 'them', 'that') and all(len(c) == 1 and c[0].kind == 'pick'
@@ -2976,7 +2976,7 @@ class _Reader:
         else:
             self.task.chain.append(step)
         if without:   # "take it to X without passing Y": while carrying it
-            self._read_avoid(without, _Scope('carry'))
+            self._read_avoid(without, None if 'ever' in without else _Scope('carry'))
         if avoiding:
             self._read_avoid(avoiding, None)
         return True

@@ -183,15 +183,27 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'(?:^|(?<=[.;!?] ))(?:i am|we are) (?:looking at|seeing|facing|in front of) '
      r'(?=(?:a|an|two|three|some) )',
      'there is '),
+    # "i see a hat a scarf and some gloves": a list said without commas
+    (r'\b(?P<a>(?:a|an|some|the) [a-z]+(?: [a-z]+)?) (?=(?:a|an|some|the) [a-z]+(?: [a-z]+)? '
+     r'(?:(?:a|an|some|the) [a-z]+(?: [a-z]+)? )*and (?:a|an|some|the) [a-z]+)',
+     lambda m: m.group('a') + (' , ' if not set(m.group('a').split()[1:]) & _NOT_LISTED else ' ')),
     # "the outer two": the first and the last
     (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
 ))
 
 
+# Words that end no listed thing ("go to the first one and avoid the other two").
+_NOT_LISTED = frozenset('''
+one ones first second third last other two three and or then go to visit avoid bring take put is are of
+between in on near by behind under next at from into onto beside above below with for over inside outside
+left right front that which there here it them up down away
+'''.split())
+
+
 def _say_positions(tokens: list[str]) -> list[str]:
     """Say list positions the way the resolver reads them ("number two" is "the second one")."""
     if not {'number', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer', 'outside', 'end', 'is',
-            'sits', 'stands', 'looking', 'seeing', 'facing', 'front'} & set(tokens):
+            'sits', 'stands', 'looking', 'seeing', 'facing', 'front', 'and'} & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = text
@@ -707,6 +719,8 @@ _NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
 _START_FINISH = re.compile(rf'\b(?:(?:it is )?better |maybe |instead )?(?:you )?(?:start|begin) '
                            rf'(?:from|with|at) '
                            rf'(?P<a>{_NP_RE}) and (?:then )?(?:finish|end) (?:with|at|up at) (?P<b>{_NP_RE})')
+_DROP_RULE = re.compile(r'\b(?:drop|remove|lose|ditch) '
+                        r'(?=(?:that|the) (?:condition|order|ordering|rule|sequence)\b)')
 _SWAP_WORDS = frozenset({'swap', 'switch', 'replace', 'exchange', 'trade', 'change', 'substitute'})
 _SWAP = re.compile(rf'\b(?:{"|".join(sorted(_SWAP_WORDS))}) (?P<x>{_NP_RE}) (?:for|with|to|by) '
                    rf'(?P<y>{_NP_RE})(?= [,.;!?]|$)')
@@ -717,13 +731,15 @@ def _uncleft(tokens: list[str]) -> list[str]:
 
     "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
     """
-    if not ({'it', 'its', 'i', 'start', 'begin'} | _SWAP_WORDS) & set(tokens):
+    if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch'} | _SWAP_WORDS) & \
+            set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
     new = _START_FINISH.sub(lambda m: f'go to {m.group("a")} then {m.group("b")}', new)
     # "swap the shed for the patio": the patio instead of the shed
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
+    new = _DROP_RULE.sub('forget ', new)   # "drop that condition": cancel it
     return new.split() if new != text else tokens
 
 
@@ -1156,6 +1172,24 @@ def _insert_between(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     return prev[:at + 1] + words[lead:np.end] + [',', 'then'] + prev[at + 1:]
 
 
+_ORDER_WORDS = frozenset({'the order', 'that order', 'the ordering', 'the sequence', 'that condition',
+                          'the condition', 'the rule', 'that rule', 'the order part'})
+
+
+def _drop_order(prev: list[str]) -> Optional[list[str]]:
+    """Say the last sentence's order as a plain list ("the porch before the yard": and the yard)."""
+    start = max((p for p in range(len(prev) - 1) if prev[p] in '.;!?'), default=-1) + 1
+    at = max((p for p in range(start, len(prev)) if prev[p] in ('before', 'after', 'then')), default=-1)
+    if at < 0:
+        return None
+    k = at - 1 if at > 0 and prev[at - 1] in ('only', 'not', 'and', ',') else at
+    if prev[k] in ('only', 'not') and at + 1 < len(prev) and prev[at] in ('before', 'after'):
+        # "go to the lab only after the prep room": that condition goes, the goal stays
+        end = next((p for p in range(at, len(prev)) if prev[p] in PUNCT), len(prev))
+        return prev[:k] + prev[end:]
+    return prev[:k] + ['and'] + prev[at + 1:]
+
+
 # Words around "both" in "nah, make it both", "actually no, go to both of them".
 _BOTH_FILLERS = frozenset({'just', 'actually', 'no', 'make', 'it', 'do', 'go', 'to', 'visit', 'of', 'them',
                            'then', 'instead'})
@@ -1170,6 +1204,13 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if seg[1] not in DETERMINERS and seg[1] not in _VERBS:
             seg = [','] + ['the'] + seg[1:]
     said_no = marker == 'no' or 'no' in seg[:3]
+    words = [t for t in seg if t not in PUNCT]
+    k = 2 if words[:2] == ['never', 'mind'] else 1 if words[:1] and words[0] in _CANCEL else 0
+    if k and ' '.join(words[k:k + 2]) in _ORDER_WORDS and marker not in _CANCEL:
+        unordered = _drop_order(prev)
+        if unordered is not None:
+            notes.append('the order was dropped')   # "hmm, drop that condition, just go to the lab"
+            return unordered
     between = _insert_between(prev, seg)
     if between is not None:
         notes.append('a stop was added between the last two')
@@ -1287,6 +1328,12 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 'never', 'forget', 'ignore', 'scratch'):
             target, rest = [], seg   # "never mind, go to the porch": the last goal is replaced
         tgt = ' '.join(target)
+        if tgt in _ORDER_WORDS:
+            unordered = _drop_order(prev)
+            if unordered is not None:
+                # "go to the porch before the yard. never mind the order, just visit both"
+                notes.append('the order was dropped')
+                return unordered
         if any(w in tgt for w in ('avoid', 'avoiding', 'avoidance')):
             pos = next((p for p in range(len(prev) - 1, -1, -1) if prev[p] in _AVOID_WORDS), -1)
             if pos < 0:

@@ -1094,6 +1094,9 @@ FOUND_ROUND_P = [
     # a delivery "without ever" going near something: never, not only while carrying
     ('Put the cups in the sink without ever going near the cat.',
      'F (near[cups] & F (pick[cups] & F (near[sink] & F release[cups, sink]))) & G !near[cat]'),
+    # what people do and how things are, said before or after the request
+    ('Customers keep asking about the price. Go to the till.', 'F near[till]'),
+    ('Go on to the vault, where the archivist is waiting with a flask of tea.', 'F near[vault]'),
     # a stop added between the last two
     ('Go to the shed, then the gate. Wait, stop at the well in between.',
      'F (near[shed] & F (near[well] & F near[gate]))'),

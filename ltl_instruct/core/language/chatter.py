@@ -56,7 +56,8 @@ bites barks sleeps wobbles squeaks creaks
 # How a thing is ("the floor is wet"): after "is" a description of the scene, not a request.
 STATES = frozenset('''
 wet slippery locked closed shut broken blocked busy occupied dirty flooded icy muddy packed crowded full
-empty hot cold dark noisy fragile jammed open
+empty hot cold dark noisy fragile jammed open cracked leaking damaged sticky faulty waxed mopped nervous sick
+unwell asleep loose wobbly smashed split setting drying
 '''.split())
 
 # After "it is": words that make the clause a permission or a demand.
@@ -481,7 +482,11 @@ archivist inspector cleaner cleaners staff kid kids child children grandmother g
 mum mom dad mother father wife husband son daughter boss colleague neighbour neighbor neighbours neighbors
 teacher nurse doctor patient patients boy girl baby baby's toddler student students supplier delivery driver
 gardener chef waiter owner tenant landlord friend friends people someone somebody everyone everybody nobody
+guard caretaker porter receptionist cleaners volunteers animals pigeon pigeons cat dog dogs birds
 '''.split())
+# People named without an article at the start of a statement ("customers keep asking ...").
+_BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
+                          'students', 'patients', 'volunteers', 'cleaners', 'neighbours', 'neighbors'})
 # Words that make a clause a constraint even when it says why ("because you must not ...").
 _STRONG = frozenset({'not', 'never', 'avoid', 'only', 'until', 'till', 'unless', 'away', 'stay', 'keep',
                      'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit', 'bring', 'take', 'put'})
@@ -509,6 +514,8 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
         k = 1
     elif tokens[0] in DETERMINERS and tokens[1] in PERSON_NOUNS:
         k = 2
+    elif tokens[0] in _BARE_PEOPLE:
+        k = 1
     elif tokens[0] in DETERMINERS and len(tokens) > 3 and tokens[2] in PERSON_NOUNS:
         k = 3
     if not k or k >= len(tokens):

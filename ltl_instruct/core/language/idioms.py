@@ -1028,6 +1028,9 @@ RULES: tuple[Rule, ...] = (
          rf'stop at|do) (?P<x>(?:the|my|your|our) {_THING}(?: and (?:the|my|your|our) {_THING})?) first'
          rf'(?: ,)?(?: in any order| any order| in either order|'
          rf' either order)?$', r'\g<g> , but only after \g<x>'),
+    Rule('go on to the vault, where the archivist is waiting with a flask of tea: who is there',
+         r' , where (?:the|a|an|my|our|your) [a-z ]+? (?:is|are|will be) (?:waiting|sitting|working|standing|'
+         r'expecting you|ready)(?: [a-z ]+)?(?= [.;!?]|$)', ''),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

@@ -201,6 +201,9 @@ def tokenize(text: str) -> list[str]:
             out.append(tok[2:].upper())
             continue
         tok = ORDINAL_DIGITS.get(tok, tok)
+        if tok == 'till' and out and out[-1] in ('the', 'a', 'that', 'this', 'my', 'our'):
+            out.append(tok)   # "stuck at the till": the counter, not "until"
+            continue
         words = TYPOS.get(tok, tok).split()
         for w in words:
             if w in PUNCT and out and out[-1] in PUNCT:

@@ -212,6 +212,8 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
                                                         'also', 'still', 'always', 'never', 'just')
     if w in ('once', 'twice', 'thrice'):
         return False
+    if w == 'till' and i > 0 and tokens[i - 1] in DETERMINERS:
+        return True   # "the till": the counter
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \

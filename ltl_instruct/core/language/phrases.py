@@ -212,7 +212,7 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
                                                         'also', 'still', 'always', 'never', 'just')
     if w in ('once', 'twice', 'thrice'):
         return False
-    if w == 'till' and i > 0 and tokens[i - 1] in DETERMINERS:
+    if w == 'till' and i > 0 and tokens[i - 1] in ('the', 'that', 'this', 'my', 'our'):
         return True   # "the till": the counter
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')

@@ -201,7 +201,7 @@ def tokenize(text: str) -> list[str]:
             out.append(tok[2:].upper())
             continue
         tok = ORDINAL_DIGITS.get(tok, tok)
-        if tok == 'till' and out and out[-1] in ('the', 'a', 'that', 'this', 'my', 'our'):
+        if tok == 'till' and out and out[-1] in ('the', 'that', 'this', 'my', 'our'):
             out.append(tok)   # "stuck at the till": the counter, not "until"
             continue
         words = TYPOS.get(tok, tok).split()

@@ -1097,6 +1097,11 @@ FOUND_ROUND_P = [
     # what people do and how things are, said before or after the request
     ('Customers keep asking about the price. Go to the till.', 'F near[till]'),
     ('Go on to the vault, where the archivist is waiting with a flask of tea.', 'F near[vault]'),
+    # the goal that comes last
+    ('Visit the shed and the barn, and go to the gate last.',
+     'F near[shed] & F near[barn] & F near[gate] & (!near[gate] U near[shed]) & (!near[gate] U near[barn])'),
+    ('Visit the shed, the barn and the gate. The gate is your last stop.',
+     'F near[shed] & F near[barn] & F near[gate] & (!near[gate] U near[shed]) & (!near[gate] U near[barn])'),
     # a stop added between the last two
     ('Go to the shed, then the gate. Wait, stop at the well in between.',
      'F (near[shed] & F (near[well] & F near[gate]))'),

@@ -1031,6 +1031,11 @@ RULES: tuple[Rule, ...] = (
     Rule('go on to the vault, where the archivist is waiting with a flask of tea: who is there',
          r' , where (?:the|a|an|my|our|your) [a-z ]+? (?:is|are|will be) (?:waiting|sitting|working|standing|'
          r'expecting you|ready)(?: [a-z ]+)?(?= [.;!?]|$)', ''),
+    Rule('visit the pantry and the garage, and go to the fridge last: after all the others',
+         rf'^(?P<pre>.*\b(?:the|my|your|our) [a-z].*?) (?P<v>go to|visit|check|stop at|end at|finish at|'
+         rf'head to) '
+         rf'(?P<x>(?:the|my|your|our) {_THING}) (?:last|last of all|at the very end)(?= [,.;]|$)',
+         r'\g<pre> \g<v> \g<x> . \g<x> is last'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

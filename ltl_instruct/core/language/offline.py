@@ -2262,7 +2262,8 @@ class _Reader:
         verb = next((v for v in self._FIRST_LAST_VERBS if rest[:len(v)] == v), None)
         if verb is None:
             return False
-        rest = [t for t in rest[len(verb):] if t not in ('the', 'one', 'stop', 'of', 'all', 'place', 'visit')]
+        rest = ['last' if t == 'final' else t for t in rest[len(verb):] if t not in (
+            'the', 'one', 'stop', 'of', 'all', 'place', 'visit', 'your', 'my', 'our', 'destination', 'goal')]
         if rest not in (['last'], ['first']):
             return False
         x = self._named_before(np).descriptor

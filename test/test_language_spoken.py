@@ -1102,6 +1102,30 @@ FOUND_ROUND_P = [
      'F near[shed] & F near[barn] & F near[gate] & (!near[gate] U near[shed]) & (!near[gate] U near[barn])'),
     ('Visit the shed, the barn and the gate. The gate is your last stop.',
      'F near[shed] & F near[barn] & F near[gate] & (!near[gate] U near[shed]) & (!near[gate] U near[barn])'),
+    # names with "of"; a stop on the way; fragments in turn; things thrown out, needing to go, tidied away
+    ('Could you head over to the chest of drawers?', 'F near[chest_of_drawers]'),
+    ('Head up to the loft, but swing by the bathroom on the way.', 'F (near[bathroom] & F near[loft])'),
+    ('shed first, pond second, gate last', 'F (near[shed] & F (near[pond] & F near[gate]))'),
+    ('Can you throw the old magazine out?',
+     'F (near[old_magazine] & F (pick[old_magazine] & F (near[trash_can] & '
+     'F release[old_magazine, trash_can])))'),
+    ('The vase on the shelf needs to go to the table.',
+     'F (near[vase::isabove(shelf)] & F (pick[vase::isabove(shelf)] & F (near[table] & '
+     'F release[vase::isabove(shelf), table])))'),
+    ('tidy the books back into the crate',
+     'F (near[books] & F (pick[books] & F (near[crate] & F release[books, crate])))'),
+    # counts said as stops, "once - exactly once", "no more"; what is dumped; the drone kept clear
+    ('Make at least two stops at the gate.', 'F (near[gate] & F (!near[gate] & F near[gate]))'),
+    ('Only go to the shed once - exactly once - and afterwards head to the gate.',
+     '(!near[shed] U (near[shed] & (near[shed] W G !near[shed]))) & F (near[shed] & F near[gate])'),
+    ('Take the bag out to the bin. After you have dumped it, do not go near the hall.',
+     'F (near[bag] & F (pick[bag] & F (near[bin] & F (release[bag, bin] & G !near[hall]))))'),
+    ('Head for the mast, and keep the drone clear of the wires.', 'F near[mast] & G !near[wires]'),
+    # an avoidance taken back "about" it; the way to a goal named by its last word
+    ("Go to the den, then the hall, and don't go near the oven. Actually, forget about the oven.",
+     'F (near[den] & F near[hall])'),
+    ("Fly over the maze, then go to the roof deck, but don't go over the panels on your way to the deck.",
+     'F (near[maze] & (!near[panels] U near[roof_deck]))'),
     # a stop added between the last two
     ('Go to the shed, then the gate. Wait, stop at the well in between.',
      'F (near[shed] & F (near[well] & F near[gate]))'),

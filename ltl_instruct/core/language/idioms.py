@@ -764,7 +764,7 @@ RULES: tuple[Rule, ...] = (
          rf'^(?P<x>(?:the|my|your|our|this|that|these|those) {_THING}(?: and (?:the|my|your|our) {_THING})?)'
          rf'(?: both| all)? (?:goes|go|belongs|belong|need to go|needs to go|should go|has to go|have to go|'
          rf'must go)(?: back)?(?: out)? (?P<p>in|into|on|onto|to|inside|under)\b',
-         r'put \g<x> \g<p>'),
+         lambda m: f'{"move" if m.group("p") == "to" else "put"} {m.group("x")} {m.group("p")}'),
     Rule('after surveying the orchard, head to the river: the orchard first',
          rf'^(?:so |and |then )?after (?:surveying|visiting|checking|checking on|inspecting|going to|'
          rf'stopping at|'
@@ -1036,6 +1036,40 @@ RULES: tuple[Rule, ...] = (
          rf'head to) '
          rf'(?P<x>(?:the|my|your|our) {_THING}) (?:last|last of all|at the very end)(?= [,.;]|$)',
          r'\g<pre> \g<v> \g<x> . \g<x> is last'),
+    Rule('head up to the attic, but swing by the closet on the way: the closet first',
+         rf'^(?P<g>(?:go|head|fly|drive|walk|make your way)(?: up| down| over| out)? to (?:the|my|your|'
+         rf'our) {_THING})'
+         rf'(?: ,)? (?:but |and )?(?:swing by|stop at|stop by|pop into|pop by|visit|check|call at) '
+         rf'(?P<x>(?:the|my|your|our) {_THING}) on the way(?: there)?$', r'go to \g<x> , then \g<g>'),
+    Rule('potting bench first, vegetable patch second, rain barrel last: in turn',
+         rf'^(?P<a>(?:the |my )?{_THING}) first , (?P<b>(?:the |my )?{_THING}) (?:second|next|'
+         rf'then) , (?:and )?'
+         rf'(?P<c>(?:the |my )?{_THING}) (?:last|third|'
+         rf'finally)$', r'go to \g<a> , then to \g<b> , then to \g<c>'),
+    Rule('throw the old newspaper out: away',
+         rf'\b(?P<v>throw|toss|chuck) (?P<x>(?:the|my|your|our|this|that) {_THING}) (?:out|away)'
+         r'(?= [,.;?!]|$)',
+         r'\g<v> away \g<x>'),
+    Rule('the succulent on the coffee table needs to go to the windowsill: put it there',
+         r'^(?P<x>(?:the|my|your|our|this|that|these|those) (?:[a-z0-9_]+ ){0,5}?[a-z0-9_]+) '
+         r'(?:needs to go|need to go|has to go|have to go|should go|must go)(?: back)? (?P<p>to|into|onto|'
+         r'in|on)\b',
+         lambda m: f'{"move" if m.group("p") == "to" else "put"} {m.group("x")} {m.group("p")}'),
+    Rule('go to the mailbox once, exactly once: exactly once',
+         r'\bonce (?:, |- )?(?:exactly|precisely) once\b', 'exactly once'),
+    Rule('tidy the toys back into the toy chest: put them there',
+         rf'\b(?:tidy|clear|pack) (?:up |away )?(?P<x>(?:the|my|your|our) {_THING}) (?:back |away )?(?:up )?'
+         rf'(?P<p>into|in|onto|on|to)\b', r'put \g<x> \g<p>'),
+    Rule('keep the drone clear of the power lines: keep clear',
+         r'\b(?P<v>keep|stay) (?:the drone|the robot|yourself|it) (?=(?:clear|away|well away|out|'
+         r'back)\b)', r'\g<v> '),
+    Rule('exactly two trips to the pantry, no more: said once',
+         r'\b(?P<c>twice|times|once)(?: ,| -)? no more(?= [.;!?]|$)', r'\g<c>'),
+    Rule('make at least two stops at the wood pile: visit it at least twice',
+         rf'\b(?:make|do) (?P<q>at least |exactly |at most )?(?P<n>two|three|four|five|[0-9]+) '
+         rf'(?:stops|visits|trips|checks) (?:at|to|by) (?P<x>(?:the|my|your|our) {_THING})(?= [,.;]|$| and\b|'
+         rf' then\b)',
+         lambda m: f'visit {m.group("x")} {m.group("q") or ""}{m.group("n")} times'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

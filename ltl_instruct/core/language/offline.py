@@ -1600,8 +1600,9 @@ class _Reader:
                 if rest and rest[0] in ('to', 'towards', 'toward'):
                     np = self.phrases.parse(rest, 1)
                     if np is not None:
-                        return _Scope('onway', self._resolve(np, place=True), 'back' if back else 'near'), \
-                            rest[np.end:]
+                        # "on your way to the terrace": the rooftop terrace named before
+                        return _Scope('onway', self._named_before(self._resolve(np, place=True)),
+                                      'back' if back else 'near'), rest[np.end:]
                 if rest and rest[0] == 'there':
                     return _Scope('onway'), rest[1:]
                 if rest and rest[0] == 'back':
@@ -1751,6 +1752,7 @@ class _Reader:
                 end += 1
             return _Scope('after_pick'), end
         if w in ('dropped', 'delivered', 'released', 'put', 'placed', 'left', 'drop', 'deliver', 'dropping',
+                 'dumped', 'tossed', 'thrown', 'binned', 'emptied', 'stowed', 'hung',
                  'delivering', 'set', 'unloaded', 'handed', 'stashed', 'stored', 'loaded', 'placing',
                  'putting',
                  'setting', 'leaving', 'unloading'):

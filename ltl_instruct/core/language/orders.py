@@ -71,7 +71,8 @@ REVERSE: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('in', 'reversed', 'order'), ('in', 'the', 'opposite', 'order'), ('in', 'opposite', 'order'),
     ('in', 'backwards', 'order'), ('in', 'backward', 'order'), ('backwards',), ('in', 'reverse', 'sequence'),
     ('last', 'to', 'first'), ('from', 'last', 'to', 'first'), ('starting', 'from', 'the', 'last', 'one'),
-    ('starting', 'with', 'the', 'last', 'one'),
+    ('starting', 'with', 'the', 'last', 'one'), ('back', 'to', 'front'), ('from', 'back', 'to', 'front'),
+    ('end', 'to', 'start'), ('from', 'the', 'end'),
 ), key=lambda t: -len(t)))
 
 

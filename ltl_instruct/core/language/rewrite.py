@@ -1324,6 +1324,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         k = next((j for j in range(k) if seg[j] in ('and', 'then') and j + 1 < len(seg) and seg[j + 1] in
                   _VERBS | {'do'}), k)
         target, rest = seg[:k], seg[k + 1:]
+        if target[:1] == ['about'] and len(target) > 1:
+            target = target[1:]   # "forget about the oven"
         if seg and seg[0] in _VERBS and seg[0] not in ('drop', 'leave') and marker in (
                 'never', 'forget', 'ignore', 'scratch'):
             target, rest = [], seg   # "never mind, go to the porch": the last goal is replaced

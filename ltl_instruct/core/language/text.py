@@ -42,7 +42,7 @@ TYPOS: dict[str, str] = {
     'dinning': 'dining', 'glas': 'glass', 'bord': 'board', 'cupbord': 'cupboard', 'cubbord': 'cupboard',
     'backwrds': 'backwards', 'heatr': 'heater', 'mashine': 'machine', 'machin': 'machine',
     'fridege': 'fridge', 'frige': 'fridge', 'livng': 'living', 'ony': 'only', 'benind': 'behind',
-    'sry': 'sorry', 'srry': 'sorry', 'nah': 'no',
+    'sry': 'sorry', 'srry': 'sorry', 'nah': 'no', 'kyes': 'keys', 'exactley': 'exactly', 'exacly': 'exactly',
     'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".
@@ -78,6 +78,11 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
 
 
 # Things named with "stand" ("the umbrella stand next to the door"): one name, not the verb.
+# Names of three words joined by "of" ("chest of drawers"): one thing.
+_OF_THINGS = {('chest', 'of', 'drawers'): 'chest_of_drawers', ('bag', 'of', 'flour'): 'bag_of_flour',
+              ('pile', 'of', 'logs'): 'pile_of_logs', ('box', 'of', 'tissues'): 'box_of_tissues',
+              ('chest', 'of', 'drawer'): 'chest_of_drawers', ('cup', 'of', 'tea'): 'cup_of_tea',
+              ('glass', 'of', 'water'): 'glass_of_water', ('bottle', 'of', 'water'): 'bottle_of_water'}
 _STAND_THINGS = frozenset('''
 umbrella music coat plant tv hat cake microphone mic bike display flower night fruit magazine newspaper lamp
 easel book laptop monitor phone speaker guitar drum shoe boot wine key taxi bus lemonade kiosk news towel soap
@@ -86,12 +91,15 @@ easel book laptop monitor phone speaker guitar drum shoe boot wine key taxi bus 
 
 def join_compounds(tokens: list[str]) -> list[str]:
     """Join a thing named with "stand" into one word ("umbrella stand": umbrella_stand)."""
-    if 'stand' not in tokens:
+    if 'stand' not in tokens and 'of' not in tokens:
         return tokens
     out: list[str] = []
     for t in tokens:
         if t == 'stand' and out and out[-1] in _STAND_THINGS:
             out[-1] = out[-1] + '_stand'
+            continue
+        if len(out) >= 2 and (out[-2], out[-1], t) in _OF_THINGS:
+            out[-2:] = [_OF_THINGS[(out[-2], out[-1], t)]]   # "the chest of drawers"
             continue
         out.append(t)
     return out

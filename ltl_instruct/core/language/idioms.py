@@ -761,7 +761,8 @@ RULES: tuple[Rule, ...] = (
          rf'(?= [,.;]|$| and\b| then\b)',
          lambda m: f'visit {m.group("x")} {m.group("q") or ""}{m.group("n")} times'),
     Rule('the cereal box goes back in the pantry: put it there',
-         rf'^(?P<x>(?:the|my|your|our|this|that|these|those) {_THING}(?: and (?:the|my|your|our) {_THING})?)'
+         rf'^(?P<x>(?:the|my|your|our|this|that|these|those) {_THING}(?: and (?:the|my|your|'
+         rf'our) {_THING})?)'
          rf'(?: both| all)? (?:goes|go|belongs|belong|need to go|needs to go|should go|has to go|have to go|'
          rf'must go)(?: back)?(?: out)? (?P<p>in|into|on|onto|to|inside|under)\b',
          lambda m: f'{"move" if m.group("p") == "to" else "put"} {m.group("x")} {m.group("p")}'),
@@ -1031,6 +1032,13 @@ RULES: tuple[Rule, ...] = (
     Rule('go on to the vault, where the archivist is waiting with a flask of tea: who is there',
          r' , where (?:the|a|an|my|our|your) [a-z ]+? (?:is|are|will be) (?:waiting|sitting|working|standing|'
          r'expecting you|ready)(?: [a-z ]+)?(?= [.;!?]|$)', ''),
+    Rule('cereal box back into the pantry, please: put it there',
+         r'^(?P<x>(?:the |my )?(?!(?:do|go|come|get|head|and|then|not|never|please|you|we|i|just|put|take|'
+         r'bring|'
+         r'move|carry|fly|drive|tidy|clear|pack|put|throw|toss)\b)[a-z0-9_]+(?: [a-z0-9_]+){0,3}?) back '
+         r'(?P<p>into|in|onto|on|to) '
+         r'(?=(?:the|my|your|our)\b)',
+         r'put \g<x> back \g<p> '),
     Rule('visit the pantry and the garage, and go to the fridge last: after all the others',
          rf'^(?P<pre>.*\b(?:the|my|your|our) [a-z].*?) (?P<v>go to|visit|check|stop at|end at|finish at|'
          rf'head to) '
@@ -1070,6 +1078,65 @@ RULES: tuple[Rule, ...] = (
          rf'(?:stops|visits|trips|checks) (?:at|to|by) (?P<x>(?:the|my|your|our) {_THING})(?= [,.;]|$| and\b|'
          rf' then\b)',
          lambda m: f'visit {m.group("x")} {m.group("q") or ""}{m.group("n")} times'),
+    Rule('there should be a blanket on the ottoman: there is',
+         r'\bthere (?:should|must|might|may|could|will) be\b',
+         'there is'),
+    Rule('stop there only the one time: exactly once',
+         r'\b(?:only )?(?:the one time|a single trip|one single trip)\b',
+         'exactly once'),
+    Rule('do not go into the laundry room a second time: at most once',
+         rf'\bdo not (?:go|come) (?:into|to|in|back to|back into) (?P<x>(?:the|my|your|'
+         rf'our) {_THING}) a second time'
+         rf'(?= [,.;]|$)', r'go to \g<x> at most once'),
+    Rule('you can stop at the snack table if you want, but only once at most',
+         rf'\b(?:you can|you may|feel free to) (?P<v>stop at|visit|go to|pass by|swing by|check) '
+         rf'(?P<x>(?:the|my|your|our) {_THING})(?: if you (?:want|like|'
+         rf'wish))?(?: ,)? but (?:only once at most|'
+         rf'at most once|only once|no more than once)\b', r'\g<v> \g<x> at most once'),
+    Rule('go to whatever comes just after the bookcase: right after',
+         r'\b(?:just|straight|immediately|directly) after (?=the\b)', 'right after '),
+    Rule('ascend to the fifth floor, after which take a look: then', r'(?: ,)? after which\b', ' , then'),
+    Rule('do a survey pass over the orchard: fly over it',
+         r'\b(?:do|make) an? (?:survey|quick|full|low|high|slow|single|inspection) (?:pass|sweep|flyover|'
+         r'loop|circuit|'
+         r'run) (?:over|of|around|above)\b', 'fly over'),
+    Rule('wait for me by the back porch: go there',
+         r'\bwait (?:for me|for us|for them|there) (?:by|at|near|next to|in|on)\b', 'go to'),
+    Rule('you can stop at the fridge, at most once: at most once',
+         rf'\b(?:you can|you may) (?P<v>stop at|visit|go to|pass by|swing by|check) (?P<x>(?:the|my|your|'
+         rf'our) '
+         rf'{_THING}) , at most once\b', r'\g<v> \g<x> at most once'),
+    Rule('both the fruit bowl and the bread box need a visit: visit them',
+         rf'^(?:both )?(?P<x>(?:the|my|your|our) {_THING} and (?:the|my|your|our) {_THING}) (?:need|needs|'
+         rf'could use|'
+         rf'should get|want) (?:a visit|visiting|checking|a check|a look|looking at)\b', r'visit \g<x>'),
+    Rule('do not brush against the vase: go near it',
+         r'\b(?:brush|brushing|rub|rubbing|knock|knocking|bang|banging) (?:against|into)\b', 'go near'),
+    Rule('until you have made it to the bin: reached it',
+         r'\b(?:made|make) it (?:to|over to|up to|down to|back to)\b',
+         'reached'),
+    Rule('though you have to hit the fuse box before you set foot there: only after',
+         rf', (?:though|but|although|and) (?:you|we) (?:have to|must|need to|should) (?:visit|go to|stop at|'
+         rf'check|'
+         rf'hit|see) (?P<x>(?:the|my|your|our) {_THING}) (?:before you (?:set foot|go|step) (?:in )?(?:there|'
+         rf'in there|'
+         rf'inside))(?= [,.;]|$)', r', but only after \g<x>'),
+    Rule('but make sure you have hit both the washer and the dryer first: only after',
+         rf'(?:,|\bbut|, but) (?:make sure|be sure|check) (?:that )?you (?:have|ve) (?:hit|visited|been to|'
+         rf'checked|seen|'
+         rf'stopped at) (?:both )?(?P<x>(?:the|my|your|our) {_THING}(?: and (?:the|my|your|'
+         rf'our) {_THING})?) first'
+         rf'(?= [,.;]|$)', r', but only after \g<x>'),
+    Rule('do the pool then the hot tub, or the hot tub then the pool',
+         rf'^(?:either )?(?:do|visit|go to|check) (?P<a>(?:the|my|your|'
+         rf'our) {_THING}) (?:and )?then (?P<b>(?:the|my|'
+         rf'your|'
+         rf'our) {_THING})(?: ,)? or (?:do )?(?P=b) (?:and )?then (?P=a)',
+         r'either go to \g<a> and then \g<b> , '
+         r'or go to \g<b> and then \g<a>'),
+    Rule('the tennis ball rolled behind the armchair: it is there',
+         rf'^(?P<x>(?:the|my|your|our|a|an) {_THING}) (?:rolled|slid|ended up|'
+         rf'has rolled) (?P<r>{_WHERE} (?:the|my|your|our) {_THING})(?= [,.;]|$)', r'there is \g<x> \g<r>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

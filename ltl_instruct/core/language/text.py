@@ -42,7 +42,9 @@ TYPOS: dict[str, str] = {
     'dinning': 'dining', 'glas': 'glass', 'bord': 'board', 'cupbord': 'cupboard', 'cubbord': 'cupboard',
     'backwrds': 'backwards', 'heatr': 'heater', 'mashine': 'machine', 'machin': 'machine',
     'fridege': 'fridge', 'frige': 'fridge', 'livng': 'living', 'ony': 'only', 'benind': 'behind',
-    'sry': 'sorry', 'srry': 'sorry', 'nah': 'no', 'kyes': 'keys', 'exactley': 'exactly', 'exacly': 'exactly',
+    'sry': 'sorry', 'srry': 'sorry', 'nah': 'no', 'kyes': 'keys', 'whil': 'while',
+    'exacty': 'exactly', 'rak': 'rack', 'dor': 'door', 'nex': 'next', 'exactley': 'exactly',
+    'exacly': 'exactly',
     'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".

@@ -1144,6 +1144,11 @@ FOUND_ROUND_P = [
     ('The ball rolled behind the sofa. Go to it.', 'F near[ball::isbehind(sofa)]'),
     ('Cereal box back into the cupboard, please.',
      'F (near[cereal_box] & F (pick[cereal_box] & F (near[cupboard] & F release[cereal_box, cupboard])))'),
+    # a rule after a dash is never a remark about people; "I just need you at"; "where did X end up"
+    ('Find the mop - the baby gate is strictly off limits.', 'F near[mop] & G !near[baby_gate]'),
+    ('Stay away from the easel; I just need you at the sink.', 'F near[sink] & G !near[easel]'),
+    ("where'd the remote end up? go find it", 'F near[remote]'),
+    ('where did I leave my keys? go look for them', 'F near[keys]'),
     # a stop added between the last two
     ('Go to the shed, then the gate. Wait, stop at the well in between.',
      'F (near[shed] & F (near[well] & F near[gate]))'),

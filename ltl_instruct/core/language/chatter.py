@@ -501,14 +501,20 @@ def is_reason(tail: Sequence[str]) -> bool:
     return not _STRONG & set(tail)
 
 
+# Words of a rule about where to go: a clause holding one is never said "about people".
+_RULE_WORDS = frozenset({'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear',
+                         'only', 'until', 'till', 'unless', 'cannot', 'mustn', 'allowed'})
+
+
 def is_person_statement(tokens: Sequence[str]) -> bool:
     """Whether a clause is said about people, not asked of the robot ("a lady says ...", "I can't leave").
 
     Its subject is a person (I, we, she, a visitor, my grandmother) and "you" or the robot is
     never named; "I need", "I'd like", "we want" are requests and never count.
     """
-    if len(tokens) < 3 or 'you' in tokens or 'robot' in tokens or 'drone' in tokens or 'your' in tokens:
-        return False
+    if len(tokens) < 3 or 'you' in tokens or 'robot' in tokens or 'drone' in tokens or 'your' in tokens or \
+            _RULE_WORDS & set(tokens):
+        return False   # a rule is never left out ("the baby gate is off limits")
     k = 0
     if tokens[0] in ('i', 'we', 'he', 'she', 'someone', 'somebody', 'everyone', 'nobody'):
         k = 1

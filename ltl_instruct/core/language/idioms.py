@@ -1137,6 +1137,16 @@ RULES: tuple[Rule, ...] = (
     Rule('the tennis ball rolled behind the armchair: it is there',
          rf'^(?P<x>(?:the|my|your|our|a|an) {_THING}) (?:rolled|slid|ended up|'
          rf'has rolled) (?P<r>{_WHERE} (?:the|my|your|our) {_THING})(?= [,.;]|$)', r'there is \g<x> \g<r>'),
+    Rule('I just need you at the sink: I need you there',
+         r'\b(?P<s>i|we) (?:just|only|really|actually|simply|mainly) (?=(?:need|want|'
+         r'would like) )', r'\g<s> '),
+    Rule('where did I leave my charger? go look for it: it is somewhere',
+         rf'^where (?:did|have|has) (?:i|we|you|somebody|someone) (?:leave|left|put|drop|dropped|hide|stash) '
+         rf'(?P<x>(?:my|the|our|your|a) {_THING})$', r'there is \g<x>'),
+    Rule('where did the remote end up? go find it: it is somewhere',
+         rf'^where (?:did|has|have|would|is|are) (?P<x>(?:my|the|our|your) {_THING}) (?:end up|ended up|go|'
+         rf'gone|get to|'
+         rf'got to|disappear to|disappeared to|wander off to|vanish to)$', r'there is \g<x>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
 )

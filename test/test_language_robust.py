@@ -494,3 +494,24 @@ def test_a_place_after_go_to_is_no_verb() -> None:
     # "inside"), left out of her name and noted
     notes = _check('Go check on grandma in the living room.', 'F near[grandma]')
     assert any('in the living room' in n for n in notes), notes
+
+
+# A rule is never left out as a remark, a reason or something said about people: the
+# instruction is read with it or refused, never without it.
+RULES_NEVER_DROPPED = [
+    'Go to the den, since the kitchen is off limits.',
+    'Find the mop - the baby gate is strictly off limits.',
+    'Go to the porch, because the garage is not allowed.',
+    'Go to the shed; the kids are never allowed near the pond.',
+]
+
+
+@pytest.mark.parametrize('instruction', RULES_NEVER_DROPPED)
+def test_a_rule_is_never_left_out(instruction: str) -> None:
+    from ltl_instruct.core.errors import TranslationError
+    from ltl_instruct.core.spec import avoided_referents_of
+    try:
+        got = T.translate(instruction)
+    except TranslationError:
+        return   # refused: nothing moves without the person's answer
+    assert avoided_referents_of(got.formula), f'{instruction!r} -> {got.formula} (a rule was dropped)'

@@ -489,7 +489,8 @@ _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children',
                           'students', 'patients', 'volunteers', 'cleaners', 'neighbours', 'neighbors'})
 # Words that make a clause a constraint even when it says why ("because you must not ...").
 _STRONG = frozenset({'not', 'never', 'avoid', 'only', 'until', 'till', 'unless', 'away', 'stay', 'keep',
-                     'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit', 'bring', 'take', 'put'})
+                     'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit', 'bring', 'take', 'put',
+                     'limits', 'bounds', 'forbidden', 'banned', 'allowed', 'clear', 'cannot', 'mustn'})
 
 
 def is_reason(tail: Sequence[str]) -> bool:

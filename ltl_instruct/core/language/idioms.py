@@ -152,7 +152,7 @@ def _held(m: 're.Match[str]') -> str:
 
 
 def _each_named(m: 're.Match[str]') -> str:
-    """'the first and third floors': 'the first floor and the third floor' (one of each)."""
+    """Name one of each: 'the first and third floors' is 'the first floor and the third floor'."""
     words = m.group('n').split()
     if m.group('j') == 'and':
         words[-1] = singular(words[-1])
@@ -166,12 +166,12 @@ _LIST_THEN = (r'(?P<l>(?:the|my|your|our) [a-z0-9_]+(?: [a-z0-9_]+){0,3}?(?: , (
 
 
 def _in_turn(m: 're.Match[str]') -> str:
-    """'the bench, the shelf, the lamp and finally the exit': each after the one before."""
+    """Put each after the one before: 'the bench, the shelf, the lamp and finally the exit'."""
     return m.group('l').replace(' , ', ' , then ') + f' , and {m.group("w")} '
 
 
 def _visits_needed(m: 're.Match[str]') -> str:
-    """'the feeder needs two visits at minimum': 'visit the feeder at least two times'."""
+    """Say the visits needed as a count: 'the feeder needs two visits at minimum'."""
     bound = (m.group('q') or m.group('m') or '').strip().replace('at minimum', 'at least')
     return ' '.join(w for w in ('visit', m.group('x'), bound, m.group('n'), 'times') if w)
 

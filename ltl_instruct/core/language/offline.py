@@ -2495,7 +2495,7 @@ class _Reader:
         return np is not None and self._alternative(np, last.targets) in last.targets
 
     def _alternative(self, np: NounPhrase, targets: Sequence[Descriptor]) -> Descriptor:
-        """The alternative a condition names: "the passenger one" is the passenger elevator."""
+        """Return the alternative a condition names ("the passenger one": the passenger elevator)."""
         d = self._resolve(np, place=True).descriptor
         if d in targets or not d.name.endswith('_one'):
             return d

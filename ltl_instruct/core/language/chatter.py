@@ -279,7 +279,7 @@ def join_restarts(tokens: list[str], notes: list[str]) -> list[str]:
             while kept and kept[-1] == ',':
                 kept.pop()
             j = k + 1
-            while j < len(tokens) and tokens[j] in (',',) + tuple(HESITATIONS):
+            while j < len(tokens) and (tokens[j] == ',' or tokens[j] in HESITATIONS):
                 j += 1
             if kept and j < len(tokens) and tokens[j] in _CLAUSE_VERBS and kept[-1] not in PUNCT and \
                     kept[-1] not in _DANGLING:
@@ -319,8 +319,7 @@ def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
         return tokens
     text = ' '.join(tokens)
     where = _WHERE_I_AM.search(text)
-    verb = next((k for k in range(len(tokens) - 1) if tokens[k] in _BRING_ME and tokens[k + 1] == 'me'), -1)
-    if where is None or verb < 0:
+    if where is None:
         return tokens
     place = where.group('x').split()
     rest = (text[:where.start()] + text[where.end():]).split()
@@ -480,17 +479,19 @@ PERSON_NOUNS = frozenset('''
 lady gentleman man woman visitor visitors customer customers family guest guests curator librarian manager
 archivist inspector cleaner cleaners staff kid kids child children grandmother grandfather grandma grandpa
 mum mom dad mother father wife husband son daughter boss colleague neighbour neighbor neighbours neighbors
-teacher nurse doctor patient patients boy girl baby baby's toddler student students supplier delivery driver
+teacher nurse doctor patient patients boy girl baby toddler student students supplier delivery driver
 gardener chef waiter owner tenant landlord friend friends people someone somebody everyone everybody nobody
-guard caretaker porter receptionist cleaners volunteers animals pigeon pigeons cat dog dogs birds
+guard caretaker porter receptionist volunteers animals pigeon pigeons cat dog dogs birds
 '''.split())
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
                           'students', 'patients', 'volunteers', 'cleaners', 'neighbours', 'neighbors'})
-# Words that make a clause a constraint even when it says why ("because you must not ...").
-_STRONG = frozenset({'not', 'never', 'avoid', 'only', 'until', 'till', 'unless', 'away', 'stay', 'keep',
-                     'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit', 'bring', 'take', 'put',
-                     'limits', 'bounds', 'forbidden', 'banned', 'allowed', 'clear', 'cannot', 'mustn'})
+# Words of a rule about where to go: a clause holding one is never said "about people".
+_RULE_WORDS = frozenset({'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear',
+                         'only', 'until', 'till', 'unless', 'cannot', 'mustn', 'allowed'})
+# ... and, in a reason ("because you must not ..."), words of an order, a count or a step too.
+_STRONG = _RULE_WORDS | frozenset({'stay', 'keep', 'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit',
+                                   'bring', 'take', 'put'})
 
 
 def is_reason(tail: Sequence[str]) -> bool:
@@ -500,11 +501,6 @@ def is_reason(tail: Sequence[str]) -> bool:
     if tail[0] == 'as' and tail[1] not in DETERMINERS and tail[1] not in STATEMENT_SUBJECTS:
         return False   # "as soon as", "as well"
     return not _STRONG & set(tail)
-
-
-# Words of a rule about where to go: a clause holding one is never said "about people".
-_RULE_WORDS = frozenset({'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear',
-                         'only', 'until', 'till', 'unless', 'cannot', 'mustn', 'allowed'})
 
 
 def is_person_statement(tokens: Sequence[str]) -> bool:

@@ -170,6 +170,11 @@ def _in_turn(m: 're.Match[str]') -> str:
     return m.group('l').replace(' , ', ' , then ') + f' , and {m.group("w")} '
 
 
+def _put_or_move(m: 're.Match[str]') -> str:
+    """Say where a thing goes as a delivery: "put" it in or on a place, "move" it to one."""
+    return f'{"move" if m.group("p") == "to" else "put"} {m.group("x")} {m.group("p")}'
+
+
 def _visits_needed(m: 're.Match[str]') -> str:
     """Say the visits needed as a count: 'the feeder needs two visits at minimum'."""
     bound = (m.group('q') or m.group('m') or '').strip().replace('at minimum', 'at least')
@@ -753,19 +758,18 @@ RULES: tuple[Rule, ...] = (
          rf'^(?P<x>(?:the|my|your|our) {_THING}) (?:needs|requires|gets|should get|must get) (?P<q>at least |'
          rf'exactly |at most )?(?P<n>two|three|four|five|[0-9]+) (?:visits|checks|passes|trips)'
          rf'(?P<m> at minimum| at least| at most| exactly)?(?= [,.;]|$)', _visits_needed),
-    Rule('make at least three passes over the bridge: visit it at least three times',
+    Rule('make at least three passes over the bridge, two stops at the pile: visit it so many times',
          rf'\b(?:make|do|take|fly|want|need) (?P<q>at least |exactly |at most )?'
          rf'(?P<n>two|three|four|five|[0-9]+) '
-         rf'(?:passes|visits|trips|laps|rounds|flyovers|runs) (?:over|to|of|past|around|by) '
+         rf'(?:passes|visits|trips|laps|rounds|flyovers|runs|stops|checks) (?:over|to|of|past|around|by|at) '
          rf'(?P<x>(?:the|my|your|our) {_THING})(?P<m> at minimum| at least| exactly)?'
-         rf'(?= [,.;]|$| and\b| then\b)',
-         lambda m: f'visit {m.group("x")} {m.group("q") or ""}{m.group("n")} times'),
+         rf'(?= [,.;]|$| and\b| then\b)', _visits_needed),
     Rule('the cereal box goes back in the pantry: put it there',
          rf'^(?P<x>(?:the|my|your|our|this|that|these|those) {_THING}(?: and (?:the|my|your|'
          rf'our) {_THING})?)'
          rf'(?: both| all)? (?:goes|go|belongs|belong|need to go|needs to go|should go|has to go|have to go|'
          rf'must go)(?: back)?(?: out)? (?P<p>in|into|on|onto|to|inside|under)\b',
-         lambda m: f'{"move" if m.group("p") == "to" else "put"} {m.group("x")} {m.group("p")}'),
+         _put_or_move),
     Rule('after surveying the orchard, head to the river: the orchard first',
          rf'^(?:so |and |then )?after (?:surveying|visiting|checking|checking on|inspecting|going to|'
          rf'stopping at|'
@@ -940,9 +944,10 @@ RULES: tuple[Rule, ...] = (
          r'for the remainder(?: of the task)?)'
          r'(?= [,.;]|$)', ''),
     Rule('but not to both: not both', r'\bnot (?:to|at|into) both\b', 'not both'),
-    Rule('you can stop at the snack cabinet, but never more than once: at most once',
+    Rule('you can stop at the snack cabinet (if you want), but never more than once: at most once',
          rf'\b(?:you can|you may|feel free to) (?P<v>stop at|visit|go to|pass by|swing by|check) '
-         rf'(?P<x>(?:the|my|your|our) {_THING})(?: ,)? but (?:never|not|no) more than once\b',
+         rf'(?P<x>(?:the|my|your|our) {_THING})(?: if you (?:want|like|wish))?(?: ,)? (?:but )?'
+         rf'(?:(?:never|not|no) more than once|only once at most|at most once|only once)\b',
          r'\g<v> \g<x> at most once'),
     Rule('visit the sink precisely two times: exactly', r'\b(?:precisely|strictly)(?= (?:once|twice|one|two|'
          r'three|four|five|[0-9]))', 'exactly'),
@@ -1062,7 +1067,7 @@ RULES: tuple[Rule, ...] = (
          r'^(?P<x>(?:the|my|your|our|this|that|these|those) (?:[a-z0-9_]+ ){0,5}?[a-z0-9_]+) '
          r'(?:needs to go|need to go|has to go|have to go|should go|must go)(?: back)? (?P<p>to|into|onto|'
          r'in|on)\b',
-         lambda m: f'{"move" if m.group("p") == "to" else "put"} {m.group("x")} {m.group("p")}'),
+         _put_or_move),
     Rule('go to the mailbox once, exactly once: exactly once',
          r'\bonce (?:, |- )?(?:exactly|precisely) once\b', 'exactly once'),
     Rule('tidy the toys back into the toy chest: put them there',
@@ -1073,11 +1078,6 @@ RULES: tuple[Rule, ...] = (
          r'back)\b)', r'\g<v> '),
     Rule('exactly two trips to the pantry, no more: said once',
          r'\b(?P<c>twice|times|once)(?: ,| -)? no more(?= [.;!?]|$)', r'\g<c>'),
-    Rule('make at least two stops at the wood pile: visit it at least twice',
-         rf'\b(?:make|do) (?P<q>at least |exactly |at most )?(?P<n>two|three|four|five|[0-9]+) '
-         rf'(?:stops|visits|trips|checks) (?:at|to|by) (?P<x>(?:the|my|your|our) {_THING})(?= [,.;]|$| and\b|'
-         rf' then\b)',
-         lambda m: f'visit {m.group("x")} {m.group("q") or ""}{m.group("n")} times'),
     Rule('there should be a blanket on the ottoman: there is',
          r'\bthere (?:should|must|might|may|could|will) be\b',
          'there is'),
@@ -1088,11 +1088,6 @@ RULES: tuple[Rule, ...] = (
          rf'\bdo not (?:go|come) (?:into|to|in|back to|back into) (?P<x>(?:the|my|your|'
          rf'our) {_THING}) a second time'
          rf'(?= [,.;]|$)', r'go to \g<x> at most once'),
-    Rule('you can stop at the snack table if you want, but only once at most',
-         rf'\b(?:you can|you may|feel free to) (?P<v>stop at|visit|go to|pass by|swing by|check) '
-         rf'(?P<x>(?:the|my|your|our) {_THING})(?: if you (?:want|like|'
-         rf'wish))?(?: ,)? but (?:only once at most|'
-         rf'at most once|only once|no more than once)\b', r'\g<v> \g<x> at most once'),
     Rule('go to whatever comes just after the bookcase: right after',
          r'\b(?:just|straight|immediately|directly) after (?=the\b)', 'right after '),
     Rule('ascend to the fifth floor, after which take a look: then', r'(?: ,)? after which\b', ' , then'),
@@ -1102,14 +1097,6 @@ RULES: tuple[Rule, ...] = (
          r'run) (?:over|of|around|above)\b', 'fly over'),
     Rule('wait for me by the back porch: go there',
          r'\bwait (?:for me|for us|for them|there) (?:by|at|near|next to|in|on)\b', 'go to'),
-    Rule('you can stop at the fridge, at most once: at most once',
-         rf'\b(?:you can|you may) (?P<v>stop at|visit|go to|pass by|swing by|check) (?P<x>(?:the|my|your|'
-         rf'our) '
-         rf'{_THING}) , at most once\b', r'\g<v> \g<x> at most once'),
-    Rule('both the fruit bowl and the bread box need a visit: visit them',
-         rf'^(?:both )?(?P<x>(?:the|my|your|our) {_THING} and (?:the|my|your|our) {_THING}) (?:need|needs|'
-         rf'could use|'
-         rf'should get|want) (?:a visit|visiting|checking|a check|a look|looking at)\b', r'visit \g<x>'),
     Rule('do not brush against the vase: go near it',
          r'\b(?:brush|brushing|rub|rubbing|knock|knocking|bang|banging) (?:against|into)\b', 'go near'),
     Rule('until you have made it to the bin: reached it',

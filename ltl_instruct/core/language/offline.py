@@ -241,7 +241,6 @@ def _after_relation(tokens: Sequence[str], i: int) -> bool:
 
 # "while you're carrying anything": what is carried in every delivery of the instruction.
 _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'either', 'each', 'both'})
-# "while you carry it", "as you're pushing the cart": the time the object is held.
 # What keeps a person busy ("dad's on a call"): a reason, not a place.
 _BUSY = frozenset({'call', 'phone', 'meeting', 'break', 'nap', 'shift', 'zoom', 'computer', 'asleep', 'busy',
                    'working', 'napping', 'sleeping', 'resting', 'studying', 'cooking', 'lunch', 'dinner'})
@@ -250,6 +249,7 @@ _WHOLE_TIME: tuple[tuple[str, ...], ...] = (
     ('the', 'whole', 'time'), ('the', 'entire', 'time'), ('at', 'all', 'times'), ('all', 'the', 'time'),
     ('throughout',), ('for', 'the', 'whole', 'trip'), ('for', 'the', 'whole', 'time'), ('all', 'day'),
     ('the', 'whole', 'way'), ('the', 'entire', 'way'), ('for', 'the', 'whole', 'flight'))
+# "while you carry it", "as you're pushing the cart": the time the object is held.
 _CARRY_NOW = frozenset({'carry', 'carries', 'hold', 'holds', 'transport', 'push', 'pushing', 'pull',
                         'pulling', 'wheel', 'wheeling', 'haul', 'hauling', 'lug', 'lugging', 'tow', 'towing'})
 # Words after which "it is", "i am"... go on the same clause ("until it is clean", "so that i am").
@@ -1685,10 +1685,11 @@ class _Reader:
         h = i + 1 if tokens[i:i + 1] == ['you'] else i
         while h < len(tokens) and tokens[h] in ('still', 'already', 'actually'):
             h += 1
-        if tokens[i - 1] in ('until', 'till', 'before', 'once', 'after', 'when') and \
+        if tokens[i - 1] in ('once', 'after', 'when') and \
                 tokens[h:h + 1] in (['have'], ['got'], ['hold']) and h + 1 < len(tokens) and \
                 (tokens[h + 1] in DETS or tokens[h + 1] in ('it', 'them')):
-            # "don't go to the lab before you have the tray": until it is picked up
+            # "once you have the tray, avoid the lab": from the pick on (an "until you have the
+            # tray" is read in _trailing_scope)
             np = self.phrases.parse(tokens, h + 1)
             if np is not None:
                 if not np.pronoun:
@@ -1794,6 +1795,10 @@ class _Reader:
         # every data set's golds read it; "when you are at X": a rule
         event = 'goal' if tokens[i - 1] in ('after', 'once') else 'near'
         return _Scope('after', self._resolve(np, place=True), event), np.end
+
+    def _read_without(self, without: list[str]) -> None:
+        """Read "take it to X without passing Y" (while carrying it); "without ever ...": never."""
+        self._read_avoid(without, None if 'ever' in without else _Scope('carry'))
 
     def _delivery_of(self, np: NounPhrase) -> Optional[Step]:
         """Return the top-level delivery whose object ``np`` names (the same thing, or its head word)."""
@@ -2047,12 +2052,10 @@ class _Reader:
                 # either of two places has no reading here; said, not read as the first of them
                 raise TranslationError('cannot read a constraint that holds until one of several places',
                                        details={'part': ' '.join(rest[:end])})
+            # "the sample tray ... before you have the tray": the thing named before, by its last word
+            named = self._named_before(nps[0]).descriptor.name if nps and holding else ''
             held = next((d for st in self.task._all_steps() if st.kind in ('pick', 'deliver')
-                         for d in st.targets if nps and (d.name == nps[0].descriptor.name or (
-                             # "the sample tray ... before you have the tray": the same tray
-                             d.name.endswith('_' + nps[0].descriptor.name) and
-                             not nps[0].descriptor.relations))),
-                        None) if holding else None
+                         for d in st.targets if d.name == named), None)
             if held is not None and event == 'near':
                 # "until you have the keys": until they are picked up (the keys named before)
                 return _Scope('until', NounPhrase(held, nps[0].start, nps[0].end, nps[0].head), 'pick'), \
@@ -2963,7 +2966,7 @@ class _Reader:
         if last is not None and last.kind == 'pick' and last.targets[0] in obj_ds and len(obj_ds) == 1:
             last.kind, last.dests = 'deliver', list(dest_ds)
             if without:
-                self._read_avoid(without, None if 'ever' in without else _Scope('carry'))
+                self._read_without(without)
             return True
         if last is not None and last.kind == 'any' and len(objs) == 1 and \
                 tokens[k] in ('it', 'them', 'that') and all(len(c) == 1 and c[0].kind == 'pick'
@@ -2978,8 +2981,8 @@ class _Reader:
             self.task.chain.insert(len(self.task.chain) - 1, step)   # "X, but before that, bring Y to Z"
         else:
             self.task.chain.append(step)
-        if without:   # "take it to X without passing Y": while carrying it
-            self._read_avoid(without, None if 'ever' in without else _Scope('carry'))
+        if without:
+            self._read_without(without)
         if avoiding:
             self._read_avoid(avoiding, None)
         return True

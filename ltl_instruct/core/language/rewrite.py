@@ -137,19 +137,11 @@ _MENTIONED: tuple[tuple[str, ...], ...] = tuple(sorted((
 ), key=lambda t: -len(t)))
 
 
-_SAID_FIRST = tuple((lead, 'one', 'i') + (verb, when) for lead in ('the', 'whichever')
-                    for verb in ('said', 'named', 'mentioned', 'listed') for when in ('first', 'last'))
-
-
 def _drop_mentions(tail: list[str]) -> list[str]:
     """Remove "(that) I mentioned" after a position word: "the second item I mentioned".
 
-    "The one I named first" (or "whichever one I said last") is the first (last) one.
+    ("The one I named first" is the first one already: see :func:`_say_positions`.)
     """
-    for m in _SAID_FIRST:
-        for k in range(len(tail) - len(m) + 1):
-            if tuple(tail[k:k + len(m)]) == m:
-                tail = tail[:k] + ['the', m[-1], 'one'] + tail[k + len(m):]
     out: list[str] = []
     i = 0
     while i < len(tail):
@@ -936,24 +928,18 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     d_old = next((k for k in range(1, min(len(old), 4)) if old[k] in DETERMINERS), -1)
     j = next((j for j in range(d_new + 1, min(len(new), d_new + 4)) if new[j] == 'one'), -1) \
         if d_new > 0 else -1
-    if j > 0 and d_old > 0 and new[0] == old[0] and new[1:d_new] == old[1:d_old]:
-        # "bring the remote on the couch to the stand. no, bring the one on the armchair" / "the
-        # blue one": another thing of the same kind, the rest of the step as said
-        obj = PhraseParser().parse(old, d_old)
-        one = PhraseParser().parse(new, d_new)
-        if obj is not None and one is not None and not obj.pronoun and one.end == len(new):
-            new = new[:j] + [obj.head] + new[j + 1:] + old[obj.end:]
     scoped = False
-    if j > 0:
-        pass
-    elif d_new > 0 and d_old > 0 and new[0] == old[0] and new[1:d_new] == old[1:d_old]:
-        # "avoid the canteen while you carry it - no wait, avoid the lobby": another thing, the
-        # scope as said
+    if d_new > 0 and d_old > 0 and new[0] == old[0] and new[1:d_new] == old[1:d_old]:
+        # the same verb on another thing: the rest of the old step as said. "bring the remote on
+        # the couch to the stand. no, bring the one on the armchair" (or "the blue one"); "avoid
+        # the canteen while you carry it - no wait, avoid the lobby"
         obj = PhraseParser().parse(old, d_old)
         other = PhraseParser().parse(new, d_new)
-        if obj is not None and other is not None and not obj.pronoun and other.end == len(new) and \
-                obj.end < len(old) and old[obj.end] in _SCOPE_WORDS | {'to', 'into', 'onto', 'in', 'on'}:
-            new, scoped = new + old[obj.end:], True
+        if obj is not None and other is not None and not obj.pronoun and other.end == len(new):
+            if j > 0:
+                new = new[:j] + [obj.head] + new[j + 1:] + old[obj.end:]
+            elif obj.end < len(old) and old[obj.end] in _SCOPE_WORDS | {'to', 'into', 'onto', 'in', 'on'}:
+                new, scoped = new + old[obj.end:], True
     if not scoped and any(t in ('it', 'them') for t in new):
         k = 1
         while k < len(old) and old[k] in ('up', 'me', 'us', 'over', 'back', 'away', 'out'):
@@ -1205,11 +1191,13 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             seg = [','] + ['the'] + seg[1:]
     said_no = marker == 'no' or 'no' in seg[:3]
     words = [t for t in seg if t not in PUNCT]
-    k = 2 if words[:2] == ['never', 'mind'] else 1 if words[:1] and words[0] in _CANCEL else 0
-    if k and ' '.join(words[k:k + 2]) in _ORDER_WORDS and marker not in _CANCEL:
+    # "never mind the order", "hmm, drop that condition, just go to the lab": what was cancelled
+    k = 0 if marker in _CANCEL else 2 if words[:2] == ['never', 'mind'] else \
+        1 if words[:1] and words[0] in _CANCEL else -1
+    if k >= 0 and ' '.join(words[k:k + 2]) in _ORDER_WORDS:
         unordered = _drop_order(prev)
         if unordered is not None:
-            notes.append('the order was dropped')   # "hmm, drop that condition, just go to the lab"
+            notes.append('the order was dropped')
             return unordered
     between = _insert_between(prev, seg)
     if between is not None:
@@ -1330,12 +1318,6 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 'never', 'forget', 'ignore', 'scratch'):
             target, rest = [], seg   # "never mind, go to the porch": the last goal is replaced
         tgt = ' '.join(target)
-        if tgt in _ORDER_WORDS:
-            unordered = _drop_order(prev)
-            if unordered is not None:
-                # "go to the porch before the yard. never mind the order, just visit both"
-                notes.append('the order was dropped')
-                return unordered
         if any(w in tgt for w in ('avoid', 'avoiding', 'avoidance')):
             pos = next((p for p in range(len(prev) - 1, -1, -1) if prev[p] in _AVOID_WORDS), -1)
             if pos < 0:

@@ -38,11 +38,12 @@ _PREFIXES = ('re', 'un', 'dis', 'pre', 'mini', 'micro', 'over', 'under', 'out', 
 _RANK = {'double': 0, 'swap': 0, 'sound': 1, 'vowel': 1, 'missing': 2, 'extra': 2, 'key': 3}
 # Slips allowed by word length: a short word is one slip from too many others.
 # A neighbouring key is never tried: it turns too many real words into others ("copier").
-# Nor a stray letter removed ("steeple" -> "steele"), nor a vowel for a vowel ("goggles").
-# A vowel for a vowel is tried from nine letters ("maintenence"), where two real words rarely differ so.
+# A stray letter is removed only from ten letters ("refridgerator"; "steeple" is no "steele"), and a
+# vowel for a vowel only from eight ("elevetor"; "goggles" is no "giggles"), where two real words
+# rarely differ so.
 _MIN_LENGTH = {'double': 5, 'swap': 5, 'sound': 4, 'vowel': 8, 'missing': 5, 'extra': 10, 'key': 99}
-# Below nine letters a vowel slip is taken only to a word this frequent or a domain word ("elevetor");
-# a stray letter only to one (a long word with a letter too many: "refridgerator").
+# Below nine letters a vowel slip is taken only to a word this frequent or a domain word; a stray
+# letter only to a word this frequent.
 _VOWEL8_RANK = 10000
 _EXTRA_RANK = 20000
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
@@ -68,10 +69,10 @@ shredder printer scanner fridge freezer cooktop pantry closet dresser vanity ham
 charger stethoscope stroller thermometer sideboard bookshelf radiator washer
 defibrillator extinguisher radiology pathology cardiology oncology pediatrics paediatrics maternity
 pharmacy wheelchair gurney ventilator nebulizer autoclave centrifuge incubator fume biohazard eyewash
-refrigerator freezer elevator escalator photocopier projector whiteboard corkboard noticeboard
-carton cartons pallet pallets racking conveyor loading forklift dumbwaiter intercom doorbell
-mailbox letterbox trashcan recycling compost greenhouse shed birdfeeder hedge flowerbed lawnmower
-hosepipe rooftop helideck antenna chimney gutters solar skylight atrium lobby mezzanine stairwell
+refrigerator elevator escalator photocopier projector whiteboard noticeboard
+carton cartons pallet pallets racking conveyor loading dumbwaiter intercom doorbell
+mailbox letterbox trashcan recycling greenhouse shed birdfeeder hedge flowerbed lawnmower
+hosepipe rooftop helideck antenna gutters solar atrium lobby
 '''.split())
 
 

@@ -79,12 +79,12 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
 )
 
 
-# Things named with "stand" ("the umbrella stand next to the door"): one name, not the verb.
 # Names of three words joined by "of" ("chest of drawers"): one thing.
 _OF_THINGS = {('chest', 'of', 'drawers'): 'chest_of_drawers', ('bag', 'of', 'flour'): 'bag_of_flour',
               ('pile', 'of', 'logs'): 'pile_of_logs', ('box', 'of', 'tissues'): 'box_of_tissues',
               ('chest', 'of', 'drawer'): 'chest_of_drawers', ('cup', 'of', 'tea'): 'cup_of_tea',
               ('glass', 'of', 'water'): 'glass_of_water', ('bottle', 'of', 'water'): 'bottle_of_water'}
+# Things named with "stand" ("the umbrella stand next to the door"): one name, not the verb.
 _STAND_THINGS = frozenset('''
 umbrella music coat plant tv hat cake microphone mic bike display flower night fruit magazine newspaper lamp
 easel book laptop monitor phone speaker guitar drum shoe boot wine key taxi bus lemonade kiosk news towel soap
@@ -92,7 +92,7 @@ easel book laptop monitor phone speaker guitar drum shoe boot wine key taxi bus 
 
 
 def join_compounds(tokens: list[str]) -> list[str]:
-    """Join a thing named with "stand" into one word ("umbrella stand": umbrella_stand)."""
+    """Join a name of several words into one ("umbrella stand": umbrella_stand; "chest of drawers")."""
     if 'stand' not in tokens and 'of' not in tokens:
         return tokens
     out: list[str] = []
@@ -196,9 +196,9 @@ def tokenize(text: str) -> list[str]:
         s = re.sub(r'(?<=[a-z]) 2 (?=(?:the|my|our|your|this|that|either|both)\b)', ' to ', s)
         s = re.sub(r'\b(go|head|come|get|walk|drive|fly|run|move|back|over|down|up|way|next|close) 2 '
                    r'(?=(?:a|an)\b)', r'\1 to ', s)
-    if ' need' in s:   # "the barn and the trough need checking": a request to check them
+    if ' need' in s:   # "the barn and the trough need checking", "... need a visit": check them
         s = re.sub(r'(?:\bboth )?\b((?:the|my|your|our) [^,.;:!?]+?) (?:need|needs) (?:checking|checked|'
-                   r'a check|inspecting|inspected|a look|looking at)\b', r'check \1', s)
+                   r'a check|inspecting|inspected|a look|looking at|a visit|visiting)\b', r'check \1', s)
     if 'lost and found' in s:   # one place, not two
         s = s.replace('lost and found', 'lost_and_found')
     s = re.sub(r'\b(first|last|other|next) ([2-9])\b(?! ?(?:m|cm|meters|metres|feet|ft)\b)',

@@ -148,6 +148,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
     ('in', 'a', 'sec'), ('in', 'a', 'second'), ('while', 'you', 'are', 'at', 'it'),
     ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
+    ('this', 'shift'), ('this', 'week'), ('for', 'the', 'afternoon'), ('for', 'the', 'morning'),
+    ('for', 'the', 'evening'), ('for', 'the', 'day'), ('full', 'stop'), ('on', 'the', 'double'),
     ('with', 'the', 'drone'), ('with', 'the', 'robot'), ('using', 'the', 'drone'), ('whatever', 'you', 'do'),
 ) + _DURATIONS + _SPANS + _PURPOSES,
     key=lambda t: -len(t)))
@@ -486,6 +488,9 @@ guard caretaker porter receptionist volunteers animals pigeon pigeons cat dog do
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
                           'students', 'patients', 'volunteers', 'cleaners', 'neighbours', 'neighbors'})
+# Family members named like names, with no article ("Mum is out in the garden", "Dad always worries").
+FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
+                          'gran', 'grandad', 'granddad', 'nana', 'nan', 'papa', 'mama'})
 # Words of a rule about where to go: a clause holding one is never said "about people".
 _RULE_WORDS = frozenset({'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear',
                          'only', 'until', 'till', 'unless', 'cannot', 'mustn', 'allowed'})
@@ -517,7 +522,7 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
         k = 1
     elif tokens[0] in DETERMINERS and tokens[1] in PERSON_NOUNS:
         k = 2
-    elif tokens[0] in _BARE_PEOPLE:
+    elif tokens[0] in _BARE_PEOPLE or tokens[0] in FAMILY_NAMES:
         k = 1
     elif tokens[0] in DETERMINERS and len(tokens) > 3 and tokens[2] in PERSON_NOUNS:
         k = 3

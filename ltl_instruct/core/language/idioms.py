@@ -109,7 +109,8 @@ def _plain(gerund: str) -> str:
     stem = {'visiting': 'visit', 'going': 'go', 'reaching': 'reach', 'entering': 'enter', 'passing': 'pass',
             'moving': 'move', 'traveling': 'travel', 'travelling': 'travel', 'navigating': 'navigate',
             'getting': 'get', 'heading': 'head', 'finding': 'find', 'coming': 'come', 'walking': 'walk',
-            'flying': 'fly'}.get(first, first)
+            'flying': 'fly', 'approaching': 'approach', 'crossing': 'cross', 'touching': 'touch',
+            'using': 'use', 'leaving': 'leave', 'stopping': 'stop', 'driving': 'drive'}.get(first, first)
     return f'{stem} {rest}'.strip()
 
 
@@ -187,6 +188,12 @@ def _repeat(m: 're.Match[str]') -> str:
 
 
 RULES: tuple[Rule, ...] = (
+    # ---- formal words for plain ones
+    Rule('refrain from approaching the freezer',
+         r'\b(?:kindly |please )?refrain from (?:ever )?(?P<v>[a-z]+ing)\b', lambda m: f'do not {_plain(m.group("v"))}'),
+    Rule('I require you at bench four', r'\b(?:i|we) (?:require|request) you\b', 'i need you'),
+    Rule('and subsequently the centrifuge', r'\bsubsequently\b', 'then'),
+    Rule('the shower prior to the hood', r'\bprior to\b', 'before'),
     # ---- modal frames said at length: permission, obligation, prohibition
     Rule('you are not allowed to go there',
          r'\byou are (?:not|never) (?:allowed|permitted) to\b', 'you cannot'),

@@ -91,7 +91,7 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     lead + ('the', whole, what) for lead in ((), ('during',), ('throughout',), ('for',))
     for whole in ('whole', 'entire')
     for what in ('time', 'way', 'trip', 'flight', 'route', 'mission', 'run', 'task', 'journey', 'drive',
-                 'walk', 'tour', 'job', 'day', 'night')) + tuple(
+                 'walk', 'tour', 'job', 'day', 'night', 'procedure', 'operation', 'process', 'shift')) + tuple(
     ('during', 'the', what) for what in (
         'flight', 'trip', 'mission', 'task', 'run', 'route', 'tour', 'patrol', 'round', 'rounds', 'drive',
         'walk', 'journey', 'delivery')),
@@ -1697,7 +1697,8 @@ class _Reader:
                 return _Scope('after_pick'), np.end
         j = i
         while j < len(tokens) and tokens[j] in ('you', 'have', 'are', 'i', 'it', 'is', 'been', 'the',
-                                                'robot', 'they', 'we', 'has', 'was', 'were', 'that'):
+                                                'robot', 'they', 'we', 'has', 'was', 'were', 'that',
+                                                'actually', 'finally', 'safely', 'already'):
             j += 1
         if j >= len(tokens):
             return None, i
@@ -1794,7 +1795,8 @@ class _Reader:
         # "after going to X", "once you have been to X" (event 'goal'): X is a step of the task, as
         # every data set's golds read it; "when you are at X": a rule
         event = 'goal' if tokens[i - 1] in ('after', 'once') else 'near'
-        return _Scope('after', self._resolve(np, place=True), event), np.end
+        # "go to the loading bay; once you have reached the bay, ...": the loading bay
+        return _Scope('after', self._named_before(self._resolve(np, place=True)), event), np.end
 
     def _read_without(self, without: list[str]) -> None:
         """Read "take it to X without passing Y" (while carrying it); "without ever ...": never."""

@@ -276,8 +276,11 @@ class RuleReader:
             return [Always(Implies(Next(_any(event)), _all_near(response.places)))]
         if not (always or response.prompt or response.obliged or response.avoid):
             return None   # a plain command: "after you visit a, go to b" is a sequence
-        if not always and any(d in goals for d in event):
-            return None   # "once you reach X" scopes the goal X given before: the clause reader places it
+        if not always and any(d in goals or not d.relations and any(
+                g.name.endswith('_' + d.name) for g in goals) for d in event):
+            # "once you reach X" scopes the goal X given before ("the bay": the loading bay): the
+            # clause reader places it
+            return None
         if not always and response.avoid and not self.conditional_after and words[start] == 'after':
             return None   # "after going to X, avoid Y": X is a goal, Y avoided after it (the clause reader)
         t = _any(event)

@@ -32,7 +32,10 @@ _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
-                       'i', 'we', 'that', 'you'})   # "the vase, the candle and the frame I showed you?"
+                       'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which'})   # "the vase, the candle and the frame I showed you?"
+# Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
+_POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
+                             'destination', 'choice', 'point', 'bit'})
 _REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remaining', 'reverse', 'before',
                                     'after', 'former', 'latter', 'them', 'all'}
 
@@ -53,9 +56,10 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
     parser = PhraseParser()
     starts = [0] + [i + 1 for i, t in enumerate(tokens) if t in _LIST_INTROS]
     # "I left a notebook, a pen and a ruler...": after a pronoun subject and its verb
-    starts += [i + 2 for i, t in enumerate(tokens) if t in ('i', 'we', 'they') and (
+    starts += [i + 2 + (tokens[i + 1:i + 2] in (['have'], ['had'], ['just'], ['also']))
+               for i, t in enumerate(tokens) if t in ('i', 'we', 'they') and (
         i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in _LEAD_ADVERBS and (
-            i == 1 or tokens[i - 2] in PUNCT))]   # "earlier I mentioned a, b and c
+            i == 1 or tokens[i - 2] in PUNCT))]   # "earlier I mentioned a, b and c", "I have left a, b, c"
     starts.sort()
     for s in starts:
         if s >= len(tokens):
@@ -65,7 +69,10 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         nps, joiner, end = parser.parse_list(tokens, s)
         if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
             continue
-        if end < len(tokens) and tokens[end] not in _LIST_END:
+        if end < len(tokens) and tokens[end] not in _LIST_END and not (
+                # "a lamp, a kettle and a dryer to return": what is to be done with them
+                tokens[end] == 'to' and len(nps) >= 3 and tokens[end + 1:end + 2] != [] and
+                tokens[end + 1] not in DETERMINERS):
             continue
         if tokens[nps[0].end:nps[0].end + 1] == [','] and any(
                 t in NUMBER_WORDS and t != 'one' for t in tokens[s:nps[0].end]):
@@ -147,8 +154,8 @@ def _drop_mentions(tail: list[str]) -> list[str]:
     while i < len(tail):
         out.append(tail[i])
         i += 1
-        if out[-1] in ('one', 'item', 'thing', 'last', 'latter', 'former', 'middle', 'things', 'items',
-                       'ones') or out[-1] in ORDINALS:
+        if out[-1] in _POSITION_NOUNS or out[-1] in ('last', 'latter', 'former', 'middle', 'things', 'items',
+                                                     'ones', 'places', 'spots', 'stops') or out[-1] in ORDINALS:
             j = i + (1 if i < len(tail) and tail[i] in ('that', 'which') else 0)
             for m in _MENTIONED:
                 if tuple(tail[j:j + len(m)]) == m:
@@ -168,7 +175,7 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
      r'(?:mentioned|said|named|listed) '
      r'(?P<w>last|first)\b', r'the \g<w> one'),
     # "whatever comes after the notice board"
-    (r'\b(?:whatever|whichever|what) (?:comes|is|sits|stands) '
+    (r'\b(?:whatever|whichever|what|the one that|the one which) (?:comes|is|sits|stands) '
      r'(?P<w>right after|after|right before|before|next to) '
      r'(?=the\b)', r'the one \g<w> '),
     # "I'm looking at a barn, a silo and a tractor": the list of a scene
@@ -179,6 +186,10 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'\b(?P<a>(?:a|an|some|the) [a-z]+(?: [a-z]+)?) (?=(?:a|an|some|the) [a-z]+(?: [a-z]+)? '
      r'(?:(?:a|an|some|the) [a-z]+(?: [a-z]+)? )*and (?:a|an|some|the) [a-z]+)',
      lambda m: m.group('a') + (' , ' if not set(m.group('a').split()[1:]) & _NOT_LISTED else ' ')),
+    # "in the reverse of that order", "last to first", "backwards": in reverse order
+    (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
+     r'backwards|back to front)(?! order)\b', 'in reverse order'),
+    (r'\bthe one in between\b', 'the middle one'),
     # "the outer two": the first and the last
     (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
 ))
@@ -195,7 +206,8 @@ left right front that which there here it them up down away
 def _say_positions(tokens: list[str]) -> list[str]:
     """Say list positions the way the resolver reads them ("number two" is "the second one")."""
     if not {'number', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer', 'outside', 'end', 'is',
-            'sits', 'stands', 'looking', 'seeing', 'facing', 'front', 'and'} & set(tokens):
+            'sits', 'stands', 'looking', 'seeing', 'facing', 'front', 'and', 'reverse', 'opposite', 'backwards',
+            'between', 'last'} & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = text
@@ -295,7 +307,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 nxt = tail[i + 1]
             if t == 'the' and nxt:
                 w = tail[i + 2] if i + 2 < len(tail) else ''
-                one = 1 if w in ('one', 'item', 'thing') else 0
+                one = 1 if w in _POSITION_NOUNS else 0
                 # "the second", "the latter twice": no noun follows the position word
                 ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
                     not is_name_word(tail, i + 2, False)

@@ -284,7 +284,10 @@ def join_restarts(tokens: list[str], notes: list[str]) -> list[str]:
             while j < len(tokens) and (tokens[j] == ',' or tokens[j] in HESITATIONS):
                 j += 1
             if kept and j < len(tokens) and tokens[j] in _CLAUSE_VERBS and kept[-1] not in PUNCT and \
-                    kept[-1] not in _DANGLING:
+                    kept[-1] not in _DANGLING and not (
+                        # "the armchair or the couch, hmm, just the couch": a correction
+                        tokens[j] in ('just', 'finally') and tokens[j + 1:j + 2] and
+                        tokens[j + 1] in DETERMINERS):
                 # "after the bookcase, um, go to the window seat": a pause before a new step, no correction
                 dropped.append(t)
                 out = kept + [',']

@@ -444,9 +444,10 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
     ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'), ('no', 'actually'), ('no', 'i', 'mean'),
     ('no', 'make', 'that'), ('no', 'rather'), ('no', 'make', 'it'), ('ehm',), ('mm',), ('mmm',),
+    ('scrap', 'that'), ('scrap',),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
-                     'leave'})
+                     'leave', 'scrap'})
 # Markers that restate a whole clause ("on second thought, bring it to the couch").
 _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
                       'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my', 'correction', 'ehm', 'mm',
@@ -481,19 +482,25 @@ def _marker_at(tokens: list[str], i: int) -> int:
         return len(bare) if len(bare) > 1 or bare != ('no', 'no') else 2
     for m in _MARKERS:
         if tuple(tokens[i:i + len(m)]) == m:
-            if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',',):
+            if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',', ':'):
                 return 0
             if m == ('ignore',) and i == 0:
                 return 0
             if m == ('forget',) and i == 0:
                 return 0
-            if m[0] in ('skip', 'omit', 'scratch', 'cross', 'leave') and m != ('scratch', 'that') and (
+            if m[0] in ('skip', 'omit', 'scratch', 'cross', 'leave', 'scrap') and m not in (
+                    ('scratch', 'that'), ('scrap', 'that')) and (
                     i == 0 or tokens[i - 1] not in '.;!?'):
                 return 0   # only a sentence of its own cancels ("Scratch the pantry.")
             if m == ('leave', 'out') and i + 2 < len(tokens) and tokens[i + 2] == 'of':
                 return 0
             return len(m)
     return 0
+
+
+# Words that open a sentence and name nothing ("hm, no, the lounge").
+_NOT_BARE = chatter.HESITATIONS | chatter.INTERJECTIONS | frozenset(
+    m[0] for m in _MARKERS) | chatter.STATEMENT_SUBJECTS | {'you', 'please', 'ok', 'okay', 'yes', 'yeah'}
 
 
 def _np_spans(tokens: list[str]) -> list[NounPhrase]:
@@ -504,6 +511,9 @@ def _np_spans(tokens: list[str]) -> list[NounPhrase]:
     while i < len(tokens):
         after = tokens[i - 1] if i > 0 else ''
         if tokens[i] in DETERMINERS or after in ('to', 'by', 'at', 'visit', 'avoid', ',') or (
+                # "Pool, then gym. Wait, reverse that": names said bare at the start of a sentence
+                (i == 0 or after in '.;!?') and tokens[i] not in _VERBS and tokens[i] not in _NOT_BARE and
+                is_name_word(tokens, i, False)) or (
                 i > 0 and tokens[i - 1] in ('then', 'and', 'or') and tokens[i] not in _VERBS and is_name_word(
                     tokens, i, False)):
             np = parser.parse(tokens, i)
@@ -531,6 +541,10 @@ def _strip_corr(seg: list[str]) -> list[str]:
         if seg[0] == 'make' and seg[1] == 'it':
             seg = seg[1:]   # "make it the taxi rank": "it" goes with "make"
         seg = seg[1:]
+    for k in range(1, len(seg) - 1):
+        if seg[k] == ',' and seg[k + 1] == 'not' and seg[k + 2:k + 3] and seg[k + 2] in DETERMINERS:
+            seg = seg[:k]   # "the shaking incubator, not the static one": what it is not, said again
+            break
     while seg and seg[-1] in (',', 'instead', 'please', 'then', 'rather') or seg[-2:] in (
             ['i', 'mean'], ['i', 'meant'], ['after', 'all']):
         seg = seg[:-2] if seg[-1] in ('mean', 'meant', 'all') else seg[:-1]
@@ -544,8 +558,9 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
         spans = _np_spans(prev)
         if spans and spans[-1].descriptor.relations:
             ref = PhraseParser().parse(prev, spans[-1].start)
-            rel_at = next((k for k in range(spans[-1].start + 1, spans[-1].end) if prev[k] in DETERMINERS),
-                          -1)
+            # (not the "the" of "to the left of": the thing it is left of)
+            rel_at = next((k for k in range(spans[-1].start + 1, spans[-1].end) if prev[k] in DETERMINERS and
+                           prev[k + 1:k + 2] not in (['left'], ['right'], ['front'], ['middle'], ['side'])), -1)
             if ref is not None and rel_at > 0:
                 inner = PhraseParser().parse(prev, rel_at)
                 if inner is not None:
@@ -713,10 +728,15 @@ def _clause_cut(seg: list[str], joiners: tuple[str, ...]) -> int:
 _CLEFT = re.compile(
     r'\b(?:it is|it s|its) (?P<x>(?:the|my|your|our|that) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:that |which )?'
     r'(?:you |we |the robot )?(?:(?:need|have|ought|want|got) to |should |must |gotta |are to |can not |'
-    r'cannot )?(?:avoid|stay away from|keep away from|steer clear of|keep clear of|stay clear of)'
+    r'cannot |(?:i|we) (?:want|need) you (?:to )?(?:stay |keep )?)?(?:avoid|stay away from|keep away from|'
+    r'steer clear of|keep clear of|stay clear of|out of|away from)'
     r'(?= [,.;!?]|$)')
 
 
+# "forget the lobby bar thing", "forget about the road part": the thing itself
+_THING_PART = re.compile(r'\b(?P<v>forget|ignore|scratch|scrap|drop|skip)(?: about)? '
+                         r'(?P<x>the (?!(?:last|first|second|third|other|whole|same|previous|final|next)\b)'
+                         r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:thing|part|bit)\b')
 _MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
 _NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
 # "better you start from the printer and finish with the copier": the route, said plainly
@@ -735,8 +755,8 @@ def _uncleft(tokens: list[str]) -> list[str]:
 
     "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
     """
-    if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch'} | _SWAP_WORDS) & \
-            set(tokens):
+    if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch', 'thing', 'part', 'bit'} |
+            _SWAP_WORDS) & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
@@ -744,6 +764,7 @@ def _uncleft(tokens: list[str]) -> list[str]:
     # "swap the shed for the patio": the patio instead of the shed
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
     new = _DROP_RULE.sub('forget ', new)   # "drop that condition": cancel it
+    new = _THING_PART.sub(lambda m: f'{m.group("v")} {m.group("x")}', new)
     return new.split() if new != text else tokens
 
 
@@ -816,7 +837,8 @@ _RETRACT: tuple[tuple[str, ...], ...] = (
     ('need', 'not', 'avoid'), ('do', 'not', 'bother', 'avoiding'),
     ('no', 'need', 'to', 'stay', 'away', 'from'),
     ('do', 'not', 'need', 'to', 'stay', 'away', 'from'), ('can', 'go', 'near'), ('it', 'is', 'safe'),
-    ('do', 'not', 'worry', 'about'),
+    ('do', 'not', 'worry', 'about'), ('so', 'it', 'is', 'fine'), ('so', 'it', 'is', 'ok'),
+    ('so', 'it', 'is', 'okay'), ('so', 'that', 'is', 'fine'),
 ) + tuple((verb, 'the', what, part)   # "drop the avoidance part"
           for verb in ('drop', 'forget', 'ignore', 'skip', 'scratch', 'remove', 'cancel')
           for what in ('avoidance', 'avoid', 'avoiding', 'keep', 'away') for part in ('part', 'bit'))
@@ -846,7 +868,10 @@ def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Option
         e = named.end + 1
         if seg[e:e + 1] in (['actually'], ['totally'], ['perfectly'], ['all'], ['completely'], ['now']):
             e += 1
-        if seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe']) and \
+        if seg[e:e + 1] == ['been'] and seg[e + 1:e + 2] in (['fixed'], ['repaired'], ['cleared'], ['cleaned']):
+            e += 1   # "the elevator's been fixed"
+        if seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe'], ['fixed'], ['repaired'],
+                                ['cleared']) and \
                 seg[e:e + 2] not in (['no', 'problem'], ['not', 'a'], ['no', 'longer']):
             continue
         if seg[e:e + 2] == ['not', 'a'] and seg[e + 2:e + 3] not in (['problem'], ['hazard'], ['danger']):
@@ -970,6 +995,8 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
 def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Keep one goal of a list: 'visit the museum and the zoo. Actually, just the zoo'."""
     words = [t for t in seg if t not in PUNCT]
+    if len(words) > 2 and words[-1] == 'only' and words[0] in DETERMINERS:
+        words = ['only'] + words[:-1]   # "actually, the east one only"
     if not words or words[0] not in ('just', 'only'):
         return None
     np = PhraseParser().parse(words, 1)
@@ -1193,7 +1220,45 @@ _BOTH_FILLERS = frozenset({'just', 'actually', 'no', 'make', 'it', 'do', 'go', '
                            'then', 'instead'})
 
 
+def _renumber(prev: list[str], seg: list[str]) -> Optional[list[str]]:
+    """'dock four. no, five', 'room 204, sorry, 206': the number in the name said last is replaced."""
+    words = [t for t in seg if t not in PUNCT and t not in ('make', 'it', 'that', 'just', 'no', 'sorry')]
+    if len(words) != 1 or not (words[0].isdigit() or words[0] in NUMBER_WORDS) or \
+            words[0] in ('once', 'twice', 'thrice'):
+        return None
+    p = next((p for p in range(len(prev) - 1, -1, -1) if prev[p].isdigit() or prev[p] in NUMBER_WORDS), -1)
+    if p <= 0 or prev[p + 1:p + 2] in (['times'], ['time']) or prev[p] in ('once', 'twice', 'thrice') or \
+            prev[p - 1] in DETERMINERS or prev[p].isdigit() != words[0].isdigit():
+        return None
+    return prev[:p] + words + prev[p + 1:]
+
+
+def _neither(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """'the stairwell or the elevator, scratch that, neither, just go to room 204': the choice is dropped."""
+    words = [t for t in seg if t != ',']
+    if words[:1] not in (['neither'], ['none']) or 'or' not in prev:
+        return None
+    k = 2 if words[1:2] in (['of'],) and words[2:3] in (['them'], ['those']) else 1
+    k += 1 if words[k:k + 1] == ['of'] else 0
+    rest = words[k:]
+    while rest and rest[0] in ('just', 'instead', 'then', 'so'):
+        rest = rest[1:]
+    if not rest or rest[0] not in _VERBS:
+        return None
+    pos = max(p for p, t in enumerate(prev) if t == 'or')
+    notes.append('the choice was dropped')
+    kept = _remove_clause(prev, pos)
+    return kept + ([','] if kept and kept[-1] not in PUNCT else []) + rest
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    numbered = _renumber(prev, seg)
+    if numbered is not None:
+        notes.append('the number was corrected')
+        return numbered
+    neither = _neither(prev, seg, notes)
+    if neither is not None:
+        return neither
     named = {w for sp in _np_spans(prev) for w in prev[sp.start:sp.end]} if marker in _CANCEL else set()
     if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and (
             seg[1] in DETERMINERS or seg[1] in _VERBS or seg[1] in named):
@@ -1318,7 +1383,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             seg = seg[1:]
         if marker in ('skip', 'drop', 'cancel') and seg and ',' not in seg:
             seg = seg + [',']
-        if seg and seg[0] == 'that' or marker == 'scratch':
+        if seg and seg[0] == 'that' or marker in ('scratch', 'scrap'):
             seg = seg[1:] if seg and seg[0] == 'that' else seg
         k = seg.index(',') if ',' in seg else len(seg)
         k = next((j for j in range(k) if seg[j] in ('and', 'then') and j + 1 < len(seg) and seg[j + 1] in
@@ -1327,7 +1392,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if target[:1] == ['about'] and len(target) > 1:
             target = target[1:]   # "forget about the oven"
         if seg and seg[0] in _VERBS and seg[0] not in ('drop', 'leave') and marker in (
-                'never', 'forget', 'ignore', 'scratch'):
+                'never', 'forget', 'ignore', 'scratch', 'scrap'):
             target, rest = [], seg   # "never mind, go to the porch": the last goal is replaced
         tgt = ' '.join(target)
         if any(w in tgt for w in ('avoid', 'avoiding', 'avoidance')):
@@ -1416,6 +1481,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         k = next(p for p in range(len(seg)) if seg[p] in ('is', 'are'))
         parser = PhraseParser()
         tnp = parser.parse(seg, 0)
+        count_fix = _count_correction(prev, seg[:k]) if tnp is None else None
+        if count_fix is not None:
+            notes.append('the count was corrected')   # "three times. no, twice is fine"
+            return count_fix
         rest = seg[k + 2:]
         if tnp is not None:
             for sp in reversed(_np_spans(prev)):
@@ -1679,5 +1748,7 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
             neg = 2 if prev[cs:cs + 2] == ['do', 'not'] else 1 if prev[cs:cs + 1] == ['never'] else 0
             if neg:
                 return prev[:cs] + prev[cs + neg:cut] + new_words + prev[end:] + tail
+        if mod == ('just',) and not old_mod:
+            new_words = new_words[1:]   # "three times. no, make that just twice": twice, not "only"
         return prev[:cut] + new_words + prev[end:] + tail
     return None

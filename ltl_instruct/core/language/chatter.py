@@ -57,8 +57,11 @@ bites barks sleeps wobbles squeaks creaks
 STATES = frozenset('''
 wet slippery locked closed shut broken blocked busy occupied dirty flooded icy muddy packed crowded full
 empty hot cold dark noisy fragile jammed open cracked leaking damaged sticky faulty waxed mopped nervous sick
-unwell asleep loose wobbly smashed split setting drying
+unwell asleep loose wobbly smashed split setting drying dead low flat
 '''.split())
+# Words that may come between "is" and the state ("the battery is almost dead").
+DEGREE_WORDS = frozenset({'almost', 'nearly', 'very', 'really', 'so', 'too', 'still', 'completely', 'totally',
+                          'pretty', 'quite', 'super', 'kind', 'getting'})
 
 # After "it is": words that make the clause a permission or a demand.
 PERMISSIVE = frozenset({'okay', 'ok', 'fine', 'alright', 'allowed', 'important', 'necessary', 'essential',
@@ -158,7 +161,8 @@ _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
 # Lead-ins before a comma that announce what follows and ask for nothing themselves.
 LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
-    ('fyi',), ('just', 'so', 'you', 'know'), ('so', 'you', 'know'), ('by', 'the', 'way'), ('btw',),
+    ('fyi',), ('just', 'so', 'you', 'know'), ('busy', 'morning'), ('busy', 'day'), ('long', 'day'),
+    ('busy', 'afternoon'), ('hectic', 'morning'), ('crazy', 'day'), ('busy', 'night'), ('so', 'you', 'know'), ('by', 'the', 'way'), ('btw',),
     ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
     ('listen',), ('look',), ('hey', 'there'), ('quick', 'one'), ('quick', 'favour'), ('quick', 'favor'),
     ('one', 'more', 'thing'), ('oh', 'and'), ('also', 'fyi'), ('for', 'the', 'record'), ('well',),
@@ -486,7 +490,8 @@ archivist inspector cleaner cleaners staff kid kids child children grandmother g
 mum mom dad mother father wife husband son daughter boss colleague neighbour neighbor neighbours neighbors
 teacher nurse doctor patient patients boy girl baby toddler student students supplier delivery driver
 gardener chef waiter owner tenant landlord friend friends people someone somebody everyone everybody nobody
-guard caretaker porter receptionist volunteers animals pigeon pigeons cat dog dogs birds
+guard caretaker porter receptionist volunteers animals pigeon pigeons cat dog dogs birds lifeguard trainer
+carer guest customer technician electrician plumber vet housekeeper contractor contractors crew
 '''.split())
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
@@ -495,7 +500,7 @@ _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children',
 FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
                           'gran', 'grandad', 'granddad', 'nana', 'nan', 'papa', 'mama'})
 # Words of a rule about where to go: a clause holding one is never said "about people".
-_RULE_WORDS = frozenset({'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear',
+PLACE_RULE_WORDS = _RULE_WORDS = frozenset({'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear',
                          'only', 'until', 'till', 'unless', 'cannot', 'mustn', 'allowed'})
 # ... and, in a reason ("because you must not ..."), words of an order, a count or a step too.
 _STRONG = _RULE_WORDS | frozenset({'stay', 'keep', 'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit',
@@ -558,7 +563,7 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
             is_name_word(tokens, 0, False):
         return True   # "lots going on today", "guests arriving at noon"
     if len(tokens) > 2 and tokens[0] not in DETERMINERS and tokens[1] in ('is', 'are', 'was', 'were') and \
-            tokens[2] in STATES and tokens[0] not in STATEMENT_SUBJECTS | {'you', 'there', 'here'} and \
+            (tokens[2] in STATES or tokens[2] in DEGREE_WORDS and tokens[3:4] and tokens[3] in STATES) and tokens[0] not in STATEMENT_SUBJECTS | {'you', 'there', 'here'} and \
             is_name_word(tokens, 0, False):
         return True   # "floor is wet there", "gate was locked": the article left out, as people do
     if tokens[0] in ('our', 'my', 'his', 'her', 'their') and np_end == 0:

@@ -18,7 +18,7 @@ from __future__ import annotations
 import re
 from typing import Callable, NamedTuple, Union
 
-from ltl_instruct.core.language.phrases import singular
+from ltl_instruct.core.language.phrases import PLACEHOLDER_ADJECTIVES, singular
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS
 
 _NUM = r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+)'
@@ -187,7 +187,30 @@ def _repeat(m: 're.Match[str]') -> str:
     return f'visit {m.group("x")} {mode} {_times(1 + _number(m.group("n")))}'
 
 
+def _same_head(m: 're.Match[str]') -> str:
+    """Name "one" by the noun it stands for: "the second floor ice machine or the third floor one".
+
+    The new modifier replaces as many words at the front of the first name as it has.
+    """
+    first, other = m.group('x').split(), m.group('y').split()
+    k = 0
+    while k < len(first) - 1 and first[k] in PLACEHOLDER_ADJECTIVES:
+        k += 1   # "the big red box or the small one": a small box
+    head = first[k:] if k else first[len(other):] if len(first) > len(other) else first[-1:]
+    return f'the {m.group("x")} {m.group("j")} the {" ".join(other + head)}'
+
+
 RULES: tuple[Rule, ...] = (
+    # ---- "one" named by the noun it stands for
+    Rule('the upstairs autoclave or the basement one',
+         rf'\bthe (?P<x>{_W}(?: {_W}){{1,4}}) (?P<j>or|and) the (?P<y>{_W}(?: {_W}){{0,2}}) one\b', _same_head),
+    Rule('I need the laundry room and the closet both looked at',
+         rf'\b(?:i|we) (?:need|want) (?P<x>(?:the|my|our) {_NPS}) (?:both |all |each )?(?:looked at|checked|'
+         r'checked on|seen to|visited|inspected)\b', r'visit \g<x>'),
+    # ---- a job done at a place: going there
+    Rule('do the cycle count at aisle two',
+         r'\b(?:do|run|carry out|perform) (?:the|a|an|your) (?:[a-z]+ ){0,2}?(?:count|check|inspection|round|'
+         r'sweep|scan|stocktake|walkthrough|reading) (?:at|in|on|of|by) ', 'go to '),
     # ---- formal words for plain ones
     Rule('refrain from approaching the freezer',
          r'\b(?:kindly |please )?refrain from (?:ever )?(?P<v>[a-z]+ing)\b', lambda m: f'do not {_plain(m.group("v"))}'),

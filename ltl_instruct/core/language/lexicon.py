@@ -156,7 +156,8 @@ IGNORED_CLAUSES = frozenset({
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
     'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',
     'thank you', 'okay', 'in that order', 'in order', 'whichever is closer', 'it does not matter which',
-    'your choice', 'up to you', 'i do not mind which', 'start', 'start up', 'go ahead', 'stop', 'stop there',
+    'your choice', 'up to you', 'i do not mind which', 'does not matter which', 'does not matter',
+    'does not matter which one', 'do not care which', 'do not care which one', 'your call', 'start', 'start up', 'go ahead', 'stop', 'stop there',
     'and stop', 'then stop', 'stay there', 'stop moving', 'finish', 'be done', 'done', 'and be done',
     'first', 'second', 'third', 'fourth', 'fifth', 'secondly', 'thirdly', 'firstly', 'next', 'lastly',
     'finally', 'then', 'after that', 'afterwards', 'land', 'land there', 'and land', 'then land'})

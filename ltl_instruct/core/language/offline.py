@@ -258,6 +258,16 @@ _NO_CUT_BEFORE = chatter.PREPOSITIONS | frozenset({
     'but', 'where', 'whether', 'unless', 'since', 'as', 'than', 'what', 'which', 'who', 'know', 'think',
     'sure', 'whenever', 'wherever', 'though', 'although', 'then', 'not', 'say', 'see', 'mean'})
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
+def _rule_in(words: Sequence[str]) -> bool:
+    """Whether words hold a rule of where to go (a "not" before a state, "it's not locked", is none)."""
+    return any(w in chatter.PLACE_RULE_WORDS and not (
+        w == 'not' and words[k + 1:k + 2] and (words[k + 1] in chatter.STATES or words[k + 1] in ('sure', 'safe')))
+        for k, w in enumerate(words))
+
+
+# "I don't want you tumbling down them": a mishap feared, no rule of where to go.
+_MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling', 'breaking',
+                      'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'getting', 'toppling'})
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
                            'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills', 'go', 'goes',
@@ -504,6 +514,26 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., because the floor was just waxed"
         if len(tail) >= 3 and tail[1] in ('is', 'are') and tail[-1] in _BUSY:
             return self._noted_cut(sentence, cut)   # "..., dad's on a call", "..., she is in a meeting"
+        if len(tail) >= 3 and tail[0] not in DETS and (tail[0] in chatter.FAMILY_NAMES or tail[0] in
+                                                       chatter.PERSON_NOUNS) and \
+                tail[1] not in chatter.REQUEST_WORDS | {'needs', 'wants'} and not _rule_in(tail):
+            return self._noted_cut(sentence, cut)   # "..., dad always worries", "..., guest called about it"
+        if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
+            return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
+        if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in ('it', 'them', 'today', 'now') and \
+                not _rule_in(tail):
+            return self._noted_cut(sentence, cut)   # "..., there's traffic on it today"
+        if len(tail) >= 3 and tail[0] in ('he', 'she', 'they') and tail[1] in ('gets', 'get', 'worries', 'worry',
+                                                                              'hates', 'hate', 'panics') and \
+                not _rule_in(tail):
+            return self._noted_cut(sentence, cut)   # "..., she gets anxious if she hears you"
+        if len(tail) >= 3 and tail[0] not in DETS and tail[1] in ('is', 'are') and (
+                tail[2] in chatter.STATES or tail[2] in ('off', 'away', 'out', 'dead', 'low', 'flat')) and \
+                'limits' not in tail and 'bounds' not in tail and is_name_word(tail, 0, False):
+            return self._noted_cut(sentence, cut)   # "..., lifeguard's off today"
+        if len(tail) >= 4 and tail[0] in DETS and tail[2:4] == ['will', 'be'] and \
+                not chatter.has_constraint_word(tail) and tail[4:5] in (['here'], ['back'], ['home'], ['in']):
+            return self._noted_cut(sentence, cut)   # "..., the carer will be here any minute"
         if len(tail) < 2 or 'you' in tail or tail[1] in ('not', 'never'):
             return sentence
         if any(t in chatter.REQUEST_WORDS - ({'need'} if tail[0] == 'the' else set()) for t in tail[1:3]):
@@ -613,6 +643,8 @@ class _Reader:
             k = i
             while i < n and sentence[i] in (',', 'and', 'or', 'then', 'please', ':'):
                 i += 1
+            if seen and sentence[i:n] in (['now'], ['right', 'now'], ['asap'], ['quick']):
+                break   # "charging station, now"
             if i >= n:
                 break
             if seen and i == k:

@@ -21,6 +21,7 @@ words did not name.
 from __future__ import annotations
 
 import re
+from typing import Any
 
 from ltl_instruct.core.language.phrases import PhraseParser, singular
 
@@ -28,7 +29,23 @@ _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |
          r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
          r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)')
 
-_REWRITES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p, r in (
+def _the(name: str) -> str:
+    return name if name[0].isdigit() else 'the ' + name
+
+
+# a name of a few words, none of them a connective
+_NAME = r'(?:(?!(?:and|or|then|followed|the)\b)[a-z0-9_]+)(?: (?!(?:and|or|then|followed)\b)[a-z0-9_]+){0,4}'
+
+_REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
+    # the order left to the robot, said as a remark (before list positions: "which one first" is none)
+    (r' (?:it )?(?:does not|do not|will not) (?:matter|care)(?: to me)? which(?: one| of them| order)?'
+     r'(?: (?:comes|goes|you do|you visit|is done|gets done|you hit))? first ', ' in any order '),
+    (r' (?:in )?(?:whichever|whatever|either) order(?: (?:suits you|you like|you want|you prefer|is easier|'
+     r'works(?: for you| best)?|you choose|is fine))? ', ' in any order '),
+    # "laundry room and then 204, or 204 and then the laundry room": both, in any order
+    (rf' (?:the )?(?P<a>{_NAME}) (?:and )?(?:then|followed by) (?:the )?(?P<b>{_NAME}) , or (?:the )?(?P=b) '
+     r'(?:and )?(?:then|followed by) (?:the )?(?P=a) ',
+     lambda m: f' {_the(m.group("a"))} and {_the(m.group("b"))} in any order '),
     # "land at the pad when you are done": the last step is last anyway
     (rf' (?:, )?{_DONE}(?: (?:with )?(?:everything|all (?:that|of that|of it)|the rest))?'
      r' (?=[.;!?] |$)', ' '),
@@ -284,7 +301,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' typically', ' forget', ' remember', ' be sure', ' try ', ' will need',
                                    ' will want', ' should', ' need to', ' have to', ' must', ' free',
                                    ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
-                                   ' supposed', ' sooner', ' earlier', ' or ', ' times', ' back ')):
+                                   ' supposed', ' sooner', ' earlier', ' or ', ' times', ' back ', ' matter',
+                                   ' care ', ' order')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:

@@ -73,6 +73,8 @@ refrigerator elevator escalator photocopier projector whiteboard noticeboard
 carton cartons pallet pallets racking conveyor loading dumbwaiter intercom doorbell
 mailbox letterbox trashcan recycling greenhouse shed birdfeeder hedge flowerbed lawnmower
 hosepipe rooftop helideck antenna gutters solar atrium lobby
+wrapper compactor glassware sterilizer steriliser pipette pipettes beaker beakers dewar baler mezzanine
+forklift forklifts workstation
 '''.split())
 
 
@@ -146,8 +148,11 @@ class Speller:
             stem = word[:-len(suf)]
             if not word.endswith(suf) or len(stem) < 3:
                 continue
-            if suf in _DOUBLING and stem[-1] not in _VOWELS and stem + stem[-1] + suf in w:
+            if suf in _DOUBLING and stem[-1] not in _VOWELS and (stem + stem[-1] + suf in w or
+                                                                 stem + stem[-1] + suf in self.lexicon):
                 return False   # "controler" is "controller" with the doubled letter dropped
+            if suf == 'd' and not stem.endswith('e'):
+                continue   # "mentiond" is no "mention" + d (that is "baked": bake + d)
             if stem in w or stem + 'e' in w or (suf[0] == 'i' and stem + 'y' in w) or (
                     suf in _DOUBLING and len(stem) > 3 and stem[-1] == stem[-2] and stem[:-1] in w):
                 return True
@@ -183,6 +188,22 @@ class Speller:
         if word in self._cache:
             return self._cache[word]
         out: Optional[str] = None
+        if len(word) >= 6 and word.isascii() and word.isalpha() and word not in self.words and \
+                word not in self.lexicon and word.endswith(('er', 'or', 'ers', 'ors')):
+            # "-er" for "-or" and back ("moniter", "conveyer", "compacter", "computor"): the listed one
+            s = 's' if word.endswith('s') else ''
+            base = word[:-2 - len(s)]
+            other = base + ('or' if word[-2 - len(s)] == 'e' else 'er') + s
+            if other in self.words or other in self.lexicon:
+                self._cache[word] = other
+                return other
+        if len(word) == 4 and word.isascii() and word.isalpha() and not self.known(word):
+            # a four-letter word one dropped letter from one common word ("empy": empty)
+            common = sorted(c for c, kind in _slips(word) if kind == 'missing' and
+                            self.words.get(c, _COMMON) < 5000 and not _inflection(word, c))
+            if len(common) == 1:
+                self._cache[word] = common[0]
+                return common[0]
         if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word) and self.core:
             core = sorted(c for c, kind in _slips(word)
                           if c in self.core and kind in ('swap', 'double', 'missing', 'sound'))

@@ -45,7 +45,7 @@ TYPOS: dict[str, str] = {
     'sry': 'sorry', 'srry': 'sorry', 'nah': 'no', 'kyes': 'keys', 'whil': 'while',
     'exacty': 'exactly', 'rak': 'rack', 'dor': 'door', 'nex': 'next', 'exactley': 'exactly',
     'exacly': 'exactly',
-    'wich': 'which', 'whcih': 'which', 'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
+    'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
@@ -211,6 +211,8 @@ def tokenize(text: str) -> list[str]:
                lambda m: f'{m.group(1)} {_NUMBER_NAME[int(m.group(2))]}', s)   # "the last 2"
     if ' form ' in s:
         s = _FORM_RE.sub(r'\1 from', s)
+    if 'forth ' in s:   # "the forth floor": the fourth
+        s = re.sub(r'\bforth (?=floor|time|stop|room|door|one|place|aisle|bay|shelf|level|row)', 'fourth ', s)
     out: list[str] = []
     for tok in _TOKEN_RE.findall(s):
         if acronyms and tok.startswith('zq'):

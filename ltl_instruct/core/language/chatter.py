@@ -153,6 +153,9 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
     ('this', 'shift'), ('this', 'week'), ('for', 'the', 'afternoon'), ('for', 'the', 'morning'),
     ('for', 'the', 'evening'), ('for', 'the', 'day'), ('full', 'stop'), ('on', 'the', 'double'),
+    ('until', 'i', 'get', 'there'), ('until', 'i', 'arrive'), ('until', 'i', 'come'), ('until', 'i', 'am', 'back'),
+    ('till', 'i', 'get', 'there'), ('until', 'we', 'get', 'there'), ('for', 'the', 'next', 'job'),
+    ('and', 'hold', 'position'), ('and', 'hold', 'there'), ('and', 'wait', 'for', 'the', 'next', 'job'),
     ('with', 'the', 'drone'), ('with', 'the', 'robot'), ('using', 'the', 'drone'), ('whatever', 'you', 'do'),
 ) + _DURATIONS + _SPANS + _PURPOSES,
     key=lambda t: -len(t)))

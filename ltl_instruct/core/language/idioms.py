@@ -194,7 +194,7 @@ def _same_head(m: 're.Match[str]') -> str:
     """
     first, other = m.group('x').split(), m.group('y').split()
     k = 0
-    while k < len(first) - 1 and first[k] in PLACEHOLDER_ADJECTIVES:
+    while k < len(first) - 1 and first[k] in PLACEHOLDER_ADJECTIVES and first[k] not in ORDINALS:
         k += 1   # "the big red box or the small one": a small box
     head = first[k:] if k else first[len(other):] if len(first) > len(other) else first[-1:]
     return f'the {m.group("x")} {m.group("j")} the {" ".join(other + head)}'
@@ -207,6 +207,36 @@ RULES: tuple[Rule, ...] = (
     Rule('I need the laundry room and the closet both looked at',
          rf'\b(?:i|we) (?:need|want) (?P<x>(?:the|my|our) {_NPS}) (?:both |all |each )?(?:looked at|checked|'
          r'checked on|seen to|visited|inspected)\b', r'visit \g<x>'),
+    # ---- a place that needs the robot, a visit said another way
+    Rule('room 204 needs you', rf'^(?P<x>(?:the )?{_NP}) (?:needs|need|wants|could use) (?:you|a body|the robot|'
+         r'a hand|some help)(?: over there| there| here)?(?: and you are it)?\b(?! (?:at|in|by|on|near|over|down|up|'
+         r'out|inside|outside)\b)', r'go to \g<x>'),
+    Rule('check with the security office', r'\b(?:check|checking|checked) (?:in )?with (?=the |my |our )', 'visit '),
+    Rule('not before signing in at the desk', r'\bsign(?P<g>ing|ed)? (?:in|out) (?:at|with) (?=the |my |our )',
+         lambda m: {'ing': 'visiting ', 'ed': 'visited '}.get(m.group('g') or '', 'visit ')),
+    Rule('after you have had a look over the roof',
+         r'\b(?:had|taken|made) (?:a|an) (?:look|peek|glance|pass) (?:over|at|around|in|of) ', 'visited '),
+    Rule('keep her company by the bird bath',
+         r'\bkeep (?:her|him|them|me|us|mum|mom|dad|grandma|grandpa|the [a-z]+) company (?=by|at|in|near|on)', 'go '),
+    Rule('wait for her at the chair', r'\b(?P<v>wait|waiting) for (?:her|him|them|us) (?=at|by|in|near|on)',
+         r'\g<v> '),
+    Rule('check the front door one more time', r'\b(?<!exactly )(?<!least )(?<!most )(?:one more time|once more)\b', 'again'),
+    Rule('then do that exact same trip again',
+         r'\bdo (?:that|the|this) (?:exact |very )?same (?:trip|walk|route|loop|run|flight|circuit|round|thing|'
+         r'journey|leg)(?: over)?(?: again)?\b', 'do it again'),
+    Rule('take the plates through to the dishwasher', r'\b(?:through|round|across) to\b', 'to'),
+    Rule('watch out for the bucket, avoid it', r'\b(?:watch out for|look out for|mind out for)\b', 'avoid'),
+    Rule('after you have got rid of it', r'\b(?:have|you) (?:got|gotten) rid of\b', 'have dropped off'),
+    Rule('once the laundry room and the linen cart are both done',
+         rf'\b(?P<w>once|after) (?P<x>(?:the|my|our) {_NPS} and (?:the|my|our) {_NPS}) (?:are|have been) '
+         r'(?:both |all )?(?:done|visited|checked|finished|complete|completed|sorted|covered)\b',
+         r'\g<w> you have visited \g<x>'),
+    Rule('go there once you have visited a and b, not earlier',
+         r'\b(?<!only )(?P<w>once|after) (?P<x>[^,.;!?]{3,80}?) , not (?:earlier|before|sooner|until then)\b',
+         r'only \g<w> \g<x>'),
+    Rule('while the roast is in, check the oven',
+         r'^while (?:the|my|your|our) (?:[a-z]+ ){1,3}?(?:is|are) (?:in|on|cooking|baking|running|drying|charging|'
+         r'asleep|sleeping|out|in the oven) , ', ''),
     # ---- a job done at a place: going there
     Rule('do the cycle count at aisle two',
          r'\b(?:do|run|carry out|perform) (?:the|a|an|your) (?:[a-z]+ ){0,2}?(?:count|check|inspection|round|'
@@ -969,6 +999,10 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<c>once|when|after) (?:it is|they are) '
          r'(?:in your (?:hands|hand|grip|gripper|possession|arms)|'
          r'on board|aboard|picked up)\b', r'\g<c> you have picked it up'),
+    Rule('while it is hanging off you: while carrying it',
+         r'\bwhile (?P<o>it is|they are) (?:in your (?:hands|hand|grip|gripper|possession|arms|claws)|on board|'
+         r'aboard|hanging (?:off|from|under) you|attached|strapped on|with you)\b',
+         lambda m: 'while you carry ' + ('it' if m.group('o') == 'it is' else 'them')),
     Rule('for the rest of the task: from then on',
          r'(?: ,)? (?:for the rest of the (?:task|trip|run|mission|job|day|way)|'
          r'for the remainder(?: of the task)?)'

@@ -86,7 +86,9 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('in', 'both', 'cases'), ('in', 'either', 'case'), ('whichever', 'you', 'choose'),
     ('whichever', 'you', 'pick'),
     ('whichever', 'one', 'you', 'choose'), ('whichever', 'one', 'you', 'pick'), ('either', 'way', 'round'),
-    ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whichever', 'it', 'is'), ('at', 'all'),
+    ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whenever', 'you', 'are', 'moving', 'about'),
+    ('whenever', 'you', 'are', 'moving', 'around'), ('while', 'you', 'are', 'moving', 'about'),
+    ('while', 'you', 'are', 'moving', 'around'), ('whenever', 'you', 'move', 'about'), ('whichever', 'it', 'is'), ('at', 'all'),
 ) + _WHICHEVER + tuple(
     lead + ('the', whole, what) for lead in ((), ('during',), ('throughout',), ('for',))
     for whole in ('whole', 'entire')

@@ -237,6 +237,54 @@ RULES: tuple[Rule, ...] = (
     Rule('while the roast is in, check the oven',
          r'^while (?:the|my|your|our) (?:[a-z]+ ){1,3}?(?:is|are) (?:in|on|cooking|baking|running|drying|charging|'
          r'asleep|sleeping|out|in the oven) , ', ''),
+    Rule('from the moment you get there', r'\bfrom the moment (?:you|it) (?=get|reach|arrive|are|have)', 'once you '),
+    Rule('the sink becomes off limits', r'\b(?:becomes|will be|goes) (?=off limits|out of bounds|forbidden|a no go)',
+         'is '),
+    Rule('after they are in, keep away',
+         r'\b(?P<c>once|after|when) (?P<o>it is|they are|it has been|they have been) (?:in|inside|in there|down|in place|'
+         r'dropped off|delivered|put away)(?= ,)',
+         lambda m: f'{m.group("c")} you have dropped off {"it" if m.group("o").startswith("it") else "them"}'),
+    Rule('until you are at the mail slot the copier is off limits',
+         rf'^(?P<u>until|till) (?P<e>you (?:are|have been|reach|get to|have reached|have visited|arrive at|get)'
+         rf'(?: at| in| to)? (?:the|my|our) {_W}(?: {_W}){{0,3}}?) (?:, )?(?P<x>the {_W}(?: {_W}){{0,3}}) (?:is|are) '
+         r'(?:off limits|out of bounds|forbidden|a no go)\b', r'avoid \g<x> \g<u> \g<e>'),
+    Rule('avoid the trash can as you go', r'(?<!soon )\bas you (?:go|head there|make your way|travel)\b(?! (?:to|into|towards|there|back|by|past|near|'
+         r'over|through|in|up|down|around)\b)', 'on the way'),
+    Rule('leftovers go in the fridge',
+         rf'^(?P<x>(?:the |some |my |your |our )?(?!(?:take|bring|put|please|first|without|just|now|so|also|let|'
+         rf'make|get|fly|drive|head|walk)\b){_W}(?: {_W}){{0,3}}) (?:go|goes|belong|belongs|need to go|needs to go) '
+         rf'(?P<p>in|into|on|back in|back on|back to|back into) (?P<y>(?:the|my|our) {_NP})$',
+         lambda m: f'put {m.group("x") if m.group("x").split()[0] in ("the", "my", "your", "our", "some") else "the " + m.group("x")}'
+                   f' {m.group("p")} {m.group("y")}'),
+    Rule('kettle or microwave, only one of the two, never both',
+         r' , only one of (?:the two|them|those|the pair)(?= , (?:not|never) both\b)', ''),
+    Rule('the kettle or the microwave, not both',
+         rf'^(?P<x>(?:the |a |an )?{_W}(?: {_W}){{0,3}} or (?:the |a |an )?{_W}(?: {_W}){{0,3}}) , (?:but )?(?:not|never) '
+         r'both$', r'go to \g<x> , but never both'),
+    Rule('go wait in one of them', r'\bgo (?:and )?(?:wait|stand|park|sit) (?:in|at|by) (?=one of (?:them|those|the two))',
+         'go to '),
+    Rule('making only one trip to the sink',
+         rf'\b(?:making|make|with) (?:only |just )?(?:one|a single) (?:trip|visit|run|stop) (?:to|into|at) '
+         rf'(?P<x>the {_NP})', r'visit \g<x> at most once'),
+    Rule('the meeting room needs the stapler and the tape, bring them both in',
+         rf'^(?P<x>the {_NP}) (?:needs|need|wants) (?P<y>(?:the|a|an|some) {_NPS}) , (?:please )?(?:bring|take|carry) '
+         r'(?:them|it)(?: both| all| over)? (?:in|there|over|along)\b', r'bring \g<y> to \g<x>'),
+    Rule('the first two belong in the drawer, put them away',
+         rf'(?P<x>the {_NPS}) (?:belong|belongs|go|goes) (?P<p>in|on|into|back in|back on|back into) '
+         rf'(?P<y>the {_NP}) , (?:please )?(?:put|take) (?:them|it|the [^,.;!?]+?) (?:away|there|back)\b',
+         r'put \g<x> \g<p> \g<y>'),
+    Rule('some boxes got stacked behind the desk, go to them',
+         rf'^(?:some |the |a |an |my )?(?P<x>{_W}(?: {_W}){{0,3}}?) (?:that )?(?:i need |i want |i mean )?(?:is|are|was|'
+         r'were|got|have been|has been)(?: (?:stacked|left|put|placed|sitting|lying|dumped|piled|parked|kept))? '
+         r'(?P<y>(?:behind|under|on|next to|beside|by|in front of|between|on top of|underneath|beneath|left of|'
+         r'right of|to the left of|to the right of|inside|near) [^,]+?) , (?:go|head|get|move|navigate) (?:over )?to '
+         r'(?:it|them|that|those)\b', r'go to the \g<x> \g<y>'),
+    Rule('still avoiding the printer on the way', r' , (?:still |while |all the while |but )?(?:avoiding|skirting) ',
+         ' , and avoid '),
+    Rule('skirting the trash can as you go', r'\bskirting\b', 'avoiding'),
+    Rule('keep the front desk out of your flight path',
+         rf'\bkeep (?P<x>the {_NP}) out of (?:your|the) (?:flight )?(?:path|way|route)\b', r'avoid \g<x>'),
+    Rule('fly through the break room and out to the lot', r'\band (?:out|over|down|up|across) to\b', 'and then to'),
     # ---- a job done at a place: going there
     Rule('do the cycle count at aisle two',
          r'\b(?:do|run|carry out|perform) (?:the|a|an|your) (?:[a-z]+ ){0,2}?(?:count|check|inspection|round|'
@@ -990,6 +1038,10 @@ RULES: tuple[Rule, ...] = (
          r'\bwithout (?P<e>ever )?(?:getting|going|coming|moving) (?:too )?(?:close to|near|next to)\b',
          lambda m: f'without {m.group("e") or ""}going near'),
     Rule('en route to the bathroom: on the way', r'\ben route (?=to\b)', 'on the way '),
+    Rule('once you get there the shredder is off limits',
+         rf'^(?P<w>(?:once|after|when) you (?:get|are|have got|have gotten|arrive|reach|have reached|have arrived)'
+         rf'(?: there| here| in| at| to)?) (?:, )?(?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '
+         rf'(?:off limits|out of bounds|forbidden|not allowed|a no go)\b', r'\g<w> , avoid \g<x>'),
     Rule('from then on, the desk lamp is off limits: avoid it from then on',
          rf'^(?P<w>from then on|from that point on|from that point onwards|from then onwards|after that|'
          rf'afterwards|thereafter) , (?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '

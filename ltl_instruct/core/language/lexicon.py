@@ -156,7 +156,7 @@ IGNORED_CLAUSES = frozenset({
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
     'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',
     'thank you', 'okay', 'in that order', 'in order', 'whichever is closer', 'it does not matter which',
-    'off you go', 'away you go', 'go on', 'chop chop', 'your choice', 'up to you', 'i do not mind which', 'does not matter which', 'does not matter',
+    'either one works', 'either works', 'any works', 'either is fine', 'either one is fine', 'off you go', 'away you go', 'go on', 'chop chop', 'your choice', 'up to you', 'i do not mind which', 'does not matter which', 'does not matter',
     'does not matter which one', 'do not care which', 'do not care which one', 'your call', 'start', 'start up', 'go ahead', 'stop', 'stop there',
     'and stop', 'then stop', 'stay there', 'stop moving', 'finish', 'be done', 'done', 'and be done',
     'first', 'second', 'third', 'fourth', 'fifth', 'secondly', 'thirdly', 'firstly', 'next', 'lastly',

@@ -645,7 +645,8 @@ class _Reader:
             k = i
             while i < n and sentence[i] in (',', 'and', 'or', 'then', 'please', ':'):
                 i += 1
-            if seen and sentence[i:n] in (['now'], ['right', 'now'], ['asap'], ['quick']):
+            if seen and sentence[i:n] and all(w in ('now', 'right', 'asap', 'quick', 'please', 'thanks', ',')
+                                              for w in sentence[i:n]):
                 break   # "charging station, now"
             if i >= n:
                 break

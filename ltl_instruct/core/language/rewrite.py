@@ -32,7 +32,8 @@ _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
-                       'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which'})   # "the vase, the candle and the frame I showed you?"
+                       'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
+                       'yesterday'})   # "the vase, the candle and the frame I showed you?"
 # Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
 _POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
                              'destination', 'choice', 'point', 'bit'})
@@ -167,7 +168,7 @@ def _drop_mentions(tail: list[str]) -> list[str]:
 _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     # "visit number two and then number three": the second one, the third one
     (r'\b(?P<v>visit|to|check|then|and|survey|inspect|grab|take|bring|avoid|get|fetch|pick|put|move) '
-     r'number (?P<n>one|two|three|four|five|six)\b', lambda m: m.group('v') + ' the ' + {
+     r'(?:number|item|stop|no) (?P<n>one|two|three|four|five|six)\b', lambda m: m.group('v') + ' the ' + {
          'one': 'first', 'two': 'second', 'three': 'third', 'four': 'fourth', 'five': 'fifth',
          'six': 'sixth'}[m.group('n')] + ' one'),
     # "whichever I mentioned last", "the one I said first"
@@ -205,7 +206,7 @@ left right front that which there here it them up down away
 
 def _say_positions(tokens: list[str]) -> list[str]:
     """Say list positions the way the resolver reads them ("number two" is "the second one")."""
-    if not {'number', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer', 'outside', 'end', 'is',
+    if not {'number', 'item', 'stop', 'no', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer', 'outside', 'end', 'is',
             'sits', 'stands', 'looking', 'seeing', 'facing', 'front', 'and', 'reverse', 'opposite', 'backwards',
             'between', 'last'} & set(tokens):
         return tokens

@@ -45,7 +45,7 @@ TYPOS: dict[str, str] = {
     'sry': 'sorry', 'srry': 'sorry', 'nah': 'no', 'kyes': 'keys', 'whil': 'while',
     'exacty': 'exactly', 'rak': 'rack', 'dor': 'door', 'nex': 'next', 'exactley': 'exactly',
     'exacly': 'exactly',
-    'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
+    'sory': 'sorry', 'jsut': 'just', 'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
@@ -55,7 +55,8 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'),
-    (r"\b(that|there|it|what|where|here|who|he|she|how|why|when|everything|everyone|nothing)'s\b", r'\1 is'),
+    (r"\b(that|there|it|what|where|here|who|he|she|how|why|when|everything|everyone|nothing|wherever|whichever|"
+     r"whatever)'s\b", r'\1 is'),
     (r"\b(either|whichever|which|each|this|that|any|neither|first|second|third|last|other|middle|red|blue|"
      r"green|left|right|big|small) one's\b", r'\1 one is'),   # "either one's fine", "the first one's"
     (r"'s(?= (?:next|first|last|after|before|then)\b)", ' is'),   # "the drum kit's next"

@@ -153,7 +153,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
     ('this', 'shift'), ('this', 'week'), ('for', 'the', 'afternoon'), ('for', 'the', 'morning'),
     ('for', 'the', 'evening'), ('for', 'the', 'day'), ('full', 'stop'), ('on', 'the', 'double'),
-    ('until', 'i', 'am', 'back', 'from', 'my', 'call'), ('and', 'wait', 'for', 'me', 'there'),
+    ('when', 'you', 'have', 'got', 'a', 'sec'), ('when', 'you', 'have', 'got', 'a', 'second'),
+    ('when', 'you', 'have', 'got', 'a', 'minute'), ('when', 'you', 'have', 'got', 'a', 'moment'), ('until', 'i', 'am', 'back', 'from', 'my', 'call'), ('and', 'wait', 'for', 'me', 'there'),
     ('wait', 'for', 'me', 'there'), ('to', 'land'), ('and', 'land'), ('until', 'i', 'get', 'there'), ('until', 'i', 'arrive'), ('until', 'i', 'come'), ('until', 'i', 'am', 'back'),
     ('till', 'i', 'get', 'there'), ('until', 'we', 'get', 'there'), ('for', 'the', 'next', 'job'),
     ('and', 'hold', 'position'), ('and', 'hold', 'there'), ('and', 'wait', 'for', 'the', 'next', 'job'),
@@ -726,6 +727,8 @@ _REMARK_RE = re.compile(
     r'(?: (?:for you|to you|to get to))?'
     r'|(?:either|any|either one|any one) works(?: (?:for me|fine))?(?: honestly)?'
     r'|(?:i )?do not care which (?:1|one)'
+    r'|i (?:only |just )?need (?:one|one of them|either|either of them|one of the two) (?:looked at|checked|done|'
+    r'visited|seen)'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
     r'|(?:(?:that|this|it) )?is (?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)'
     r'(?: (?:for )?(?:today|now|'

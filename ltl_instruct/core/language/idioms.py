@@ -261,6 +261,24 @@ RULES: tuple[Rule, ...] = (
     Rule('the kettle or the microwave, not both',
          rf'^(?P<x>(?:the |a |an )?{_W}(?: {_W}){{0,3}} or (?:the |a |an )?{_W}(?: {_W}){{0,3}}) , (?:but )?(?:not|never) '
          r'both$', r'go to \g<x> , but never both'),
+    Rule('wait by the lifts for the porter',
+         r'\b(?P<v>wait|stand|stay|hang around) (?P<r>(?:by|at|near|outside|in) (?:the|my|our) [^,.;!?]+?) for (?:the|my|our|a) '
+         r'(?:porter|nurse|doctor|driver|delivery|courier|guest|visitor|patient|cleaner|technician|postman|'
+         r'engineer|plumber|electrician)\b', r'\g<v> \g<r>'),
+    Rule('a watering can behind the greenhouse somewhere',
+         rf'\b(?P<p>(?:behind|under|beside|next to|near|by|in front of|underneath) (?:the|my|our) {_W}(?: {_W}){{0,3}}?) '
+         r'somewhere\b', r'\g<p>'),
+    Rule('park up at your charging dock', r'\bpark up\b', 'park'),
+    Rule('go via the main lifts down to pharmacy',
+         rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over |across |on )?'
+         r'to\b', r'\g<v> to \g<x> , then to'),
+    Rule('take the stairs or the lift',
+         r'\btake (?P<e>either )?(?=the (?:[a-z]+ )?(?:lift|lifts|stairs|elevator|elevators|escalator|stairwell|ramp|'
+         r'footbridge|bridge|path|corridor|route|road|exit|back stairs|fire escape)\b)', r'go to \g<e>'),
+    Rule('should you need to enter the garage at any point, go by the door beforehand',
+         rf'^should you (?:need|want|have|wish) to (?P<v>enter|visit|go to|go into|use) (?P<x>(?:the|my|our) {_NP})'
+         r'(?: at any point| at all| at any time)? , (?P<r>[^,;!?]+?) (?:beforehand|first|before that|before you do)$',
+         r'if you \g<v> \g<x> at all , \g<r> first'),
     Rule('go wait in one of them', r'\bgo (?:and )?(?:wait|stand|park|sit) (?:in|at|by) (?=one of (?:them|those|the two))',
          'go to '),
     Rule('making only one trip to the sink',
@@ -274,11 +292,12 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<y>the {_NP}) , (?:please )?(?:put|take) (?:them|it|the [^,.;!?]+?) (?:away|there|back)\b',
          r'put \g<x> \g<p> \g<y>'),
     Rule('some boxes got stacked behind the desk, go to them',
-         rf'^(?:some |the |a |an |my )?(?P<x>{_W}(?: {_W}){{0,3}}?) (?:that )?(?:i need |i want |i mean )?(?:is|are|was|'
+         rf'^(?:some |the |a |an |my |her |his |their |our |your )?(?P<x>{_W}(?: {_W}){{0,3}}?) (?:that )?'
+         r'(?:i need |i want |i mean )?(?:is|are|was|'
          r'were|got|have been|has been)(?: (?:stacked|left|put|placed|sitting|lying|dumped|piled|parked|kept))? '
          r'(?P<y>(?:behind|under|on|next to|beside|by|in front of|between|on top of|underneath|beneath|left of|'
-         r'right of|to the left of|to the right of|inside|near) [^,]+?) , (?:go|head|get|move|navigate) (?:over )?to '
-         r'(?:it|them|that|those)\b', r'go to the \g<x> \g<y>'),
+         r'right of|to the left of|to the right of|inside|near) [^,]+?) , (?:(?:go|head|get|move|navigate) (?:over )?to|'
+         r'(?:go |go and )?find) (?:it|them|that|those)\b', r'go to the \g<x> \g<y>'),
     Rule('still avoiding the printer on the way', r' , (?:still |while |all the while |but )?(?:avoiding|skirting) ',
          ' , and avoid '),
     Rule('skirting the trash can as you go', r'\bskirting\b', 'avoiding'),

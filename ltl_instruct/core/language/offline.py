@@ -87,7 +87,8 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('whichever', 'you', 'pick'),
     ('whichever', 'one', 'you', 'choose'), ('whichever', 'one', 'you', 'pick'), ('either', 'way', 'round'),
     ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whenever', 'you', 'are', 'moving', 'about'),
-    ('whenever', 'you', 'are', 'moving', 'around'), ('while', 'you', 'are', 'moving', 'about'),
+    ('whenever', 'you', 'are', 'moving', 'around'), ('on', 'the', 'way', 'or', 'at', 'any', 'other', 'time'),
+    ('completely',), ('entirely',), ('altogether',), ('while', 'you', 'are', 'moving', 'about'),
     ('while', 'you', 'are', 'moving', 'around'), ('whenever', 'you', 'move', 'about'), ('whichever', 'it', 'is'), ('at', 'all'),
 ) + _WHICHEVER + tuple(
     lead + ('the', whole, what) for lead in ((), ('during',), ('throughout',), ('for',))
@@ -520,6 +521,8 @@ class _Reader:
                                                        chatter.PERSON_NOUNS) and \
                 tail[1] not in chatter.REQUEST_WORDS | {'needs', 'wants'} and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., dad always worries", "..., guest called about it"
+        if tail[:2] in (['or', 'you'], ['or', 'else']) and len(tail) > 3 and not _rule_in(tail[2:]):
+            return self._noted_cut(sentence, cut)   # "..., or you'll scare the finches off"
         if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
             return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
         if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in ('it', 'them', 'today', 'now') and \

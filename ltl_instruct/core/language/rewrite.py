@@ -60,7 +60,8 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
     starts += [i + 2 + (tokens[i + 1:i + 2] in (['have'], ['had'], ['just'], ['also']))
                for i, t in enumerate(tokens) if t in ('i', 'we', 'they') and (
         i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in _LEAD_ADVERBS and (
-            i == 1 or tokens[i - 2] in PUNCT))]   # "earlier I mentioned a, b and c", "I have left a, b, c"
+            i == 1 or tokens[i - 2] in PUNCT) or tokens[i + 1:i + 2] in (
+            ['keep'], ['have'], ['left'], ['stored'], ['parked'], ['own'], ['got']))]   # "in the garage I keep"   # "earlier I mentioned a, b and c", "I have left a, b, c"
     starts.sort()
     for s in starts:
         if s >= len(tokens):
@@ -174,7 +175,7 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     # "whichever I mentioned last", "the one I said first"
     (r'\b(?:whichever|whatever|the one|the thing|the item)(?: one)? (?:i|you) '
      r'(?:mentioned|said|named|listed) '
-     r'(?P<w>last|first)\b', r'the \g<w> one'),
+     r'(?P<w>last|first|second|third|fourth|fifth)\b', r'the \g<w> one'),
     # "whatever comes after the notice board"
     (r'\b(?:whatever|whichever|what|the one that|the one which) (?:comes|is|sits|stands) '
      r'(?P<w>right after|after|right before|before|next to) '
@@ -756,7 +757,7 @@ def _uncleft(tokens: list[str]) -> list[str]:
 
     "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
     """
-    if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch', 'thing', 'part', 'bit'} |
+    if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch', 'thing', 'part', 'bit', 'about'} |
             _SWAP_WORDS) & set(tokens):
         return tokens
     text = ' '.join(tokens)
@@ -766,6 +767,9 @@ def _uncleft(tokens: list[str]) -> list[str]:
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
     new = _DROP_RULE.sub('forget ', new)   # "drop that condition": cancel it
     new = _THING_PART.sub(lambda m: f'{m.group("v")} {m.group("x")}', new)
+    # "forget what I said about the roses": forget the roses
+    new = re.sub(r'\b(forget|ignore|scratch|disregard) (?:what i said|what i told you|everything i said|the bit|'
+                 r'the part|the stuff) about\b', r'\1', new)
     return new.split() if new != text else tokens
 
 

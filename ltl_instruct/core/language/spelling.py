@@ -74,7 +74,7 @@ carton cartons pallet pallets racking conveyor loading dumbwaiter intercom doorb
 mailbox letterbox trashcan recycling greenhouse shed birdfeeder hedge flowerbed lawnmower
 hosepipe rooftop helideck antenna gutters solar atrium lobby
 wrapper compactor glassware sterilizer steriliser pipette pipettes beaker beakers dewar baler mezzanine
-forklift forklifts workstation
+forklift forklifts workstation kennel trampoline
 '''.split())
 
 
@@ -153,7 +153,8 @@ class Speller:
                 return False   # "controler" is "controller" with the doubled letter dropped
             if suf == 'd' and not stem.endswith('e'):
                 continue   # "mentiond" is no "mention" + d (that is "baked": bake + d)
-            if stem in w or stem + 'e' in w or (suf[0] == 'i' and stem + 'y' in w) or (
+            # (an e dropped only before a vowel: "baking", not "completly")
+            if stem in w or (stem + 'e' in w and suf[0] in _VOWELS) or (suf[0] == 'i' and stem + 'y' in w) or (
                     suf in _DOUBLING and len(stem) > 3 and stem[-1] == stem[-2] and stem[:-1] in w):
                 return True
         if any(word + suf in w for suf in ('s', 'es', 'd', 'ed', 'ing', 'r', 'er')) or (
@@ -199,7 +200,7 @@ class Speller:
                 return other
         if len(word) == 4 and word.isascii() and word.isalpha() and not self.known(word):
             # a four-letter word one dropped letter from one common word ("empy": empty)
-            common = sorted(c for c, kind in _slips(word) if kind == 'missing' and
+            common = sorted(c for c, kind in _slips(word) if kind in ('missing', 'swap') and
                             self.words.get(c, _COMMON) < 5000 and not _inflection(word, c))
             if len(common) == 1:
                 self._cache[word] = common[0]

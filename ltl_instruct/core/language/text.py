@@ -45,7 +45,7 @@ TYPOS: dict[str, str] = {
     'sry': 'sorry', 'srry': 'sorry', 'nah': 'no', 'kyes': 'keys', 'whil': 'while',
     'exacty': 'exactly', 'rak': 'rack', 'dor': 'door', 'nex': 'next', 'exactley': 'exactly',
     'exacly': 'exactly',
-    'sory': 'sorry', 'jsut': 'just', 'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
+    'itme': 'item', 'itmes': 'items', 'rom': 'room', 'stn': 'station', 'wya': 'way', 'sory': 'sorry', 'jsut': 'just', 'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')

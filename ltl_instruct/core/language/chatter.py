@@ -166,6 +166,8 @@ _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
 # Lead-ins before a comma that announce what follows and ask for nothing themselves.
 LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('before', 'the', 'end', 'of', 'lunch'), ('before', 'lunch'), ('before', 'the', 'end', 'of', 'the', 'day'),
+    ('by', 'the', 'end', 'of', 'the', 'day'), ('before', 'the', 'end', 'of', 'the', 'shift'),
     ('fyi',), ('just', 'so', 'you', 'know'), ('busy', 'morning'), ('busy', 'day'), ('long', 'day'),
     ('busy', 'afternoon'), ('hectic', 'morning'), ('crazy', 'day'), ('busy', 'night'), ('so', 'you', 'know'), ('by', 'the', 'way'), ('btw',),
     ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
@@ -501,6 +503,12 @@ carer guest customer technician electrician plumber vet housekeeper contractor c
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
                           'students', 'patients', 'volunteers', 'cleaners', 'neighbours', 'neighbors'})
+# Nouns that make a place of a person noun before them ("the staff room", "the nurses' station").
+_PLACE_HEADS = frozenset('''
+room rooms station desk office area lounge entrance center centre toilet toilets bathroom bathrooms kitchen door
+car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen cafeteria
+changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
+'''.split())
 # Family members named like names, with no article ("Mum is out in the garden", "Dad always worries").
 FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
                           'gran', 'grandad', 'granddad', 'nana', 'nan', 'papa', 'mama'})
@@ -542,6 +550,8 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     if not k or k >= len(tokens):
         return False
     verb = tokens[k]
+    if verb in _PLACE_HEADS or '_' in verb:
+        return False   # "the staff room", "the guest lounge": a place named for people
     return verb not in REQUEST_WORDS and verb not in ('need', 'needs', 'want', 'wants', 'would', 'd', 'like',
                                                       'will', 'must', 'should', 'have', 'has')
 

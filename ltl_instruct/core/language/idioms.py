@@ -268,6 +268,14 @@ RULES: tuple[Rule, ...] = (
     Rule('a watering can behind the greenhouse somewhere',
          rf'\b(?P<p>(?:behind|under|beside|next to|near|by|in front of|underneath) (?:the|my|our) {_W}(?: {_W}){{0,3}}?) '
          r'somewhere\b', r'\g<p>'),
+    Rule('go to the front gate, but call in at reception on the way',
+         rf'^(?P<a>(?:go|head|drive|fly|walk|get) (?:over |down |up )?to (?:the |my |our )?{_NP}) , (?:but |and )?'
+         r'(?:visit|stop by|stop at|call in at|call at|pop into|pop in at|drop by|drop in at|swing by|check|look in at) '
+         rf'(?P<y>(?:the |my |our )?{_NP}) (?:on the way|on your way|en route|along the way)(?: there)?$',
+         r'visit \g<y> , then \g<a>'),
+    Rule('bring its charger over there as well',
+         r'\b(?P<v>bring|take|carry|move) (?:its|the|their|his|her) (?P<x>[^,.;!?]+?) over there\b',
+         r'\g<v> the \g<x> there'),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over |across |on )?'
@@ -1063,7 +1071,7 @@ RULES: tuple[Rule, ...] = (
          rf'(?:off limits|out of bounds|forbidden|not allowed|a no go)\b', r'\g<w> , avoid \g<x>'),
     Rule('from then on, the desk lamp is off limits: avoid it from then on',
          rf'^(?P<w>from then on|from that point on|from that point onwards|from then onwards|after that|'
-         rf'afterwards|thereafter) , (?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '
+         rf'afterwards|thereafter) (?:, )?(?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '
          rf'(?:off limits|out of bounds|'
          rf'forbidden|not allowed|a no go)$', r'\g<w> , avoid \g<x>'),
     Rule('once it is in your hands: once picked up',
@@ -1271,6 +1279,11 @@ RULES: tuple[Rule, ...] = (
          rf'got to|disappear to|disappeared to|wander off to|vanish to)$', r'there is \g<x>'),
     Rule('once you have clocked in at the desk: a stop there',
          r'\b(?:clocked|checked|signed|logged|badged) (?:in|out) (?:at|with)\b', 'stopped at'),
+    # ---- said last: a count restated after the count phrases above are read
+    Rule('exactly two trips, not three',
+         r'\b(?P<c>once|twice|thrice|(?:one|two|three|four|five) times) , (?P<m>exactly|at least|at most)'
+         r'(?: (?:one|two|three|four|five|once|twice))?(?: times?)?(?: , (?:not|no) (?:one|two|three|four|five|once|'
+         r'twice|more|less|fewer))?\b', r'\g<m> \g<c>'),
 )
 
 _SENTENCE_ENDS = frozenset('.;!?')

@@ -536,9 +536,10 @@ class _Reader:
                 tail[2] in chatter.STATES or tail[2] in ('off', 'away', 'out', 'dead', 'low', 'flat')) and \
                 'limits' not in tail and 'bounds' not in tail and is_name_word(tail, 0, False):
             return self._noted_cut(sentence, cut)   # "..., lifeguard's off today"
-        if len(tail) >= 4 and tail[0] in DETS and tail[2:4] == ['will', 'be'] and \
-                not chatter.has_constraint_word(tail) and tail[4:5] in (['here'], ['back'], ['home'], ['in']):
-            return self._noted_cut(sentence, cut)   # "..., the carer will be here any minute"
+        w = next((k for k in range(2, min(5, len(tail) - 1)) if tail[k] == 'will'), -1)
+        if w > 0 and tail[0] in DETS and not chatter.has_constraint_word(tail) and tail[w + 1] != 'you' and (
+                tail[w + 1] != 'be' or tail[w + 2:w + 3] in (['here'], ['back'], ['home'], ['in'], ['there'])):
+            return self._noted_cut(sentence, cut)   # "..., the carer will be here any minute", "the kids will grab it"
         if len(tail) < 2 or 'you' in tail or tail[1] in ('not', 'never'):
             return sentence
         if any(t in chatter.REQUEST_WORDS - ({'need'} if tail[0] == 'the' else set()) for t in tail[1:3]):

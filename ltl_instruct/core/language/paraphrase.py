@@ -39,7 +39,8 @@ _NAME = r'(?:(?!(?:and|or|then|followed|the)\b)[a-z0-9_]+)(?: (?!(?:and|or|then|
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
     # "the orchard first and then the vineyard, or the other way round": either order
     (r' (?:, )?or (?:the other way (?:round|around)|vice versa|the reverse|the opposite way|the other order)'
-     r'(?= [,.;!?] |$)', ' , in any order '),
+     r'(?: if (?:that is|it is) (?:easier|quicker|better|simpler)| if you (?:prefer|like|want))?(?= [,.;!?] |$)',
+     ' , in any order '),
     (r' do a (?:quick )?(?:round|tour|circuit) of ', ' visit '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),
     # the order left to the robot, said as a remark (before list positions: "which one first" is none)

@@ -192,6 +192,9 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
     (r'\bthe one in between\b', 'the middle one'),
+    # "the first and last of those": the first and the last
+    (r'\bthe (?P<a>first|second|third) and (?P<b>last|second|third|fourth|fifth)\b(?! (?:things|ones|items|places|'
+     r'stops|one|two)\b)', r'the \g<a> and the \g<b>'),
     # "the outer two": the first and the last
     (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
 ))
@@ -1004,10 +1007,29 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         words = ['only'] + words[:-1]   # "actually, the east one only"
     if not words or words[0] not in ('just', 'only'):
         return None
+    if words[1:3] in (['go', 'to'], ['head', 'to'], ['visit', 'the']) and len(words) > 3:
+        words = ['just'] + words[3 if words[1] != 'visit' else 2:]   # "just go to the north one"
     np = PhraseParser().parse(words, 1)
-    if np is None or np.end != len(words) or np.pronoun:
-        return None
     spans = _np_spans(prev)
+    if np is not None and np.pronoun == 'one' and np.end == len(words) and words[1:2] in (['the'], ['that']) and \
+            len(words) == 4:
+        # "the north entrance or the south entrance ... just the north one": the one that was north
+        same = [sp for sp in spans if [w for w in prev[sp.start:sp.end] if w not in DETERMINERS and
+                                       w != 'either'][:1] == [words[2]]]
+        if len(same) == 1 and len([w for w in prev[same[0].start:same[0].end] if w not in DETERMINERS and
+                                   w != 'either']) == 1 and prev[same[0].end:same[0].end + 1] == ['or']:
+            # "the north or south entrance": the north entrance
+            nxt = next((sp for sp in spans if sp.start > same[0].end), None)
+            if nxt is not None and nxt.end - nxt.start >= 2:
+                name = ['the', words[2]] + [w for w in prev[nxt.start:nxt.end] if w not in DETERMINERS][1:]
+                a = next(k for k in range(len(spans)) if spans[k] is same[0])
+                notes.append(f'only the {words[2]} one kept of that choice')
+                b = spans.index(nxt)
+                return prev[:spans[a].start] + name + prev[spans[b].end:]
+        elif len(same) == 1:
+            np = same[0]
+    if np is None or np.end != len(words) and np not in spans or np.pronoun:
+        return None
     hit = next((k for k in range(len(spans) - 1, -1, -1) if spans[k].descriptor == np.descriptor), -1)
     if hit < 0:
         return None
@@ -1367,6 +1389,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     swapped = _swap(prev, seg, notes) or _goes_to(prev, seg, notes)
     if swapped is not None:
         return swapped
+    only = _only_this(prev, seg, notes) if seg[:1] == ['just'] else None
+    if only is not None:
+        return only   # "the north or south entrance ... just go to the north one"
     if seg[:1] in (['just'], ['simply']) and len(seg) > 1 and seg[1] in _VERBS and marker in _RESTATE:
         # "go to the kitchen, grab a snack... no, just go to the kitchen, then the hall": the sentence again
         start = max((k for k in range(len(prev)) if prev[k] in '.;!?'), default=-1) + 1

@@ -193,6 +193,9 @@ def tokenize(text: str) -> list[str]:
     s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
+    if 'its ' in s:   # "bring its charger": after a verb or preposition "its" is no "it is"
+        s = re.sub(r'\b(bring|take|carry|move|put|grab|get|fetch|return|to|on|in|at|by|near|from|of|with|under|'
+                   r'behind|beside) its\b', r'\1 the', s)
     if '-' in s:   # "the walk-in cooler", "the drop-off point": one word of a name
         s = _PARTICLE_COMPOUND_RE.sub(r'\1_\2', s)
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)

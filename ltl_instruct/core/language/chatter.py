@@ -154,8 +154,10 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('this', 'shift'), ('this', 'week'), ('for', 'the', 'afternoon'), ('for', 'the', 'morning'),
     ('for', 'the', 'evening'), ('for', 'the', 'day'), ('full', 'stop'), ('on', 'the', 'double'),
     ('when', 'you', 'have', 'got', 'a', 'sec'), ('when', 'you', 'have', 'got', 'a', 'second'),
-    ('when', 'you', 'have', 'got', 'a', 'minute'), ('when', 'you', 'have', 'got', 'a', 'moment'), ('until', 'i', 'am', 'back', 'from', 'my', 'call'), ('and', 'wait', 'for', 'me', 'there'),
-    ('wait', 'for', 'me', 'there'), ('to', 'land'), ('and', 'land'), ('until', 'i', 'get', 'there'), ('until', 'i', 'arrive'), ('until', 'i', 'come'), ('until', 'i', 'am', 'back'),
+    ('when', 'you', 'have', 'got', 'a', 'minute'), ('when', 'you', 'have', 'got', 'a', 'moment'),
+    ('until', 'i', 'am', 'back', 'from', 'my', 'call'), ('and', 'wait', 'for', 'me', 'there'),
+    ('wait', 'for', 'me', 'there'), ('to', 'land'), ('and', 'land'), ('until', 'i', 'get', 'there'),
+    ('until', 'i', 'arrive'), ('until', 'i', 'come'), ('until', 'i', 'am', 'back'),
     ('till', 'i', 'get', 'there'), ('until', 'we', 'get', 'there'), ('for', 'the', 'next', 'job'),
     ('and', 'hold', 'position'), ('and', 'hold', 'there'), ('and', 'wait', 'for', 'the', 'next', 'job'),
     ('with', 'the', 'drone'), ('with', 'the', 'robot'), ('using', 'the', 'drone'), ('whatever', 'you', 'do'),
@@ -166,10 +168,12 @@ _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
 # Lead-ins before a comma that announce what follows and ask for nothing themselves.
 LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
-    ('before', 'the', 'end', 'of', 'lunch'), ('before', 'lunch'), ('before', 'the', 'end', 'of', 'the', 'day'),
+    ('before', 'the', 'end', 'of', 'lunch'), ('before', 'lunch'),
+    ('before', 'the', 'end', 'of', 'the', 'day'),
     ('by', 'the', 'end', 'of', 'the', 'day'), ('before', 'the', 'end', 'of', 'the', 'shift'),
     ('fyi',), ('just', 'so', 'you', 'know'), ('busy', 'morning'), ('busy', 'day'), ('long', 'day'),
-    ('busy', 'afternoon'), ('hectic', 'morning'), ('crazy', 'day'), ('busy', 'night'), ('so', 'you', 'know'), ('by', 'the', 'way'), ('btw',),
+    ('busy', 'afternoon'), ('hectic', 'morning'), ('crazy', 'day'), ('busy', 'night'), ('so', 'you', 'know'),
+    ('by', 'the', 'way'), ('btw',),
     ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
     ('listen',), ('look',), ('hey', 'there'), ('quick', 'one'), ('quick', 'favour'), ('quick', 'favor'),
     ('one', 'more', 'thing'), ('oh', 'and'), ('also', 'fyi'), ('for', 'the', 'record'), ('well',),
@@ -505,16 +509,17 @@ _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children',
                           'students', 'patients', 'volunteers', 'cleaners', 'neighbours', 'neighbors'})
 # Nouns that make a place of a person noun before them ("the staff room", "the nurses' station").
 _PLACE_HEADS = frozenset('''
-room rooms station desk office area lounge entrance center centre toilet toilets bathroom bathrooms kitchen door
-car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen cafeteria
-changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
+room rooms station desk office area lounge entrance center centre toilet toilets bathroom bathrooms kitchen
+door car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen
+cafeteria changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
 '''.split())
 # Family members named like names, with no article ("Mum is out in the garden", "Dad always worries").
 FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
                           'gran', 'grandad', 'granddad', 'nana', 'nan', 'papa', 'mama'})
 # Words of a rule about where to go: a clause holding one is never said "about people".
-PLACE_RULE_WORDS = _RULE_WORDS = frozenset({'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear',
-                         'only', 'until', 'till', 'unless', 'cannot', 'mustn', 'allowed'})
+PLACE_RULE_WORDS = _RULE_WORDS = frozenset({
+    'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear', 'only', 'until',
+    'till', 'unless', 'cannot', 'mustn', 'allowed'})
 # ... and, in a reason ("because you must not ..."), words of an order, a count or a step too.
 _STRONG = _RULE_WORDS | frozenset({'stay', 'keep', 'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit',
                                    'bring', 'take', 'put'})
@@ -578,7 +583,8 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
             is_name_word(tokens, 0, False):
         return True   # "lots going on today", "guests arriving at noon"
     if len(tokens) > 2 and tokens[0] not in DETERMINERS and tokens[1] in ('is', 'are', 'was', 'were') and \
-            (tokens[2] in STATES or tokens[2] in DEGREE_WORDS and tokens[3:4] and tokens[3] in STATES) and tokens[0] not in STATEMENT_SUBJECTS | {'you', 'there', 'here'} and \
+            (tokens[2] in STATES or tokens[2] in DEGREE_WORDS and tokens[3:4] and tokens[3] in STATES) and \
+            tokens[0] not in STATEMENT_SUBJECTS | {'you', 'there', 'here'} and \
             is_name_word(tokens, 0, False):
         return True   # "floor is wet there", "gate was locked": the article left out, as people do
     if tokens[0] in ('our', 'my', 'his', 'her', 'their') and np_end == 0:
@@ -737,7 +743,8 @@ _REMARK_RE = re.compile(
     r'(?: (?:for you|to you|to get to))?'
     r'|(?:either|any|either one|any one) works(?: (?:for me|fine))?(?: honestly)?'
     r'|(?:i )?do not care which (?:1|one)'
-    r'|i (?:only |just )?need (?:one|one of them|either|either of them|one of the two) (?:looked at|checked|done|'
+    r'|i (?:only |just )?need (?:one|one of them|either|either of them|one of the two) (?:looked at|checked'
+    r'|done|'
     r'visited|seen)'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
     r'|(?:(?:that|this|it) )?is (?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)'

@@ -187,6 +187,11 @@ def _repeat(m: 're.Match[str]') -> str:
     return f'visit {m.group("x")} {mode} {_times(1 + _number(m.group("n")))}'
 
 
+def _with_article(name: str) -> str:
+    """Return ``name`` with "the" before it unless it has a determiner ("leftovers": "the leftovers")."""
+    return name if name.split()[0] in ('the', 'my', 'your', 'our', 'some') else 'the ' + name
+
+
 def _same_head(m: 're.Match[str]') -> str:
     """Name "one" by the noun it stands for: "the second floor ice machine or the third floor one".
 
@@ -203,26 +208,34 @@ def _same_head(m: 're.Match[str]') -> str:
 RULES: tuple[Rule, ...] = (
     # ---- "one" named by the noun it stands for
     Rule('the upstairs autoclave or the basement one',
-         rf'\bthe (?P<x>{_W}(?: {_W}){{1,4}}) (?P<j>or|and) the (?P<y>{_W}(?: {_W}){{0,2}}) one\b', _same_head),
+         rf'\bthe (?P<x>{_W}(?: {_W}){{1,4}}) (?P<j>or|and) the (?P<y>{_W}(?: {_W}){{0,2}})'
+         rf' one\b', _same_head),
     Rule('I need the laundry room and the closet both looked at',
          rf'\b(?:i|we) (?:need|want) (?P<x>(?:the|my|our) {_NPS}) (?:both |all |each )?(?:looked at|checked|'
          r'checked on|seen to|visited|inspected)\b', r'visit \g<x>'),
     # ---- a place that needs the robot, a visit said another way
-    Rule('room 204 needs you', rf'^(?P<x>(?:the )?{_NP}) (?:needs|need|wants|could use) (?:you|a body|the robot|'
-         r'a hand|some help)(?: over there| there| here)?(?: and you are it)?\b(?! (?:at|in|by|on|near|over|down|up|'
+    Rule('room 204 needs you',
+         rf'^(?P<x>(?:the )?{_NP}) (?:needs|need|wants|could use) (?:you|a body|the robot|'
+         r'a hand|some help)(?: over there| there| here)?(?: and you are it)?\b(?! (?:at|in|by|on|near|over'
+         r'|down|up|'
          r'out|inside|outside)\b)', r'go to \g<x>'),
-    Rule('check with the security office', r'\b(?:check|checking|checked) (?:in )?with (?=the |my |our )', 'visit '),
-    Rule('not before signing in at the desk', r'\bsign(?P<g>ing|ed)? (?:in|out) (?:at|with) (?=the |my |our )',
+    Rule('check with the security office', r'\b(?:check|checking|checked) (?:in )?with (?=the |my |our )',
+         'visit '),
+    Rule('not before signing in at the desk',
+         r'\bsign(?P<g>ing|ed)? (?:in|out) (?:at|with) (?=the |my |our )',
          lambda m: {'ing': 'visiting ', 'ed': 'visited '}.get(m.group('g') or '', 'visit ')),
     Rule('after you have had a look over the roof',
          r'\b(?:had|taken|made) (?:a|an) (?:look|peek|glance|pass) (?:over|at|around|in|of) ', 'visited '),
     Rule('keep her company by the bird bath',
-         r'\bkeep (?:her|him|them|me|us|mum|mom|dad|grandma|grandpa|the [a-z]+) company (?=by|at|in|near|on)', 'go '),
+         r'\bkeep (?:her|him|them|me|us|mum|mom|dad|grandma|grandpa|the [a-z]+) company (?=by|at|in|near|on)',
+         'go '),
     Rule('wait for her at the chair', r'\b(?P<v>wait|waiting) for (?:her|him|them|us) (?=at|by|in|near|on)',
          r'\g<v> '),
-    Rule('check the front door one more time', r'\b(?<!exactly )(?<!least )(?<!most )(?:one more time|once more)\b', 'again'),
+    Rule('check the front door one more time',
+         r'\b(?<!exactly )(?<!least )(?<!most )(?:one more time|once more)\b', 'again'),
     Rule('then do that exact same trip again',
-         r'\bdo (?:that|the|this) (?:exact |very )?same (?:trip|walk|route|loop|run|flight|circuit|round|thing|'
+         r'\bdo (?:that|the|this) (?:exact |very )?same (?:trip|walk|route|loop|run|flight|circuit|round'
+         r'|thing|'
          r'journey|leg)(?: over)?(?: again)?\b', 'do it again'),
     Rule('take the plates through to the dishwasher', r'\b(?:through|round|across) to\b', 'to'),
     Rule('watch out for the bucket, avoid it', r'\b(?:watch out for|look out for|mind out for)\b', 'avoid'),
@@ -235,42 +248,56 @@ RULES: tuple[Rule, ...] = (
          r'\b(?<!only )(?P<w>once|after) (?P<x>[^,.;!?]{3,80}?) , not (?:earlier|before|sooner|until then)\b',
          r'only \g<w> \g<x>'),
     Rule('while the roast is in, check the oven',
-         r'^while (?:the|my|your|our) (?:[a-z]+ ){1,3}?(?:is|are) (?:in|on|cooking|baking|running|drying|charging|'
+         r'^while (?:the|my|your|our) (?:[a-z]+ ){1,3}?(?:is|are) (?:in|on|cooking|baking|running|drying'
+         r'|charging|'
          r'asleep|sleeping|out|in the oven) , ', ''),
-    Rule('from the moment you get there', r'\bfrom the moment (?:you|it) (?=get|reach|arrive|are|have)', 'once you '),
-    Rule('the sink becomes off limits', r'\b(?:becomes|will be|goes) (?=off limits|out of bounds|forbidden|a no go)',
+    Rule('from the moment you get there', r'\bfrom the moment (?:you|it) (?=get|reach|arrive|are|have)',
+         'once you '),
+    Rule('the sink becomes off limits',
+         r'\b(?:becomes|will be|goes) (?=off limits|out of bounds|forbidden|a no go)',
          'is '),
     Rule('after they are in, keep away',
-         r'\b(?P<c>once|after|when) (?P<o>it is|they are|it has been|they have been) (?:in|inside|in there|down|in place|'
+         r'\b(?P<c>once|after|when) (?P<o>it is|they are|it has been|they have been) (?:in|inside|in there'
+         r'|down|in place|'
          r'dropped off|delivered|put away)(?= ,)',
-         lambda m: f'{m.group("c")} you have dropped off {"it" if m.group("o").startswith("it") else "them"}'),
+         lambda m: f'{m.group("c")} you have dropped off ' + (
+             'it' if m.group('o').startswith('it') else 'them')),
     Rule('until you are at the mail slot the copier is off limits',
-         rf'^(?P<u>until|till) (?P<e>you (?:are|have been|reach|get to|have reached|have visited|arrive at|get)'
-         rf'(?: at| in| to)? (?:the|my|our) {_W}(?: {_W}){{0,3}}?) (?:, )?(?P<x>the {_W}(?: {_W}){{0,3}}) (?:is|are) '
+         rf'^(?P<u>until|till) (?P<e>you (?:are|have been|reach|get to|have reached|have visited|arrive at'
+         rf'|get)'
+         rf'(?: at| in| to)? (?:the|my|our) {_W}(?: {_W}){{0,3}}?) (?:, )?(?P<x>the {_W}(?: {_W}){{0,3}})'
+         rf' (?:is|are) '
          r'(?:off limits|out of bounds|forbidden|a no go)\b', r'avoid \g<x> \g<u> \g<e>'),
-    Rule('avoid the trash can as you go', r'(?<!soon )\bas you (?:go|head there|make your way|travel)\b(?! (?:to|into|towards|there|back|by|past|near|'
-         r'over|through|in|up|down|around)\b)', 'on the way'),
+    Rule('avoid the trash can as you go',
+         r'(?<!soon )\bas you (?:go|head there|make your way|travel)\b'
+         r'(?! (?:to|into|towards|there|back|by|past|near|over|through|in|up|down|around)\b)', 'on the way'),
     Rule('leftovers go in the fridge',
-         rf'^(?P<x>(?:the |some |my |your |our )?(?!(?:take|bring|put|please|first|without|just|now|so|also|let|'
-         rf'make|get|fly|drive|head|walk)\b){_W}(?: {_W}){{0,3}}) (?:go|goes|belong|belongs|need to go|needs to go) '
+         rf'^(?P<x>(?:the |some |my |your |our )?(?!(?:take|bring|put|please|first|without|just|now|so|also'
+         rf'|let|'
+         rf'make|get|fly|drive|head|walk)\b){_W}(?: {_W}){{0,3}}) (?:go|goes|belong|belongs|need to go|needs'
+         rf' to go) '
          rf'(?P<p>in|into|on|back in|back on|back to|back into) (?P<y>(?:the|my|our) {_NP})$',
-         lambda m: f'put {m.group("x") if m.group("x").split()[0] in ("the", "my", "your", "our", "some") else "the " + m.group("x")}'
-                   f' {m.group("p")} {m.group("y")}'),
+         lambda m: f'put {_with_article(m.group("x"))} {m.group("p")} {m.group("y")}'),
     Rule('kettle or microwave, only one of the two, never both',
          r' , only one of (?:the two|them|those|the pair)(?= , (?:not|never) both\b)', ''),
     Rule('the kettle or the microwave, not both',
-         rf'^(?P<x>(?:the |a |an )?{_W}(?: {_W}){{0,3}} or (?:the |a |an )?{_W}(?: {_W}){{0,3}}) , (?:but )?(?:not|never) '
+         rf'^(?P<x>(?:the |a |an )?{_W}(?: {_W}){{0,3}} or (?:the |a |an )?{_W}(?: {_W}){{0,3}}) , (?:but'
+         rf' )?(?:not|never) '
          r'both$', r'go to \g<x> , but never both'),
     Rule('wait by the lifts for the porter',
-         r'\b(?P<v>wait|stand|stay|hang around) (?P<r>(?:by|at|near|outside|in) (?:the|my|our) [^,.;!?]+?) for (?:the|my|our|a) '
+         r'\b(?P<v>wait|stand|stay|hang around) (?P<r>(?:by|at|near|outside|in) (?:the|my|our) [^,.;!?]+?)'
+         r' for (?:the|my|our|a) '
          r'(?:porter|nurse|doctor|driver|delivery|courier|guest|visitor|patient|cleaner|technician|postman|'
          r'engineer|plumber|electrician)\b', r'\g<v> \g<r>'),
     Rule('a watering can behind the greenhouse somewhere',
-         rf'\b(?P<p>(?:behind|under|beside|next to|near|by|in front of|underneath) (?:the|my|our) {_W}(?: {_W}){{0,3}}?) '
+         rf'\b(?P<p>(?:behind|under|beside|next to|near|by|in front of|underneath) (?:the|my|our) {_W}(?:'
+         rf' {_W}){{0,3}}?) '
          r'somewhere\b', r'\g<p>'),
     Rule('go to the front gate, but call in at reception on the way',
-         rf'^(?P<a>(?:go|head|drive|fly|walk|get) (?:over |down |up )?to (?:the |my |our )?{_NP}) , (?:but |and )?'
-         r'(?:visit|stop by|stop at|call in at|call at|pop into|pop in at|drop by|drop in at|swing by|check|look in at) '
+         rf'^(?P<a>(?:go|head|drive|fly|walk|get) (?:over |down |up )?to (?:the |my |our )?{_NP}) , (?:but '
+         rf'|and )?'
+         r'(?:visit|stop by|stop at|call in at|call at|pop into|pop in at|drop by|drop in at|swing by|check'
+         r'|look in at) '
          rf'(?P<y>(?:the |my |our )?{_NP}) (?:on the way|on your way|en route|along the way)(?: there)?$',
          r'visit \g<y> , then \g<a>'),
     Rule('bring its charger over there as well',
@@ -278,22 +305,28 @@ RULES: tuple[Rule, ...] = (
          r'\g<v> the \g<x> there'),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
-         rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over |across |on )?'
+         rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '
+         rf'|across |on )?'
          r'to\b', r'\g<v> to \g<x> , then to'),
     Rule('take the stairs or the lift',
-         r'\btake (?P<e>either )?(?=the (?:[a-z]+ )?(?:lift|lifts|stairs|elevator|elevators|escalator|stairwell|ramp|'
+         r'\btake (?P<e>either )?(?=the (?:[a-z]+ )?(?:lift|lifts|stairs|elevator|elevators|escalator'
+         r'|stairwell|ramp|'
          r'footbridge|bridge|path|corridor|route|road|exit|back stairs|fire escape)\b)', r'go to \g<e>'),
     Rule('should you need to enter the garage at any point, go by the door beforehand',
-         rf'^should you (?:need|want|have|wish) to (?P<v>enter|visit|go to|go into|use) (?P<x>(?:the|my|our) {_NP})'
-         r'(?: at any point| at all| at any time)? , (?P<r>[^,;!?]+?) (?:beforehand|first|before that|before you do)$',
+         rf'^should you (?:need|want|have|wish) to (?P<v>enter|visit|go to|go into|use) (?P<x>(?:the|my|our)'
+         rf' {_NP})'
+         r'(?: at any point| at all| at any time)? , (?P<r>[^,;!?]+?) (?:beforehand|first|before that|before'
+         r' you do)$',
          r'if you \g<v> \g<x> at all , \g<r> first'),
-    Rule('go wait in one of them', r'\bgo (?:and )?(?:wait|stand|park|sit) (?:in|at|by) (?=one of (?:them|those|the two))',
+    Rule('go wait in one of them',
+         r'\bgo (?:and )?(?:wait|stand|park|sit) (?:in|at|by) (?=one of (?:them|those|the two))',
          'go to '),
     Rule('making only one trip to the sink',
          rf'\b(?:making|make|with) (?:only |just )?(?:one|a single) (?:trip|visit|run|stop) (?:to|into|at) '
          rf'(?P<x>the {_NP})', r'visit \g<x> at most once'),
     Rule('the meeting room needs the stapler and the tape, bring them both in',
-         rf'^(?P<x>the {_NP}) (?:needs|need|wants) (?P<y>(?:the|a|an|some) {_NPS}) , (?:please )?(?:bring|take|carry) '
+         rf'^(?P<x>the {_NP}) (?:needs|need|wants) (?P<y>(?:the|a|an|some) {_NPS}) , (?:please )?(?:bring'
+         rf'|take|carry) '
          r'(?:them|it)(?: both| all| over)? (?:in|there|over|along)\b', r'bring \g<y> to \g<x>'),
     Rule('the first two belong in the drawer, put them away',
          rf'(?P<x>the {_NPS}) (?:belong|belongs|go|goes) (?P<p>in|on|into|back in|back on|back into) '
@@ -302,23 +335,29 @@ RULES: tuple[Rule, ...] = (
     Rule('some boxes got stacked behind the desk, go to them',
          rf'^(?:some |the |a |an |my |her |his |their |our |your )?(?P<x>{_W}(?: {_W}){{0,3}}?) (?:that )?'
          r'(?:i need |i want |i mean )?(?:is|are|was|'
-         r'were|got|have been|has been)(?: (?:stacked|left|put|placed|sitting|lying|dumped|piled|parked|kept))? '
-         r'(?P<y>(?:behind|under|on|next to|beside|by|in front of|between|on top of|underneath|beneath|left of|'
-         r'right of|to the left of|to the right of|inside|near) [^,]+?) , (?:(?:go|head|get|move|navigate) (?:over )?to|'
+         r'were|got|have been|has been)(?: (?:stacked|left|put|placed|sitting|lying|dumped|piled|parked'
+         r'|kept))? '
+         r'(?P<y>(?:behind|under|on|next to|beside|by|in front of|between|on top of|underneath|beneath|left'
+         r' of|'
+         r'right of|to the left of|to the right of|inside|near) [^,]+?) , (?:(?:go|head|get|move|navigate)'
+         r' (?:over )?to|'
          r'(?:go |go and )?find) (?:it|them|that|those)\b', r'go to the \g<x> \g<y>'),
-    Rule('still avoiding the printer on the way', r' , (?:still |while |all the while |but )?(?:avoiding|skirting) ',
+    Rule('still avoiding the printer on the way',
+         r' , (?:still |while |all the while |but )?(?:avoiding|skirting) ',
          ' , and avoid '),
     Rule('skirting the trash can as you go', r'\bskirting\b', 'avoiding'),
     Rule('keep the front desk out of your flight path',
          rf'\bkeep (?P<x>the {_NP}) out of (?:your|the) (?:flight )?(?:path|way|route)\b', r'avoid \g<x>'),
-    Rule('fly through the break room and out to the lot', r'\band (?:out|over|down|up|across) to\b', 'and then to'),
+    Rule('fly through the break room and out to the lot', r'\band (?:out|over|down|up|across) to\b',
+         'and then to'),
     # ---- a job done at a place: going there
     Rule('do the cycle count at aisle two',
          r'\b(?:do|run|carry out|perform) (?:the|a|an|your) (?:[a-z]+ ){0,2}?(?:count|check|inspection|round|'
          r'sweep|scan|stocktake|walkthrough|reading) (?:at|in|on|of|by) ', 'go to '),
     # ---- formal words for plain ones
     Rule('refrain from approaching the freezer',
-         r'\b(?:kindly |please )?refrain from (?:ever )?(?P<v>[a-z]+ing)\b', lambda m: f'do not {_plain(m.group("v"))}'),
+         r'\b(?:kindly |please )?refrain from (?:ever )?(?P<v>[a-z]+ing)\b',
+         lambda m: f'do not {_plain(m.group("v"))}'),
     Rule('I require you at bench four', r'\b(?:i|we) (?:require|request) you\b', 'i need you'),
     Rule('and subsequently the centrifuge', r'\bsubsequently\b', 'then'),
     Rule('the shower prior to the hood', r'\bprior to\b', 'before'),
@@ -1066,7 +1105,8 @@ RULES: tuple[Rule, ...] = (
          lambda m: f'without {m.group("e") or ""}going near'),
     Rule('en route to the bathroom: on the way', r'\ben route (?=to\b)', 'on the way '),
     Rule('once you get there the shredder is off limits',
-         rf'^(?P<w>(?:once|after|when) you (?:get|are|have got|have gotten|arrive|reach|have reached|have arrived)'
+         rf'^(?P<w>(?:once|after|when) you (?:get|are|have got|have gotten|arrive|reach|have reached|have'
+         rf' arrived)'
          rf'(?: there| here| in| at| to)?) (?:, )?(?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '
          rf'(?:off limits|out of bounds|forbidden|not allowed|a no go)\b', r'\g<w> , avoid \g<x>'),
     Rule('from then on, the desk lamp is off limits: avoid it from then on',
@@ -1079,7 +1119,8 @@ RULES: tuple[Rule, ...] = (
          r'(?:in your (?:hands|hand|grip|gripper|possession|arms)|'
          r'on board|aboard|picked up)\b', r'\g<c> you have picked it up'),
     Rule('while it is hanging off you: while carrying it',
-         r'\bwhile (?P<o>it is|they are) (?:in your (?:hands|hand|grip|gripper|possession|arms|claws)|on board|'
+         r'\bwhile (?P<o>it is|they are) (?:in your (?:hands|hand|grip|gripper|possession|arms|claws)|on'
+         r' board|'
          r'aboard|hanging (?:off|from|under) you|attached|strapped on|with you)\b',
          lambda m: 'while you carry ' + ('it' if m.group('o') == 'it is' else 'them')),
     Rule('for the rest of the task: from then on',
@@ -1282,7 +1323,8 @@ RULES: tuple[Rule, ...] = (
     # ---- said last: a count restated after the count phrases above are read
     Rule('exactly two trips, not three',
          r'\b(?P<c>once|twice|thrice|(?:one|two|three|four|five) times) , (?P<m>exactly|at least|at most)'
-         r'(?: (?:one|two|three|four|five|once|twice))?(?: times?)?(?: , (?:not|no) (?:one|two|three|four|five|once|'
+         r'(?: (?:one|two|three|four|five|once|twice))?(?: times?)?(?: , (?:not|no) (?:one|two|three|four'
+         r'|five|once|'
          r'twice|more|less|fewer))?\b', r'\g<m> \g<c>'),
 )
 

@@ -125,7 +125,8 @@ NOISE_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('as', 'often', 'as', 'you', 'want'), ('as', 'often', 'as', 'you', 'like'), ('in', 'the', 'future'),
     ('during', 'the', 'round'), ('during', 'your', 'round'), ('on', 'your', 'round'),
     ('during', 'the', 'shift'),
-    ('during', 'your', 'shift'), ('during', 'the', 'patrol'), ('on', 'this', 'run'), ('during', 'the', 'run'),
+    ('completely',), ('entirely',), ('altogether',), ('during', 'your', 'shift'),
+    ('during', 'the', 'patrol'), ('on', 'this', 'run'), ('during', 'the', 'run'),
 ), key=lambda t: -len(t)))
 ORDER_TAILS: tuple[tuple[str, ...], ...] = (
     ('consecutively',), ('one', 'after', 'another'), ('in', 'sequence'), ('sequentially',),
@@ -156,8 +157,11 @@ IGNORED_CLAUSES = frozenset({
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
     'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',
     'thank you', 'okay', 'in that order', 'in order', 'whichever is closer', 'it does not matter which',
-    'either one works', 'either works', 'any works', 'either is fine', 'either one is fine', 'off you go', 'away you go', 'go on', 'chop chop', 'your choice', 'up to you', 'i do not mind which', 'does not matter which', 'does not matter',
-    'does not matter which one', 'do not care which', 'do not care which one', 'your call', 'start', 'start up', 'go ahead', 'stop', 'stop there',
+    'either one works', 'either works', 'any works', 'either is fine', 'either one is fine', 'off you go',
+    'away you go', 'go on', 'chop chop', 'your choice', 'up to you', 'i do not mind which',
+    'does not matter which', 'does not matter',
+    'does not matter which one', 'do not care which', 'do not care which one', 'your call', 'start',
+    'start up', 'go ahead', 'stop', 'stop there',
     'and stop', 'then stop', 'stay there', 'stop moving', 'finish', 'be done', 'done', 'and be done',
     'first', 'second', 'third', 'fourth', 'fifth', 'secondly', 'thirdly', 'firstly', 'next', 'lastly',
     'finally', 'then', 'after that', 'afterwards', 'land', 'land there', 'and land', 'then land'})

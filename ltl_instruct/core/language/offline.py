@@ -86,15 +86,18 @@ GLOBAL_MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('in', 'both', 'cases'), ('in', 'either', 'case'), ('whichever', 'you', 'choose'),
     ('whichever', 'you', 'pick'),
     ('whichever', 'one', 'you', 'choose'), ('whichever', 'one', 'you', 'pick'), ('either', 'way', 'round'),
-    ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'), ('whenever', 'you', 'are', 'moving', 'about'),
+    ('whatever', 'you', 'choose'), ('whichever', 'you', 'go', 'to'),
+    ('whenever', 'you', 'are', 'moving', 'about'),
     ('whenever', 'you', 'are', 'moving', 'around'), ('on', 'the', 'way', 'or', 'at', 'any', 'other', 'time'),
-    ('completely',), ('entirely',), ('altogether',), ('while', 'you', 'are', 'moving', 'about'),
-    ('while', 'you', 'are', 'moving', 'around'), ('whenever', 'you', 'move', 'about'), ('whichever', 'it', 'is'), ('at', 'all'),
+    ('while', 'you', 'are', 'moving', 'about'),
+    ('while', 'you', 'are', 'moving', 'around'), ('whenever', 'you', 'move', 'about'),
+    ('whichever', 'it', 'is'), ('at', 'all'),
 ) + _WHICHEVER + tuple(
     lead + ('the', whole, what) for lead in ((), ('during',), ('throughout',), ('for',))
     for whole in ('whole', 'entire')
     for what in ('time', 'way', 'trip', 'flight', 'route', 'mission', 'run', 'task', 'journey', 'drive',
-                 'walk', 'tour', 'job', 'day', 'night', 'procedure', 'operation', 'process', 'shift')) + tuple(
+                 'walk', 'tour', 'job', 'day', 'night', 'procedure', 'operation', 'process',
+                 'shift')) + tuple(
     ('during', 'the', what) for what in (
         'flight', 'trip', 'mission', 'task', 'run', 'route', 'tour', 'patrol', 'round', 'rounds', 'drive',
         'walk', 'journey', 'delivery')),
@@ -260,17 +263,20 @@ _NO_CUT_BEFORE = chatter.PREPOSITIONS | frozenset({
     'until', 'till', 'because', 'if', 'when', 'while', 'that', 'so', 'after', 'before', 'once', 'and', 'or',
     'but', 'where', 'whether', 'unless', 'since', 'as', 'than', 'what', 'which', 'who', 'know', 'think',
     'sure', 'whenever', 'wherever', 'though', 'although', 'then', 'not', 'say', 'see', 'mean'})
-# Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
+
+
 def _rule_in(words: Sequence[str]) -> bool:
     """Whether words hold a rule of where to go (a "not" before a state, "it's not locked", is none)."""
+    states = chatter.STATES | {'sure', 'safe'}
     return any(w in chatter.PLACE_RULE_WORDS and not (
-        w == 'not' and words[k + 1:k + 2] and (words[k + 1] in chatter.STATES or words[k + 1] in ('sure', 'safe')))
-        for k, w in enumerate(words))
+        w == 'not' and words[k + 1:k + 2] and words[k + 1] in states) for k, w in enumerate(words))
 
 
 # "I don't want you tumbling down them": a mishap feared, no rule of where to go.
-_MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling', 'breaking',
-                      'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'getting', 'toppling'})
+_MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
+                      'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'getting',
+                      'toppling'})
+# Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
                            'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills', 'go', 'goes',
@@ -525,12 +531,11 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., or you'll scare the finches off"
         if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
             return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
-        if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in ('it', 'them', 'today', 'now') and \
-                not _rule_in(tail):
+        if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in ('it', 'them', 'today', 'now') \
+                and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., there's traffic on it today"
-        if len(tail) >= 3 and tail[0] in ('he', 'she', 'they') and tail[1] in ('gets', 'get', 'worries', 'worry',
-                                                                              'hates', 'hate', 'panics') and \
-                not _rule_in(tail):
+        if len(tail) >= 3 and tail[0] in ('he', 'she', 'they') and tail[1] in (
+                'gets', 'get', 'worries', 'worry', 'hates', 'hate', 'panics') and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., she gets anxious if she hears you"
         if len(tail) >= 3 and tail[0] not in DETS and tail[1] in ('is', 'are') and (
                 tail[2] in chatter.STATES or tail[2] in ('off', 'away', 'out', 'dead', 'low', 'flat')) and \
@@ -538,8 +543,9 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., lifeguard's off today"
         w = next((k for k in range(2, min(5, len(tail) - 1)) if tail[k] == 'will'), -1)
         if w > 0 and tail[0] in DETS and not chatter.has_constraint_word(tail) and tail[w + 1] != 'you' and (
-                tail[w + 1] != 'be' or tail[w + 2:w + 3] in (['here'], ['back'], ['home'], ['in'], ['there'])):
-            return self._noted_cut(sentence, cut)   # "..., the carer will be here any minute", "the kids will grab it"
+                tail[w + 1] != 'be' or tail[w + 2] in ('here', 'back', 'home', 'in', 'there')):
+            # "..., the carer will be here any minute", "..., the kids will grab it"
+            return self._noted_cut(sentence, cut)
         if len(tail) < 2 or 'you' in tail or tail[1] in ('not', 'never'):
             return sentence
         if any(t in chatter.REQUEST_WORDS - ({'need'} if tail[0] == 'the' else set()) for t in tail[1:3]):

@@ -29,6 +29,7 @@ _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |
          r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
          r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)')
 
+
 def _the(name: str) -> str:
     return name if name[0].isdigit() else 'the ' + name
 
@@ -39,7 +40,8 @@ _NAME = r'(?:(?!(?:and|or|then|followed|the)\b)[a-z0-9_]+)(?: (?!(?:and|or|then|
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
     # "the orchard first and then the vineyard, or the other way round": either order
     (r' (?:, )?or (?:the other way (?:round|around)|vice versa|the reverse|the opposite way|the other order)'
-     r'(?: if (?:that is|it is) (?:easier|quicker|better|simpler)| if you (?:prefer|like|want))?(?= [,.;!?] |$)',
+     r'(?: if (?:that is|it is) (?:easier|quicker|better|simpler)| if you (?:prefer|like|want))?(?= [,.;!?] '
+     r'|$)',
      ' , in any order '),
     (r' do a (?:quick )?(?:round|tour|circuit) of ', ' visit '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),

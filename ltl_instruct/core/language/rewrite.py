@@ -57,11 +57,12 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
     parser = PhraseParser()
     starts = [0] + [i + 1 for i, t in enumerate(tokens) if t in _LIST_INTROS]
     # "I left a notebook, a pen and a ruler...": after a pronoun subject and its verb
+    # "earlier I mentioned a, b and c", "I have left a, b, c", "in the garage I keep a, b, c"
     starts += [i + 2 + (tokens[i + 1:i + 2] in (['have'], ['had'], ['just'], ['also']))
                for i, t in enumerate(tokens) if t in ('i', 'we', 'they') and (
         i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in _LEAD_ADVERBS and (
             i == 1 or tokens[i - 2] in PUNCT) or tokens[i + 1:i + 2] in (
-            ['keep'], ['have'], ['left'], ['stored'], ['parked'], ['own'], ['got']))]   # "in the garage I keep"   # "earlier I mentioned a, b and c", "I have left a, b, c"
+            ['keep'], ['have'], ['left'], ['stored'], ['parked'], ['own'], ['got']))]
     starts.sort()
     for s in starts:
         if s >= len(tokens):
@@ -156,8 +157,8 @@ def _drop_mentions(tail: list[str]) -> list[str]:
     while i < len(tail):
         out.append(tail[i])
         i += 1
-        if out[-1] in _POSITION_NOUNS or out[-1] in ('last', 'latter', 'former', 'middle', 'things', 'items',
-                                                     'ones', 'places', 'spots', 'stops') or out[-1] in ORDINALS:
+        if out[-1] in _POSITION_NOUNS or out[-1] in ORDINALS or out[-1] in (
+                'last', 'latter', 'former', 'middle', 'things', 'items', 'ones', 'places', 'spots', 'stops'):
             j = i + (1 if i < len(tail) and tail[i] in ('that', 'which') else 0)
             for m in _MENTIONED:
                 if tuple(tail[j:j + len(m)]) == m:
@@ -193,7 +194,8 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
     (r'\bthe one in between\b', 'the middle one'),
     # "the first and last of those": the first and the last
-    (r'\bthe (?P<a>first|second|third) and (?P<b>last|second|third|fourth|fifth)\b(?! (?:things|ones|items|places|'
+    (r'\bthe (?P<a>first|second|third) and (?P<b>last|second|third|fourth|fifth)\b(?! (?:things|ones|items'
+     r'|places|'
      r'stops|one|two)\b)', r'the \g<a> and the \g<b>'),
     # "the outer two": the first and the last
     (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
@@ -210,9 +212,9 @@ left right front that which there here it them up down away
 
 def _say_positions(tokens: list[str]) -> list[str]:
     """Say list positions the way the resolver reads them ("number two" is "the second one")."""
-    if not {'number', 'item', 'stop', 'no', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer', 'outside', 'end', 'is',
-            'sits', 'stands', 'looking', 'seeing', 'facing', 'front', 'and', 'reverse', 'opposite', 'backwards',
-            'between', 'last'} & set(tokens):
+    if not {'number', 'item', 'stop', 'no', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer',
+            'outside', 'end', 'is', 'sits', 'stands', 'looking', 'seeing', 'facing', 'front', 'and', 'reverse',
+            'opposite', 'backwards', 'between', 'last'} & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = text
@@ -565,7 +567,8 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
             ref = PhraseParser().parse(prev, spans[-1].start)
             # (not the "the" of "to the left of": the thing it is left of)
             rel_at = next((k for k in range(spans[-1].start + 1, spans[-1].end) if prev[k] in DETERMINERS and
-                           prev[k + 1:k + 2] not in (['left'], ['right'], ['front'], ['middle'], ['side'])), -1)
+                           prev[k + 1:k + 2] not in (['left'], ['right'], ['front'], ['middle'], ['side'])),
+                          -1)
             if ref is not None and rel_at > 0:
                 inner = PhraseParser().parse(prev, rel_at)
                 if inner is not None:
@@ -760,8 +763,8 @@ def _uncleft(tokens: list[str]) -> list[str]:
 
     "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
     """
-    if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch', 'thing', 'part', 'bit', 'about'} |
-            _SWAP_WORDS) & set(tokens):
+    if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch', 'thing', 'part', 'bit',
+             'about'} | _SWAP_WORDS) & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
@@ -771,7 +774,8 @@ def _uncleft(tokens: list[str]) -> list[str]:
     new = _DROP_RULE.sub('forget ', new)   # "drop that condition": cancel it
     new = _THING_PART.sub(lambda m: f'{m.group("v")} {m.group("x")}', new)
     # "forget what I said about the roses": forget the roses
-    new = re.sub(r'\b(forget|ignore|scratch|disregard) (?:what i said|what i told you|everything i said|the bit|'
+    new = re.sub(r'\b(forget|ignore|scratch|disregard) (?:what i said|what i told you|everything i said|the'
+                 r' bit|'
                  r'the part|the stuff) about\b', r'\1', new)
     return new.split() if new != text else tokens
 
@@ -876,7 +880,8 @@ def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Option
         e = named.end + 1
         if seg[e:e + 1] in (['actually'], ['totally'], ['perfectly'], ['all'], ['completely'], ['now']):
             e += 1
-        if seg[e:e + 1] == ['been'] and seg[e + 1:e + 2] in (['fixed'], ['repaired'], ['cleared'], ['cleaned']):
+        if seg[e:e + 1] == ['been'] and seg[e + 1:e + 2] in (['fixed'], ['repaired'], ['cleared'],
+                                                             ['cleaned']):
             e += 1   # "the elevator's been fixed"
         if seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe'], ['fixed'], ['repaired'],
                                 ['cleared']) and \
@@ -1011,8 +1016,8 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         words = ['just'] + words[3 if words[1] != 'visit' else 2:]   # "just go to the north one"
     np = PhraseParser().parse(words, 1)
     spans = _np_spans(prev)
-    if np is not None and np.pronoun == 'one' and np.end == len(words) and words[1:2] in (['the'], ['that']) and \
-            len(words) == 4:
+    if np is not None and np.pronoun == 'one' and np.end == len(words) == 4 and \
+            words[1:2] in (['the'], ['that']):
         # "the north entrance or the south entrance ... just the north one": the one that was north
         same = [sp for sp in spans if [w for w in prev[sp.start:sp.end] if w not in DETERMINERS and
                                        w != 'either'][:1] == [words[2]]]

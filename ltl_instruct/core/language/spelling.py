@@ -154,7 +154,7 @@ class Speller:
             if suf == 'd' and not stem.endswith('e'):
                 continue   # "mentiond" is no "mention" + d (that is "baked": bake + d)
             # (an e dropped only before a vowel: "baking", not "completly")
-            if stem in w or (stem + 'e' in w and suf[0] in _VOWELS) or (suf[0] == 'i' and stem + 'y' in w) or (
+            if stem in w or stem + 'e' in w and suf[0] in _VOWELS or (suf[0] == 'i' and stem + 'y' in w) or (
                     suf in _DOUBLING and len(stem) > 3 and stem[-1] == stem[-2] and stem[:-1] in w):
                 return True
         if any(word + suf in w for suf in ('s', 'es', 'd', 'ed', 'ing', 'r', 'er')) or (

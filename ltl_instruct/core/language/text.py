@@ -45,7 +45,9 @@ TYPOS: dict[str, str] = {
     'sry': 'sorry', 'srry': 'sorry', 'nah': 'no', 'kyes': 'keys', 'whil': 'while',
     'exacty': 'exactly', 'rak': 'rack', 'dor': 'door', 'nex': 'next', 'exactley': 'exactly',
     'exacly': 'exactly',
-    'itme': 'item', 'itmes': 'items', 'rom': 'room', 'stn': 'station', 'wya': 'way', 'sory': 'sorry', 'jsut': 'just', 'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from', 'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
+    'itme': 'item', 'itmes': 'items', 'rom': 'room', 'stn': 'station', 'wya': 'way', 'sory': 'sorry',
+    'jsut': 'just', 'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from',
+    'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
@@ -55,8 +57,8 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'),
-    (r"\b(that|there|it|what|where|here|who|he|she|how|why|when|everything|everyone|nothing|wherever|whichever|"
-     r"whatever)'s\b", r'\1 is'),
+    (r"\b(that|there|it|what|where|here|who|he|she|how|why|when|everything|everyone|nothing|wherever|"
+     r"whichever|whatever)'s\b", r'\1 is'),
     (r"\b(either|whichever|which|each|this|that|any|neither|first|second|third|last|other|middle|red|blue|"
      r"green|left|right|big|small) one's\b", r'\1 one is'),   # "either one's fine", "the first one's"
     (r"'s(?= (?:next|first|last|after|before|then)\b)", ' is'),   # "the drum kit's next"
@@ -64,8 +66,8 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     # "the table's fine", "the red one's locked": "is", not a possessive, before how a thing is
     (r"'s(?= (?:fine|ok|okay|alright|safe|locked|closed|shut|open|broken|blocked|up|out|off|empty|full|wet|"
      r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
-     r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp|almost|nearly|dead|low|"
-     r"flat)\b)", ' is'),
+     r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp|almost|nearly|dead|"
+     r"low|flat)\b)", ' is'),
     # "grandma's sleeping": "is", before a verb in -ing (not "dad's walking stick")
     (r"'s(?= [a-z]+ing\b(?! (?:stick|sticks|machine|glasses|bag|board|table|room|chair|rod|frame|shoes|mat|"
      r"pole|line|basket|boots|gloves|kit|pad|area|station|cane|aid|lamp|desk|tray|can)\b))", ' is'),
@@ -194,7 +196,8 @@ def tokenize(text: str) -> list[str]:
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
     if 'its ' in s:   # "bring its charger": after a verb or preposition "its" is no "it is"
-        s = re.sub(r'\b(bring|take|carry|move|put|grab|get|fetch|return|to|on|in|at|by|near|from|of|with|under|'
+        s = re.sub(r'\b(bring|take|carry|move|put|grab|get|fetch|return|to|on|in|at|by|near|from|of|with'
+                   r'|under|'
                    r'behind|beside) its\b', r'\1 the', s)
     if '-' in s:   # "the walk-in cooler", "the drop-off point": one word of a name
         s = _PARTICLE_COMPOUND_RE.sub(r'\1_\2', s)

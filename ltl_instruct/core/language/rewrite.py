@@ -213,8 +213,8 @@ left right front that which there here it them up down away
 def _say_positions(tokens: list[str]) -> list[str]:
     """Say list positions the way the resolver reads them ("number two" is "the second one")."""
     if not {'number', 'item', 'stop', 'no', 'mentioned', 'said', 'named', 'listed', 'comes', 'outer',
-            'outside', 'end', 'is', 'sits', 'stands', 'looking', 'seeing', 'facing', 'front', 'and', 'reverse',
-            'opposite', 'backwards', 'between', 'last'} & set(tokens):
+            'outside', 'end', 'is', 'sits', 'stands', 'looking', 'seeing', 'facing', 'front', 'and',
+            'reverse', 'opposite', 'backwards', 'between', 'last'} & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = text

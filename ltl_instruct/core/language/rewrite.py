@@ -1266,7 +1266,7 @@ def _renumber(prev: list[str], seg: list[str]) -> Optional[list[str]]:
 
 
 def _neither(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
-    """Drop a choice taken back: 'the stairwell or the elevator, scratch that, neither, just go to room 204'."""
+    """Drop a choice taken back: 'the stairs or the lift, scratch that, neither, just go to room 204'."""
     words = [t for t in seg if t != ',']
     if words[:1] not in (['neither'], ['none']) or 'or' not in prev:
         return None

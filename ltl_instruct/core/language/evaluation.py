@@ -30,10 +30,9 @@ from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language.base import Translation, Translator
 from ltl_instruct.core.language.datasets import Example
 from ltl_instruct.core.language.verification import best_reading_of
-from ltl_instruct.core.spec import (
-    Atom, Descriptor, Formula, Not, avoided_referents_of, referents_of,
+from ltl_instruct.core.spec import (  # noqa: F401  (rename_descriptors is part of this API)
+    Descriptor, Formula, avoided_referents_of, referents_of, rename_descriptors,
 )
-from ltl_instruct.core.spec.ast import And, Or, _Binary, _Unary
 
 
 def edit_distance(ref: Sequence[str], hyp: Sequence[str]) -> int:
@@ -45,21 +44,6 @@ def edit_distance(ref: Sequence[str], hyp: Sequence[str]) -> int:
             cur[j] = min(prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (r != h))
         prev = cur
     return prev[-1]
-
-
-def rename_descriptors(f: Formula, mapping: dict[Descriptor, Descriptor]) -> Formula:
-    """``f`` with every skill argument in ``mapping`` replaced."""
-    if isinstance(f, Atom):
-        return Atom(f.skill, tuple(mapping.get(d, d) for d in f.args))
-    if isinstance(f, Not):
-        return Not(rename_descriptors(f.operand, mapping))
-    if isinstance(f, _Unary):
-        return type(f)(rename_descriptors(f.operand, mapping))
-    if isinstance(f, _Binary):
-        return type(f)(rename_descriptors(f.left, mapping), rename_descriptors(f.right, mapping))
-    if isinstance(f, (And, Or)):
-        return type(f)(tuple(rename_descriptors(g, mapping) for g in f.operands))
-    return f
 
 
 class EquivalenceChecker:

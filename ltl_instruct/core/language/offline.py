@@ -59,16 +59,10 @@ from ltl_instruct.core.language.text import (
 )
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
-    avoided_referents_of, referents_of,
+    avoided_referents_of, referents_of, rename_descriptors,
 )
 
 MAX_INSTRUCTION_CHARS = 2000
-
-
-def _rename(f: Formula, mapping: dict[Descriptor, Descriptor]) -> Formula:
-    """``f`` with every skill argument in ``mapping`` replaced."""
-    from ltl_instruct.core.language.evaluation import rename_descriptors
-    return rename_descriptors(f, mapping)
 
 
 # Words that put an avoidance over the whole run, whatever scope the sentence opened with.
@@ -633,7 +627,7 @@ class _Reader:
             if len(full) == 1:
                 mapping[d] = Descriptor(full[0])
                 self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
-        return _rename(formula, mapping) if mapping else formula
+        return rename_descriptors(formula, mapping) if mapping else formula
 
     def _places_only(self, sentence: list[str]) -> bool:
         """Whether a sentence is nothing but places ("the den, then the attic", "garage, please")."""

@@ -405,6 +405,21 @@ def atoms_of(f: Formula) -> tuple[Atom, ...]:
     return tuple(seen)
 
 
+def rename_descriptors(f: Formula, mapping: dict[Descriptor, Descriptor]) -> Formula:
+    """Return ``f`` with every skill argument in ``mapping`` replaced."""
+    if isinstance(f, Atom):
+        return Atom(f.skill, tuple(mapping.get(d, d) for d in f.args))
+    if isinstance(f, Not):
+        return Not(rename_descriptors(f.operand, mapping))
+    if isinstance(f, _Unary):
+        return type(f)(rename_descriptors(f.operand, mapping))
+    if isinstance(f, _Binary):
+        return type(f)(rename_descriptors(f.left, mapping), rename_descriptors(f.right, mapping))
+    if isinstance(f, (And, Or)):
+        return type(f)(tuple(rename_descriptors(g, mapping) for g in f.operands))
+    return f
+
+
 def referents_of(f: Formula) -> tuple[Descriptor, ...]:
     """Distinct skill-argument descriptors in order of first appearance."""
     seen: dict[Descriptor, None] = {}

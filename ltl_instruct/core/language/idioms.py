@@ -285,7 +285,7 @@ RULES: tuple[Rule, ...] = (
          rf' )?(?:not|never) '
          r'both$', r'go to \g<x> , but never both'),
     Rule('wait by the lifts for the porter',
-         r'\b(?P<v>wait|stand|stay|hang around) (?P<r>(?:by|at|near|outside|in) (?:the|my|our) [^,.;!?]+?)'
+         r'\b(?P<v>wait|stand|stay|hang around|go) (?P<r>(?:by|at|near|outside|in|to) (?:the|my|our) [^,.;!?]+?)'
          r' for (?:the|my|our|a) '
          r'(?:porter|nurse|doctor|driver|delivery|courier|guest|visitor|patient|cleaner|technician|postman|'
          r'engineer|plumber|electrician)\b', r'\g<v> \g<r>'),
@@ -303,6 +303,29 @@ RULES: tuple[Rule, ...] = (
     Rule('bring its charger over there as well',
          r'\b(?P<v>bring|take|carry|move) (?:its|the|their|his|her) (?P<x>[^,.;!?]+?) over there\b',
          r'\g<v> the \g<x> there'),
+    Rule('fly laps over the track, at least three of them',
+         r' , (?P<m>at least|at most|exactly) (?P<n>two|three|four|five|six) of them\b', r' \g<m> \g<n> times'),
+    Rule('never overfly the playground', r'\boverfl(?P<e>y|ying|ies|ew|own)\b',
+         lambda m: {'y': 'fly', 'ying': 'flying', 'ies': 'flies', 'ew': 'flew', 'own': 'flown'}[m.group('e')]
+         + ' over'),
+    Rule('loop from the receiving dock to the shipping dock',
+         r'\b(?:loop|do (?:the|a) (?:loop|run|walk|trip|circuit)|fly (?:the|a) (?:stretch|leg|route|loop)) from ',
+         'go from '),
+    Rule('kindly dispose of the used gloves', r'\b(?:dispose|get rid) of\b', 'throw away'),
+    Rule('you may stop by the freezer at most once',
+         rf'\byou (?:may|can|are allowed to|are permitted to) (?:stop by|visit|go to|enter|pop into|go into|open) '
+         rf'(?P<x>the {_NP}) (?P<c>(?:at most|no more than|only) (?:once|twice))\b', r'visit \g<x> \g<c>'),
+    Rule('come within reach of the bins', r'\b(?:come|go|get) within (?:reach|range|arm s reach) of\b', 'go near'),
+    Rule('on no account visit both', r'\b(?:never|do not) (?:visit|go to|do) both\b', 'never both'),
+    Rule('both the key and the card need to go to the front desk',
+         rf'^(?:both )?(?P<x>(?:the|my|our) {_NP} and (?:the|my|our) {_NP}) (?:both )?(?:need|have) to go '
+         rf'(?P<p>to|in|into|on) (?P<y>(?:the|my|our|room) {_NP})', r'bring \g<x> \g<p> \g<y>'),
+    Rule('leave it either at room 204 or at the linen cart',
+         rf'\b(?P<v>leave|drop|put) (?P<o>it|them) either (?P<p>at|in|on) (?P<x>(?:the |room )?{_NP}) '
+         r'or (?:at|in|on) ',
+         r'\g<v> \g<o> \g<p> \g<x> or '),
+    Rule('all I need is for you to get to the bay window',
+         r'\b(?:all|what) (?:i|we) (?:really |actually )?(?:need|want) is for you to\b', ''),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '
@@ -1118,6 +1141,10 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<c>once|when|after) (?:it is|they are) '
          r'(?:in your (?:hands|hand|grip|gripper|possession|arms)|'
          r'on board|aboard|picked up)\b', r'\g<c> you have picked it up'),
+    Rule('until it is in your gripper: until picked up',
+         r'\b(?P<c>until|till) (?:(?:it is|they are) (?:in your (?:hands|hand|grip|gripper|possession|arms)|'
+         r'on board|aboard)|you have (?:it|them) in (?:hand|your hands?|your gripper|your grip))\b',
+         r'\g<c> you have picked it up'),
     Rule('while it is hanging off you: while carrying it',
          r'\bwhile (?P<o>it is|they are) (?:in your (?:hands|hand|grip|gripper|possession|arms|claws)|on'
          r' board|'

@@ -313,7 +313,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' will want', ' should', ' need to', ' have to', ' must', ' free',
                                    ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
                                    ' supposed', ' sooner', ' earlier', ' or ', ' times', ' back ', ' matter',
-                                   ' care ', ' order')):
+                                   ' care ', ' order', ' do ')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:

@@ -944,6 +944,7 @@ def _np_end(words: list[str]) -> int:
 
 # Verbs of keeping away that a restatement may start with ("keep the dog out... I mean, keep away from it").
 _KEEP_VERBS = frozenset({'keep', 'stay', 'steer'})
+_AVOID_VERBS = _KEEP_VERBS | {'avoid'}
 _DELIVERY = frozenset({'put', 'place', 'bring', 'take', 'throw', 'toss', 'move', 'carry', 'deliver', 'drop',
                        'leave', 'set', 'stash', 'store', 'dump', 'load', 'unload', 'hang', 'return', 'stick'})
 
@@ -961,10 +962,12 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
         b -= 1
     if b < end and prev[b] != seg[0]:
         # "on the way to the hall avoid the stairs, no wait, avoid the door": the verb said again
-        b = next((p for p in range(end - 1, b, -1) if prev[p] == seg[0] and seg[0] == 'avoid'), b)
+        # ("keep away from the microwave. scratch that, stay away from the toaster": the same rule)
+        b = next((p for p in range(end - 1, b, -1) if prev[p] == seg[0] == 'avoid' or
+                  prev[p] in _AVOID_VERBS and seg[0] in _AVOID_VERBS), b)
     if b < end and prev[b] != seg[0] and prev[b] in _DELIVERY and seg[0] in _DELIVERY:
         pass   # "throw away the papers. no, actually, put them in the recycling bin": the delivery again
-    elif b >= end or prev[b] != seg[0]:
+    elif b >= end or prev[b] != seg[0] and not (prev[b] in _AVOID_VERBS and seg[0] in _AVOID_VERBS):
         return None
     old = prev[b:end]
     new = list(seg)
@@ -1420,6 +1423,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             seg = seg + [',']
         if seg and seg[0] == 'that' or marker in ('scratch', 'scrap'):
             seg = seg[1:] if seg and seg[0] == 'that' else seg
+        said = seg[1:] if seg[:1] == [','] else seg
+        if said[:1] and said[0] in _AVOID_VERBS:
+            restated = _restate(prev, said, notes)   # "scratch that, stay away from the toaster instead"
+            if restated is not None:
+                return restated
         k = seg.index(',') if ',' in seg else len(seg)
         k = next((j for j in range(k) if seg[j] in ('and', 'then') and j + 1 < len(seg) and seg[j + 1] in
                   _VERBS | {'do'}), k)

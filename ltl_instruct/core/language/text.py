@@ -205,6 +205,9 @@ def tokenize(text: str) -> list[str]:
     if 'ur ' in s:   # "on ur way": "ur" before a noun is "your", elsewhere "you are"
         s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best)\b)',
                    'your ', s)
+    if re.search(r'(?:to|at|into|outside|from) \d{3}\b', s):   # "go up to 204": room 204
+        s = re.sub(r'\b(to|at|into|outside|from) (\d{3})\b(?! ?(?:times|meters|metres|m|cm|feet|ft|percent|%|'
+                   r'degrees|am|pm|hours|minutes|seconds|kg|km|miles)\b)', r'\1 room \2', s)
     if ' 2 ' in s:   # "go 2 the break room", "the towels 2 the cart": chat spelling of "to" before a place
         s = re.sub(r'(?<=[a-z]) 2 (?=(?:the|my|our|your|this|that|either|both)\b)', ' to ', s)
         s = re.sub(r'\b(go|head|come|get|walk|drive|fly|run|move|back|over|down|up|way|next|close) 2 '

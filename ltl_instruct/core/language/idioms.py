@@ -313,9 +313,11 @@ RULES: tuple[Rule, ...] = (
          'go from '),
     Rule('kindly dispose of the used gloves', r'\b(?:dispose|get rid) of\b', 'throw away'),
     Rule('you may stop by the freezer at most once',
-         rf'\byou (?:may|can|are allowed to|are permitted to) (?:stop by|visit|go to|enter|pop into|go into|open) '
+         rf'\byou (?:may|can|are allowed to|are permitted to) '
+         rf'(?:stop by|visit|go to|enter|pop into|go into|open) '
          rf'(?P<x>the {_NP}) (?P<c>(?:at most|no more than|only) (?:once|twice))\b', r'visit \g<x> \g<c>'),
-    Rule('come within reach of the bins', r'\b(?:come|go|get) within (?:reach|range|arm s reach) of\b', 'go near'),
+    Rule('come within reach of the bins', r'\b(?:come|go|get) within (?:reach|range|arm s reach) of\b',
+         'go near'),
     Rule('on no account visit both', r'\b(?:never|do not) (?:visit|go to|do) both\b', 'never both'),
     Rule('both the key and the card need to go to the front desk',
          rf'^(?:both )?(?P<x>(?:the|my|our) {_NP} and (?:the|my|our) {_NP}) (?:both )?(?:need|have) to go '

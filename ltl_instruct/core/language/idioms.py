@@ -304,12 +304,14 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<v>bring|take|carry|move) (?:its|the|their|his|her) (?P<x>[^,.;!?]+?) over there\b',
          r'\g<v> the \g<x> there'),
     Rule('fly laps over the track, at least three of them',
-         r' , (?P<m>at least|at most|exactly) (?P<n>two|three|four|five|six) of them\b', r' \g<m> \g<n> times'),
+         r' , (?P<m>at least|at most|exactly) (?P<n>two|three|four|five|six) of them\b',
+         r' \g<m> \g<n> times'),
     Rule('never overfly the playground', r'\boverfl(?P<e>y|ying|ies|ew|own)\b',
          lambda m: {'y': 'fly', 'ying': 'flying', 'ies': 'flies', 'ew': 'flew', 'own': 'flown'}[m.group('e')]
          + ' over'),
     Rule('loop from the receiving dock to the shipping dock',
-         r'\b(?:loop|do (?:the|a) (?:loop|run|walk|trip|circuit)|fly (?:the|a) (?:stretch|leg|route|loop)) from ',
+         r'\b(?:loop|do (?:the|a) (?:loop|run|walk|trip|circuit)|fly (?:the|a) (?:stretch|leg|route|loop))'
+         r' from ',
          'go from '),
     Rule('kindly dispose of the used gloves', r'\b(?:dispose|get rid) of\b', 'throw away'),
     Rule('you may stop by the freezer at most once',

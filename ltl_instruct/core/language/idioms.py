@@ -285,7 +285,8 @@ RULES: tuple[Rule, ...] = (
          rf' )?(?:not|never) '
          r'both$', r'go to \g<x> , but never both'),
     Rule('wait by the lifts for the porter',
-         r'\b(?P<v>wait|stand|stay|hang around|go) (?P<r>(?:by|at|near|outside|in|to) (?:the|my|our) [^,.;!?]+?)'
+         r'\b(?P<v>wait|stand|stay|hang around|go) '
+         r'(?P<r>(?:by|at|near|outside|in|to) (?:the|my|our) [^,.;!?]+?)'
          r' for (?:the|my|our|a) '
          r'(?:porter|nurse|doctor|driver|delivery|courier|guest|visitor|patient|cleaner|technician|postman|'
          r'engineer|plumber|electrician)\b', r'\g<v> \g<r>'),

@@ -776,6 +776,12 @@ def set_off_remarks(tokens: list[str], notes: list[str]) -> list[str]:
                 lead = max((k for k in range(cut) if sentence[k] in PUNCT), default=-1) + 1
                 if is_remark(sentence[lead:]):
                     cut = -1   # "..., i am not fussy": set off already
+            if cut < 0:
+                # "either the greenhouse or the cold frame, I only need one looked at": a remark after a
+                # comma that ends a sentence (the alternatives would take it in)
+                c = max((k for k in range(2, len(sentence) - 1) if sentence[k] == ','), default=-1)
+                if c > 0 and 'or' in sentence[:c] and sentence[c + 1] in ('i', 'we') and is_remark(sentence[c + 1:]):
+                    cut = c
             if cut > 0:
                 notes.append(f'left out "{" ".join(sentence[cut:])}" (asks for nothing)')
             out.extend(sentence[:cut] if cut > 0 else sentence)

@@ -339,7 +339,9 @@ def _passes(tokens: list[str]) -> list[str]:
     if np is None or after[:1] == ['either']:
         return tokens   # "do a flyover of either the field or the vineyard": a choice (see idioms)
     count = m.group(3)
-    times = ['once'] if count in ('a', 'an', 'a single', 'one', '1') else [count, 'times']
+    # "make a pass over the station": a visit ("once" would read as a count, or open an event)
+    times = [] if count in ('a', 'an') else ['once'] if count in ('a single', 'one', '1') else [
+        count, 'times']
     if m.group(2) in ('made', 'done', 'did', 'taken', 'flown', 'performed', 'completed'):
         # "once you have made a pass over the substation": once you have visited it
         return before + ['visited'] + after[:np.end] + (times if times != ['once'] else []) + _passes(

@@ -249,7 +249,10 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     start = max((k for k in range(s - 1) if tokens[k] in '.;!?'), default=-1) + 1
     ahead = s >= 2 and tokens[s - 1] == ':' and any(t in ORDINALS or t in ('last', 'middle') for t in tokens[
         start:s - 1])   # "the first and third things on this list: ..."
-    if not any(t in _REF_WORDS for t in tail) and not any(t.isdigit() for t in tail) and not ahead:
+    refers = any(t in _REF_WORDS and not (t == 'all' and tail[k + 1:k + 2] not in (
+        ['of'], ['three'], ['four'], ['five'], ['two'], ['in'], ['them'], ['those'], ['these'], ['.'], [','],
+        []) and tail[k - 1:k] != ['them']) for k, t in enumerate(tail))   # "all I need is ...": no reference
+    if not refers and not any(t.isdigit() for t in tail) and not ahead:
         heads = {np.head for np in nps}
         if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
                 not any(t in NAME_VERBS for t in tokens[:end]):
@@ -396,6 +399,13 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += joined([ORDINALS[t] - 1])
                 i += 2 if nxt in ('one', 'ones', 'things', 'items') else 1
                 continue
+            if t == 'the' and nxt in COLOURS and tail[i + 2:i + 3] == ['one']:
+                # "a red door, a green door and a blue door. Go to the green one"
+                idx = [m for m, it in enumerate(items) if nxt in it]
+                if len(idx) == 1:
+                    out += joined(idx)
+                    i += 3
+                    continue
             if t == 'them' and nxt == 'in' and tail[i + 2:i + 4] == ['reverse', 'order']:
                 out += joined(list(range(n - 1, -1, -1)), 'then')
                 i += 4
@@ -423,7 +433,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             i += 1
         return out
 
-    if not any(t in _REF_WORDS for t in tail) and ahead:
+    if not refers and ahead:
         # "keep clear of the first and third things on this list: a wheelchair, a cart, a hamper"
         head = _drop_mentions(tokens[start:s - 1])
         notes.append('list of ' + ', '.join(' '.join(it[1:]) for it in items) + ': positions resolved')
@@ -1146,6 +1156,10 @@ def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
 def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Move a goal first: 'go to the pool, then the gym. Actually, do the gym first'."""
     words = [t for t in seg if t not in PUNCT]
+    f = words.index('first') if 'first' in words[1:-1] else -1
+    if f > 0 and words[-1] in ('after', 'afterwards', 'second', 'next', 'last', 'later') and \
+            words[f + 1:f + 2] == ['and']:
+        words = words[:f + 1]   # "door first and the whiteboard after"
     if not words or words[-1] != 'first':
         return None
     k = 0

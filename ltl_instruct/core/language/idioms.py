@@ -338,8 +338,8 @@ RULES: tuple[Rule, ...] = (
          r'(?: ,)? and (?:leave|put|drop|set|place) (?:it|them|that) (?:on|in|at|by|into|onto) ',
          r'\g<v> either \g<x> to '),
     Rule('take the drone up and check on the pond',
-         r'^(?:take|get|send|put) the (?:drone|quadcopter|copter) (?:up|out|airborne|into the air)(?: and| ,)? ',
-         ''),
+         r'^(?:take|get|send|put) the (?:drone|quadcopter|copter) (?:up|out|airborne|into the air)'
+         r'(?: and| ,)? ', ''),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '

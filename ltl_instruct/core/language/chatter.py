@@ -780,7 +780,8 @@ def set_off_remarks(tokens: list[str], notes: list[str]) -> list[str]:
                 # "either the greenhouse or the cold frame, I only need one looked at": a remark after a
                 # comma that ends a sentence (the alternatives would take it in)
                 c = max((k for k in range(2, len(sentence) - 1) if sentence[k] == ','), default=-1)
-                if c > 0 and 'or' in sentence[:c] and sentence[c + 1] in ('i', 'we') and is_remark(sentence[c + 1:]):
+                if c > 0 and 'or' in sentence[:c] and sentence[c + 1] in ('i', 'we') and \
+                        is_remark(sentence[c + 1:]):
                     cut = c
             if cut > 0:
                 notes.append(f'left out "{" ".join(sentence[cut:])}" (asks for nothing)')

@@ -331,10 +331,11 @@ RULES: tuple[Rule, ...] = (
          r'\g<v> \g<o> \g<p> \g<x> or '),
     Rule('all I need is for you to get to the bay window',
          r'\b(?:all|what) (?:i|we) (?:really |actually )?(?:need|want) is for you to\b', ''),
-    Rule('bring her either the cardigan or the shawl', r'\b(?P<v>bring|fetch|get) (?:her|him|them|us) (?=either )',
-         r'\g<v> '),
+    Rule('bring her either the cardigan or the shawl',
+         r'\b(?P<v>bring|fetch|get) (?:her|him|them|us) (?=either )', r'\g<v> '),
     Rule('bring either the cardigan or the shawl, and leave it on her armchair',
-         rf'\b(?P<v>bring|take|carry|fetch) either (?P<x>(?:the|a|an|my|some) {_NP} or (?:the|a|an|my|some) {_NP})'
+         rf'\b(?P<v>bring|take|carry|fetch) either (?P<x>(?:the|a|an|my|some) {_NP} or (?:the|a|an|my|some)'
+         rf' {_NP})'
          r'(?: ,)? and (?:leave|put|drop|set|place) (?:it|them|that) (?:on|in|at|by|into|onto) ',
          r'\g<v> either \g<x> to '),
     Rule('take the drone up and check on the pond',

@@ -33,6 +33,9 @@ BLIND_ROUND_K2 = [
      'F (near[freezer_thermometer] & F (!near[freezer_thermometer] & F near[freezer_thermometer]))'),
     ("Go by the compacter at most once, it's loud and the guys are on break.",
      '!near[compactor] W (near[compactor] & (near[compactor] W G !near[compactor]))'),
+    ('Loop from the receiving dock to the shipping dock, twice in a row.',
+     'F (near[receiving_dock] & F (near[shipping_dock] & F (near[receiving_dock] & F '
+     'near[shipping_dock])))'),
     ('Dock four. No, five.',
      'F near[dock_five]'),
     ("Stay away from the conveyor. Actually it's shut down, so it's fine; just avoid the baler. Go to "
@@ -67,6 +70,10 @@ BLIND_ROUND_K2 = [
     ("Throw out the old newspaper, and after you've got rid of it, stay out of the study.",
      'F (near[old_newspaper] & F (pick[old_newspaper] & F (near[trash_can] & F (release[old_newspaper, '
      'trash_can] & G !near[study]))))'),
+    ('Bring her either the blue cardigan or the grey shawl, and leave it on her armchair.',
+     'F (near[blue_cardigan] & F (pick[blue_cardigan] & F (near[armchair] & F release[blue_cardigan, '
+     'armchair]))) | F (near[grey_shawl] & F (pick[grey_shawl] & F (near[armchair] & F '
+     'release[grey_shawl, armchair])))'),
     ('Check the front door exactly once, she gets anxious if she hears you going back and forth.',
      '!near[front_door] U (near[front_door] & (near[front_door] W G !near[front_door]))'),
     ("Check the back door three times, Dad always worries it's not locked.",
@@ -113,10 +120,17 @@ BLIND_ROUND_K2 = [
      'F near[fume_hood] & (!near[fume_hood] U near[emergency_shower])'),
     ('Should you need to enter the tissue culture room at any point, visit the handwash sink beforehand.',
      '!near[tissue_culture_room] W near[handwash_sink]'),
+    ('Collect the cryo gloves, and refrain from approaching the sample freezer until you have them in '
+     'hand; then go to the freezer.',
+     'F (near[cryo_gloves] & F (pick[cryo_gloves] & F near[sample_freezer])) & (!near[sample_freezer] '
+     'U pick[cryo_gloves])'),
     ('Refrain from going anywhere near the laser bench today, full stop.',
      'G !near[laser_bench]'),
     ('go to the printer, never go near the fume hod',
      'F near[printer] & G !near[fume_hood]'),
+    ('Go to either the east sink or the west sink, and under no circumstances come within reach of the '
+     'hazardous waste bins.',
+     '(F near[east_sink] | F near[west_sink]) & G !near[hazardous_waste_bins]'),
     ('Carry the sample rack over to the cold room, and while you are transporting it, refrain from '
      'passing anywhere near the heat block, as the samples must remain cold.',
      'F (near[sample_rack] & F (pick[sample_rack] & (!near[heat_block] U (near[cold_room] & F '
@@ -127,13 +141,20 @@ BLIND_ROUND_K2 = [
      '(!near[forklift_charger] U near[loading_bay]) & F (near[loading_bay] & G !near[recycling_cage])'),
     ('Go to the upstairs autoclave or the basement one, whichever is free.',
      'F near[upstairs_autoclave] | F near[basement_autoclave]'),
+    ('Proceed to the north exit or the south exit, but on no account visit both.',
+     '(F near[north_exit] & G !near[south_exit]) | (F near[south_exit] & G !near[north_exit])'),
     ('head to the autoclave or the steam sterilzer',
      'F near[autoclave] | F near[steam_sterilizer]'),
+    ('You may stop by the freezer at most once; every opening lets warm air in.',
+     '!near[freezer] W (near[freezer] & (near[freezer] W G !near[freezer]))'),
     ('Go to the sample freezer exactly one time and subsequently proceed to the centrifuge.',
      '(!near[sample_freezer] U (near[sample_freezer] & (near[sample_freezer] W G '
      '!near[sample_freezer]))) & F (near[sample_freezer] & F near[centrifuge])'),
     ('put the glasware in the autoclave',
      'F (near[glassware] & F (pick[glassware] & F (near[autoclave] & F release[glassware, autoclave])))'),
+    ('Kindly dispose of the used gloves.',
+     'F (near[used_gloves] & F (pick[used_gloves] & F (near[trash_can] & F release[used_gloves, '
+     'trash_can])))'),
     ("I've left a pipette, a timer and a marker on the counter. Take the secnod item to the drawer.",
      'F (near[timer] & F (pick[timer] & F (near[drawer] & F release[timer, drawer])))'),
     ('Of the fume hood, the biosafety cabinet and the laminar flow hood, go to the first and refrain '
@@ -166,6 +187,8 @@ BLIND_ROUND_K2 = [
      'F near[room_204] & (!near[room_204] U near[linen_cart])'),
     ('If you end up on the rooftop terrace at all, check with the security office first.',
      '!near[rooftop_terrace] W near[security_office]'),
+    ("Go up to 204 and don't go anywhere near the luggage trolley or the fire extinguisher cabinet.",
+     'F near[room_204] & G !near[luggage_trolley] & G !near[fire_extinguisher_cabinet]'),
     ("Dirty linens go in the laundry chute. Once they're in your hands, keep out of the breakfast room "
      'for the rest of the job.',
      'F (near[dirty_linens] & F (pick[dirty_linens] & G !near[breakfast_room] & F (near[laundry_chute] '
@@ -176,13 +199,28 @@ BLIND_ROUND_K2 = [
      '(!near[valet_stand] U near[parking_garage]) & F (near[parking_garage] & G !near[ramp])'),
     ("Go to the second floor ice machine or the third floor one, whichever's closer.",
      'F near[second_floor_ice_machine] | F near[third_floor_ice_machine]'),
+    ('Bring either the spare pillow or the extra blanket up to 204.',
+     'F (near[spare_pillow] & F (pick[spare_pillow] & F (near[room_204] & F release[spare_pillow, '
+     'room_204]))) | F (near[extra_blanket] & F (pick[extra_blanket] & F (near[room_204] & F '
+     'release[extra_blanket, room_204])))'),
     ("Take the stairs or the elevator, I don't mind.",
      'F near[stairs] | F near[elevator]'),
+    ('Take the cleaning caddy and leave it either at room 204 or at the linen cart.',
+     'F (near[cleaning_caddy] & F (pick[cleaning_caddy] & (F (near[room_204] & F '
+     'release[cleaning_caddy, room_204]) | F (near[linen_cart] & F release[cleaning_caddy, '
+     'linen_cart]))))'),
     ("go past the pool three times, lifeguard's off today",
      'F (near[pool] & F (!near[pool] & F (near[pool] & F (!near[pool] & F near[pool]))))'),
+    ('Do the walk from the east stairwell to the west stairwell, then do that same walk again.',
+     'F (near[east_stairwell] & F (near[west_stairwell] & F (near[east_stairwell] & F '
+     'near[west_stairwell])))'),
     ('I need you in the laundry room exactly twice this shift.',
      '!near[laundry_room] U (near[laundry_room] & (near[laundry_room] U (!near[laundry_room] & '
      '(!near[laundry_room] U (near[laundry_room] & (near[laundry_room] W G !near[laundry_room]))))))'),
+    ('Both the room key and the welcome card need to go to the front desk.',
+     'F (near[room_key] & F (pick[room_key] & F (near[front_desk] & F release[room_key, front_desk]))) '
+     '& F (near[welcome_card] & F (pick[welcome_card] & F (near[front_desk] & F release[welcome_card, '
+     'front_desk])))'),
     ("We've got a lamp, a kettle and a hair dryer to return. Take the last two to the front desk.",
      'F (near[kettle] & F (pick[kettle] & F (near[front_desk] & F release[kettle, front_desk]))) & F '
      '(near[hair_dryer] & F (pick[hair_dryer] & F (near[front_desk] & F release[hair_dryer, '
@@ -208,8 +246,14 @@ BLIND_ROUND_K2 = [
      '(pick[parcel::isabove(ledge::isnextto(chimney))] & (!near[pool] U (near[front_entrance] & F '
      'release[parcel::isabove(ledge::isnextto(chimney)), front_entrance]))))'),
     # O2: a drone operator and an office
+    ('take the drone up and check on the duck pond',
+     'F near[duck_pond]'),
+    ('Land on the helipad, but before doing that, first make a pass over the weather station.',
+     'F (near[weather_station] & F near[helipad])'),
     ("Check the east gate or the west gate, doesn't matter wich",
      'F near[east_gate] | F near[west_gate]'),
+    ('Fly the stretch from the boathouse to the footbridge twice in a row.',
+     'F (near[boathouse] & F (near[footbridge] & F (near[boathouse] & F near[footbridge])))'),
     ('Checkpoints for today: the pump house, the north field, the grain bins. Fly them last to first.',
      'F (near[grain_bins] & F (near[north_field] & F near[pump_house]))'),
     ('kitchen, mail room, reception: first go to the second place I mentiond, then to the first',
@@ -219,9 +263,18 @@ BLIND_ROUND_K2 = [
      'F (near[vineyard] & F near[olive_grove])'),
     ('Land at the helipad or the soccer field, uh, no: the tennis courts or the soccer field.',
      'F near[tennis_courts] | F near[soccer_field]'),
+    ('Fly laps over the running track, at least three of them.',
+     'F (near[running_track] & F (!near[running_track] & F (near[running_track] & F '
+     '(!near[running_track] & F near[running_track]))))'),
     # P2: written as the dev set is written
     ("Swing by the vending machine and the first aid kit, doesn't matter which one first.",
      'F near[vending_machine] & F near[first_aid_kit]'),
+    ("Get the master key before anything else; the wine cellar is off limits until it's in your "
+     'gripper. Then head down to the wine cellar.',
+     'F (near[master_key] & F (pick[master_key] & F near[wine_cellar])) & (!near[wine_cellar] U '
+     'pick[master_key])'),
+    ('Keep away from the aquarium and the bird cage. All I need is for you to get to the bay window.',
+     'F near[bay_window] & G !near[aquarium] & G !near[bird_cage]'),
     ('check the baby moniter at least twice',
      'F (near[baby_monitor] & F (!near[baby_monitor] & F near[baby_monitor]))'),
     ("There's a scarf, a hat and a pair of gloves to tidy up. Take the second thing I listed to the "
@@ -229,6 +282,9 @@ BLIND_ROUND_K2 = [
      'F (near[hat] & F (pick[hat] & F (near[wardrobe] & F release[hat, wardrobe])))'),
     ('Kettle, microwave, dishwasher: hit them in the reverse of that order.',
      'F (near[dishwasher] & F (near[microwave] & F near[kettle]))'),
+    ("Okay so along this corridor there's a red door, a green door and a blue door. Go to the green "
+     'one, and please keep well away from the other two, the guests in there are asleep.',
+     'F near[green_door] & G !near[red_door] & G !near[blue_door]'),
     ("In the craft room there's an easel, a sink, a drying rack and a kiln. Go to the one that comes "
      'right after the sink.',
      'F near[drying_rack]'),
@@ -284,6 +340,11 @@ BLIND_ROUND_K2 = [
      'F near[fire_extinguisher]'),
     ("can u bring my green mug to my desk... no sory, the white one, the green one's dirty",
      'F (near[white_mug] & F (pick[white_mug] & F (near[desk] & F release[white_mug, desk])))'),
+    ('Go to the fridge and keep away from the microwave. Hmm, scratch that, stay away from the toaster '
+     'instead.',
+     'F near[fridge] & G !near[toaster]'),
+    ('Whiteboard, then door. Hmm, no, door first and the whiteboard after.',
+     'F (near[door] & F near[whiteboard])'),
     ('Go to the kitchen and avoid the printer on the way. Oh, actually forget the kitchen, go to the '
      'lounge instead, still avoiding the printer on the way.',
      '!near[printer] U near[lounge]'),
@@ -301,6 +362,8 @@ BLIND_ROUND_K2 = [
      'F near[lawn] & (!near[lawn] U near[fuel_can]) & (!near[barbecue] U near[lawn])'),
     ('Go to the woodpile and then the fire pit, and avoid the dog kenel the whole time, he gets excited.',
      'F (near[woodpile] & F near[fire_pit]) & G !near[dog_kennel]'),
+    ('Either check the greenhouse or the cold frame, I only need one looked at.',
+     'F near[greenhouse] | F near[cold_frame]'),
     ('Do the orchad first and then the vineyard, or the other way round, your choice.',
      'F (near[orchard] & F near[vineyard]) | F (near[vineyard] & F near[orchard])'),
     ("Visit the bird feeder at most once, or you'll scare the finches off.",
@@ -314,6 +377,9 @@ BLIND_ROUND_K2 = [
      'F near[garage] & G !near[shed] & G !near[greenhouse]'),
     ('My list for you: oil can, grease gun, tyre gauge. Go to the 3rd itme.',
      'F near[tyre_gauge]'),
+    ("Keep away from the pond. Actually the pond's fine today, it's the rockery you should avoid. Go "
+     'to the gate.',
+     'F near[gate] & G !near[rockery]'),
     ('Go to the potting bench and then the tap, and stay away from the roses. Forget what I said about '
      'the roses.',
      'F (near[potting_bench] & F near[tap])'),
@@ -323,6 +389,8 @@ BLIND_ROUND_K2 = [
     # S2: a hospital ward, terse
     ('need you at the nurses stn asap',
      'F near[nurses_station]'),
+    ('Can you wait by the lifts for the porter?',
+     'F near[lifts]'),
     ("Sluice room please, when you've got a sec.",
      'F near[sluice_room]'),
     ('go to the supply rom',

@@ -572,6 +572,9 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         Where a noun phrase at the start of the clause ends (0: none), for
         noun-phrase subjects ("the cat keeps...").
     """
+    if len(tokens) > 4 and tokens[-1] == 'yet' and 'not' in tokens and {'it', 'them', 'that', 'this'} & set(
+            tokens) and not {'go', 'visit', 'avoid', 'near', 'enter', 'stay', 'keep', 'you'} & set(tokens):
+        return True   # "cleanup crew hasn't gotten to it yet": how the scene stands
     if not tokens or has_constraint_word([t for k, t in enumerate(tokens) if not (
             # "it needs more shade": an amount of something, no count of visits
             t in ('more', 'less') and k > 1 and tokens[k - 1] in FINITE_VERBS and k + 1 < len(tokens) and

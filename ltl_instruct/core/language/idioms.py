@@ -279,7 +279,7 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<p>in|into|on|back in|back on|back to|back into) (?P<y>(?:the|my|our) {_NP})$',
          lambda m: f'put {_with_article(m.group("x"))} {m.group("p")} {m.group("y")}'),
     Rule('kettle or microwave, only one of the two, never both',
-         r' , only one of (?:the two|them|those|the pair)(?= , (?:not|never) both\b)', ''),
+         r' , (?:only|just) one of (?:the two|them|those|the pair)(?= , (?:not|never) both\b)', ''),
     Rule('the kettle or the microwave, not both',
          rf'^(?P<x>(?:the |a |an )?{_W}(?: {_W}){{0,3}} or (?:the |a |an )?{_W}(?: {_W}){{0,3}}) , (?:but'
          rf' )?(?:not|never) '
@@ -348,6 +348,19 @@ RULES: tuple[Rule, ...] = (
     Rule('swing by the shop to see if they need anything',
          r' to see (?:if|whether) (?:they|he|she|anyone|someone|everyone|there|everything|it|we)'
          r' [^,.;!?]*', ''),
+    Rule('go see if the baby monitor is still on the dresser',
+         rf'\b(?:go |and )?(?:see|check|find out|look) (?:if|whether) (?P<x>(?:the|my|our) {_NP}) (?:is|are) '
+         r'(?:still )?(?P<r>on|under|in|by|next to|behind|beside|near|in front of|on top of|underneath) '
+         rf'(?P<y>(?:the|my|our) {_NP})', r'go to \g<x> \g<r> \g<y>'),
+    Rule('stay out of the way of the stairwell door',
+         r'\b(?P<v>stay|keep) out of the way of\b', r'\g<v> away from'),
+    Rule('go stand right next to it', r'\bright (?=next to|behind|in front of|beside|by|under|outside|inside)', ''),
+    Rule('only head to the garage once the dock is done',
+         rf'\b(?P<w>once|after) (?P<x>(?:the|my|our) {_NP}) (?:is|has been) (?:done|checked|finished|complete|'
+         r'completed|sorted|covered|dealt with)\b', r'\g<w> you have visited \g<x>'),
+    Rule('do not set foot in there without it',
+         r'\b(?P<n>do not|never) (?:set foot in|go in|go into|enter|go to) (?P<x>there|it|the [a-z_ ]+?) without '
+         r'(?:it|them)\b', r'\g<n> go to \g<x> until you have picked it up'),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '
@@ -1156,6 +1169,7 @@ RULES: tuple[Rule, ...] = (
          rf'(?:off limits|out of bounds|forbidden|not allowed|a no go)\b', r'\g<w> , avoid \g<x>'),
     Rule('from then on, the desk lamp is off limits: avoid it from then on',
          rf'^(?P<w>from then on|from that point on|from that point onwards|from then onwards|after that|'
+         rf'from there on|from there onwards|'
          rf'afterwards|thereafter) (?:, )?(?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '
          rf'(?:off limits|out of bounds|'
          rf'forbidden|not allowed|a no go)$', r'\g<w> , avoid \g<x>'),

@@ -89,7 +89,8 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
 
 
 # Names of three words joined by "of" ("chest of drawers"): one thing.
-_OF_THINGS = {('chest', 'of', 'drawers'): 'chest_of_drawers', ('bag', 'of', 'flour'): 'bag_of_flour',
+_OF_THINGS = {('suit', 'of', 'armor'): 'suit_of_armor', ('suit', 'of', 'armour'): 'suit_of_armour',
+              ('chest', 'of', 'drawers'): 'chest_of_drawers', ('bag', 'of', 'flour'): 'bag_of_flour',
               ('pile', 'of', 'logs'): 'pile_of_logs', ('box', 'of', 'tissues'): 'box_of_tissues',
               ('chest', 'of', 'drawer'): 'chest_of_drawers', ('cup', 'of', 'tea'): 'cup_of_tea',
               ('glass', 'of', 'water'): 'glass_of_water', ('bottle', 'of', 'water'): 'bottle_of_water'}

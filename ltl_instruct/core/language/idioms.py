@@ -354,12 +354,15 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<y>(?:the|my|our) {_NP})', r'go to \g<x> \g<r> \g<y>'),
     Rule('stay out of the way of the stairwell door',
          r'\b(?P<v>stay|keep) out of the way of\b', r'\g<v> away from'),
-    Rule('go stand right next to it', r'\bright (?=next to|behind|in front of|beside|by|under|outside|inside)', ''),
+    Rule('go stand right next to it',
+         r'\bright (?=next to|behind|in front of|beside|by|under|outside|inside)', ''),
     Rule('only head to the garage once the dock is done',
-         rf'\b(?P<w>once|after) (?P<x>(?:the|my|our) {_NP}) (?:is|has been) (?:done|checked|finished|complete|'
+         rf'\b(?P<w>once|after) (?P<x>(?:the|my|our) {_NP}) (?:is|has been) (?:done|checked|finished'
+         rf'|complete|'
          r'completed|sorted|covered|dealt with)\b', r'\g<w> you have visited \g<x>'),
     Rule('do not set foot in there without it',
-         r'\b(?P<n>do not|never) (?:set foot in|go in|go into|enter|go to) (?P<x>there|it|the [a-z_ ]+?) without '
+         r'\b(?P<n>do not|never) (?:set foot in|go in|go into|enter|go to) (?P<x>there|it|the [a-z_ ]+?)'
+         r' without '
          r'(?:it|them)\b', r'\g<n> go to \g<x> until you have picked it up'),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',

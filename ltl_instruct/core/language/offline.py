@@ -523,7 +523,8 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., dad always worries", "..., guest called about it"
         if len(tail) >= 4 and (tail[0] in ('the', 'that', 'this', 'some') and 'just' in tail[2:4] or
                                tail[0] == 'some' and tail[1] in chatter.PERSON_NOUNS) and not _rule_in(tail):
-            return self._noted_cut(sentence, cut)   # "..., the floor crew just waxed it", "..., some kid dropped it"
+            # "..., the floor crew just waxed it", "..., some kid dropped it"
+            return self._noted_cut(sentence, cut)
         if len(tail) >= 4 and tail[0] in ('that', 'this') and tail[2] in ('is', 'are', 'was') and \
                 tail[3] not in DETS and tail[3] not in _PLACE_PREPS and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., that glass is older than both of us"

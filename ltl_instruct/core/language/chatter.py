@@ -155,6 +155,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('for', 'the', 'evening'), ('for', 'the', 'day'), ('full', 'stop'), ('on', 'the', 'double'),
     ('when', 'you', 'have', 'got', 'a', 'sec'), ('when', 'you', 'have', 'got', 'a', 'second'),
     ('when', 'you', 'have', 'got', 'a', 'minute'), ('when', 'you', 'have', 'got', 'a', 'moment'),
+    ('and', 'hang', 'about'), ('and', 'hang', 'around'), ('till', 'i', 'come'),
+    ('until', 'i', 'come', 'back'),
     ('while', 'i', 'am', 'out'), ('while', 'i', 'am', 'away'), ('while', 'we', 'are', 'out'),
     ('all', 'night'),
     ('all', 'day'), ('before', 'morning'), ('by', 'morning'),
@@ -750,6 +752,7 @@ _REMARK_RE = re.compile(
     r'|(?:either|any|either one|any one) works(?: (?:for me|fine))?(?: honestly)?'
     r'|(?:i )?do not care which (?:1|one)'
     r'|i (?:just |only )?need you to (?:see|check|find out|look) (?:if|whether) [a-z ]+'
+    r'|pick one(?: and go)?'
     r'|i (?:only |just )?need (?:one|one of them|either|either of them|one of the two) '
     r'(?:looked at|checked|done|visited|seen)'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'

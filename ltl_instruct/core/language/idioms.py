@@ -364,6 +364,22 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<n>do not|never) (?:set foot in|go in|go into|enter|go to) (?P<x>there|it|the [a-z_ ]+?)'
          r' without '
          r'(?:it|them)\b', r'\g<n> go to \g<x> until you have picked it up'),
+    Rule('throw away that broken glass',
+         r'\b(?P<v>throw away|throw out|bin|toss|bring|take|grab|fetch|put|move|carry|pick up|go to|visit) '
+         r'that(?= [a-z])(?! (?:is|was|one|ones|way|much|far)\b)', r'\g<v> the'),
+    Rule('do not you go near', r'\bdo not you\b', 'do not'),
+    Rule('you can call in at the office if you need to, but once at most',
+         r'\byou (?:can|may|could) (?:stop by|call in at|call at|visit|pop into|drop by|go to|stop at|swing'
+         r' by) '
+         rf'(?P<x>the {_W}(?: {_W}){{0,4}}?)(?: too| as well)?(?: on the way)?(?: if you (?:want|need to'
+         rf'|like|must|have to|wish))?'
+         r' , but '
+         r'(?:only )?once(?: at (?:the )?(?:very )?most)?\b', r'visit \g<x> at most once'),
+    Rule('table 12 or 14',
+         r'\b(?P<n>table|room|bay|bed|dock|aisle|gate|door|stall|pen|paddock|booth|desk|platform) '
+         r'(?P<a>\d+|one|two|three|four|five|six|seven|eight|nine|ten) (?P<j>or|and) '
+         r'(?P<b>\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?! (?:times|of)\b)',
+         r'\g<n> \g<a> \g<j> \g<n> \g<b>'),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '

@@ -69,6 +69,10 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' on the (?:leg|stretch|part|bit|section|segment|trip|journey|flight|drive|walk) (?=from |between )',
      ' on the way '),
     (r' on the way back (?=from )', ' on the way '),
+    (r' on the (?:return leg|return trip|return journey|return flight|trip back|flight back|way back)'
+     r'(?= [,.;!?] |$)', ' on the way back '),
+    (r' from there (?:out|over|down|up|across|on) to ', ' from there to '),
+    (r'(?<= [a-z_]) if (?:that is|it is) (?:easier|closer|quicker|better|simpler)(?= [,.;!?] |$)', ''),
     # "on the way back down to the lawn", "on the way down": the way back, the way
     (r' on the way (?P<b>back )?(?:down|up|over|out) (?=to |towards |keep |stay |avoid |do |never |, )',
      r' on the way \g<b>'),

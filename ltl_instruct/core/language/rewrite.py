@@ -825,6 +825,11 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         c = seg.index(',', lead) if ',' in seg[lead:] else -1
         said = seg[lead:c] if c <= lead or seg[lead] in DETERMINERS | chatter.STATEMENT_SUBJECTS else \
             ['the'] + seg[lead:c]   # "milk is already in there": a name said without its article
+        moved = _moved(prev, seg, notes)   # "no wait, it's in front of the shed, my mistake"
+        if moved is not None:
+            out = moved + after
+            i = len(moved)
+            continue
         if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 < len(seg) and \
                 seg[c + 1] in _VERBS and marker not in _CANCEL:
             # "actually it has been washed already, put it in the dryer": the reason, then the step
@@ -1300,7 +1305,30 @@ def _neither(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     return kept + ([','] if kept and kept[-1] not in PUNCT else []) + rest
 
 
+def _moved(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Say again where the thing is: 'the trailer behind the shed. No wait, it's in front of the shed'."""
+    words = [t for t in seg if t not in PUNCT]
+    while words[-2:] in (['my', 'mistake'], ['my', 'bad'], ['i', 'think']) or \
+            words[-1:] in (['sorry'], ['oops']):
+        words = words[:-2] if words[-1] in ('mistake', 'bad', 'think') else words[:-1]
+    if words[:2] != ['it', 'is'] or len(words) < 4:
+        return None
+    k = 4 if words[2:4] == ['the', 'one'] else 2
+    if match_relation(words, k) is None:
+        return None
+    spans = _np_spans(prev)
+    if not spans or not spans[-1].descriptor.relations:
+        return None
+    new = _replace_np(prev, ['the', 'one'] + words[k:])
+    if new is not None:
+        notes.append(f'corrected to "the one {" ".join(words[k:])}"')
+    return new
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    moved = _moved(prev, seg, notes)
+    if moved is not None:
+        return moved
     numbered = _renumber(prev, seg)
     if numbered is not None:
         notes.append('the number was corrected')

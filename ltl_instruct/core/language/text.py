@@ -45,7 +45,8 @@ TYPOS: dict[str, str] = {
     'sry': 'sorry', 'srry': 'sorry', 'nah': 'no', 'kyes': 'keys', 'whil': 'while',
     'exacty': 'exactly', 'rak': 'rack', 'dor': 'door', 'nex': 'next', 'exactley': 'exactly',
     'exacly': 'exactly',
-    'itme': 'item', 'itmes': 'items', 'rom': 'room', 'stn': 'station', 'wya': 'way', 'sory': 'sorry',
+    'fo': 'of', 'backwords': 'backwards', 'itme': 'item', 'itmes': 'items', 'rom': 'room', 'stn': 'station',
+    'wya': 'way', 'sory': 'sorry',
     'jsut': 'just', 'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from',
     'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
 }
@@ -69,6 +70,7 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
      r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp|almost|nearly|dead|"
      r"low|flat)\b)", ' is'),
     # "grandma's sleeping": "is", before a verb in -ing (not "dad's walking stick")
+    (r"\b(one|two|three|four|five|six|once|twice)'s\b", r'\1 is'),   # "no, three's plenty"
     (r"'s(?= [a-z]+ing\b(?! (?:stick|sticks|machine|glasses|bag|board|table|room|chair|rod|frame|shoes|mat|"
      r"pole|line|basket|boots|gloves|kit|pad|area|station|cane|aid|lamp|desk|tray|can)\b))", ' is'),
     # "the dog's outside", "the cat's in the kitchen": "is", before where a thing is
@@ -220,6 +222,8 @@ def tokenize(text: str) -> list[str]:
         s = s.replace('lost and found', 'lost_and_found')
     s = re.sub(r'\b(first|last|other|next) ([2-9])\b(?! ?(?:m|cm|meters|metres|feet|ft)\b)',
                lambda m: f'{m.group(1)} {_NUMBER_NAME[int(m.group(2))]}', s)   # "the last 2"
+    if ' of the ' in s:   # "stay of the wet floor": off
+        s = re.sub(r'\b(stay|keep|get) of (?=the )', r'\1 off ', s)
     if ' form ' in s:
         s = _FORM_RE.sub(r'\1 from', s)
     if 'forth ' in s:   # "the forth floor": the fourth

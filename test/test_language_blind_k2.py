@@ -1,4 +1,4 @@
-"""Readings found on the blind sets K2-T2 (stop 13): each was misread while its set was still blind.
+"""Readings found on the blind sets K2-X2 (stop 13): each was misread while its set was still blind.
 
 Every case is an instruction written for this project by a writer who never saw the translator, with
 the formula its writer gave; the translator must now give a formula equivalent to it on automata
@@ -19,11 +19,18 @@ BLIND_ROUND_K2 = [
      'F near[empty_pallet]'),
     ('The cold storage room. Go there and wait for the next job.',
      'F near[cold_storage_room]'),
+    ('Start at the battery room, then hit the parts cage, and finish up at dock two.',
+     'F (near[battery_room] & F (near[parts_cage] & F near[dock_two]))'),
     ('go to the pallet wraper, then over to the trash compactor',
      'F (near[pallet_wrapper] & F near[trash_compactor])'),
     ('Head to the outbound lane, but only once the weigh station and the label printer are both done.',
      'F near[outbound_lane] & (!near[outbound_lane] U near[weigh_station]) & (!near[outbound_lane] U '
      'near[label_printer])'),
+    ("Whatever job you're on, keep clear of the acid spill next to dock two. Cleanup crew hasn't "
+     'gotten to it yet.',
+     'G !near[acid_spill::isnextto(dock_two)]'),
+    ('Get to the charging station without going anywhere near the propane tanks.',
+     'F near[charging_station] & G !near[propane_tanks]'),
     ('bring the label roll to the packing table and stay away from the conveyer while you carry it',
      'F (near[label_roll] & F (pick[label_roll] & (!near[conveyor] U (near[packing_table] & F '
      'release[label_roll, packing_table]))))'),
@@ -70,6 +77,9 @@ BLIND_ROUND_K2 = [
     ("Throw out the old newspaper, and after you've got rid of it, stay out of the study.",
      'F (near[old_newspaper] & F (pick[old_newspaper] & F (near[trash_can] & F (release[old_newspaper, '
      'trash_can] & G !near[study]))))'),
+    ("Head to the conservatory without going near the stairs at all, and once you're in there, avoid "
+     'the plant stand as well.',
+     'G !near[stairs] & F (near[conservatory] & G !near[plant_stand])'),
     ('Bring her either the blue cardigan or the grey shawl, and leave it on her armchair.',
      'F (near[blue_cardigan] & F (pick[blue_cardigan] & F (near[armchair] & F release[blue_cardigan, '
      'armchair]))) | F (near[grey_shawl] & F (pick[grey_shawl] & F (near[armchair] & F '
@@ -187,6 +197,10 @@ BLIND_ROUND_K2 = [
      'F near[room_204] & (!near[room_204] U near[linen_cart])'),
     ('If you end up on the rooftop terrace at all, check with the security office first.',
      '!near[rooftop_terrace] W near[security_office]'),
+    ('You can take your break in the staff room once the laundry room and the linen cart are both '
+     'done, not earlier.',
+     'F near[staff_room] & (!near[staff_room] U near[laundry_room]) & (!near[staff_room] U '
+     'near[linen_cart])'),
     ("Go up to 204 and don't go anywhere near the luggage trolley or the fire extinguisher cabinet.",
      'F near[room_204] & G !near[luggage_trolley] & G !near[fire_extinguisher_cabinet]'),
     ("Dirty linens go in the laundry chute. Once they're in your hands, keep out of the breakfast room "
@@ -437,9 +451,96 @@ BLIND_ROUND_K2 = [
      'F (near[hall] & F (near[gym] & F near[staff_room]))'),
     ('Go to either the north or south entrance... acutally just go to the north one.',
      'F near[north_entrance]'),
+    # U2: a family flat and courtyard, dev-like
+    ("Find the kids' scootr, it's somewhere in the flat",
+     'F near[kids_scooter]'),
+    ('Stay out of the way of the stairwell door today, ok?',
+     'G !near[stairwell_door]'),
+    ("Check the oven at least twice while I'm out.",
+     'F (near[oven] & F (!near[oven] & F near[oven]))'),
+    ("There's an apple, an orange and a banana lying around - take the last one to the fruit bowl.",
+     'F (near[banana] & F (pick[banana] & F (near[fruit_bowl] & F release[banana, fruit_bowl])))'),
+    # V2: a museum guard and gallery technician
+    ("Where's the bronze horse statue? Go stand right next to it and wait.",
+     'F near[bronze_horse_statue]'),
+    ('Visit the print room, then the conservation lab, then the stairwell, and keep away from the '
+     'scaffolding all night.',
+     'F (near[print_room] & F (near[conservation_lab] & F near[stairwell])) & G !near[scaffolding]'),
+    ("Go to the loading dock. Make sure you've been to the key cabinet before that, and only head to "
+     'the parking garage once the dock is done.',
+     'F near[loading_dock] & (!near[loading_dock] U near[key_cabinet]) & F near[parking_garage] & '
+     '(!near[parking_garage] U near[loading_dock])'),
+    ("Head into the darkroom, but before doing that, first grab the spare flashlight. Don't set foot "
+     'in there without it.',
+     'F (near[spare_flashlight] & F (pick[spare_flashlight] & F near[darkroom])) & (!near[darkroom] U '
+     'pick[spare_flashlight])'),
+    ('Go to the service elevator. Under no circumstances go near the suit of armor or the cannon.',
+     'F near[service_elevator] & G !near[suit_of_armor] & G !near[cannon]'),
+    ("Take the velvet rope stand back to the storage closet when you get a chance; it's been sitting "
+     "in the hallway since the gala wrapped up. And please don't go near the vitrine while you're "
+     'carrying it, that glass is older than both of us.',
+     'F (near[velvet_rope_stand] & F (pick[velvet_rope_stand] & (!near[vitrine] U '
+     '(near[storage_closet] & F release[velvet_rope_stand, storage_closet]))))'),
+    ('Pass through the main hall exactly once, the floor crew just waxed it.',
+     '!near[main_hall] U (near[main_hall] & (near[main_hall] W G !near[main_hall]))'),
+    ('I want you to walk by the sculpture court three times before morning.',
+     'F (near[sculpture_court] & F (!near[sculpture_court] & F (near[sculpture_court] & F '
+     '(!near[sculpture_court] & F near[sculpture_court]))))'),
+    ('Go to the atrium. You can stop by the donation box on the way if you want, but once at the very '
+     'most.',
+     'F near[atrium] & (!near[donation_box] W (near[donation_box] & (near[donation_box] W G '
+     '!near[donation_box])))'),
+    ('Throw away the candy wrapper, some kid dropped it again.',
+     'F (near[candy_wrapper] & F (pick[candy_wrapper] & F (near[trash_can] & F release[candy_wrapper, '
+     'trash_can])))'),
+    ('Could you grab the black umbrella somebody forgot and drop it off at the lost and found?',
+     'F (near[black_umbrella] & F (pick[black_umbrella] & F (near[lost_and_found] & F '
+     'release[black_umbrella, lost_and_found])))'),
+    ("Go to the crate right of the loading door. Er, my mistake, it's the one left of the loading door.",
+     'F near[crate::isleftof(loading_door)]'),
+    # W2: a restaurant manager and kitchen staff
+    ('Go to the host stand, and from there out to the terrace, but stay away from the bar on that leg.',
+     'F (near[host_stand] & (!near[bar] U near[terrace]))'),
+    ('Run out to table 12 then come bakc to the pass, and avoid table 11 on the return trip.',
+     'F (near[table_12] & (!near[table_11] U near[pass]))'),
+    ('Bring the high chair over to table 12 or 14.',
+     'F (near[high_chair] & F (pick[high_chair] & (F (near[table_12] & F release[high_chair, '
+     'table_12]) | F (near[table_14] & F release[high_chair, table_14]))))'),
+    ('the service station or the host stand, pick one and go',
+     'F near[service_station] | F near[host_stand]'),
+    ('take either the ketchp or the mustard over to table 12',
+     'F (near[ketchup] & F (pick[ketchup] & F (near[table_12] & F release[ketchup, table_12]))) | F '
+     '(near[mustard] & F (pick[mustard] & F (near[table_12] & F release[mustard, table_12])))'),
+    ('hit the fryer 3 times and stay of the wet floor',
+     'F (near[fryer] & F (!near[fryer] & F (near[fryer] & F (!near[fryer] & F near[fryer])))) & G '
+     '!near[wet_floor]'),
+    ('Can you throw away that broken glass, carefully.',
+     'F (near[broken_glass] & F (pick[broken_glass] & F (near[trash_can] & F release[broken_glass, '
+     'trash_can])))'),
+    ('I can see a mop, a bucket and a broom lying around. Go to the third.',
+     'F near[broom]'),
+    ('Fly to the second floor terrace but keep clear fo the string lights.',
+     'F near[second_floor_terrace] & G !near[string_lights]'),
+    # X2: a farmer and a vet, yard robot and survey drone
+    ("need u at the catle crush when you've a minute",
+     'F near[cattle_crush]'),
+    ("Do the water trough then the calf pens, and don't you go near the slurry pit while you're at it.",
+     'F (near[water_trough] & F near[calf_pens]) & G !near[slurry_pit]'),
+    ('head to the machinery shed and avoid the slury pit at all times',
+     'F near[machinery_shed] & G !near[slurry_pit]'),
+    ('Head up to the hay barn. You can call in at the dairy office if you need to, but once at most.',
+     'F near[hay_barn] & (!near[dairy_office] W (near[dairy_office] & (near[dairy_office] W G '
+     '!near[dairy_office])))'),
+    ('Throw away that empty feed bag.',
+     'F (near[empty_feed_bag] & F (pick[empty_feed_bag] & F (near[trash_can] & F '
+     'release[empty_feed_bag, trash_can])))'),
+    ('calf pens, feed store, milking shed - do them backwords',
+     'F (near[milking_shed] & F (near[feed_store] & F near[calf_pens]))'),
+    ("Go to the trailer behind the shed. No wait, it's in front of the shed, my mistake.",
+     'F near[trailer::isinfrontof(shed)]'),
 ]
 
 
 @pytest.mark.parametrize('instruction,gold', BLIND_ROUND_K2)
-def test_readings_found_on_blind_sets_k2_to_t2(instruction: str, gold: str) -> None:
+def test_readings_found_on_blind_sets_k2_to_x2(instruction: str, gold: str) -> None:
     check_translation(instruction, gold)

@@ -192,6 +192,12 @@ def _with_article(name: str) -> str:
     return name if name.split()[0] in ('the', 'my', 'your', 'our', 'some') else 'the ' + name
 
 
+def _comes_last(m: 're.Match[str]') -> str:
+    """Say "the pond comes last: don't go to it until ..." as "don't go to the pond until ..., and go to it last"."""
+    rest = re.sub(r'\b(to|near|in|into|at) it\b', lambda k: f'{k.group(1)} {m.group("x")}', m.group('r'))
+    return f'{rest} , and go to {m.group("x")} {m.group("w")}'
+
+
 def _same_head(m: 're.Match[str]') -> str:
     """Name "one" by the noun it stands for: "the second floor ice machine or the third floor one".
 
@@ -380,6 +386,9 @@ RULES: tuple[Rule, ...] = (
          r'(?P<a>\d+|one|two|three|four|five|six|seven|eight|nine|ten) (?P<j>or|and) '
          r'(?P<b>\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?! (?:times|of)\b)',
          r'\g<n> \g<a> \g<j> \g<n> \g<b>'),
+    Rule('the bar comes last: do the ice machine and the glass rack first',
+         rf'^(?P<x>(?:the|my|our) {_NP}) (?:comes|goes|is|should be|has to be|must be) (?P<w>last|first) '
+         r'(?:,|:) (?P<r>.+)$', _comes_last),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '

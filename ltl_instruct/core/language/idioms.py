@@ -193,7 +193,7 @@ def _with_article(name: str) -> str:
 
 
 def _comes_last(m: 're.Match[str]') -> str:
-    """Say "the pond comes last: don't go to it until ..." as "... to the pond until ..., and go to it last"."""
+    """Say "the pond comes last: don't go to it until ..." as "... the pond until ..., and go to it last"."""
     rest = re.sub(r'\b(to|near|in|into|at) it\b', lambda k: f'{k.group(1)} {m.group("x")}', m.group('r'))
     return f'{rest} , and go to {m.group("x")} {m.group("w")}'
 

@@ -499,6 +499,8 @@ BLIND_ROUND_K2 = [
     ("Go to the crate right of the loading door. Er, my mistake, it's the one left of the loading door.",
      'F near[crate::isleftof(loading_door)]'),
     # W2: a restaurant manager and kitchen staff
+    ('The bar comes last: do the ice machine and the glass rack first, either order, then the bar.',
+     'F near[bar] & (!near[bar] U near[ice_machine]) & (!near[bar] U near[glass_rack])'),
     ('Go to the host stand, and from there out to the terrace, but stay away from the bar on that leg.',
      'F (near[host_stand] & (!near[bar] U near[terrace]))'),
     ('Run out to table 12 then come bakc to the pass, and avoid table 11 on the return trip.',

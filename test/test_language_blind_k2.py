@@ -371,6 +371,9 @@ BLIND_ROUND_K2 = [
     # R2: a garden, garage and hobby drone
     ('Should you need to enter the garage at any point, go by the side door beforehand.',
      '!near[garage] W near[side_door]'),
+    ("The pond comes last: don't go to it until you have visited the net rack and also the fish food "
+     'bin, in whatever order suits you.',
+     'F near[pond] & (!near[pond] U near[net_rack]) & (!near[pond] U near[fish_food_bin])'),
     ("Go out to the lawn, but only once you've been to the fule can, and keep clear of the barbecue "
      "until you've reached the lawn.",
      'F near[lawn] & (!near[lawn] U near[fuel_can]) & (!near[barbecue] U near[lawn])'),
@@ -454,6 +457,9 @@ BLIND_ROUND_K2 = [
     # U2: a family flat and courtyard, dev-like
     ("Find the kids' scootr, it's somewhere in the flat",
      'F near[kids_scooter]'),
+    ("Keep away from the courtyard gate until you've been to the bike shed and the recycling bins, "
+     "doesn't matter which first.",
+     '(!near[courtyard_gate] U near[bike_shed]) & (!near[courtyard_gate] U near[recycling_bins])'),
     ('Stay out of the way of the stairwell door today, ok?',
      'G !near[stairwell_door]'),
     ("Check the oven at least twice while I'm out.",

@@ -475,6 +475,8 @@ class _Reader:
         self.connector = 'and'   # how the goal clause being read joins the one before it
         # global avoidances and the step they were read after (to repair "avoid b ... then go to b")
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
+        # the last "avoid X until A and B" read in the order said: (its formula, X, [A, B])
+        self.last_until: Optional[tuple[Formula, list[Descriptor], list[Descriptor]]] = None
 
     # ----------------------------------------------------------------- structure
     def _drop_trailing_reason(self, sentence: list[str]) -> list[str]:
@@ -1416,6 +1418,13 @@ class _Reader:
             del chain[k:]
             chain.append(Step('all', chains=[[st] for st in steps]))
             self.notes.append('the goals may be visited in any order')
+        if self.last_until is not None and self.last_until[0] in self.task.constraints:
+            # "avoid the gate until you've been to the shed and the bins, doesn't matter which first":
+            # the gate after both, in either order
+            f, targets, places = self.last_until
+            self.task.constraints.remove(f)
+            self.task.constraints.extend(_until_avoid(targets, _near(p)) for p in places)
+            self.last_until = None
 
     def _read_activity(self, tokens: list[str]) -> bool:
         """'go to the sink and wash your hands', 'open it': something done where the robot is, no new goal."""
@@ -2188,6 +2197,9 @@ class _Reader:
                 for p in reversed(places[:-1]):
                     goal = _and(_near(p), _until_avoid(targets, goal))
                 self.task.constraints.append(_until_avoid(targets, goal))
+                if len(places) > 1:
+                    # in the order said, unless "in any order" follows (see _any_order)
+                    self.last_until = (self.task.constraints[-1], list(targets), places)
                 if not self.task.chain:
                     for p in places:   # so that "then ..." comes after them
                         if self.task.find_step(p) is None:

@@ -28,7 +28,7 @@ from typing import Sequence
 from ltl_instruct.core.language.phrases import (
     DETERMINERS, PLACEHOLDER_ADJECTIVES, is_name_word, match_relation,
 )
-from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
+from ltl_instruct.core.language.text import FAMILY_NAMES, NUMBER_WORDS, ORDINALS, PUNCT
 
 # Words that change what the robot must do; a part holding one is never left out.
 CONSTRAINT_WORDS = frozenset('''
@@ -518,16 +518,13 @@ room rooms station desk office area lounge entrance center centre toilet toilets
 door car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen
 cafeteria changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
 '''.split())
-# Family members named like names, with no article ("Mum is out in the garden", "Dad always worries").
-FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
-                          'gran', 'grandad', 'granddad', 'nana', 'nan', 'papa', 'mama'})
 # Words of a rule about where to go: a clause holding one is never said "about people".
-PLACE_RULE_WORDS = _RULE_WORDS = frozenset({
+PLACE_RULE_WORDS = frozenset({
     'not', 'never', 'avoid', 'limits', 'bounds', 'forbidden', 'banned', 'away', 'clear', 'only', 'until',
     'till', 'unless', 'cannot', 'mustn', 'allowed'})
 # ... and, in a reason ("because you must not ..."), words of an order, a count or a step too.
-_STRONG = _RULE_WORDS | frozenset({'stay', 'keep', 'first', 'then', 'exactly', 'twice', 'once', 'go', 'visit',
-                                   'bring', 'take', 'put'})
+_STRONG = PLACE_RULE_WORDS | frozenset({'stay', 'keep', 'first', 'then', 'exactly', 'twice', 'once', 'go',
+                                        'visit', 'bring', 'take', 'put'})
 
 
 def is_reason(tail: Sequence[str]) -> bool:
@@ -546,7 +543,7 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     never named; "I need", "I'd like", "we want" are requests and never count.
     """
     if len(tokens) < 3 or 'you' in tokens or 'robot' in tokens or 'drone' in tokens or 'your' in tokens or \
-            _RULE_WORDS & set(tokens):
+            PLACE_RULE_WORDS & set(tokens):
         return False   # a rule is never left out ("the baby gate is off limits")
     k = 0
     if tokens[0] in ('i', 'we', 'he', 'she', 'someone', 'somebody', 'everyone', 'nobody'):

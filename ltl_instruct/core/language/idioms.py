@@ -18,7 +18,7 @@ from __future__ import annotations
 import re
 from typing import Callable, NamedTuple, Union
 
-from ltl_instruct.core.language.phrases import PLACEHOLDER_ADJECTIVES, singular
+from ltl_instruct.core.language.phrases import PLACEHOLDER_ADJECTIVES, singular, with_article
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS
 
 _NUM = r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+)'
@@ -187,11 +187,6 @@ def _repeat(m: 're.Match[str]') -> str:
     return f'visit {m.group("x")} {mode} {_times(1 + _number(m.group("n")))}'
 
 
-def _with_article(name: str) -> str:
-    """Return ``name`` with "the" before it unless it has a determiner ("leftovers": "the leftovers")."""
-    return name if name.split()[0] in ('the', 'my', 'your', 'our', 'some') else 'the ' + name
-
-
 def _comes_last(m: 're.Match[str]') -> str:
     """Say "the pond comes last: don't go to it until ..." as "... the pond until ..., and go to it last"."""
     rest = re.sub(r'\b(to|near|in|into|at) it\b', lambda k: f'{k.group(1)} {m.group("x")}', m.group('r'))
@@ -283,7 +278,7 @@ RULES: tuple[Rule, ...] = (
          rf'make|get|fly|drive|head|walk)\b){_W}(?: {_W}){{0,3}}) (?:go|goes|belong|belongs|need to go|needs'
          rf' to go) '
          rf'(?P<p>in|into|on|back in|back on|back to|back into) (?P<y>(?:the|my|our) {_NP})$',
-         lambda m: f'put {_with_article(m.group("x"))} {m.group("p")} {m.group("y")}'),
+         lambda m: f'put {with_article(m.group("x"))} {m.group("p")} {m.group("y")}'),
     Rule('kettle or microwave, only one of the two, never both',
          r' , (?:only|just) one of (?:the two|them|those|the pair)(?= , (?:not|never) both\b)', ''),
     Rule('the kettle or the microwave, not both',

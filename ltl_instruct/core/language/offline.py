@@ -268,8 +268,7 @@ def _rule_in(words: Sequence[str]) -> bool:
 
 # "I don't want you tumbling down them": a mishap feared, no rule of where to go.
 _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
-                      'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'getting',
-                      'toppling'})
+                      'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'toppling'})
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
@@ -541,7 +540,7 @@ class _Reader:
                 'gets', 'get', 'worries', 'worry', 'hates', 'hate', 'panics') and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., she gets anxious if she hears you"
         if len(tail) >= 3 and tail[0] not in DETS and tail[1] in ('is', 'are') and (
-                tail[2] in chatter.STATES or tail[2] in ('off', 'away', 'out', 'dead', 'low', 'flat')) and \
+                tail[2] in chatter.STATES or tail[2] in ('off', 'away', 'out')) and \
                 'limits' not in tail and 'bounds' not in tail and is_name_word(tail, 0, False):
             return self._noted_cut(sentence, cut)   # "..., lifeguard's off today"
         w = next((k for k in range(2, min(5, len(tail) - 1)) if tail[k] == 'will'), -1)

@@ -23,15 +23,11 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from ltl_instruct.core.language.phrases import PhraseParser, singular
+from ltl_instruct.core.language.phrases import PhraseParser, singular, with_article
 
 _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |it is |that is |'
          r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
          r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)')
-
-
-def _the(name: str) -> str:
-    return name if name[0].isdigit() else 'the ' + name
 
 
 # a name of a few words, none of them a connective
@@ -53,7 +49,7 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "laundry room and then 204, or 204 and then the laundry room": both, in any order
     (rf' (?:the )?(?P<a>{_NAME}) (?:and )?(?:then|followed by) (?:the )?(?P<b>{_NAME}) , or (?:the )?(?P=b) '
      r'(?:and )?(?:then|followed by) (?:the )?(?P=a) ',
-     lambda m: f' {_the(m.group("a"))} and {_the(m.group("b"))} in any order '),
+     lambda m: f' {with_article(m.group("a"))} and {with_article(m.group("b"))} in any order '),
     # "land at the pad when you are done": the last step is last anyway
     (rf' (?:, )?{_DONE}(?: (?:with )?(?:everything|all (?:that|of that|of it)|the rest))?'
      r' (?=[.;!?] |$)', ' '),

@@ -139,6 +139,11 @@ place leave drop toss throw carry deliver grab pick fetch survey land stop swing
 '''.split())
 
 
+def with_article(name: str) -> str:
+    """Return ``name`` with "the" before it, unless it has a determiner or is a number ("204")."""
+    return name if name.split()[0] in DETERMINERS or name[0].isdigit() else 'the ' + name
+
+
 @dataclass(frozen=True)
 class NounPhrase:
     """A parsed noun phrase: its descriptor and the token span it came from.

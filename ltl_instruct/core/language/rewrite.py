@@ -41,6 +41,17 @@ _REF_WORDS = frozenset(ORDINALS) | {'last', 'middle', 'other', 'others', 'remain
                                     'after', 'former', 'latter', 'them', 'all'}
 
 
+# What may follow "all" that makes it mean the whole list ("all of them", "all three", "them all").
+_ALL_OF = frozenset({'of', 'two', 'three', 'four', 'five', 'in', 'them', 'those', 'these', '.', ','})
+
+
+def _refers_to_list(tail: list[str]) -> bool:
+    """Whether words after a list point into it ("the second one", "all three"; not "all I need is")."""
+    return any(t in _REF_WORDS and not (t == 'all' and k + 1 < len(tail) and tail[k + 1] not in _ALL_OF and
+                                        tail[k - 1:k] != ['them'])
+               for k, t in enumerate(tail))
+
+
 def _np_text(tokens: list[str], np: NounPhrase) -> list[str]:
     span = tokens[np.start:np.end]
     while span and span[0] in DETERMINERS:
@@ -194,9 +205,8 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
     (r'\bthe one in between\b', 'the middle one'),
     # "the first and last of those": the first and the last
-    (r'\bthe (?P<a>first|second|third) and (?P<b>last|second|third|fourth|fifth)\b(?! (?:things|ones|items'
-     r'|places|'
-     r'stops|one|two)\b)', r'the \g<a> and the \g<b>'),
+    (r'\bthe (?P<a>first|second|third) and (?P<b>last|second|third|fourth|fifth)\b'
+     r'(?! (?:things|ones|items|places|stops|one|two)\b)', r'the \g<a> and the \g<b>'),
     # "the outer two": the first and the last
     (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
 ))
@@ -249,9 +259,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     start = max((k for k in range(s - 1) if tokens[k] in '.;!?'), default=-1) + 1
     ahead = s >= 2 and tokens[s - 1] == ':' and any(t in ORDINALS or t in ('last', 'middle') for t in tokens[
         start:s - 1])   # "the first and third things on this list: ..."
-    refers = any(t in _REF_WORDS and not (t == 'all' and tail[k + 1:k + 2] not in (
-        ['of'], ['three'], ['four'], ['five'], ['two'], ['in'], ['them'], ['those'], ['these'], ['.'], [','],
-        []) and tail[k - 1:k] != ['them']) for k, t in enumerate(tail))   # "all I need is ...": no reference
+    refers = _refers_to_list(tail)
     if not refers and not any(t.isdigit() for t in tail) and not ahead:
         heads = {np.head for np in nps}
         if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
@@ -755,6 +763,9 @@ _CLEFT = re.compile(
 _THING_PART = re.compile(r'\b(?P<v>forget|ignore|scratch|scrap|drop|skip)(?: about)? '
                          r'(?P<x>the (?!(?:last|first|second|third|other|whole|same|previous|final|next)\b)'
                          r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:thing|part|bit)\b')
+# "forget what I said about the roses": forget the roses
+_SAID_ABOUT = re.compile(r'\b(forget|ignore|scratch|disregard) (?:what i said|what i told you|'
+                         r'everything i said|the bit|the part|the stuff) about\b')
 _MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
 _NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
 # "better you start from the printer and finish with the copier": the route, said plainly
@@ -783,10 +794,7 @@ def _uncleft(tokens: list[str]) -> list[str]:
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
     new = _DROP_RULE.sub('forget ', new)   # "drop that condition": cancel it
     new = _THING_PART.sub(lambda m: f'{m.group("v")} {m.group("x")}', new)
-    # "forget what I said about the roses": forget the roses
-    new = re.sub(r'\b(forget|ignore|scratch|disregard) (?:what i said|what i told you|everything i said|the'
-                 r' bit|'
-                 r'the part|the stuff) about\b', r'\1', new)
+    new = _SAID_ABOUT.sub(r'\1', new)
     return new.split() if new != text else tokens
 
 
@@ -1045,10 +1053,8 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
             nxt = next((sp for sp in spans if sp.start > same[0].end), None)
             if nxt is not None and nxt.end - nxt.start >= 2:
                 name = ['the', words[2]] + [w for w in prev[nxt.start:nxt.end] if w not in DETERMINERS][1:]
-                a = next(k for k in range(len(spans)) if spans[k] is same[0])
                 notes.append(f'only the {words[2]} one kept of that choice')
-                b = spans.index(nxt)
-                return prev[:spans[a].start] + name + prev[spans[b].end:]
+                return prev[:same[0].start] + name + prev[nxt.end:]
         elif len(same) == 1:
             np = same[0]
     if np is None or np.end != len(words) and np not in spans or np.pronoun:
@@ -1292,9 +1298,7 @@ def _neither(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     words = [t for t in seg if t != ',']
     if words[:1] not in (['neither'], ['none']) or 'or' not in prev:
         return None
-    k = 2 if words[1:2] in (['of'],) and words[2:3] in (['them'], ['those']) else 1
-    k += 1 if words[k:k + 1] == ['of'] else 0
-    rest = words[k:]
+    rest = words[3:] if words[1:3] in (['of', 'them'], ['of', 'those']) else words[1:]
     while rest and rest[0] in ('just', 'instead', 'then', 'so'):
         rest = rest[1:]
     if not rest or rest[0] not in _VERBS:
@@ -1326,9 +1330,6 @@ def _moved(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[s
 
 
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
-    moved = _moved(prev, seg, notes)
-    if moved is not None:
-        return moved
     numbered = _renumber(prev, seg)
     if numbered is not None:
         notes.append('the number was corrected')

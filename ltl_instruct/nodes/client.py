@@ -93,11 +93,16 @@ class GraphClient:
             pass
 
     def close(self) -> None:
-        """Stop spinning and shut this client's context down."""
-        self._executor.shutdown(timeout_sec=1.0)
+        """Stop spinning and shut this client's context down.
+
+        The spinning thread is joined before the node is destroyed: a callback still running on it
+        would otherwise touch the destroyed node ("cannot use Destroyable because destruction was
+        requested", seen at the end of a demo).
+        """
+        self._executor.shutdown(timeout_sec=2.0)
+        self._thread.join(timeout=2.0)
         self.node.destroy_node()
         rclpy.try_shutdown(context=self.context)
-        self._thread.join(timeout=2.0)
 
     def __enter__(self) -> 'GraphClient':
         return self

@@ -47,6 +47,7 @@ REQUEST_WORDS = frozenset({'need', 'want', 'would', 'like', 'should', 'must', 'w
                            'prefer', 'wish', 'hope', 'd', 'shall', 'may', 'might', 'ought', 'to', 'you'})
 # Finite verbs after a noun-phrase subject ("the cat keeps...", "the gate is...").
 FINITE_VERBS = frozenset('''
+upsets works usually
 is are was were keeps keep has had seems seem looks look sits sit stands lies lie got gets needs
 belongs goes went broke fell spilled leaks leaked smells tends happens arrive arrives arrived came comes
 dropped jammed stopped started moved died spilt broken overflowed overflows ran runs get sticks jams
@@ -92,7 +93,8 @@ _SPANS: tuple[tuple[str, ...], ...] = tuple(
     for span in (('day',), ('night',), ('evening',), ('morning',), ('afternoon',), ('week',), ('shift',),
                  ('night', 'shift'), ('day', 'shift'), ('late', 'shift'), ('early', 'shift'))) + tuple(
     ('during', 'the') + span
-    for span in (('night', 'shift'), ('day', 'shift'), ('night',), ('day',), ('shift',)))
+    for span in (('night', 'shift'), ('day', 'shift'), ('night',), ('day',), ('shift',))) + tuple(
+    ('over', 'the') + span for span in (('morning',), ('afternoon',), ('evening',), ('day',), ('week',)))
 # What the visit is for ("fly to the pylon for an inspection"): the visit itself is the task.
 _PURPOSES: tuple[tuple[str, ...], ...] = tuple(
     ('for',) + art + quick + (what,)
@@ -166,6 +168,13 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('till', 'i', 'get', 'there'), ('until', 'we', 'get', 'there'), ('for', 'the', 'next', 'job'),
     ('and', 'hold', 'position'), ('and', 'hold', 'there'), ('and', 'wait', 'for', 'the', 'next', 'job'),
     ('with', 'the', 'drone'), ('with', 'the', 'robot'), ('using', 'the', 'drone'), ('whatever', 'you', 'do'),
+    ('before', 'bedtime'), ('before', 'bed'), ('before', 'close'), ('before', 'closing'), ('before', 'lunch'),
+    ('before', 'dinner'), ('before', 'we', 'close'), ('before', 'we', 'open'),
+    ('before', 'the', 'shop', 'opens'),
+    ('before', 'the', 'store', 'opens'), ('before', 'opening'), ('before', 'dark'), ('over', 'the', 'night'),
+    ('straight', 'after'), ('right', 'after'), ('for', 'the', 'rest', 'of', 'the', 'shift'),
+    ('for', 'the', 'rest', 'of', 'the', 'night'), ('for', 'the', 'rest', 'of', 'the', 'day'),
+    ('from', 'the', 'air'), ('right', 'now', 'please'),
 ) + _DURATIONS + _SPANS + _PURPOSES,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
@@ -398,7 +407,8 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
 
 # Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
 VOCATIVES = frozenset({'dear', 'honey', 'sweetie', 'buddy', 'pal', 'mate', 'love', 'sir', 'madam', 'maam',
-                       'robot', 'drone', 'bot', 'friend', 'darling', 'hun', 'bro', 'dude'})
+                       'robot', 'drone', 'bot', 'friend', 'darling', 'hun', 'bro', 'dude', 'sweetheart',
+                       'dearie', 'pet', 'petal', 'duck', 'ducky', 'poppet', 'lovey', 'chum', 'sunshine'})
 
 
 # Words said twice in a row by slip ("the the"), never twice on purpose.
@@ -675,7 +685,17 @@ def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) ->
     """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...").
 
     With ``timing``, phrases that time an event ("right away") are kept for the rules to read.
+    Phrases said one after another ("twice tonight please") are all removed.
     """
+    for _ in range(3):
+        before = len(tokens)
+        tokens = _strip_courtesy_once(tokens, notes, timing)
+        if len(tokens) == before:
+            break
+    return tokens
+
+
+def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> list[str]:
     out: list[str] = []
     i = 0
     n = len(tokens)
@@ -694,8 +714,9 @@ def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) ->
         if i > 0 and tokens[i - 1] not in DETERMINERS:
             for phrase in _COURTESY_BY_FIRST.get(tokens[i], ()):
                 m = len(phrase)
-                if tuple(tokens[i:i + m]) == phrase and (i + m >= n or tokens[i + m] in _CLAUSE_END) and not (
-                        timing and phrase in TIMING):
+                ends = i + m >= n or tokens[i + m] in _CLAUSE_END or (   # (or "..., please")
+                    tokens[i + m] == 'please' and (i + m + 1 >= n or tokens[i + m + 1] in _CLAUSE_END))
+                if tuple(tokens[i:i + m]) == phrase and ends and not (timing and phrase in TIMING):
                     hit = m
                     break
         if not hit and i > 0 and tokens[i - 1] == ',':
@@ -800,3 +821,86 @@ def set_off_remarks(tokens: list[str], notes: list[str]) -> list[str]:
 def is_remark(tokens: Sequence[str]) -> bool:
     """Whether words are a remark that leaves a choice or the pace to the robot ("your call")."""
     return bool(tokens) and _REMARK_RE.match(' '.join(tokens)) is not None
+
+
+# "you" in set phrases that address nobody ("would you believe", "before you know it").
+_IDLE_YOU: tuple[tuple[str, ...], ...] = (
+    ('would', 'you', 'believe'), ('would', 'you', 'believe', 'it'), ('before', 'you', 'know', 'it'),
+    ('you', 'know'), ('you', 'see'), ('mind', 'you'), ('thank', 'you'), ('bless', 'you'),
+    ('i', 'tell', 'you'),
+    ('if', 'you', 'ask', 'me'), ('can', 'you', 'imagine'))
+# Words of a rule about places: a sentence holding one is never a story (“the hall is off limits”).
+_STORY_RULE_WORDS = frozenset({
+    'avoid', 'avoiding', 'limits', 'bounds', 'forbidden', 'banned', 'prohibited', 'allowed', 'permitted',
+    'away', 'clear', 'steer', 'dangerous', 'unsafe', 'hazardous', 'robot', 'drone', 'yourself', 'your'})
+# Verbs after a named subject that make the sentence a story ("Harold bought it", "Derek says ...").
+_STORY_VERBS = frozenset('''
+says said bought took left told thinks thought rang called came went gets got is was has had keeps kept
+will would did does loves hates likes used moved broke fixed planted put set lost found rearranged
+always never usually often still just only
+'''.split())
+_STORY_LEADS = frozenset({'oh', 'well', 'and', 'but', 'so', 'anyway', 'honestly', 'now', 'mind', 'although',
+                          'though', 'because'})
+
+
+def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
+    """Whether a whole sentence tells the person's story and asks the robot for nothing.
+
+    "I left my thimble there, but I'll look for it myself once my knees have warmed up.",
+    "Harold bought it the year we married.", "The light down there has been flickering.":
+    the subject is a person or a thing other than the robot, with a verb of its own (not a
+    request: "I need", "I'd like you to"), the robot is not addressed ("you", but for set
+    phrases such as "would you believe"), no part starts with a command (``commands``), and
+    no word of a rule about places is in it. Order and time words ("once", "never", "first")
+    may be in it: they order the person's day, not the robot's task.
+    """
+    words = [t for t in sentence if t not in PUNCT]
+    while words and (words[0] in _STORY_LEADS or words[0] in INTERJECTIONS or words[0] in VOCATIVES):
+        words = words[1:]
+    if words[:1] == ['i'] and words[1:2] and words[1] in ('think', 'guess', 'believe', 'reckon', 'suppose'):
+        words = words[2:]   # "I think it is on the shelf": where the thing is
+    if len(words) < 3 or _STORY_RULE_WORDS & set(words):
+        return False
+    text = ' ' + ' '.join(words) + ' '
+    if any(p in text for p in (' has to be ', ' have to be ', ' must be ', ' goes for ', ' go for ',
+                               ' same ', ' comes ', ' come ', ' last ', ' first ')) and \
+            words[0] not in ('i', 'we'):
+        return False   # "the bank has to be last", "the same goes for the vase": about the task
+    for phrase in _IDLE_YOU:
+        text = text.replace(' ' + ' '.join(phrase) + ' ', ' ')
+    if ' you ' in text or ' keep off ' in text or ' keep out ' in text or ' stay ' in text:
+        return False
+    # no part of it is a command ("..., so go to the shed")
+    for k, t in enumerate(sentence):
+        if t in commands and (k == 0 or sentence[k - 1] in PUNCT or sentence[k - 1] in (
+                'and', 'then', 'so', 'but', 'please', 'just')):
+            return False
+    first, second = words[0], words[1]
+    if first in ('it', 'that', 'this', 'they', 'he', 'she') and second in ('is', 'are', 'was', 'were') and (
+            words[2] in DETERMINERS or words[2] in PREPOSITIONS or
+            words[2] in ('one', 'ones', 'where', 'here')):
+        return False   # "it's the one by the sink", "they are in the kitchen": which thing, or where
+    if first in ('i', 'we'):
+        return second not in REQUEST_WORDS and second not in ('need', 'want', 'wanted', 'needed', 'expect')
+    if first in ('he', 'she', 'they', 'it', 'that', 'there') or first in FAMILY_NAMES:
+        return second not in ('is', 'was') or words[2] not in PERMISSIVE
+    if first in ('my', 'our', 'his', 'her', 'their') or first in ('the', 'a') and second in PERSON_NOUNS:
+        return not {'needs', 'need', 'wants', 'want'} & set(words[1:5])
+    if first == 'the':
+        # "the light down there has been flickering": a finite verb within the first words
+        f = next((k for k in range(2, min(6, len(words))) if words[k] in FINITE_VERBS or
+                  words[k] in ('has', 'had', 'will')), -1)
+        if f < 0 or {'needs', 'need', 'wants', 'want', 'one', 'that', 'which', 'who', 'and', 'or'} & set(
+                words[1:f + 1]):
+            return False   # "the table that is next to ...", "the mug and the jar are ..."
+        return not (words[f] in ('is', 'are', 'was', 'were') and f + 1 < len(words) and (
+            words[f + 1] in PREPOSITIONS or words[f + 1] in DETERMINERS or words[f + 1] in (
+                'next', 'left', 'right', 'behind', 'between', 'under', 'beside', 'above', 'below')))
+    # a name said without an article ("Harold bought it", "Margaret's staying tonight")
+    return first not in commands and first not in DETERMINERS and first not in STOPWORDS_STORY and \
+        second in _STORY_VERBS and is_name_word(words, 0, False)
+
+
+STOPWORDS_STORY = frozenset({'please', 'if', 'when', 'once', 'after', 'before', 'only', 'never', 'do', 'not',
+                             'no', 'then', 'first', 'just', 'also', 'either', 'both', 'each', 'every', 'all',
+                             'here', 'this', 'these', 'those'})

@@ -809,6 +809,8 @@ RULES: tuple[Rule, ...] = (
          r'(?:any )?limits?|time after time|all the time)\b', 'repeatedly'),
     Rule('swing by a couple of times', r'\ba couple (?:of )?(?:times|visits|passes|trips|rounds)\b', 'twice'),
     Rule('just the once', r'\b(?:just|only) the once\b', 'exactly once'),
+    Rule('no more than the once: once', r'\b(?P<m>more than|no more than|not more than) the once\b',
+         r'\g<m> once'),
     Rule('exactly twice, no more, no fewer',
          rf'\b(?P<c>exactly (?:once|twice|thrice|{_NUM} times?))(?: ,)? no more(?: ,)? (?:and |or |but )?'
          rf'no (?:fewer|less)\b', r'\g<c>'),

@@ -291,6 +291,12 @@ PLACING_VERBS = frozenset({'hang', 'lay', 'drape', 'tuck', 'slide', 'prop', 'sli
 SKILL_VERBS = (GOAL_VERBS | DELIVER_VERBS | PICK_VERBS | {'avoid', 'visit', 'bring'}) - FILLERS - {
     'be', 'need', 'want', 'robot', 'drone', 'hey', 'can', 'could', 'would', 'you', 'i', 'will', 'ahead',
     'end', 'up', 'please', 'kindly'} | {'make', 'do'}
+# Verbs that start a command (a sentence holding one asks for something).
+_COMMANDS = (SKILL_VERBS | {'go', 'avoid', 'stay', 'keep', 'come', 'head', 'visit', 'please', 'check', 'make',
+                            'do', 'get', 'wait', 'stop', 'try', 'remember', 'mind'}) - {
+    'and', 'so', 'then', 'first', 'now', 'next', 'just', 'also', 'finally', 'lastly', 'okay', 'end', 'hey',
+    'i',
+    'you', 'will', 'would', 'could', 'can', 'need', 'want', 'robot', 'drone', 'ahead', 'up', 'be', 'kindly'}
 
 # Clauses after a choice that make it exclusive ("the den or the hall, but not both").
 _NOT_BOTH = frozenset({'not both', 'but not both', 'not both of them', 'only one of them', 'just one of them',
@@ -565,6 +571,8 @@ class _Reader:
                                                                'better'}:
                 return sentence   # "they are in the kitchen", "it is the red one", "it is up to you"
             return self._noted_cut(sentence, cut)
+        if len(tail) >= 4 and chatter.is_story(tail, _COMMANDS):
+            return self._noted_cut(sentence, cut)   # "..., the post usually comes by ten"
         if first == 'the' and not {'one', 'ones', 'that', 'which'} & set(tail) and \
                 not chatter.has_constraint_word(tail) and any(
                 t in _REASON_VERBS and (t not in ('is', 'are', 'was', 'were') or k + 1 < len(tail) and
@@ -585,6 +593,10 @@ class _Reader:
     def read(self, tokens: list[str]) -> Formula:
         for sentence in self._sentences(tokens):
             self.first_tail = None
+            if (self.task.chain or self.task.constraints) and chatter.is_story(sentence, _COMMANDS):
+                # "... . Harold bought it the year we married.": the person's story, after the request
+                self.notes.append(f'left out "{" ".join(sentence)}" (tells a story, asks for nothing)')
+                continue
             self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"

@@ -181,6 +181,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' (have|you|having|after|until|before|once) '
      r'(?:dropped|popped|swung|stopped|called|looked|checked|come) '
      r'(?:by|in at|in on|into|over to|at) (?=(?:the|a|an|my|your|our) )', r' \1 visited '),
+    # "go to X, but before doing that, make sure you have stopped at Y": Y is a precondition of X
+    (r' (?:,|but|, but) before (?:doing that|that|you do that|you go there|going there|you go in) +(?:, +)?'
+     r'(?:make sure|be sure|check) (?:that )?you (?:have|ve) (?:hit|visited|been to|checked|seen|stopped at|'
+     r'stopped by|called at|done) (?:both )?(?=(?:the|my|your|our) [^,.;!?]*(?: [,.;!?] |$))',
+     ' , but only after '),
     # "make sure you have been to X before Y": X is a goal (before Y)
     (r' (?:make sure|be sure|ensure) (?:that )?(?:you )?(?:have |already )*(?:been to|been by|visited|'
      r'gone to|stopped at|stopped by|passed by|swung by|checked) '

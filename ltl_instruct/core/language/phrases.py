@@ -218,8 +218,8 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
                                                         'also', 'still', 'always', 'never', 'just')
     if w in ('once', 'twice', 'thrice'):
         return False
-    if w == 'till' and i > 0 and tokens[i - 1] in ('the', 'that', 'this', 'my', 'our'):
-        return True   # "the till": the counter
+    if w == 'till':
+        return True   # "the till", "till 4": the counter (tokenize made every other "till" "until")
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \

@@ -17,7 +17,9 @@ TYPOS: dict[str, str] = {
     'thrid': 'third', 'undr': 'under', 'vist': 'visit', 'pls': 'please', 'plz': 'please',
     'kitchn': 'kitchen', 'dishwsher': 'dishwasher', 'litterbox': 'litter box', 'doesnt': 'does not',
     'cant': 'cannot', 'wont': 'will not', 'im': 'i am', 'ive': 'i have', 'youve': 'you have',
-    'thats': 'that is', 'theres': 'there is', 'its': 'it is', 'didnt': 'did not', 'isnt': 'is not',
+    'thats': 'that is', 'theres': 'there is', 'somebodys': 'somebody is', 'someones': 'someone has',
+    'dosent': 'does not', 'pleas': 'please', 'survery': 'survey', 'lol': '', 'rn': 'right now',
+    'its': 'it is', 'didnt': 'did not', 'isnt': 'is not',
     'goto': 'go to', 'infront': 'in front', 'nxt': 'next', 'frist': 'first', 'secnd': 'second',
     'avoiid': 'avoid', 'aviod': 'avoid', 'fridg': 'fridge', 'bathrom': 'bathroom', 'thn': 'then',
     'tonite': 'tonight', 'nite': 'night', 'lest': 'least', 'idc': 'i do not care', 'omg': 'oh',
@@ -59,6 +61,7 @@ FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grand
 
 CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\bdosn'?t\b", 'does not'), (r"\bdoesnt\b", 'does not'),
+    (r"\bdosen't\b", 'does not'),
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'),
@@ -147,7 +150,9 @@ _TOKEN_RE = re.compile(r"[a-z0-9]+(?:_[a-z0-9]+)*|[,.;:!?]")
 # A verb and its particle joined by a hyphen name a kind of thing ("walk-in", "drop-off", "check-in").
 _PARTICLE_COMPOUND_RE = re.compile(
     r'\b(walk|drive|drop|check|sign|pull|roll|pop|lean|built|fold|slide|pick|take|lay|top|stand|look|tip)-'
-    r'(in|out|off|up|through|thru|to|down|over|by|away|on)\b(?=\s+[a-z])')
+    r'(in|out|off|up|through|thru|to|down|over|by|away|on)\b(?=\s+[a-z])'
+    # ... and any word before "-in", "-out", "-off" ("the goods-in door", "the roll-out bins")
+    r'|\b([a-z]{3,})-(in|out|off)\b(?=\s+[a-z])')
 # An acronym after a determiner ("the IT office", "the ER") is a name, not the word it spells.
 _ACRONYM_RE = re.compile(
     r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
@@ -166,6 +171,27 @@ _ITEM_OPENERS = frozenset({'then', 'never', 'do', 'don', 'dont', 'avoid', 'and',
 def _then(number: str, following: str) -> str:
     """Return "then " for a list number after the first (a numbered list is an order), unless told."""
     return '' if number in ('0', '1', '01') or following in _ITEM_OPENERS else 'then '
+
+
+_TILL_BEFORE = frozenset({'the', 'that', 'this', 'my', 'our', 'your', 'each', 'every'})
+_TILL_AFTER = frozenset({'rolls', 'roll', 'area', 'point', 'queue', 'drawer', 'counter', 'station', 'desk',
+                         'number', 'lane', 'bank', 'points'})
+
+
+def _till_is_counter(before: list[str], after: list[str]) -> bool:
+    """Whether "till" names a shop's counter ("the till", "to till 4", "the till rolls"), not "until".
+
+    ``before`` holds the words read so far, ``after`` the next two.
+    """
+    nxt = after[0] if after else ''
+    if nxt in ('you', 'i', 'we', 'they', 'he', 'she', 'it', 'the', 'after', 'then', 'told', 'further'):
+        return False   # "a till you reach b": a clause follows
+    if nxt in _TILL_AFTER:
+        return True
+    numbered = (nxt.isdigit() or nxt in _NUMBER_NAME.values()) and (len(after) < 2 or after[1] not in (
+        'o', 'oclock', 'pm', 'am', 'p', 'a', 'minutes', 'mins', 'hours', 'seconds', 'tonight', 'today'))
+    prev = before[-1] if before else ''
+    return prev in _TILL_BEFORE or numbered and prev not in ('until', 'not', 'wait')
 
 
 def tokenize(text: str) -> list[str]:
@@ -205,10 +231,12 @@ def tokenize(text: str) -> list[str]:
         s = re.sub(r'\b(bring|take|carry|move|put|grab|get|fetch|return|to|on|in|at|by|near|from|of|with|'
                    r'under|behind|beside) its\b', r'\1 the', s)
     if '-' in s:   # "the walk-in cooler", "the drop-off point": one word of a name
-        s = _PARTICLE_COMPOUND_RE.sub(r'\1_\2', s)
+        s = _PARTICLE_COMPOUND_RE.sub(lambda m: '_'.join(g for g in m.groups() if g), s)
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)
     if 'ur ' in s:   # "on ur way": "ur" before a noun is "your", elsewhere "you are"
-        s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best)\b)',
+        s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best|'
+                   r'hand|hands|grip|gripper|arm|arms|charger|dock|battery|sensors|camera|base|spot|station|'
+                   r'charging)\b)',
                    'your ', s)
     if re.search(r'(?:to|at|into|outside|from) \d{3}\b', s):   # "go up to 204": room 204
         s = re.sub(r'\b(to|at|into|outside|from) (\d{3})\b(?! ?(?:times|meters|metres|m|cm|feet|ft|percent|%|'
@@ -231,13 +259,14 @@ def tokenize(text: str) -> list[str]:
     if 'forth ' in s:   # "the forth floor": the fourth
         s = re.sub(r'\bforth (?=floor|time|stop|room|door|one|place|aisle|bay|shelf|level|row)', 'fourth ', s)
     out: list[str] = []
-    for tok in _TOKEN_RE.findall(s):
+    found = _TOKEN_RE.findall(s)
+    for k, tok in enumerate(found):
         if acronyms and tok.startswith('zq'):
             out.append(tok[2:].upper())
             continue
         tok = ORDINAL_DIGITS.get(tok, tok)
-        if tok == 'till' and out and out[-1] in ('the', 'that', 'this', 'my', 'our'):
-            out.append(tok)   # "stuck at the till": the counter, not "until"
+        if tok == 'till' and _till_is_counter(out, found[k + 1:k + 3]):
+            out.append(tok)   # "stuck at the till", "go to till 4": the counter, not "until"
             continue
         words = TYPOS.get(tok, tok).split()
         for w in words:

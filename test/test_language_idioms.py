@@ -113,8 +113,18 @@ STAYING = [
     ('Go to the study by first visiting the hall.', 'F (near[hall] & F near[study])'),
     ('Go to the study, but make sure to go to the hall first.', 'F (near[hall] & F near[study])'),
     ('Start on the roof, then go to the 2 nd floor.', 'F (near[roof] & F near[second_floor])'),
-    ('Go to level three.', 'F near[third_floor]'),
+    ('Go to level three.', 'F near[level_three]'),   # the name as said (see test_levels_as_floors)
 ]
+
+
+def test_levels_as_floors_only_under_the_digits_convention() -> None:
+    """'level two' is the name said, but for drone-planning's convention ('numbers=digits'): a floor."""
+    from ltl_instruct.core.language.offline import OfflineTranslator
+    said = 'Inspect the level two formwork, then go to level four.'
+    assert str(OfflineTranslator().translate(said).formula) == \
+        'F (near[level_two_formwork] & F near[level_four])'
+    assert str(OfflineTranslator(numbers='digits').translate(said).formula) == \
+        'F (near[second_floor_formwork] & F near[fourth_floor])'
 
 
 @pytest.mark.parametrize('instruction,gold', STAYING, ids=[c[0][:40] for c in STAYING])

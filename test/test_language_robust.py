@@ -18,7 +18,7 @@ from translation_cases import T, check_translation as _check
 
 UNKNOWN_VERBS = [
     ('Zip over to the printer, then the water cooler.', 'F (near[printer] & F near[water_cooler])'),
-    ('Climb to the third landing.', 'F near[third_landing]'),
+    ('Scramble to the third landing.', 'F near[third_landing]'),
     ('Descend into the basement and then the boiler room.', 'F (near[basement] & F near[boiler_room])'),
     ('Cruise past the fountain.', 'F near[fountain]'),
     ('Hover above the blue tarp next to the barn.', 'F near[blue_tarp::isnextto(barn)]'),

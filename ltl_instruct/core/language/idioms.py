@@ -536,8 +536,15 @@ RULES: tuple[Rule, ...] = (
          r'shall) ',
          r'\g<pre>'),
     Rule('start on the third floor, go to the roof', r'^start (?:on|at|in|from)\b', 'go to'),
-    Rule('the 2 nd floor, level two', rf'\b(?:(?P<n>{_SMALL}) (?:st|nd|rd|th) floor|level (?P<m>{_SMALL}))\b',
-         lambda m: f'{_ORDINAL_OF[m.group("n") or m.group("m")]} floor'),
+    Rule('set down on the hospital roof: land there',
+         r'\b(?:set|touch|settle|bring (?:it|yourself)) down (?:on|at|in|onto|by|near)'
+         r'(?= (?:the|my|your|our|a)\b)',
+         'land at'),
+    Rule('climb to level four: go there', r'\bclimb (?:up )?to(?= (?:the|level|floor|roof|my|our|your)\b)',
+         'go to'),
+
+    Rule('the 2 nd floor', rf'\b(?P<n>{_SMALL}) (?:st|nd|rd|th) floor\b',
+         lambda m: f'{_ORDINAL_OF[m.group("n")]} floor'),
 
     Rule('after seeing b',
          r'\b(?P<c>after|before|until|once|when) (?:seeing|observing|visiting|reaching|going to)\b',
@@ -808,6 +815,17 @@ RULES: tuple[Rule, ...] = (
     Rule('visit a again and again', r'\b(?:again and again|over and over(?: again)?|with no limits?|without '
          r'(?:any )?limits?|time after time|all the time)\b', 'repeatedly'),
     Rule('swing by a couple of times', r'\ba couple (?:of )?(?:times|visits|passes|trips|rounds)\b', 'twice'),
+    Rule('get there now: go there',
+         r'(?P<p>^|, |\band |\bthen |\bso )get (?:over |down |up |yourself )?there\b',
+         r'\g<p>go there'),
+    Rule('exactly two visits, not one more: exactly two',
+         rf'(?P<e>\bexactly (?:(?:{_SMALL}|\d+) (?:times|visits|trips|passes)|once|twice|thrice)\b'
+         rf'(?: [a-z_]+){{0,4}}?)(?: ,| and)? not (?:one|a single|an?) (?:more|extra)'
+         rf'(?: (?:visit|time|trip|pass))?(?: than that)?\b', r'\g<e>'),
+    Rule('exactly twice, not once, not three times: exactly twice',
+         rf'(?P<e>\bexactly (?:(?:{_SMALL}|\d+) (?:times|visits|trips|passes)|once|twice|thrice)\b'
+         rf'(?: [a-z_]+){{0,4}}?)(?: ,)? not (?:once|twice|thrice|{_SMALL}|\d+)(?: times)?'
+         rf'(?:(?: ,)? (?:and |or )?not (?:once|twice|thrice|{_SMALL}|\d+)(?: times)?)*\b', r'\g<e>'),
     Rule('just the once', r'\b(?:just|only) the once\b', 'exactly once'),
     Rule('no more than the once: once', r'\b(?P<m>more than|no more than|not more than) the once\b',
          r'\g<m> once'),
@@ -1431,6 +1449,16 @@ def _literal_words(pattern: str) -> frozenset[str]:
 
 
 _COMPILED = tuple((re.compile(r.pattern), r.replacement, _literal_words(r.pattern)) for r in RULES)
+
+
+_LEVEL_RE = re.compile(rf'\blevel (?P<m>{_SMALL})\b')
+
+
+def levels_as_floors(tokens: list[str]) -> list[str]:
+    """Read "level two" as "second floor" (a set's convention; otherwise "level two" is the name said)."""
+    if 'level' not in tokens:
+        return tokens
+    return _LEVEL_RE.sub(lambda m: f'{_ORDINAL_OF[m.group("m")]} floor', ' '.join(tokens)).split()
 
 
 def rewrite_idioms(tokens: list[str]) -> list[str]:

@@ -34,7 +34,7 @@ from typing import Optional, Sequence
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
 from ltl_instruct.core.language import chatter, fallback, orders
 from ltl_instruct.core.language.base import Translation
-from ltl_instruct.core.language.idioms import rewrite_idioms
+from ltl_instruct.core.language.idioms import levels_as_floors, rewrite_idioms
 from ltl_instruct.core.language.lexicon import (
     AVOID_BY_FIRST_WORD as _AVOID_BY_FIRST, AVOID_FILLER, CLAUSE_OPENING_WORDS, CLAUSE_STARTERS,
     DELIVER_VERBS, EVENT_WORDS, FILLERS, GOAL_PARTICLES, GOAL_VERBS, GOAL_VERBS_SEED, IGNORED_CLAUSES,
@@ -212,7 +212,8 @@ class OfflineTranslator:
         tokens = chatter.strip_hesitations(
             apply_exclusions(apply_corrections(chatter.join_restarts(tokens, notes), notes), notes), notes)
         tokens = chatter.deliver_to_speaker(tokens, notes)
-        return rewrite_idioms(chatter.set_off_remarks(tokens, notes))
+        tokens = rewrite_idioms(chatter.set_off_remarks(tokens, notes))
+        return levels_as_floors(tokens) if self.numbers == 'digits' else tokens
 
 
 def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Reader') -> None:
@@ -331,6 +332,17 @@ def _speller() -> Speller:
             'reverse', 'whichever', 'either', 'times', 'least', 'most', 'exactly'}
         _SPELLER = Speller(lexicon=lexicon, core=core - {'be', 'i', 'you'})
     return _SPELLER
+
+
+_LEAD_WORDS = frozenset({'okay', 'so', 'right', 'alright', 'well', 'now', 'um', 'uh', 'er', 'erm'})
+
+
+def _without_leads(sentence: list[str]) -> list[str]:
+    """The sentence without the words that lead into it ("okay so bread aisle first": "bread aisle first")."""
+    k = 0
+    while k < len(sentence) - 1 and (sentence[k] in _LEAD_WORDS or sentence[k] == ',' and k > 0):
+        k += 1
+    return sentence[k:]
 
 
 def _is_word(w: str, listed: bool = False) -> bool:
@@ -605,6 +617,9 @@ class _Reader:
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
                 self.notes.append(f'read "{" ".join(sentence)}" as going there')
                 sentence = ['go', 'to'] + sentence
+            elif self._bare_goal_start(sentence):
+                self._read_bare_goal(sentence)
+                continue
             self._read_part(_Clause('and', sentence), None, sentence=True)
         if self.unread and not self.read_parts:
             # nothing but clauses it could not read: the instruction does not stand on its own
@@ -648,6 +663,48 @@ class _Reader:
                 mapping[d] = Descriptor(full[0])
                 self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
         return rename_descriptors(formula, mapping) if mapping else formula
+
+    def _bare_goal_start(self, sentence: list[str]) -> bool:
+        """Whether a sentence starts with a place and no verb ("aisle 14, but not till ...", "tea hut once")."""
+        sentence = _without_leads(sentence)
+        if self.phrases.landmarks or len(sentence) < 3 or sentence[0] in _COMMANDS or (
+                sentence[0] in STOPWORDS and sentence[0] not in DETS) or sentence[0] in chatter.INTERJECTIONS:
+            return False
+        np = self.phrases.parse(sentence, 0)
+        if np is None or np.pronoun or np.end >= len(sentence) or np.end == 0:
+            return False
+        nxt = sentence[np.end]
+        if nxt in chatter.FINITE_VERBS or nxt in ('is', 'are', 'was', 'has', 'will', 'can', 'should') or \
+                nxt not in (',', 'before', 'after', 'first', 'next', 'last', 'then', 'at', 'exactly', 'twice',
+                            'once', 'but', 'not', 'only', 'no', 'three', 'two', 'four', 'five'):
+            return False
+        # no part of it is a command of its own ("the comms room, go there")
+        return not any(t in _COMMANDS and (k == 0 or sentence[k - 1] in PUNCT or sentence[k - 1] in (
+            'and', 'then', 'so', 'but', 'please', 'just')) for k, t in enumerate(sentence))
+
+    def _read_bare_goal(self, sentence: list[str]) -> None:
+        """Read a sentence that names its goal with the verb left out ("loading bay, but not till ...").
+
+        It is read as said first; only where that reads no goal or fails is it read again with "go to"
+        before it (noted), and the better of the two kept.
+        """
+        sentence = _without_leads(sentence)
+        snap = fallback.Snapshot(self, self.notes)
+        error, unread, saw = self.first_error, len(self.unread), self.saw_action
+        self.saw_action = False
+        self._read_part(_Clause('and', sentence), None, sentence=True)
+        if self.first_error is error and len(self.unread) == unread and self.saw_action:
+            return
+        self.saw_action = self.saw_action or saw
+        first = fallback.Snapshot(self, self.notes)
+        first_error = self.first_error
+        snap.restore()
+        self.first_error = error
+        self.notes.append(f'read "{" ".join(sentence)}" as going to the place it starts with')
+        self._read_part(_Clause('and', ['go', 'to'] + sentence), None, sentence=True)
+        if self.first_error is not error or len(self.unread) > unread:
+            first.restore()   # no better read so: as said first
+            self.first_error = first_error
 
     def _places_only(self, sentence: list[str]) -> bool:
         """Whether a sentence is nothing but places ("the den, then the attic", "garage, please")."""
@@ -2027,7 +2084,9 @@ class _Reader:
         if local is not None:
             scope = local
         elif scope is None and 'through' in tokens[:k] and len(self.task.chain) == 1 and (
-                {'without', 'avoid', 'avoiding', 'not', 'never'} & set(tokens[:k])):
+                {'without', 'avoid', 'avoiding', 'not', 'never'} & set(tokens[:k])) and not any(
+                w in ' ' + ' '.join(tokens) + ' ' for w in (' at all ', ' ever ', ' at any time ',
+                                                            ' at any point ', ' whole time ', ' entire time ')):
             scope = _Scope('onway')   # "go to X, avoid going through Y": on the way to X
         onward = self._from_now_on(rest)
         if onward is not None:

@@ -332,9 +332,15 @@ def paraphrase(tokens: list[str]) -> list[str]:
     return out
 
 
+# "drone, three passes over the field, then ...": the verb left out at the start of a part
+_BARE_PASS_RE = re.compile(r'(^|[,.;:] )(?=(?:two|three|four|five|six|seven|eight|nine|ten|\d+) '
+                           r'(?:separate |more |full |complete |quick )?(?:passes|laps|sweeps|circuits|loops|'
+                           r'flyovers) (?:over|of|around|round|above|across) )')
+
+
 def _passes(tokens: list[str]) -> list[str]:
     """'make three passes over the farm' -> 'go over the farm three times'."""
-    text = ' '.join(tokens)
+    text = _BARE_PASS_RE.sub(r'\1do ', ' '.join(tokens))
     m = _PASS_RE.search(text)
     if m is None:
         return tokens

@@ -334,6 +334,8 @@ def _speller() -> Speller:
     return _SPELLER
 
 
+# Words that make a rule hold the whole run ("don't walk through X at all").
+_ANY_TIME = (' at all ', ' ever ', ' at any time ', ' at any point ', ' whole time ', ' entire time ')
 _LEAD_WORDS = frozenset({'okay', 'so', 'right', 'alright', 'well', 'now', 'um', 'uh', 'er', 'erm'})
 
 
@@ -665,7 +667,7 @@ class _Reader:
         return rename_descriptors(formula, mapping) if mapping else formula
 
     def _bare_goal_start(self, sentence: list[str]) -> bool:
-        """Whether a sentence starts with a place and no verb ("aisle 14, but not till ...", "tea hut once")."""
+        """Whether a sentence starts with a place and no verb ("aisle 14, but not till ...")."""
         sentence = _without_leads(sentence)
         if self.phrases.landmarks or len(sentence) < 3 or sentence[0] in _COMMANDS or (
                 sentence[0] in STOPWORDS and sentence[0] not in DETS) or sentence[0] in chatter.INTERJECTIONS:
@@ -2085,8 +2087,7 @@ class _Reader:
             scope = local
         elif scope is None and 'through' in tokens[:k] and len(self.task.chain) == 1 and (
                 {'without', 'avoid', 'avoiding', 'not', 'never'} & set(tokens[:k])) and not any(
-                w in ' ' + ' '.join(tokens) + ' ' for w in (' at all ', ' ever ', ' at any time ',
-                                                            ' at any point ', ' whole time ', ' entire time ')):
+                w in ' ' + ' '.join(tokens) + ' ' for w in _ANY_TIME):
             scope = _Scope('onway')   # "go to X, avoid going through Y": on the way to X
         onward = self._from_now_on(rest)
         if onward is not None:

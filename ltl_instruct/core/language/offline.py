@@ -340,7 +340,7 @@ _LEAD_WORDS = frozenset({'okay', 'so', 'right', 'alright', 'well', 'now', 'um', 
 
 
 def _without_leads(sentence: list[str]) -> list[str]:
-    """The sentence without the words that lead into it ("okay so bread aisle first": "bread aisle first")."""
+    """Return the sentence without the words that lead into it ("okay so bread aisle first")."""
     k = 0
     while k < len(sentence) - 1 and (sentence[k] in _LEAD_WORDS or sentence[k] == ',' and k > 0):
         k += 1

@@ -815,6 +815,10 @@ RULES: tuple[Rule, ...] = (
     Rule('visit a again and again', r'\b(?:again and again|over and over(?: again)?|with no limits?|without '
          r'(?:any )?limits?|time after time|all the time)\b', 'repeatedly'),
     Rule('swing by a couple of times', r'\ba couple (?:of )?(?:times|visits|passes|trips|rounds)\b', 'twice'),
+    Rule('once you have got to the bag: reached it',
+         r'\b(?P<w>once|when|after|until|till|as soon as|before) you (?:have |had )?(?:got|gotten) '
+         r'(?:over |up |down )?'
+         r'to(?= (?:the|my|your|our)\b)', r'\g<w> you have reached'),
     Rule('get there now: go there',
          r'(?P<p>^|, |\band |\bthen |\bso )get (?:over |down |up |yourself )?there\b',
          r'\g<p>go there'),

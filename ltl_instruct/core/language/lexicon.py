@@ -155,6 +155,7 @@ STRICT_ORDER_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
 
 IGNORED_CLAUSES = frozenset({
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
+    'launch',
     'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',
     'thank you', 'okay', 'in that order', 'in order', 'whichever is closer', 'it does not matter which',
     'either one works', 'either works', 'any works', 'either is fine', 'either one is fine', 'off you go',

@@ -336,6 +336,9 @@ def _speller() -> Speller:
 
 # Words that make a rule hold the whole run ("don't walk through X at all").
 _ANY_TIME = (' at all ', ' ever ', ' at any time ', ' at any point ', ' whole time ', ' entire time ')
+# Verbs of a thing the person left somewhere ("I left my charger in the hall, go find it").
+_LEFT_VERBS = frozenset({'left', 'dropped', 'lost', 'forgot', 'misplaced', 'mislaid', 'put'})
+_LEFT_DETS = frozenset({'my', 'our', 'your', 'a', 'the'})
 _LEAD_WORDS = frozenset({'okay', 'so', 'right', 'alright', 'well', 'now', 'um', 'uh', 'er', 'erm'})
 
 
@@ -487,6 +490,7 @@ class _Reader:
         self.stated_goals: list[Descriptor] = []   # goals of "X comes after Y" (for "go to both")
         self.before_added: Optional[Step] = None   # the goal "before you go to X, ..." added
         self.scene: list[Descriptor] = []   # the things a "there is ..." clause named last
+        self.left_thing: Optional[NounPhrase] = None   # what "I left my X in Y" left (for "it")
         self.unread: list[fallback.Unread] = []   # clauses the rules could not read (guessed or left out)
         self.read_parts = 0   # clauses and sentences read by the rules
         self.sentence_start = 0   # where the current sentence's steps start in the chain
@@ -710,7 +714,7 @@ class _Reader:
 
     def _places_only(self, sentence: list[str]) -> bool:
         """Whether a sentence is nothing but places ("the den, then the attic", "garage, please")."""
-        if self.phrases.landmarks or not sentence:
+        if self.phrases.landmarks or not sentence or ' '.join(sentence) in IGNORED_CLAUSES:
             return False
         i = 1 if sentence[0] == 'either' else 0
         n = len(sentence)
@@ -1560,17 +1564,22 @@ class _Reader:
                 if subject is not None:
                     named.append(subject)
                 i = verb + 1
+            thing: Optional[NounPhrase] = None   # what was left, dropped or lost ("I left my charger here")
             while i < len(tokens):
-                if tokens[i] in DETS and tokens[i] not in ('your', 'my', 'our') or i == 0 and np_end or (
+                left = i > 0 and tokens[i - 1] in _LEFT_VERBS and tokens[i] in _LEFT_DETS
+                if tokens[i] in DETS and tokens[i] not in ('your', 'my', 'our') or i == 0 and np_end or \
+                        left or (
                         i > 0 and tokens[i - 1] in chatter.PREPOSITIONS and is_name_word(tokens, i, False)):
                     np = self.phrases.parse(tokens, i)
                     if np is not None and not np.pronoun and np.end > i:
                         named.append(np)
+                        thing = thing or (np if left else None)
                         i = np.end
                         continue
                 i += 1
             if named:
-                self.last_object = named[0] if np_end else named[-1]
+                self.left_thing = thing
+                self.last_object = thing or (named[0] if np_end else named[-1])
                 self.last_place = named[-1]
                 self.phrases.last = self.last_object
                 self.mentions.extend(np.descriptor for np in named)
@@ -1940,6 +1949,8 @@ class _Reader:
             return self.last_place
         if np.pronoun in ('it', 'them', 'that') and self.last_object is not None and not place:
             return self.last_object
+        if np.pronoun in ('it', 'them') and place and self.left_thing is not None:
+            return self.left_thing   # "I left my charger in the hall, go find it": the charger
         if np.pronoun in ('it', 'them', 'that') and place and self.last_place is not None:
             return self.last_place
         return np
@@ -2083,6 +2094,13 @@ class _Reader:
             self._read_goal(rest[1:], _Clause('and', rest[1:]), None)
             rest = []
         local, rest = self._trailing_scope(rest)
+        if local is not None and local.kind == 'until' and local.event == 'near' and not local.then and \
+                local.target is not None and scope is not None and scope.kind == 'after' and \
+                scope.target is not None and not rest:
+            # "once you've reached the bag, keep away from the rack until you're at the treadmill"
+            nps, _, _ = self._np_list(tokens[k:], 0)
+            if self._avoid_after_until(nps, scope.target, local.target):
+                return
         if local is not None:
             scope = local
         elif scope is None and 'through' in tokens[:k] and len(self.task.chain) == 1 and (
@@ -2238,6 +2256,18 @@ class _Reader:
             step = next((st for st in reversed(self.task._all_steps()) if st.kind in ('visit', 'deliver') and
                          len({t.name for t in st.targets + st.dests} & {d.name}) == 1), None)
         return step
+
+    def _avoid_after_until(self, nps: list[NounPhrase], start: NounPhrase, end: NounPhrase) -> bool:
+        """From the goal ``start`` on, avoid ``nps`` until ``end`` is reached (both goals of the task)."""
+        step = self.task.find_step(start.descriptor)
+        if not nps or step is None or step.kind != 'visit' or any(np.pronoun for np in nps):
+            return False
+        goal = self._resolve(end, place=True).descriptor
+        known = self.task.find_step(goal)
+        if known is None:
+            self.task.chain.append(Step('visit', [goal]))   # "... until you're at Z": Z is reached after
+        step.avoid_after_until.append((tuple(np.descriptor for np in nps), goal))
+        return True
 
     def _apply_avoid(self, targets: list[Descriptor], scope: Optional[_Scope]) -> None:
         if self.choice is not None:
@@ -3120,8 +3150,10 @@ class _Reader:
 
     def _read_goal(self, tokens: list[str], clause: _Clause, scope: Optional[_Scope]) -> None:
         k = 0
-        if _starts(tokens, 0, ['take', 'off']) or _starts(tokens, 0, ['lift', 'off']):
-            k = 2
+        if _starts(tokens, 0, ['take', 'off']) or _starts(tokens, 0, ['lift', 'off']) or (
+                tokens[:1] == ['launch'] and tokens[1:2] in (['and'], [','], ['then'], ['from'])) or \
+                tokens[:3] in (['launch', 'the', 'drone'], ['launch', 'the', 'robot']):
+            k = 3 if tokens[1:2] == ['the'] else 1 if tokens[0] == 'launch' else 2
             if tokens[k:k + 1] == ['from']:
                 # "take off from the pad": where the flight starts, not a goal
                 src = self.phrases.parse(tokens, k + 1)

@@ -87,7 +87,7 @@ RELATIVE_LEADS = tuple(sorted(set(RELATIVE_LEADS) | {
 
 # Words that are never part of a name.
 STOPWORDS = frozenset('''
-lying somebody someone still
+lying somebody someone still somewhere
 and or then to from at in into on onto with for until while before after when once but so if of as because
 also too again there here please it them that which who whom where is are be been being was were you i we
 me us he she they finally instead order every all way time times twice thrice exactly least most more

@@ -75,6 +75,8 @@ mailbox letterbox trashcan recycling greenhouse shed birdfeeder hedge flowerbed 
 hosepipe rooftop helideck antenna gutters solar atrium lobby
 wrapper compactor glassware sterilizer steriliser pipette pipettes beaker beakers dewar baler mezzanine
 forklift forklifts workstation kennel trampoline scooter scooters cattle slurry ketchup colostrum
+hammock casserole headset headsets mantelpiece bedsheet bedsheets stockroom scaffold scaffolding screed
+shredding
 '''.split())
 
 
@@ -189,6 +191,15 @@ class Speller:
         if word in self._cache:
             return self._cache[word]
         out: Optional[str] = None
+        if len(word) >= 7 and word.isascii() and word.isalpha() and word not in self.words and \
+                word not in self.lexicon:
+            # one slip from a thing robots are sent to, even where the word reads as two run together
+            # ("bedsheats": beds + heats, "casesrole": cases + role) or derived ("mantlepiece")
+            near = {c for c, kind in _slips(word) if c in DOMAIN_WORDS and kind in (
+                'swap', 'vowel', 'double', 'missing') and not _inflection(word, c)}
+            if len(near) == 1:
+                self._cache[word] = out = near.pop()
+                return out
         if len(word) >= 6 and word.isascii() and word.isalpha() and word not in self.words and \
                 word not in self.lexicon and word.endswith(('er', 'or', 'ers', 'ors')):
             # "-er" for "-or" and back ("moniter", "conveyer", "compacter", "computor"): the listed one

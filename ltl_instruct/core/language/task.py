@@ -98,6 +98,8 @@ class Step:
     avoid_at: list[Descriptor] = field(default_factory=list)
     once: str = ''   # 'exactly' ("visit a exactly once"), 'plain' ("go to a once, then b"), or ''
     hold_until: list[Descriptor] = field(default_factory=list)   # "wait there until Y": x U y once there
+    # "once you reach X, avoid Y until you reach Z": from X on, Y avoided until Z
+    avoid_after_until: list[tuple[tuple[Descriptor, ...], Descriptor]] = field(default_factory=list)
 
 
 def render(steps: Sequence[Step]) -> Optional[Formula]:
@@ -128,7 +130,8 @@ def render(steps: Sequence[Step]) -> Optional[Formula]:
             until = conjoin(near_atom(s.hold_until[0]), tail)
             assert until is not None
             tail = Until(core, until)
-        body = conjoin(core, *[Not(near_atom(d)) for d in s.avoid_at], *never_all(s.avoid_after), tail)
+        body = conjoin(core, *[Not(near_atom(d)) for d in s.avoid_at], *never_all(s.avoid_after),
+                       *[until_avoid(ys, near_atom(z)) for ys, z in s.avoid_after_until], tail)
     elif s.kind == 'pick':
         obj = s.targets[0]
         picked = conjoin(Atom('pick', (obj,)), *never_all(s.after_pick_avoid), tail)

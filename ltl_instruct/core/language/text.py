@@ -252,6 +252,8 @@ def tokenize(text: str) -> list[str]:
         s = s.replace('lost and found', 'lost_and_found')
     s = re.sub(r'\b(first|last|other|next) ([2-9])\b(?! ?(?:m|cm|meters|metres|feet|ft)\b)',
                lambda m: f'{m.group(1)} {_NUMBER_NAME[int(m.group(2))]}', s)   # "the last 2"
+    if 'pair of ' in s:   # "a pair of gloves": the gloves
+        s = re.sub(r'\b(a|the|my|your|our|that|this) pair of (?=[a-z])', r'\1 ', s)
     if ' of the ' in s:   # "stay of the wet floor": off
         s = re.sub(r'\b(stay|keep|get) of (?=the )', r'\1 off ', s)
     if ' form ' in s:

@@ -109,7 +109,10 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'), ('when', 'you', 'have', 'a', 'moment'),
     ('this', 'evening'), ('this', 'morning'), ('this', 'afternoon'), ('tonight',), ('today',),
     ('right', 'now'), ('now',), ('thanks',), ('thank', 'you'), ('would', 'you'), ('could', 'you'),
-    ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('if', 'you', 'do', 'not', 'mind'),
+    ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('nice', 'and', 'slow'),
+    ('nice', 'and', 'easy'), ('nice', 'and', 'steady'), ('slow', 'and', 'steady'), ('nice', 'and', 'slowly'),
+    ('nice', 'and', 'gently'),
+    ('if', 'you', 'do', 'not', 'mind'),
     ('when', 'you', 'are', 'free'), ('at', 'some', 'point', 'today'),
     ('for', 'now'), ('will', 'you'), ('okay',), ('ok',), ('cheers',), ('if', 'you', 'like'),
     ('if', 'you', 'want'), ('if', 'you', 'wish'), ('if', 'you', 'feel', 'like', 'it'), ('real', 'fast'),
@@ -527,6 +530,8 @@ _PLACE_HEADS = frozenset('''
 room rooms station desk office area lounge entrance center centre toilet toilets bathroom bathrooms kitchen
 door car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen
 cafeteria changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
+bedroom bedrooms suite suites house cabin cottage closet wardrobe lobby reception book fridge washroom
+restroom restrooms shower showers exit cupboard apartment flat villa chalet tent ward garage
 '''.split())
 # Words of a rule about where to go: a clause holding one is never said "about people".
 PLACE_RULE_WORDS = frozenset({
@@ -746,6 +751,7 @@ _REMARK_RE = re.compile(
     r'|(?:it )?(?:does not|do not|will not|would not) matter(?: (?:which|which one|to me|either way))?'
     r'(?: (?:first|order|comes first|you do first))?'
     r'|no matter (?:which|what)(?: (?:order|one|way|one first|comes first))?'
+    r'(?: (?:you|we) (?:pick|choose|go for|go with|take|do|use))?'
     r'|(?:what|whatever|whichever|which) (?:you )?(?:prefer|like|want|choose)(?: best| more)?'
     r'|(?:you )?(?:choose|pick|decide)(?: which(?: one)?)?'
     r'|(?:either|one|any) of (?:them|those|the two) (?:is|will be|would be) (?:enough|fine|ok|okay|plenty)'
@@ -771,6 +777,12 @@ _REMARK_RE = re.compile(
     r'|(?:i )?do not care which (?:1|one)'
     r'|i (?:just |only )?need you to (?:see|check|find out|look) (?:if|whether) [a-z ]+'
     r'|pick one(?: and go)?'
+    r'|i (?:just |only )?need (?:you )?(?:to )?(?:hold|carry|help (?:me )?with|mind|keep|look after|watch) '
+    r'(?:something|this|that|it|a few things|some things|a thing|stuff)'
+    r'(?: (?:for me|for a (?:second|minute|bit)))?'
+    r'|i (?:will|ll|shall) be (?:there|right there|with you|along|over|back|down|up)'
+    r'(?: (?:in a (?:minute|moment|second|sec|bit|few minutes|jiffy)|shortly|soon|in five|in ten|later))?'
+    r'(?: with (?:the|my|your|some) [a-z ]+)?'
     r'|i (?:only |just )?need (?:one|one of them|either|either of them|one of the two) '
     r'(?:looked at|checked|done|visited|seen)'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'

@@ -187,6 +187,17 @@ def _repeat(m: 're.Match[str]') -> str:
     return f'visit {m.group("x")} {mode} {_times(1 + _number(m.group("n")))}'
 
 
+def _named_first(m: 're.Match[str]') -> str:
+    """Put the one named first: 'the seat and the chair, the chair first' is the chair, then the seat."""
+    a, b, c = m.group('a'), m.group('b'), m.group('c').split()
+    words_a, words_b = a.split()[1:], b.split()[1:]
+    if c == words_b[-len(c):] and c != words_a[-len(c):]:
+        a, b = b, a
+    elif not (c == words_a[-len(c):] and c != words_b[-len(c):]):
+        return m.group(0)
+    return f'{m.group("v")} {a} , then {b}'
+
+
 def _comes_last(m: 're.Match[str]') -> str:
     """Say "the pond comes last: don't go to it until ..." as "... the pond until ..., and go to it last"."""
     rest = re.sub(r'\b(to|near|in|into|at) it\b', lambda k: f'{k.group(1)} {m.group("x")}', m.group('r'))
@@ -1031,8 +1042,58 @@ RULES: tuple[Rule, ...] = (
          rf'has got to|is to) (?:come|be visited|be done|be checked|go|happen|be) first\b',
          r'\g<j>but only after \g<x>'),
     Rule('stop at the ice machine a single time: exactly once',
-         r'\b(?:a single time|one single time|one time only|a single visit|just the one time)\b',
+         r'\b(?:(?:one time|once) and (?:only )?(?:one time|once)(?: only)?|a single time|one single time|'
+         r'one time only|a single visit|just the one time|one stop|a single stop)\b',
          'exactly once'),
+    Rule('make exactly once at the candy bowl: visit it exactly once',
+         rf'\b(?:make|do) (?:exactly |only |just )?exactly once (?:at|to|by) '
+         rf'(?P<x>(?:the|my|your|our) {_THING})'
+         rf'(?= [,.;]|$| and\b| then\b| today\b)', r'visit \g<x> exactly once'),
+    Rule('avoid a the whole time, and b too: a and b the whole time',
+         r'(?P<d> (?:the whole time|the entire time|at all times|throughout|the whole way|the entire way)) '
+         r', and (?P<y>(?:the|my|your|our) [a-z0-9_ ]+?) (?:too|as well|also)(?= [,.;]|$)',
+         r' and \g<y>\g<d>'),
+    Rule('heading over to the booth, keep clear of the fountain: on the way to it',
+         r'\b(?:while |when |as )?(?:you are |you re )?(?:heading|going|walking|driving|flying|moving|'
+         r'travelling|traveling|making your way) (?:over |back |across |down |up |on )?to '
+         r'(?P<x>(?:the|my|your|our) [a-z0-9_ ]+?) , (?P<v>keep clear of|avoid|stay away from|'
+         r'keep away from|steer clear of|do not go near|stay clear of|keep out of|stay out of|do not pass)\b',
+         r'on the way to \g<x> \g<v>'),
+    Rule('fly out and survey the farm: survey it',
+         r'\b(?:fly|head|go|drive|walk|zip|pop|nip) (?:out|off|over|up) (?:and |to )'
+         r'(?=(?:survey|visit|inspect|check|go|fly|look|scan|photograph|map|patrol|film|circle|hover)\b)',
+         ''),
+    Rule('go to the seat and the chair, the chair first: the chair, then the seat',
+         r'\b(?P<v>go to|visit|check|stop at|hit) (?P<a>(?:the|my|your|our) [a-z0-9_ ]+?) and '
+         r'(?P<b>(?:the|my|your|our) [a-z0-9_ ]+?) , (?:the |my |your |our )?(?P<c>[a-z0-9_ ]+?) first$',
+         _named_first),
+    Rule('and after both of those come back to the bathroom: then',
+         r'\b(?:and )?(?:after|once you have done|when you have done|once you are done with|'
+         r'when you are done with) (?:both|all|all three|each) (?:of )?(?:those|them|these|that)?(?: ,)? '
+         r'(?=(?:come|go|head|return|visit|fly|drive|walk|move|make)\b)', 'then '),
+    Rule('only if you actually need to go into the room: if you go into it',
+         r'^(?:only )?if you (?:actually |really |ever |do )?(?:need|have|want|got) to '
+         r'(?P<v>go into|enter|go in|go inside|step into|go to|visit|use|pass through|go through)\b'
+         r'(?P<x>[^:,;]*?) (?::|,)',
+         r'if you \g<v>\g<x> ,'),
+    Rule('hit the sanitizer before you step inside: first',
+         r' before (?:you|we) (?:step|go|head|walk|get|move|pop|nip) '
+         r'(?:inside|in|into it|in there|into the room)'
+         r'(?= [,.;]|$)', ' first'),
+    Rule('do not go there at all until: until',
+         r' (?:at all|ever|in any case)(?= (?:until|till|unless)\b)', ''),
+    Rule('until you have been to a and b, both of them: until both',
+         r'\b(?P<u>(?:until|till|before) (?:you have |you |you had )?(?:been to|visited|reached|checked|'
+         r'gone to|seen|stopped at)) '
+         r'(?P<x>(?:the|my|your|our) [a-z0-9_ ]+? and (?:the|my|your|our) [a-z0-9_ ]+?) '
+         r', (?:both|each) of (?:them|those|these)\b', r'\g<u> both \g<x>'),
+    Rule('exactly twice, once now and once later: said once',
+         r'(?<=\b(?:twice|times)) (?:, )?once (?:now|today|first|this morning|this afternoon)(?: ,)? '
+         r'and once '
+         r'(?:later|again|after|afterwards|tonight|this evening)\b', ''),
+    Rule('go to it exactly once, then leave it alone: never again',
+         r'(?: ,)? (?:and )?(?:then )?(?:leave (?:it|them) (?:alone|be)|never again)(?= [,.;]|$)',
+         ' and never go there again'),
     Rule('the bird feeder needs two visits at minimum: at least twice',
          rf'^(?P<x>(?:the|my|your|our) {_THING}) (?:needs|requires|gets|should get|must get) (?P<q>at least |'
          rf'exactly |at most )?(?P<n>two|three|four|five|[0-9]+) (?:visits|checks|passes|trips)'

@@ -530,8 +530,8 @@ class _Reader:
         if cut <= 0:
             return sentence
         tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
-        if tail == ['you', 'know', 'why']:
-            return self._noted_cut(sentence, cut)
+        if tail == ['you', 'know', 'why'] or len(tail) > 3 and chatter.is_remark(tail):
+            return self._noted_cut(sentence, cut)   # "..., I'll be there in a minute with the shirts"
         if len(tail) >= 3 and tail[0] in ('it', 'they', 'he', 'she') and tail[1] in (
                 'will', 'would', 'might', 'could', 'can', 'may') and tail[2] not in ('be', 'you'):
             return self._noted_cut(sentence, cut)   # "..., it'll fry your wheels"
@@ -1291,7 +1291,7 @@ class _Reader:
         if s in _NOT_BOTH or ' '.join(t for t in clause.tokens if t not in PUNCT) in _NOT_BOTH:
             self._exclusive_or()
             return scope
-        if self._read_same_for(tokens, scope):
+        if self._read_same_for(tokens, scope, [t for t in clause.tokens if t not in PUNCT]):
             return scope
         if tokens[:3] in (['no', 'more', 'than'], ['not', 'more', 'than']) and len(tokens) < 7 or \
                 tokens[:2] in (['at', 'most'], ['up', 'to']) and len(tokens) < 5:
@@ -1639,9 +1639,16 @@ class _Reader:
                 return len(lead)
         return 0
 
-    def _read_same_for(self, tokens: list[str], scope: Optional[_Scope]) -> bool:
+    def _read_same_for(self, tokens: list[str], scope: Optional[_Scope], said: Sequence[str] = ()) -> bool:
         """Read 'the same goes for X', 'same with X', 'likewise X': the last clause again, with X."""
         k = self._same_for_lead(tokens, 0) or -1
+        if k < 0 and self.last_clause is not None and tokens[:1] and tokens[0] in DETS and said and (
+                said[-1] in ('too', 'also') or said[-2:] == ['as', 'well']) and {
+                'avoid', 'away', 'clear', 'never', 'not', 'out'} & set(self.last_clause[0]):
+            k = 0   # "avoid the forklift area. the charging bay too": the avoidance again
+            avoided = True
+        else:
+            avoided = False
         if k < 0 or self.last_clause is None:
             return False
         nps, _, end = self._np_list(tokens, k, place=False)
@@ -1652,6 +1659,9 @@ class _Reader:
         timely = ('point', 'time', 'times', 'moment', 'cost', 'costs')   # "at any point" is no referent
         spans = [i for i in range(len(prev)) if (prev[i] in DETS or prev[i] in ('it', 'them', 'there')) and
                  not (i + 1 < len(prev) and prev[i + 1] in timely)]
+        if avoided:
+            at = next(i for i, t in enumerate(prev) if t in ('avoid', 'away', 'clear', 'never', 'not', 'out'))
+            spans = [i for i in spans if i > at][:1]
         if not spans:
             return False
         start = spans[-1]
@@ -1706,6 +1716,8 @@ class _Reader:
                 continue
             if out[-1] == 'well':
                 break   # "go to the well"
+            if out[-1] == 'again' and {'never', 'not'} & set(out):
+                break   # "never go there again": no visit after the one said (see _read_avoid)
             out = out[:-1]
         return out
 

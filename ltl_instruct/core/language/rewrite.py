@@ -33,7 +33,8 @@ _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'i
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
                        'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
-                       'yesterday'})   # "the vase, the candle and the frame I showed you?"
+                       'yesterday', 'along', 'against', 'under', 'behind', 'beside', 'inside', 'up',
+                       'down'})   # "the vase, the candle and the frame I showed you?"
 # Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
 _POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
                              'destination', 'choice', 'point', 'bit'})
@@ -815,6 +816,14 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     guard = 0
     while i < len(out) and guard < 50:
         guard += 1
+        if 0 < i and out[i - 1] in '.;!?' and out[i] in DETERMINERS and not _marker_at(out, i):
+            # "avoid the dog. the dog's fine, just avoid the sprinklers": said with no marker
+            stop = next((k for k in range(i, len(out)) if out[k] in '.;!?'), len(out))
+            fine = _fine_after_all(out[:i], out[i:stop], notes)
+            if fine is not None:
+                out = fine + out[stop:]
+                i = len(fine)
+                continue
         m = _marker_at(out, i)
         if not m or i == 0 and out[i] not in ('actually',):
             i += 1
@@ -873,7 +882,8 @@ _RETRACT: tuple[tuple[str, ...], ...] = (
     ('no', 'need', 'to', 'stay', 'away', 'from'),
     ('do', 'not', 'need', 'to', 'stay', 'away', 'from'), ('can', 'go', 'near'), ('it', 'is', 'safe'),
     ('do', 'not', 'worry', 'about'), ('so', 'it', 'is', 'fine'), ('so', 'it', 'is', 'ok'),
-    ('so', 'it', 'is', 'okay'), ('so', 'that', 'is', 'fine'),
+    ('so', 'it', 'is', 'okay'), ('so', 'that', 'is', 'fine'), ('never', 'mind', 'about'),
+    ('nevermind', 'about'),
 ) + tuple((verb, 'the', what, part)   # "drop the avoidance part"
           for verb in ('drop', 'forget', 'ignore', 'skip', 'scratch', 'remove', 'cancel')
           for what in ('avoidance', 'avoid', 'avoiding', 'keep', 'away') for part in ('part', 'bit'))
@@ -907,7 +917,7 @@ def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Option
                                                              ['cleaned']):
             e += 1   # "the elevator's been fixed"
         if seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe'], ['fixed'], ['repaired'],
-                                ['cleared']) and \
+                                ['cleared'], ['acceptable'], ['allowed'], ['permitted']) and \
                 seg[e:e + 2] not in (['no', 'problem'], ['not', 'a'], ['no', 'longer']):
             continue
         if seg[e:e + 2] == ['not', 'a'] and seg[e + 2:e + 3] not in (['problem'], ['hazard'], ['danger']):
@@ -945,6 +955,14 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
                      for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
             kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS | {
                 'keep', 'stay', 'steer'}]
+            a, b = p + spans[0].start, p + spans[0].end
+            if len(kept) == 1 and b < len(prev) and prev[b] in _SCOPE_WORDS:
+                # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place
+                lead = next((k for k in range(len(kept[0])) if kept[0][k] not in _REPLACED_VERB_WORDS), 0)
+                np = PhraseParser().parse(kept[0], lead) if lead else None
+                if np is not None and np.end == len(kept[0]) and not np.pronoun and \
+                        _clause_kind(kept[0][:lead]) == 'avoid':
+                    return prev[:a] + kept[0][lead:] + prev[b:]
             return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
                 t for c in kept for t in [','] + c]
     return None
@@ -1329,6 +1347,43 @@ def _moved(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[s
     return new
 
 
+def _replace_choice(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Replace the last either-or by the one said now.
+
+    "the blue recliner or the grey one. hmm, make that the grey one or the footstool".
+    """
+    words = [t for t in seg if t not in PUNCT]
+    while words[:2] in (['make', 'that'], ['make', 'it']) or words[:1] in (['hmm'], ['no'], ['actually']):
+        words = words[2:] if words[0] == 'make' else words[1:]
+    if 'or' not in words or not words or words[0] not in DETERMINERS:
+        return None
+    parser = PhraseParser()
+    first = parser.parse(words, 0)
+    if first is None or first.pronoun not in (None, '', 'one') or words[first.end:first.end + 1] != ['or']:
+        return None
+    second = parser.parse(words, first.end + 1)
+    if second is None or second.pronoun not in (None, '', 'one') or second.end != len(words):
+        return None
+    spans = [sp for sp in (parser.parse(prev, i) for i in range(len(prev)) if prev[i] in DETERMINERS)
+             if sp is not None and sp.pronoun in (None, '', 'one')]
+    for a, b in zip(reversed(spans[:-1]), reversed(spans[1:])):
+        if prev[a.end:b.start] in (['or'], [',', 'or']) and not [
+                t for t in prev[b.end:] if t not in PUNCT and t not in ('instead', 'please')]:
+            head = next((t for t in (prev[a.end - 1], prev[b.end - 1]) if t not in ('one', 'ones')), None)
+            new = [head if t == 'one' and head is not None else t for t in words]
+            notes.append(f'the choice was replaced by "{" ".join(new)}"')
+            start = a.start - 1 if a.start > 0 and prev[a.start - 1] == 'either' else a.start
+            return prev[:start] + new + prev[b.end:]
+    return None
+
+
+def _clause_kind(words: list[str]) -> str:
+    """Whether the words before a name ask to avoid it ('avoid'), to go there ('go') or neither ('')."""
+    if {'avoid', 'away', 'clear', 'steer', 'never', 'not', 'out'} & set(words):
+        return 'avoid'
+    return 'go' if {'go', 'visit', 'head', 'drive', 'fly', 'walk'} & set(words) else ''
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     numbered = _renumber(prev, seg)
     if numbered is not None:
@@ -1354,11 +1409,20 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if unordered is not None:
             notes.append('the order was dropped')
             return unordered
+    choice = _replace_choice(prev, seg, notes) if marker in ('make', 'hmm', 'actually', 'no', 'sorry', 'wait',
+                                                             'or', 'i', 'oops', 'my') else None
+    if choice is not None:
+        return choice
     between = _insert_between(prev, seg)
     if between is not None:
         notes.append('a stop was added between the last two')
         return between
     both = [t for t in seg if t not in PUNCT and t not in _BOTH_FILLERS]
+    order: list[str] = []
+    if both[:1] == ['both'] and both[-1:] == ['first'] and 'or' in prev and ',' in seg:
+        # "the seat or the chair. scratch that, go to both, seat first": both, in that order
+        order = [','] + seg[len(seg) - seg[::-1].index(',') :]
+        both = ['both']
     if both == ['both'] and 'or' in prev:
         # "the kitchen or the dining room - nah, make it both": each of them
         at = max(k for k, t in enumerate(prev) if t == 'or')
@@ -1366,6 +1430,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         start = max((k for k in range(at) if out[k] in '.;!?'), default=-1) + 1
         out = out[:start] + [t for t in out[start:at] if t != 'either'] + out[at:]
         notes.append('the choice was made both')
+        if order:
+            end = len(out) - 1 if out and out[-1] in '.;!?' else len(out)
+            out = out[:end] + order + out[end:]
         return out
     stripped = True
     while stripped:   # "hmm, on second thought, ...": markers in a row
@@ -1546,6 +1613,14 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if new and chatter.is_statement(new, _np_end(new)):
             new = []   # "never mind the dog, it is outside": a reason, not a replacement
         lead = next((k for k in range(len(new)) if new[k] not in _REPLACED_VERB_WORDS), len(new))
+        said = _clause_kind(prev[max((p for p in range(hit.start) if prev[p] in '.;!?,' or prev[p] in (
+            'and', 'then')), default=-1) + 1:hit.start])
+        told = rest[:next((k for k in range(len(rest)) if rest[k] not in _REPLACED_VERB_WORDS), len(rest))]
+        if new and said and _clause_kind(told) not in ('', said):
+            # "avoid the dog. never mind the dog, go to the car": the avoidance dropped, a goal added
+            notes.append(f'"{tgt}" was dropped')
+            kept = _remove_clause(prev, hit.start, narrow=True)
+            return kept + ([','] if kept and kept[-1] not in PUNCT else []) + rest
         if 0 < lead < len(new) and new[lead] in DETERMINERS:
             np = parser.parse(new, lead)
             if np is not None and np.end == len(new) and not np.pronoun:
@@ -1659,6 +1734,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if onp is not None and nnp is not None and nnp.end == len(new):
             hit = next((sp for sp in reversed(_np_spans(prev))
                         if sp.descriptor == onp.descriptor or sp.head == onp.head), None)
+            if hit is None and not onp.pronoun:
+                # "the pepper grinder, not the salt": the thing named by part of its name
+                said = set(onp.descriptor.name.split('_'))
+                hit = next((sp for sp in reversed(_np_spans(prev))
+                            if said <= set(sp.descriptor.name.split('_'))), None)
             if hit is not None:
                 notes.append(f'corrected to "{" ".join(new)}"')
                 return prev[:hit.start] + new + prev[hit.end:]

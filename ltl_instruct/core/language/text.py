@@ -19,6 +19,7 @@ TYPOS: dict[str, str] = {
     'cant': 'cannot', 'wont': 'will not', 'im': 'i am', 'ive': 'i have', 'youve': 'you have',
     'thats': 'that is', 'theres': 'there is', 'somebodys': 'somebody is', 'someones': 'someone has',
     'dosent': 'does not', 'pleas': 'please', 'survery': 'survey', 'lol': '', 'rn': 'right now',
+    'nevermind': 'never mind', 'glu': 'glue', 'ther': 'there', 'thers': 'there is', 'nvm': 'never mind',
     'its': 'it is', 'didnt': 'did not', 'isnt': 'is not',
     'goto': 'go to', 'infront': 'in front', 'nxt': 'next', 'frist': 'first', 'secnd': 'second',
     'avoiid': 'avoid', 'aviod': 'avoid', 'fridg': 'fridge', 'bathrom': 'bathroom', 'thn': 'then',
@@ -250,6 +251,9 @@ def tokenize(text: str) -> list[str]:
                    r'a check|inspecting|inspected|a look|looking at|a visit|visiting)\b', r'check \1', s)
     if 'lost and found' in s:   # one place, not two
         s = s.replace('lost and found', 'lost_and_found')
+    if ' drop' in s:   # "the book drop", "the key drop box": a place, no verb
+        s = re.sub(r'\b(the|a|my|our|your) (book|mail|key|parcel|package|night|returns?|letter|donation) '
+                   r'drop\b', r'\1 \2_drop', s)
     s = re.sub(r'\b(first|last|other|next) ([2-9])\b(?! ?(?:m|cm|meters|metres|feet|ft)\b)',
                lambda m: f'{m.group(1)} {_NUMBER_NAME[int(m.group(2))]}', s)   # "the last 2"
     if 'pair of ' in s:   # "a pair of gloves": the gloves

@@ -392,6 +392,13 @@ RULES: tuple[Rule, ...] = (
          r'(?P<a>\d+|one|two|three|four|five|six|seven|eight|nine|ten) (?P<j>or|and) '
          r'(?P<b>\d+|one|two|three|four|five|six|seven|eight|nine|ten)\b(?! (?:times|of)\b)',
          r'\g<n> \g<a> \g<j> \g<n> \g<b>'),
+    Rule('you have got the bakery counter, the deli and the checkout to visit: visit them',
+         r'^(?:you have|you|we have|we|there is|there are) (?:got )?(?P<x>(?:the|my|your|our) [^.;]+?) '
+         r'to (?:visit|check|see|inspect|get to|hit|cover|stop at|go to)(?: today| now| this morning)?$',
+         r'visit \g<x>'),
+    Rule('the checkout comes last, after both of the others: last',
+         rf'^(?P<x>(?:the|my|your|our) {_THING}) (?:comes|goes|is) last(?: ,)? after (?:both|all|each) '
+         rf'(?:of )?(?:the|my|your|our) [a-z0-9_ ]+$', r'\g<x> is last'),
     Rule('the bar comes last: do the ice machine and the glass rack first',
          rf'^(?P<x>(?:the|my|our) {_NP}) (?:comes|goes|is|should be|has to be|must be) (?P<w>last|first) '
          r'(?:,|:) (?P<r>.+)$', _comes_last),
@@ -1064,7 +1071,7 @@ RULES: tuple[Rule, ...] = (
          r'(?=(?:survey|visit|inspect|check|go|fly|look|scan|photograph|map|patrol|film|circle|hover)\b)',
          ''),
     Rule('go to the seat and the chair, the chair first: the chair, then the seat',
-         r'\b(?P<v>go to|visit|check|stop at|hit) (?P<a>(?:the|my|your|our) [a-z0-9_ ]+?) and '
+         r'\b(?P<v>go to|visit|check|stop at|hit) (?:both )?(?P<a>(?:the|my|your|our) [a-z0-9_ ]+?) and '
          r'(?P<b>(?:the|my|your|our) [a-z0-9_ ]+?) , (?:the |my |your |our )?(?P<c>[a-z0-9_ ]+?) first$',
          _named_first),
     Rule('and after both of those come back to the bathroom: then',
@@ -1080,6 +1087,47 @@ RULES: tuple[Rule, ...] = (
          r' before (?:you|we) (?:step|go|head|walk|get|move|pop|nip) '
          r'(?:inside|in|into it|in there|into the room)'
          r'(?= [,.;]|$)', ' first'),
+    Rule('either wait at the taxi stand or at the bus shelter: wait at one of them',
+         r'^either (?=(?:wait|stop|park|land|hover|stay|sit|go|hang around)\b'
+         r'(?:(?! and | then )[^.;,])* or\b)',
+         ''),
+    Rule('fly to the field, power lines are dangerous so keep away: the power lines',
+         r'(?P<p>^|, )(?P<x>(?!(?:the|my|your|our|a|an|it|they|there|this|that|you|i|we|he|she|everything|'
+         r'nothing|something|what|which|who)\b)[a-z_]+(?: [a-z_]+)?) (?P<v>is|are) '
+         r'(?=(?:dangerous|hazardous|unsafe|fragile|slippery|live|off limits|out of bounds)\b[^.;]* so\b)',
+         r'\g<p>the \g<x> \g<v> '),
+    Rule('that plant on the filing cabinet - once at most: visit it so often',
+         rf'^(?:that|this|the) (?P<x>{_THING}(?: (?:on|by|next to|under|behind|near|in) (?:the|my|your|our) '
+         rf'{_THING})?) (?:-|,|:) (?P<c>(?:(?:at most|at least|exactly|only|no more than) )?'
+         rf'(?:once|twice|thrice|{_NUM} times)(?: at most| at least| exactly| only| max)?)\b',
+         r'visit the \g<x> \g<c>'),
+    Rule('one visit to the atm, exactly one: exactly once',
+         rf'\b(?:one|a single) visit (?:to|at) (?P<x>(?:the|my|your|our) {_THING}) , '
+         r'(?:exactly|just|only) one\b',
+         r'visit \g<x> exactly once'),
+    Rule('go see what is up at the espresso maker: go to it',
+         r'\b(?:go |and )*(?:go to|see|check|find out|look at) what (?:is|s) (?:up|going on|happening|wrong) '
+         r'(?:at|with|by|in|near|over at) (?=(?:the|my|your|our)\b)', 'go to '),
+    Rule('but wait until you have checked the window first: only after',
+         r', (?:but |and )?wait until (?P<w>you have|you ve|you) '
+         r'(?P<v>checked|visited|been to|seen|reached|inspected)'
+         r'(?P<x> (?:the|my|your|our) [a-z0-9_ ]+?)(?: first)?(?= [,.;]|$)',
+         r', but only after \g<w> \g<v>\g<x>'),
+    Rule('the gym is the goal: go there',
+         rf'(?P<p>^|; |, )(?:and )?(?P<x>(?:the|my|your|our) {_THING}) is (?:the|your|my|our) '
+         r'(?:main |final |real )?'
+         rf'(?:goal|destination|target|end point|endpoint)$', r'\g<p>go to \g<x>'),
+    Rule('only after checking the oven: after you have been there',
+         r'\b(?P<w>only after|after|before|until|not before|not until) '
+         r'(?:checking|visiting|inspecting|seeing|'
+         r'looking at|checking on|stopping at|stopping by)(?: out)? (?=(?:the|my|your|our)\b)',
+         r'\g<w> you have been to '),
+    Rule('the green locker comes only after the blue one: visit it only after',
+         rf'(?P<p>^|, and |; )(?P<x>(?:the|my|your|our) {_THING}) (?:comes |goes |is )?only after ',
+         r'\g<p>visit \g<x> only after '),
+    Rule('visit a only after b, and c only after d: two sentences',
+         rf'(?P<a>\bonly after [^.;]+?) , and (?P<c>(?:the|my|your|our) {_THING}) only after ',
+         r'\g<a> . visit \g<c> only after '),
     Rule('do not go there at all until: until',
          r' (?:at all|ever|in any case)(?= (?:until|till|unless)\b)', ''),
     Rule('until you have been to a and b, both of them: until both',
@@ -1393,8 +1441,10 @@ RULES: tuple[Rule, ...] = (
          r' , where (?:the|a|an|my|our|your) [a-z ]+? (?:is|are|will be) (?:waiting|sitting|working|standing|'
          r'expecting you|ready)(?: [a-z ]+)?(?= [.;!?]|$)', ''),
     Rule('cereal box back into the pantry, please: put it there',
-         r'^(?P<x>(?:the |my )?(?!(?:do|go|come|get|head|and|then|not|never|please|you|we|i|just|put|take|'
-         r'bring|'
+         r'^(?!(?:[a-z0-9_]+ ){0,4}(?:heading|going|coming|way|walking|driving|flying|moving|you|are|make|'
+         r'making|get|getting)\b)'
+         r'(?P<x>(?:the |my )?(?!(?:do|go|come|get|head|and|then|not|never|please|you|we|i|just|put|take|'
+         r'while|when|on|as|once|after|before|if|until|till|bring|'
          r'move|carry|fly|drive|tidy|clear|pack|put|throw|toss)\b)[a-z0-9_]+(?: [a-z0-9_]+){0,3}?) back '
          r'(?P<p>into|in|onto|on|to) '
          r'(?=(?:the|my|your|our)\b)',

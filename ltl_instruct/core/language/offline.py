@@ -275,7 +275,10 @@ _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'mi
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
                            'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills', 'go', 'goes',
                            'need', 'needs', 'spook', 'spooks', 'scare', 'scares', 'panic', 'panics', 'freak',
-                           'freaks', 'run', 'runs', 'chew', 'chews', 'knock', 'knocks', 'jump', 'jumps'})
+                           'freaks', 'run', 'runs', 'chew', 'chews', 'knock', 'knocks', 'jump', 'jumps',
+                           'love', 'loves', 'like', 'likes', 'raid', 'raids', 'eat', 'eats', 'steal',
+                           'steals',
+                           'smell', 'smells', 'attract', 'attracts'})
 # Words after "is/are" that say where something is ("they are next to the door"), not why.
 _PLACE_PREPS = chatter.PREPOSITIONS | {'next', 'above', 'below'}
 # Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
@@ -1233,7 +1236,7 @@ class _Reader:
             tokens = self._strip_fillers(tokens)
             if not tokens and new_scope.kind == 'after' and new_scope.target is not None and \
                     clause.tokens[:1] in (['after'], ['once']) and self.task.chain and \
-                    self.task.chain[-1].kind == 'visit' and \
+                    self.task.chain[-1].kind == 'visit' and len(self.task.chain) > self.sentence_start and \
                     self._find_goal(new_scope.target.descriptor) is None:
                 # "land on the roof, after flying over the park": the park first
                 moved = self.task.chain.pop()
@@ -2271,8 +2274,15 @@ class _Reader:
 
     def _avoid_after_until(self, nps: list[NounPhrase], start: NounPhrase, end: NounPhrase) -> bool:
         """From the goal ``start`` on, avoid ``nps`` until ``end`` is reached (both goals of the task)."""
+        if not nps or any(np.pronoun for np in nps):
+            return False
         step = self.task.find_step(start.descriptor)
-        if not nps or step is None or step.kind != 'visit' or any(np.pronoun for np in nps):
+        if step is None and not start.pronoun:
+            # "once you've reached the gate, keep away from the pond until you're at the barn", the
+            # gate named here first: the way from the gate to the barn is asked for, so both are goals
+            step = Step('visit', [start.descriptor])
+            self.task.chain.append(step)
+        if step is None or step.kind != 'visit':
             return False
         goal = self._resolve(end, place=True).descriptor
         known = self.task.find_step(goal)
@@ -2446,8 +2456,8 @@ class _Reader:
             return False
         x = self._named_before(np).descriptor
         step = self.task.find_step(x)
-        others = [d for st in self.task._all_steps() if st.kind == 'visit' and st is not step
-                  for d in st.targets if d != x]
+        others = list(dict.fromkeys(d for st in self.task._all_steps() if st.kind == 'visit'
+                                    for d in st.targets if d != x))   # "visit a, b and c": one step
         if step is None or not others:
             return False
         for d in others:
@@ -2871,7 +2881,8 @@ class _Reader:
         if head is None:
             return False
         k = len(head)
-        if tokens[k:k + 1] not in (['pick'], ['grab'], ['collect'], ['lift'], ['fetch'], ['retrieve']):
+        if tokens[k:k + 1] not in (['pick'], ['grab'], ['collect'], ['lift'], ['fetch'], ['retrieve'],
+                                   ['touch'], ['handle']):
             return False
         k += 1
         up = tokens[k:k + 1] == ['up']
@@ -2899,6 +2910,7 @@ class _Reader:
         event = _near(scope.target.descriptor) if scope.event == 'near' else Atom(
             scope.event, (scope.target.descriptor,))
         self.task.constraints.append(Until(Not(Atom('pick', (np.descriptor,))), event))
+        self.last_object = np   # "don't touch the tray until ..., then bring it to the fridge": the tray
         if self.task.find_step(np.descriptor) is None:
             # nothing brought yet: the pick itself is asked for ("don't grab the key before ...")
             self.task.chain.append(Step('visit', [np.descriptor]))

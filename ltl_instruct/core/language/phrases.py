@@ -131,7 +131,8 @@ outer side central rear upstairs downstairs spare tiny huge heavy light narrow w
 
 LY_NOUNS = frozenset({'family', 'assembly', 'supply', 'jelly', 'belly', 'trolley', 'pulley', 'valley',
                       'alley',
-                      'butterfly', 'dragonfly', 'lily', 'holly', 'bully', 'rally', 'gully', 'folly', 'doily'})
+                      'butterfly', 'dragonfly', 'lily', 'holly', 'bully', 'rally', 'gully', 'folly', 'doily',
+                      'freshly', 'newly', 'recently'})
 
 NAME_VERBS = frozenset('''
 go goes head visit navigate move drive fly walk run come return check find locate reach get bring take put
@@ -218,6 +219,11 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
                                                         'also', 'still', 'always', 'never', 'just')
     if w in ('once', 'twice', 'thrice'):
         return False
+    if w in ('comes', 'goes') and have_name and nxt in ('first', 'last', 'next', 'second', 'third', 'before',
+                                                        'after', 'later', 'earlier', 'at', 'in', 'into',
+                                                        'only'):
+        return False   # "the checkout comes last", "the lamp goes in the box"
+
     if w == 'till':
         return True   # "the till", "till 4": the counter (tokenize made every other "till" "until")
     if w in NUMBER_WORDS or w.isdigit():

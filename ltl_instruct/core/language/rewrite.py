@@ -383,7 +383,10 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                             tail, i + 2, False))):
                     if nxt == 'rest' and tail[i + 2:i + 4] == ['of', 'them']:
                         i += 2
-                    rest_idx = [k for k in range(n) if k not in used]
+                    said = ' ' + ' '.join(tail[:i]) + ' '
+                    rest_idx = [k for k in range(n) if k not in used and not (
+                        # "the checkout comes last, after the others": the others than the one named
+                        ' ' + ' '.join(t for t in items[k] if t not in DETERMINERS) + ' ' in said)]
                     out += joined(rest_idx)
                     i += 2 + (1 if w in ('two', 'three', 'ones', 'one') else 0)
                     continue
@@ -451,6 +454,12 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     notes.append('list of ' + ', '.join(' '.join(it[1:]) for it in items) + ': positions resolved')
     # earlier sentences stay; the sentence that holds the list only sets the scene
     keep = max((k for k in range(s) if tokens[k] in '.;!?'), default=-1)
+    first = next((k for k, t in enumerate(out) if t not in PUNCT), len(out))
+    stop = next((k for k in range(end, len(tokens)) if tokens[k] in '.;!?'), len(tokens))
+    if {'visit', 'check'} & set(tokens[keep + 1:stop]) and out[first:first + 1] and \
+            out[first] in DETERMINERS and out[:1] and out[0] in '.;!?':
+        # "you've got a, b and c to visit. c comes last, after the others": the list is the task
+        return tokens[:stop] + out
     return tokens[:keep + 1] + out
 
 
@@ -1605,6 +1614,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return None
         hit = next((sp for sp in reversed(spans)
                     if sp.descriptor == tnp.descriptor or sp.head == tnp.head), None)
+        if hit is None and tnp.pronoun == 'one' and tnp.end == len(target):
+            # "the left elevator or the right one. no, forget the right one": the words said again
+            at = next((p for p in range(len(prev) - len(target), -1, -1)
+                       if prev[p:p + len(target)] == target), -1)
+            hit = parser.parse(prev, at) if at >= 0 else None
         if hit is None and marker in ('skip', 'omit', 'scratch', 'cross', 'leave'):
             notes.append(f'"{marker} {tgt}": no goal there')   # nothing given to cancel
             return prev + ([','] if prev and prev[-1] not in PUNCT and rest else []) + rest

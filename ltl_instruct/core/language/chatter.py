@@ -916,3 +916,50 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
 STOPWORDS_STORY = frozenset({'please', 'if', 'when', 'once', 'after', 'before', 'only', 'never', 'do', 'not',
                              'no', 'then', 'first', 'just', 'also', 'either', 'both', 'each', 'every', 'all',
                              'here', 'this', 'these', 'those'})
+
+
+# Titles before a person's name ("Mr. Alvarez"): the name's first word, never a place.
+TITLES = frozenset({'mr', 'mrs', 'ms', 'miss', 'dr', 'doctor', 'mister', 'missus', 'madam', 'sir', 'chef'})
+
+# What a person wants of the robot, said as the reason to go ("chef's shouting for you", "Sofia
+# needs a hand with it", "Mr. Alvarez would like a word"): it names no place and asks for nothing
+# the formula can hold (the place is the one the request names).
+_SUMMONS_RE = re.compile(
+    r'^(?:(?:and|but|so|oh|because|since|as|cos) )?(?P<who>[a-z_]+(?: [a-z_]+){0,2}?) (?:'
+    r'(?:is|are|was|were|has been|have been|keeps|keep) (?:shouting|calling|asking|looking|yelling|screaming|'
+    r'waiting|hollering|crying out) (?:for|after) you'
+    r'|(?:has |have )?(?:asked|called|shouted|is asking|are asking) (?:for|after) you'
+    r'|(?:wants|want|would like|needs|need|could use|could do with|is after|are after|would love) '
+    r'(?:a (?:quick )?(?:word|hand|chat)|(?:some )?help|a bit of help|'
+    r'to (?:see|talk to|speak to|have a word with) you)(?: with (?:it|this|that|them|you|something))?'
+    r'|(?:wants|want|would like|needs|need) to (?:run through|go over|talk through|talk about|discuss|'
+    r'sort out|review) (?:the|some|a few) [a-z]+(?: [a-z]+)? with you'
+    r')(?: (?:again|now|right now|too|as well|urgently|first))?$')
+# Words that may not be the person of a summons: the robot, a rule, a place word or a pronoun for the robot.
+_NOT_WHO = frozenset({'you', 'i', 'robot', 'drone', 'it', 'there', 'here', 'this', 'that', 'which', 'who',
+                      'what', 'where'}) | CONSTRAINT_WORDS | PREPOSITIONS
+
+
+def is_summons(tokens: Sequence[str], ordered: bool = False) -> bool:
+    """Whether a clause says who wants the robot, and nothing else ("chef's shouting for you").
+
+    The person is a name, a person noun or a title and name ("the Garcias", "Mr Alvarez",
+    "chef"), with no preposition (so no place: "the guest at table 4 asked for you" is not
+    one) and no rule word. A trailing "first" is allowed only where it repeats the order the
+    request itself gave (the caller checks that).
+    """
+    words = [t for t in tokens if t not in PUNCT]
+    if len(words) < 3:
+        return False
+    m = _SUMMONS_RE.match(' '.join(words))
+    if m is None:
+        return False
+    if words[-1] == 'first' and not ordered:
+        return False   # "..., Maria wants a word first": an order of its own
+    who = m.group('who').split()
+    if who[0] in DETERMINERS:
+        # "the Garcias", "the chef": people, not "the kitchen needs a hand"
+        who = who[1:]
+        if not who or not (who[-1] in PERSON_NOUNS or who[-1].endswith('s') and who[-1] not in _PLACE_HEADS):
+            return False
+    return bool(who) and not _NOT_WHO & set(who) and not any('_' in w for w in who)

@@ -271,6 +271,8 @@ def _rule_in(words: Sequence[str]) -> bool:
 _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
                       'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'toppling'})
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
+# Words of an order in a request: a reason after it may repeat the order ("..., chef wants a word first").
+_ORDER_WORDS = frozenset({'until', 'till', 'before', 'first', 'then', 'after'})
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
                            'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills', 'go', 'goes',
@@ -602,6 +604,23 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., the neighbours complain"
         return sentence
 
+    def _drop_summons(self, sentence: list[str]) -> list[str]:
+        """Leave out a part between commas that says who wants the robot ("..., chef wants a word, ...").
+
+        Only a part after a first one (the request); a "first" in it only where the request
+        holds an order of its own ("not until you've been to the pass - chef wants to run
+        through the tickets with you first - ...").
+        """
+        if 'you' not in sentence and 'word' not in sentence and 'hand' not in sentence:
+            return sentence   # the common case, kept fast
+        cuts = [k for k, t in enumerate(sentence) if t == ','] + [len(sentence)]
+        for a, b in zip(cuts, cuts[1:]):
+            part = sentence[a + 1:b]
+            if a > 0 and chatter.is_summons(part, _ORDER_WORDS & set(sentence[:a]) != set()):
+                self.notes.append(f'left out "{" ".join(part)}" (says who wants you, asks for nothing)')
+                return self._drop_summons(sentence[:a] + sentence[b:])
+        return sentence
+
     def _noted_cut(self, sentence: list[str], cut: int) -> list[str]:
         head = sentence[:cut]
         if not [t for t in head if t not in PUNCT and t not in FILLERS] or chatter.is_statement(
@@ -612,16 +631,21 @@ class _Reader:
         return head + [t for t in sentence[cut + 1:] if t in '.;!?']
 
     def read(self, tokens: list[str]) -> Formula:
-        for sentence in self._sentences(tokens):
+        sentences = self._sentences(tokens)
+        for sentence in sentences:
             self.first_tail = None
             if (self.task.chain or self.task.constraints) and chatter.is_story(sentence, _COMMANDS):
                 # "... . Harold bought it the year we married.": the person's story, after the request
                 self.notes.append(f'left out "{" ".join(sentence)}" (tells a story, asks for nothing)')
                 continue
+            if len(sentences) > 1 and chatter.is_summons(sentence):
+                # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
+                self.notes.append(f'left out "{" ".join(sentence)}" (says who wants you, asks for nothing)')
+                continue
             self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
-            sentence = self._drop_trailing_reason(sentence)
+            sentence = self._drop_trailing_reason(self._drop_summons(sentence))
             if self._places_only(sentence):
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
                 self.notes.append(f'read "{" ".join(sentence)}" as going there')
@@ -1317,6 +1341,10 @@ class _Reader:
                 if ok and not rest:
                     return scope
                 self.task.chain.append(step)
+        if chatter.is_summons(tokens) and (self.task.chain or self.task.constraints):
+            # "go to the bar, chef wants a word": who wants the robot, no place of its own
+            self.notes.append(f'left out "{s}" (says who wants you, asks for nothing)')
+            return scope
         if chatter.is_person_statement(tokens):
             # "a lady says her book is on it", "my grandmother is resting there": about people, not the robot
             self.notes.append(f'left out "{s}" (said about people, asks for nothing)')

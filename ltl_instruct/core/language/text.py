@@ -155,6 +155,11 @@ _PARTICLE_COMPOUND_RE = re.compile(
     r'(in|out|off|up|through|thru|to|down|over|by|away|on)\b(?=\s+[a-z])'
     # ... and any word before "-in", "-out", "-off" ("the goods-in door", "the roll-out bins")
     r'|\b([a-z]{3,})-(in|out|off)\b(?=\s+[a-z])')
+# ... and after a determiner, a noun wherever it stands ("check the walk-in.", "to the drop-off?")
+_NOUN_COMPOUND_RE = re.compile(r'\b(the|my|our|this|that) '
+                               r'(?:(walk|drive|drop|check|pull|roll|pop|lean|look|tip)-'
+                               r'(in|out|off|through|thru|up)'
+                               r'|(walk|drive)(in|thru)|(drop)(off))\b')
 # An acronym after a determiner ("the IT office", "the ER") is a name, not the word it spells.
 _ACRONYM_RE = re.compile(
     r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
@@ -226,6 +231,8 @@ def tokenize(text: str) -> list[str]:
     s = re.sub(r'(?<![.;:!?,\s])[ \t]*\n', ' . ', s)
     s = re.sub(r'[\u2022\u25cf\u25aa]', ' , ', s)
     s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
+    if '.' in s:   # "Mr. Alvarez": the title's full stop ends no sentence
+        s = re.sub(r'\b(mr|mrs|ms|dr)\.(?= [a-z])', r'\1', s)
     s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
@@ -234,6 +241,8 @@ def tokenize(text: str) -> list[str]:
                    r'under|behind|beside) its\b', r'\1 the', s)
     if '-' in s:   # "the walk-in cooler", "the drop-off point": one word of a name
         s = _PARTICLE_COMPOUND_RE.sub(lambda m: '_'.join(g for g in m.groups() if g), s)
+    if 'the ' in s:   # "the walk-in", "the walkin", "the dropoff"
+        s = _NOUN_COMPOUND_RE.sub(lambda m: m.group(1) + ' ' + '_'.join(g for g in m.groups()[1:] if g), s)
     s = re.sub(r'(?<=[a-z])-(?=[a-z])', ' ', s)
     if 'ur ' in s:   # "on ur way": "ur" before a noun is "your", elsewhere "you are"
         s = re.sub(r'\bur (?=(?:way|own|turn|time|choice|call|left|right|route|path|trip|return|best|'

@@ -36,6 +36,30 @@ BLIND_ROUND_G4 = [
      'F near[walk_in] & (!near[walk_in] U near[pass]) & (!near[dish_pit] U near[walk_in])'),
     ('Head to the dry store, the manager is asking for you.',
      'F near[dry_store]'),
+    # "run X (over) to Y" is a delivery (it was two visits, or left out)
+    ("Run the menus over to the host stand, and while you've got them, don't go by the terrace doors - "
+     "it's pouring and they'll get soaked.",
+     'F (near[menus] & F (pick[menus] & (!near[terrace_doors] U (near[host_stand] & F release[menus, '
+     'host_stand]))))'),
+    ('Run the spare keys to the front desk.',
+     'F (near[spare_keys] & F (pick[spare_keys] & F (near[front_desk] & F release[spare_keys, '
+     'front_desk])))'),
+    ('Run to the kitchen.',
+     'F near[kitchen]'),
+    # "on your way out to X": on the way to X (it was read over the whole run); "once you're (out)
+    # there" after it is from X on
+    ("On your way out to the terrace keep away from the host stand, and once you're out there, stay clear "
+     'of the patio heaters.',
+     '(!near[host_stand] U near[terrace]) & F (near[terrace] & G !near[patio_heaters])'),
+    ("On your way to the garden keep away from the shed, and once you're there, avoid the pond.",
+     '(!near[shed] U near[garden]) & F (near[garden] & G !near[pond])'),
+    # "it's a guide dog" says what the thing named is: no new thing for "it"; "leave it be" after an
+    # avoidance says the avoidance again (it was "never go there again" of the last goal)
+    ('Go to the bar, then the host stand. Stay away from the dog under table 5 the whole time, please - '
+     "it's a guide dog, leave it be.",
+     'F (near[bar] & F near[host_stand]) & G !near[dog::isbelow(table_5)]'),
+    ('Keep away from the cat, leave it alone, and go to the porch.',
+     'F near[porch] & G !near[cat]'),
 ]
 
 

@@ -1139,6 +1139,11 @@ RULES: tuple[Rule, ...] = (
          r'(?<=\b(?:twice|times)) (?:, )?once (?:now|today|first|this morning|this afternoon)(?: ,)? '
          r'and once '
          r'(?:later|again|after|afterwards|tonight|this evening)\b', ''),
+    Rule('stay away from the dog, it is a guide dog, leave it be: avoid it (the avoidance said again)',
+         r'(?P<a>\b(?:avoid|(?:stay|keep|steer) (?:away|clear|well away|well clear) (?:from|of)|'
+         r'do not go near) [^.;!?]*?) (?:, |and |, and )(?:just |please )?leave (?P<p>it|them) (?:alone|be)'
+         r'(?= [,.;!?]|$)',
+         r'\g<a> , avoid \g<p>'),
     Rule('go to it exactly once, then leave it alone: never again',
          r'(?: ,)? (?:and )?(?:then )?(?:leave (?:it|them) (?:alone|be)|never again)(?= [,.;]|$)',
          ' and never go there again'),

@@ -71,7 +71,7 @@ maybe perhaps possibly
 DELIVER_VERBS = frozenset({'bring', 'take', 'carry', 'move', 'deliver', 'return', 'put', 'place', 'leave',
                            'drop', 'set', 'toss', 'throw', 'stick', 'transport', 'bin', 'dump', 'hand',
                            'stash', 'store', 'push', 'relocate', 'chuck', 'haul', 'lug', 'ferry', 'cart',
-                           'wheel', 'tow', 'recycle'})
+                           'wheel', 'tow', 'recycle', 'run'})
 PUT_VERBS = frozenset({'put', 'place', 'leave', 'drop', 'set', 'toss', 'throw', 'stick', 'stash', 'store',
                        'dump', 'chuck'})
 PICK_VERBS = frozenset({'pick', 'grab', 'fetch', 'collect', 'get', 'retrieve', 'lift'})

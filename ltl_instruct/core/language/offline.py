@@ -1078,11 +1078,12 @@ class _Reader:
                     tokens, i, ['and', 'finally']):
                 boundary, skip = 'seq', 1 if t != 'and' else 2
             elif _starts(tokens, i, ['once', 'you', 'are', 'there']) or _starts(
+                    tokens, i, ['once', 'you', 'are', 'out', 'there']) or _starts(
                     tokens, i, ['once', 'there']) or _starts(tokens, i, ['when', 'you', 'are', 'there']) or \
                     _starts(tokens, i, ['once', 'you', 'get', 'there']) or _starts(
                         tokens, i, ['once', 'you', 'reach', 'it']):
                 boundary = 'there'
-                skip = 2 if tokens[i + 1] == 'there' else 4
+                skip = 2 if tokens[i + 1] == 'there' else 5 if tokens[i + 3] == 'out' else 4
             elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
                   ) and (any(c.tokens for c in clauses) or self.task.chain) and \
                     'sure' not in clauses[-1].tokens and \
@@ -1442,7 +1443,12 @@ class _Reader:
             return scope
         if self._avoid_start(tokens) is not None:
             self.saw_action = True
-            if clause.connector == 'there' and scope is None and self.last_place is not None:
+            if clause.connector == 'there' and scope is not None and scope.kind == 'onway' and \
+                    scope.target is not None:
+                # "on your way to the terrace keep away from X, and once you're there, avoid Y": from the
+                # terrace on
+                scope = _Scope('after', scope.target)
+            elif clause.connector == 'there' and scope is None and self.last_place is not None:
                 scope = _Scope('after', self.last_place)   # "once you're there, never go back to Y"
             elif clause.connector == 'seq' and scope is None and self.task.chain and \
                     self.task.chain[-1].kind in ('visit', 'deliver') and self.avoid_scope == 'global' and \
@@ -1596,6 +1602,13 @@ class _Reader:
                     named.append(subject)
                 i = verb + 1
             thing: Optional[NounPhrase] = None   # what was left, dropped or lost ("I left my charger here")
+            if tokens[0] in ('it', 'that', 'this', 'they', 'he', 'she') and tokens[1:2] in (
+                    ['is'], ['are'], ['was'], ['were']) and tokens[2:3] in (['a'], ['an']):
+                # "it's a guide dog": what the thing named before is, no new thing for "it" and "there"
+                before = self.phrases.last
+                np = self.phrases.parse(tokens, 2)
+                self.phrases.last = before
+                i = np.end if np is not None and np.end > 2 else 0
             while i < len(tokens):
                 left = i > 0 and tokens[i - 1] in _LEFT_VERBS and tokens[i] in _LEFT_DETS
                 if tokens[i] in DETS and tokens[i] not in ('your', 'my', 'our') or i == 0 and np_end or \
@@ -1771,6 +1784,9 @@ class _Reader:
                     leg = self._leg(rest)   # "on the way from X to Y": avoided between the two
                     if leg is not None:
                         return leg
+                if rest[:1] in (['out'], ['over'], ['up'], ['down'], ['across']) and rest[1:2] in (
+                        ['to'], ['towards'], ['toward']):
+                    rest = rest[1:]   # "on your way out to the terrace": to the terrace
                 back = rest[:1] == ['back'] and rest[1:2] in (['to'], ['towards'])
                 if back:
                     rest = rest[1:]   # "on the way back to X": to X again

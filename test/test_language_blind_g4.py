@@ -60,6 +60,16 @@ BLIND_ROUND_G4 = [
      'F (near[bar] & F near[host_stand]) & G !near[dog::isbelow(table_5)]'),
     ('Keep away from the cat, leave it alone, and go to the porch.',
      'F near[porch] & G !near[cat]'),
+    # a list of places, then "hit them ...": "hit" is the verb, no fourth item of the list
+    ('The pass, the bar, the host stand - hit them in revrse order.',
+     'F (near[host_stand] & F (near[bar] & F near[pass]))'),
+    ('the shed, the barn, the coop - hit them in that order',
+     'F (near[shed] & F (near[barn] & F near[coop]))'),
+    # a name that is also a verb ("pass") in a bare list of places is the name
+    ('walk-in then pass. oh wait, other way round',
+     'F (near[pass] & F near[walk_in])'),
+    ('the walk-in then pass',
+     'F (near[walk_in] & F near[pass])'),
 ]
 
 

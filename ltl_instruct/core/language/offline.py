@@ -649,7 +649,10 @@ class _Reader:
             if self._places_only(sentence):
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
                 self.notes.append(f'read "{" ".join(sentence)}" as going there')
-                sentence = ['go', 'to'] + sentence
+                # a name that is also a verb ("pass then walk-in") read as the name it is in the list
+                listed = (',', 'then', 'and', 'or')
+                sentence = ['go', 'to'] + [w for k, t in enumerate(sentence) for w in (
+                    ['the', t] if t in SKILL_VERBS and (k == 0 or sentence[k - 1] in listed) else [t])]
             elif self._bare_goal_start(sentence):
                 self._read_bare_goal(sentence)
                 continue
@@ -767,11 +770,16 @@ class _Reader:
             if seen and i == k:
                 return False   # two phrases with nothing between them ("hit the cart"): no list
             if sentence[i] in STOPWORDS and sentence[i] not in DETS or sentence[i] in SKILL_VERBS and (
-                    i + 1 >= n or sentence[i + 1] in DETS or sentence[i + 1] in STOPWORDS):
+                    i + 1 >= n or sentence[i + 1] in DETS or sentence[i + 1] in STOPWORDS) and not (
+                    # "pass then walk-in", "the walk-in then pass": a verb takes no "then" after it and
+                    # ends no list, a name in a list does
+                    i + 1 < n and sentence[i + 1] in ('then', 'and', 'or', ',') and i + 2 < n or
+                    seen and i + 1 >= n and sentence[i - 1] in ('then', 'and', 'or', ',')):
                 return False   # a verb, not a name ("bin store" is a place, "bin the cups" is no list)
             np = self.phrases.parse(sentence, i)
             if np is None or np.pronoun not in ('', 'one') or np.end <= i or np.end > n or not (all(
-                    _is_word(w) for w in sentence[i:np.end] if w not in PUNCT) or _is_word(np.head) and all(
+                    _is_word(w) or '_' in w and all(_is_word(p) for p in w.split('_'))   # "walk_in"
+                    for w in sentence[i:np.end] if w not in PUNCT) or _is_word(np.head) and all(
                     w.isalpha() and any(v in w for v in 'aeiouy') for w in sentence[i:np.end]
                     if w not in PUNCT)) or any(
                     w in chatter.FINITE_VERBS or w in _REFLEXIVE for w in sentence[i:np.end]) or (

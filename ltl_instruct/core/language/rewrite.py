@@ -82,6 +82,11 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         if tokens[s] in chatter.PREPOSITIONS or tokens[s] in ('about', 'for'):
             continue   # "the bins I told you about, the red one and ...": no list starts at "about"
         nps, joiner, end = parser.parse_list(tokens, s)
+        if len(nps) > 3 and tokens[end:end + 1] in (['them'], ['these'], ['those'], ['all']) and \
+                nps[-1].end == nps[-1].start + 1 and tokens[nps[-2].end:nps[-1].start] == [',']:
+            # "the pass, the bar, the host stand - hit them in reverse order": a verb, no fourth item
+            end = nps[-1].start - 1
+            nps = nps[:-1]
         if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
             continue
         if end < len(tokens) and tokens[end] not in _LIST_END and not (

@@ -70,6 +70,9 @@ BLIND_ROUND_G4 = [
      'F (near[pass] & F near[walk_in])'),
     ('the walk-in then pass',
      'F (near[walk_in] & F near[pass])'),
+    # "menu stand" is one name (it was read "stand next to the lift")
+    ('go to the menu stand nxt to the lift thats on the left of the reception desk',
+     'F near[menu_stand::isnextto(lift::isleftof(reception_desk))]'),
 ]
 
 
@@ -82,3 +85,10 @@ def test_a_summons_with_a_first_of_its_own_is_refused() -> None:
     """"..., Maria wants a word first" with no order in the request: never dropped as a remark."""
     with pytest.raises(LtlInstructError):
         T.translate('Go to the bar, Maria wants a word first.')
+
+
+def test_not_to_be_disturbed_is_no_place_to_avoid() -> None:
+    """"they've asked not to be disturbed" holds a rule word and names no place: refused."""
+    with pytest.raises(LtlInstructError):
+        T.translate("Head to table 2 first. After that, avoid table 3 - they've asked not to be disturbed - "
+                    'and then go to the bar.')

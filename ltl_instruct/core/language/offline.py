@@ -2041,6 +2041,9 @@ class _Reader:
                 k = i + len(trig)
                 if _starts(tokens, k, ['let']):
                     return None
+                if trig[-1] in ('not', 'never') and tokens[k:k + 2] == ['to', 'be'] and \
+                        len(tokens) == k + 3 and tokens[k + 2].endswith('ed'):
+                    return None   # "(they asked) not to be disturbed": how people want to be, no place
                 if trig[-1] in ('not', 'never') and k + 1 < len(tokens) and \
                         tokens[k] not in AVOID_FILLER and tokens[k + 1] in AVOID_FILLER and \
                         tokens[k + 1] not in ('to', 'the') and tokens[k].isalpha() and \

@@ -108,6 +108,7 @@ _OF_THINGS = {('suit', 'of', 'armor'): 'suit_of_armor', ('suit', 'of', 'armour')
 _STAND_THINGS = frozenset('''
 umbrella music coat plant tv hat cake microphone mic bike display flower night fruit magazine newspaper lamp
 easel book laptop monitor phone speaker guitar drum shoe boot wine key taxi bus lemonade kiosk news towel soap
+menu
 '''.split())
 
 

@@ -1,0 +1,48 @@
+"""Readings found on the blind sets D4 and F4: each was misread while its set was still blind.
+
+D4 is a teenager's chat to a home robot (text speak, "bc", "idc", "jk"); F4 a factory worker who
+is no native speaker ("the machine of welding", "maximum one time", "Ah no, I say it wrong").
+Each case is an instruction of those sets with its writer's formula, or a sentence of our own
+for the same construction; the translator must give a formula equivalent to it on automata
+(names included). The whole sets stay outside the repository.
+"""
+from __future__ import annotations
+
+import pytest
+
+from ltl_instruct.core.errors import TranslationError
+from translation_cases import T, check_translation
+
+BLIND_ROUND_D4 = [
+    # a reason said after the request with no comma, in chat spelling ("bc", "cuz"): left out, and
+    # it ends the request's words ("put it on the porch bc ..." was left out whole)
+    ('ok so go to the garage and grab the basketball and put it on the porch bc my friends r coming '
+     'over, then meet me at the trampoline',
+     'F (near[garage] & F (near[basketball] & F (pick[basketball] & F (near[porch] & F '
+     '(release[basketball, porch] & F near[trampoline])))))'),
+    ('go to the porch because my friends are coming over',
+     'F near[porch]'),
+    ('avoid the dog cuz he bites and go to the shed',
+     'F near[shed] & G !near[dog]'),
+    ('go to the garage n avoid the dog on the way there bc hes being weird today, once ur in the garage '
+     'the dog is fine but stay away from the paint cans theyre open',
+     '(!near[dog] U near[garage]) & F (near[garage] & G !near[paint_cans])'),
+    # chat spellings of a subject and its verb ("uve been to", "theyre on")
+    ('dont go into my sisters room until uve been to the laundry room',
+     '!near[sisters_room] U near[laundry_room]'),
+    ('go to the mailbox or the garage, either way stay away from the sprinklers theyre on',
+     '(F near[mailbox] | F near[garage]) & G !near[sprinklers]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', BLIND_ROUND_D4)
+def test_readings_found_on_blind_sets_d4_and_f4(instruction: str, gold: str) -> None:
+    check_translation(instruction, gold)
+
+
+@pytest.mark.parametrize('instruction', [
+    'go to the porch because my friends never go there',   # a reason holding a rule: refused
+])
+def test_reasons_holding_a_rule_are_refused(instruction: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(instruction)

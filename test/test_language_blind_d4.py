@@ -32,6 +32,38 @@ BLIND_ROUND_D4 = [
      '!near[sisters_room] U near[laundry_room]'),
     ('go to the mailbox or the garage, either way stay away from the sprinklers theyre on',
      '(F near[mailbox] | F near[garage]) & G !near[sprinklers]'),
+    # relations as learners say them: "at right of", "behind of"; the typo "beetwen"
+    ('Go to the lathe in front of the window, then to the chair at right of the drill press.',
+     'F (near[lathe::isinfrontof(window)] & F near[chair::isrightof(drill_press)])'),
+    ('Go to the cabinet behind of the QA bench, but only after you go to the tool crib.',
+     'F near[cabinet::isbehind(qa_bench)] & (!near[cabinet::isbehind(qa_bench)] U near[tool_crib])'),
+    ('Hover over the tank that is beetwen the silo and the pump house.',
+     'F near[tank::isbetween(silo, pump_house)]'),
+    # counts: "maximum one time", "exactly two times, not more", "go two times to the X under the Y"
+    ('Go in the paint booth maximum one time, the paint is still fresh.',
+     '!near[paint_booth] W (near[paint_booth] & (near[paint_booth] W G !near[paint_booth]))'),
+    ('You go to the CNC machine exactly two times, not more.',
+     '!near[cnc_machine] U (near[cnc_machine] & (near[cnc_machine] U (!near[cnc_machine] & '
+     '(!near[cnc_machine] U (near[cnc_machine] & (near[cnc_machine] W G !near[cnc_machine]))))))'),
+    ('Go two times to the valve under the big tank.',
+     'F (near[valve::isbelow(big_tank)] & F (!near[valve::isbelow(big_tank)] & F '
+     'near[valve::isbelow(big_tank)]))'),
+    # lists: said without commas after "my"; after "ok so"; a name that starts with a verb's word before
+    # a colon ("swing set"); a list of things to bring, after a comma, is no reason ("..., my backpack and
+    # my shoes to my bed")
+    ('my hoodie my backpack and my shoes are all over the floor, bring the first two to my bed',
+     'F (near[hoodie] & F (pick[hoodie] & F (near[bed] & F release[hoodie, bed]))) & F (near[backpack] & F '
+     '(pick[backpack] & F (near[bed] & F release[backpack, bed])))'),
+    ('bring my hoodie, my backpack and my shoes to my bed',
+     'F (near[hoodie] & F (pick[hoodie] & F (near[bed] & F release[hoodie, bed]))) & F (near[backpack] & F '
+     '(pick[backpack] & F (near[bed] & F release[backpack, bed]))) & F (near[shoes] & F (pick[shoes] & F '
+     '(near[bed] & F release[shoes, bed])))'),
+    ('ok so the fridge, the microwave, the toaster. go to the last one',
+     'F near[toaster]'),
+    ('okay, the sofa, the lamp, the rug. go to the second one',
+     'F near[lamp]'),
+    ('trampoline, pool, swing set: go to them backwords',
+     'F (near[swing_set] & F (near[pool] & F near[trampoline]))'),
 ]
 
 

@@ -1005,6 +1005,11 @@ RULES: tuple[Rule, ...] = (
     Rule('visit the printer minimum two times: at least',
          r'\b(?:at minimum|minimum|at the minimum|a minimum of|min)\b(?= (?:one|two|three|four|five|once|'
          r'twice|thrice|[0-9]+)\b)', 'at least'),
+    Rule('go in the paint booth maximum one time: at most',
+         r'\b(?:maximum|max)\b(?= (?:one|two|three|four|five|once|twice|thrice|[0-9]+)\b)', 'at most'),
+    Rule('exactly two times, not more: said once',
+         r'(?P<a>\bexactly (?:(?:one|two|three|four|five) times?|once|twice|thrice)) (?:, )?'
+         r'(?:and )?(?:not|no|never) more(?: than that)?(?= [,.;]|$)', r'\g<a>'),
     Rule('pass by the break room two times exactly: exactly two times',
          r'\b(?P<n>(?:one|two|three|four|five) times?|once|twice|thrice) exactly\b', r'exactly \g<n>'),
     Rule('exactly two trips, no more and no less: said once',
@@ -1213,7 +1218,8 @@ RULES: tuple[Rule, ...] = (
     Rule('go exactly one time to the coffee machine: the count after the place',
          rf'\b(?P<v>go|fly|stop|head|come|drive) (?P<c>exactly |at least |at most |only )?'
          rf'(?P<n>once|twice|thrice|'
-         rf'(?:one|two|three|four|five) times?) (?P<p>to|at|by|over|past) (?P<x>(?:the|my|your|our) {_THING})'
+         rf'(?:one|two|three|four|five) times?) (?P<p>to|at|by|over|past) (?P<x>(?:the|my|your|our) {_THING}'
+         rf'(?: {_WHERE} (?:the|my|your|our) {_THING})?)'   # "go two times to the valve under the tank"
          rf'(?= [,.;]|$| and\b| then\b)', r'\g<v> \g<p> \g<x> \g<c>\g<n>'),
     Rule('and after the second time go to the copier: then',
          r'(?: ,)? (?:and )?after the (?:second|third|fourth|2nd|3rd) (?:one|pass|visit|time|lap|round)'

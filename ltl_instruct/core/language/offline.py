@@ -589,6 +589,10 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., grandma is sleeping"
         if first in ('i', 'we', 'somebody', 'someone', 'everyone', 'nobody', 'my', 'our', 'his', 'her',
                      'their'):
+            if first in DETS:
+                nps, joiner, end = self.phrases.parse_list(tail, 0)
+                if joiner and end < len(tail) and tail[end] in ('to', 'on', 'onto', 'into', 'in'):
+                    return sentence   # "bring my hoodie, my backpack and my shoes to my bed": a list
             return self._noted_cut(sentence, cut)
         if first in ('he', 'she', 'they', 'it') and tail[1] in ('is', 'are', 'was', 'were', 'has', 'have',
                                                                 'keeps', 'gets', 'bites', 'barks'):

@@ -75,6 +75,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in _LEAD_ADVERBS and (
             i == 1 or tokens[i - 2] in PUNCT) or tokens[i + 1:i + 2] in (
             ['keep'], ['have'], ['left'], ['stored'], ['parked'], ['own'], ['got']))]
+    lead = next((k for k, t in enumerate(tokens) if t not in _LEAD_ADVERBS and t != ','), 0)
+    if lead:
+        starts.append(lead)   # "ok so the fridge, the microwave, the toaster. go to the last one"
     starts.sort()
     for s in starts:
         if s >= len(tokens):
@@ -89,6 +92,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
                 tokens[end] == 'to' and len(nps) >= 3 and tokens[end + 1:end + 2] != [] and
                 tokens[end + 1] not in DETERMINERS):
             continue
+        colon = next((k for k in range(end + 1, len(tokens)) if tokens[k] in PUNCT), 0)
+        if end < len(tokens) and tokens[end] == ',' and colon and tokens[colon] == ':' and colon - end < 5:
+            continue   # "trampoline, pool, swing set: ...": the list goes on in words not read as a name
         if tokens[nps[0].end:nps[0].end + 1] == [','] and any(
                 t in NUMBER_WORDS and t != 'one' for t in tokens[s:nps[0].end]):
             continue   # "name two rooms, the den and the study": the count names the list that follows
@@ -101,7 +107,7 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             counted = parser.parse(tokens, q + 1) if q >= 0 else None
             if counted is not None and counted.end <= s - 1:
                 category = _kind_name(counted)   # "three bins by the gate: a green one, ..."
-        elif s >= 2 and tokens[s - 1] == ',':
+        elif s >= 2 and tokens[s - 1] == ',' and s != lead:
             # "two carts in the corridor, a housekeeping cart and a minibar cart": the count names them
             back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
             q = next((q for q in range(s - 2, back, -1) if tokens[q] in NUMBER_WORDS and tokens[q] != 'one'),
@@ -197,9 +203,10 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'(?:^|(?<=[.;!?] ))(?:i am|we are) (?:looking at|seeing|facing|in front of) '
      r'(?=(?:a|an|two|three|some) )',
      'there is '),
-    # "i see a hat a scarf and some gloves": a list said without commas
-    (r'\b(?P<a>(?:a|an|some|the) [a-z]+(?: [a-z]+)?) (?=(?:a|an|some|the) [a-z]+(?: [a-z]+)? '
-     r'(?:(?:a|an|some|the) [a-z]+(?: [a-z]+)? )*and (?:a|an|some|the) [a-z]+)',
+    # "i see a hat a scarf and some gloves", "my hoodie my backpack and my shoes": a list said without commas
+    (r'\b(?P<a>(?:a|an|some|the|my|our|your) [a-z]+(?: [a-z]+)?) (?=(?:a|an|some|the|my|our|your) [a-z]+'
+     r'(?: [a-z]+)? (?:(?:a|an|some|the|my|our|your) [a-z]+(?: [a-z]+)? )*and (?:a|an|some|the|my|our|your) '
+     r'[a-z]+)',
      lambda m: m.group('a') + (' , ' if not set(m.group('a').split()[1:]) & _NOT_LISTED else ' ')),
     # "in the reverse of that order", "last to first", "backwards": in reverse order
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'

@@ -64,6 +64,21 @@ BLIND_ROUND_D4 = [
      'F near[lamp]'),
     ('trampoline, pool, swing set: go to them backwords',
      'F (near[swing_set] & F (near[pool] & F near[trampoline]))'),
+    # corrections: "X is fine just don't go near Y" with no comma keeps the new avoidance (it was
+    # dropped with the old one); "jk" / "just kidding" retracts; "no the one on the right of it" with
+    # the comma left out; "not behind, in front of the press"
+    ('stay away from the cat. nvm the cat is fine just dont go near the fish tnak. go to the couch',
+     'F near[couch] & G !near[fish_tank]'),
+    ('stay away from the cat and the dog. actually the cat is fine but avoid the fish tank. go to the couch',
+     'F near[couch] & G !near[dog] & G !near[fish_tank]'),
+    ('ok go to the fridge then the pantry n avoid the dog. jk u dont have to avoid the dog',
+     'F (near[fridge] & F near[pantry])'),
+    ('go to the fridge. just kidding, go to the pantry',
+     'F near[pantry]'),
+    ('go to the lamp left of my bed. no the one on the rigth of it',
+     'F near[lamp::isrightof(bed)]'),
+    ('Go to the cart behind the press. Sorry, not behind, in front of the press.',
+     'F near[cart::isinfrontof(press)]'),
 ]
 
 

@@ -486,14 +486,14 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
     ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'), ('no', 'actually'), ('no', 'i', 'mean'),
     ('no', 'make', 'that'), ('no', 'rather'), ('no', 'make', 'it'), ('ehm',), ('mm',), ('mmm',),
-    ('scrap', 'that'), ('scrap',),
+    ('scrap', 'that'), ('scrap',), ('just', 'kidding'), ('only', 'kidding'),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
                      'leave', 'scrap'})
 # Markers that restate a whole clause ("on second thought, bring it to the couch").
 _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
                       'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my', 'correction', 'ehm', 'mm',
-                      'mmm'})
+                      'mmm', 'just', 'only'})
 # Words that start a clause of their own (the verbs of goals and deliveries).
 _VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
                        'deliver', 'carry', 'return', 'avoid'}
@@ -524,8 +524,10 @@ def _marker_at(tokens: list[str], i: int) -> int:
         return len(bare) if len(bare) > 1 or bare != ('no', 'no') else 2
     for m in _MARKERS:
         if tuple(tokens[i:i + len(m)]) == m:
-            if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',', ':'):
-                return 0
+            if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',', ':') and not (
+                    i > 0 and tokens[i - 1] in '.;!?' and tokens[i + 1] == 'the' and i + 2 < len(tokens) and
+                    tokens[i + 2] in ('one', 'other', 'ones')):
+                return 0   # (but "... . no the one on the right of it": a correction, the comma left out)
             if m == ('ignore',) and i == 0:
                 return 0
             if m == ('forget',) and i == 0:
@@ -855,6 +857,10 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         after = out[stop:]
         marker = out[i]
         lead = 1 if seg[:1] == [','] else 0
+        rel = match_relation(seg, lead + 1) if seg[lead:lead + 1] == ['not'] else None
+        if rel is not None and seg[rel[1]:rel[1] + 1] == [','] and match_relation(seg, rel[1] + 1):
+            # "sorry, not behind, in front of the press": what it was not, then what it is
+            seg = seg[:lead] + seg[rel[1] + 1:]
         c = seg.index(',', lead) if ',' in seg[lead:] else -1
         said = seg[lead:c] if c <= lead or seg[lead] in DETERMINERS | chatter.STATEMENT_SUBJECTS else \
             ['the'] + seg[lead:c]   # "milk is already in there": a name said without its article
@@ -942,7 +948,7 @@ def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Option
                 ['a'], ['dangerous'], ['blocked'], ['off'], ['wet'], ['closed']):
             continue
         end = e + 1
-        while end < len(seg) and seg[end] != ',':
+        while end < len(seg) and seg[end] != ',' and not _opens_command(seg, end):
             end += 1   # "the stairs are fine now that the gate is up": the reason goes with it
         return _drop_avoidance(prev, seg, k, end, named.head, notes)
     return None
@@ -969,8 +975,8 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             notes.append('the avoidance was retracted')
             parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
                      for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
-            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS | {
-                'keep', 'stay', 'steer'}]
+            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and
+                    c[0] in _COMMAND_START]
             a, b = p + spans[0].start, p + spans[0].end
             if len(kept) == 1 and b < len(prev) and prev[b] in _SCOPE_WORDS:
                 # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place
@@ -982,6 +988,20 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
                 t for c in kept for t in [','] + c]
     return None
+
+
+# Words a command starts with, and the words that join it to a remark before it ("the cat is fine just
+# don't go near the fish tank": no comma between them).
+_COMMAND_START = _VERBS | {'keep', 'stay', 'steer', 'avoid', 'do', 'never'}
+_COMMAND_JOINERS = frozenset({'just', 'but', 'and', 'so', 'only', 'instead', 'then'})
+
+
+def _opens_command(seg: list[str], k: int) -> bool:
+    """Whether a command starts at ``seg[k]``, after a remark ("..., the cat is fine just avoid X")."""
+    if seg[k] in _COMMAND_JOINERS:
+        k += 1
+    return k < len(seg) and seg[k] in _COMMAND_START and (
+        seg[k] != 'do' or seg[k + 1:k + 2] in (['not'], ['never']))
 
 
 def _split_commas(seg: list[str]) -> list[list[str]]:

@@ -79,6 +79,25 @@ BLIND_ROUND_D4 = [
      'F near[lamp::isrightof(bed)]'),
     ('Go to the cart behind the press. Sorry, not behind, in front of the press.',
      'F near[cart::isinfrontof(press)]'),
+    # corrections after "ah no" / "ehh no" (the second marker was skipped); "the saw is broken, instead of saw
+    # go to the drill press"; "no, the opposite" (the order reversed, not a place "opposite"); "I say it
+    # wrong: B before A" says the ordering again; "..., wash is ok" about the place replaced
+    ('Go to the lathe two times, then the mill, then the saw. Ah no, the saw is broken, instead of saw go to '
+     'the drill press.',
+     'F (near[lathe] & F (!near[lathe] & F (near[lathe] & F (near[mill] & F near[drill_press]))))'),
+    ('go to the mill, then the saw. no, the saw is broken, go to the drill press instead of the saw.',
+     'F near[drill_press]'),
+    ('Go to QA bench and after to the office... no, the opposite, first the office then QA bench.',
+     'F (near[office] & F near[qa_bench])'),
+    ('go to the office and then the desk. no, the opposite.',
+     'F (near[desk] & F near[office])'),
+    ('Visit the lathe before the milling machine. Ah no, I say it wrong: the milling machine before the '
+     'lathe.',
+     'F near[lathe] & (!near[lathe] U near[milling_machine])'),
+    ('go to the shed after the barn. no, I said it wrong, the barn after the shed.',
+     'F (near[shed] & F near[barn])'),
+    ('go to the shed and avoid the wash station. ehh no, avoid the grinding station, wash is ok.',
+     'F near[shed] & G !near[grinding_station]'),
 ]
 
 

@@ -486,7 +486,10 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
     ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'), ('no', 'actually'), ('no', 'i', 'mean'),
     ('no', 'make', 'that'), ('no', 'rather'), ('no', 'make', 'it'), ('ehm',), ('mm',), ('mmm',),
-    ('scrap', 'that'), ('scrap',), ('just', 'kidding'), ('only', 'kidding'),
+    ('scrap', 'that'), ('scrap',), ('just', 'kidding'), ('only', 'kidding'), ('ehh',), ('eh',),
+    # "ah no, I say it wrong: the mill before the lathe"
+    ('i', 'say', 'it', 'wrong'), ('i', 'said', 'it', 'wrong'), ('i', 'got', 'it', 'wrong'),
+    ('i', 'say', 'wrong'), ('i', 'said', 'wrong'), ('i', 'was', 'wrong'), ('i', 'said', 'that', 'wrong'),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
                      'leave', 'scrap'})
@@ -793,6 +796,9 @@ _START_FINISH = re.compile(rf'\b(?:(?:it is )?better |maybe |instead )?(?:you )?
                            rf'(?P<a>{_NP_RE}) and (?:then )?(?:finish|end) (?:with|at|up at) (?P<b>{_NP_RE})')
 _DROP_RULE = re.compile(r'\b(?:drop|remove|lose|ditch) '
                         r'(?=(?:that|the) (?:condition|order|ordering|rule|sequence)\b)')
+_INSTEAD_GO = re.compile(rf'(?<=[,.;!?] )instead of (?P<x>(?:the |my |your |our )?(?:[a-z0-9_]+ ){{0,2}}?'
+                         rf'[a-z0-9_]+) (?:, )?(?:you )?(?:go to|visit|head to|use|take) (?P<y>{_NP_RE})'
+                         rf'(?= [,.;!?]|$)')
 _SWAP_WORDS = frozenset({'swap', 'switch', 'replace', 'exchange', 'trade', 'change', 'substitute'})
 _SWAP = re.compile(rf'\b(?:{"|".join(sorted(_SWAP_WORDS))}) (?P<x>{_NP_RE}) (?:for|with|to|by) '
                    rf'(?P<y>{_NP_RE})(?= [,.;!?]|$)')
@@ -804,13 +810,15 @@ def _uncleft(tokens: list[str]) -> list[str]:
     "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
     """
     if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch', 'thing', 'part', 'bit',
-             'about'} | _SWAP_WORDS) & set(tokens):
+             'about', 'instead'} | _SWAP_WORDS) & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
     new = _START_FINISH.sub(lambda m: f'go to {m.group("a")} then {m.group("b")}', new)
     # "swap the shed for the patio": the patio instead of the shed
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
+    # "instead of the saw go to the drill press": the drill press instead of the saw
+    new = _INSTEAD_GO.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
     new = _DROP_RULE.sub('forget ', new)   # "drop that condition": cancel it
     new = _THING_PART.sub(lambda m: f'{m.group("v")} {m.group("x")}', new)
     new = _SAID_ABOUT.sub(r'\1', new)
@@ -869,12 +877,13 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             out = moved + after
             i = len(moved)
             continue
-        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 < len(seg) and \
-                seg[c + 1] in _VERBS and marker not in _CANCEL:
+        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 < len(seg) and (
+                seg[c + 1] in _VERBS or seg[c + 1] in ('the', 'my', 'your', 'our') and
+                'instead' in seg[c + 1:]) and marker not in _CANCEL:
             # "actually it has been washed already, put it in the dryer": the reason, then the step
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
-            out = out[:j] + seg[c + 1:] + after
-            continue
+            out = out[:j] + ([','] if out[j - 1] not in PUNCT else []) + seg[c + 1:] + after
+            continue   # ("no, the saw is broken, go to the drill press": not "no go to")
         if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
@@ -890,8 +899,9 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 result = result + seg[cut:]
         if result is None:
             # not a correction we understand: drop the marker word and read on
-            out = prev + ([','] if prev and prev[-1] not in PUNCT else []) + seg + after
-            i = len(prev) + 1
+            comma = [','] if prev and prev[-1] not in PUNCT else []
+            out = prev + comma + seg + after
+            i = len(prev) + len(comma)   # (a marker right after it is read: "ah no, ...")
             continue
         out = result + after
         i = len(result)
@@ -1420,7 +1430,53 @@ def _clause_kind(words: list[str]) -> str:
     return 'go' if {'go', 'visit', 'head', 'drive', 'fly', 'walk'} & set(words) else ''
 
 
+def _order_restated(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Say again an ordering corrected ("visit A before B. Ah no, I say it wrong: B before A").
+
+    The correction is two places joined by "before" or "after", as the sentence before joined them
+    (both named there); that sentence is said again with the new order, its verb kept.
+    """
+    words = [t for t in seg if t not in PUNCT]
+    word = next((t for t in words if t in ('before', 'after')), '')
+    if not word:
+        return None
+    parser = PhraseParser()
+    a = parser.parse(words, 0)
+    if a is None or a.pronoun or words[a.end:a.end + 1] != [word]:
+        return None
+    b = parser.parse(words, a.end + 1)
+    if b is None or b.pronoun or b.end != len(words):
+        return None
+    body = len(prev) - 1 if prev and prev[-1] in '.;!?' else len(prev)
+    start = max((k for k in range(body) if prev[k] in '.;!?'), default=-1) + 1
+    sentence = prev[start:]
+    heads = {np.head for np in _np_spans(sentence)}
+    if word not in sentence or not {a.head, b.head} <= heads:
+        return None
+    verb = next((k for k, t in enumerate(sentence) if t in DETERMINERS), 0)
+    if not verb or not any(t in _VERBS for t in sentence[:verb]):
+        return None
+    notes.append(f'"{" ".join(t for t in sentence if t not in PUNCT)}" said again as "{" ".join(words)}"')
+    return prev[:start] + sentence[:verb] + words + [t for t in sentence[-1:] if t in PUNCT]
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    lead = 1 if seg[:1] == [','] else 0
+    for said in (['the', 'opposite', ','], ['the', 'other', 'way', 'round', ','],
+                 ['the', 'other', 'way', 'around', ',']):
+        if seg[lead:lead + len(said)] == said and len(seg) > lead + len(said) + 2:
+            # "no, the opposite, first the office then the bench": the order reversed, then said again
+            seg = seg[:lead] + ['the', 'opposite']
+            break
+    c = max((k for k, t in enumerate(seg) if t == ','), default=-1)
+    fine = seg[c + 1:]
+    if c > lead + 2 and 3 <= len(fine) <= 4 and fine[-2] in ('is', 'are') and fine[-1] in (
+            'fine', 'ok', 'okay', 'alright', 'safe') and fine[0] not in DETERMINERS and \
+            all(is_name_word(fine, k, k > 0) for k in range(len(fine) - 2)):
+        seg = seg[:c]   # "no, avoid the grinding station, wash is ok": the one replaced, said by a word
+    reordered = _order_restated(prev, seg, notes)
+    if reordered is not None:
+        return reordered
     numbered = _renumber(prev, seg)
     if numbered is not None:
         notes.append('the number was corrected')
@@ -1695,6 +1751,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                     prev = _remove_clause(prev, sp.start)
                     break
         return prev + ([','] if prev and prev[-1] not in PUNCT else []) + rest
+    words = [t for t in seg if t not in PUNCT]
+    if words in (['the', 'opposite'], ['opposite'], ['the', 'contrary']):
+        s = 'the other way'   # "go to A and after to B... no, the opposite"
     if 'other way' in s or 'reverse' in s or 'opposite order' in s or 'backward' in s or 'wrong way' in s or \
             'mixed up' in s or 'mixed that up' in s or 'wrong order' in s or 'mixed them up' in s:
         spans = _np_spans(prev)

@@ -98,6 +98,14 @@ BLIND_ROUND_D4 = [
      'F (near[shed] & F near[barn])'),
     ('go to the shed and avoid the wash station. ehh no, avoid the grinding station, wash is ok.',
      'F near[shed] & G !near[grinding_station]'),
+    # "while you carry X to Y, avoid Z" said first: the delivery, Z avoided while carrying (it was a goal Y
+    # with Z avoided throughout, and no delivery)
+    ('While you carry the motor to the test bench, avoid the wash station. Ehh no, avoid the grinding '
+     'station, wash is ok.',
+     'F (near[motor] & F (pick[motor] & (!near[grinding_station] U (near[test_bench] & F release[motor, '
+     'test_bench]))))'),
+    ('while carrying the box to the hall, stay away from the dog',
+     'F (near[box] & F (pick[box] & (!near[dog] U (near[hall] & F release[box, hall]))))'),
 ]
 
 

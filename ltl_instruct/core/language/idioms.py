@@ -1005,6 +1005,12 @@ RULES: tuple[Rule, ...] = (
     Rule('visit the printer minimum two times: at least',
          r'\b(?:at minimum|minimum|at the minimum|a minimum of|min)\b(?= (?:one|two|three|four|five|once|'
          r'twice|thrice|[0-9]+)\b)', 'at least'),
+    Rule('while you carry the motor to the test bench, avoid the wash station: the delivery, then its scope',
+         rf'^(?:okay |so |now )?while (?:you )?(?:are )?(?:carry|carrying|bring|bringing|take|taking) '
+         rf'(?P<x>(?:the|my|your|our) {_THING}) to (?P<y>(?:the|my|your|our) {_THING}) , '
+         rf'(?P<r>(?:avoid|stay away from|keep away from|do not go near|never go near|keep clear of) '
+         rf'(?:the|my|your|our) {_THING})$',
+         r'bring \g<x> to \g<y> and \g<r> while carrying it'),
     Rule('go in the paint booth maximum one time: at most',
          r'\b(?:maximum|max)\b(?= (?:one|two|three|four|five|once|twice|thrice|[0-9]+)\b)', 'at most'),
     Rule('exactly two times, not more: said once',

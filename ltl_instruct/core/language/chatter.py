@@ -282,7 +282,7 @@ _CHANGES = frozenset({'change', 'changed', 'correction', 'update', 'updated', 'n
 
 # Sounds of hesitation, said anywhere ("the uh gate", "feed silo, uh, then"); "er" after "the" is the ER.
 HESITATIONS = frozenset({'uh', 'uhh', 'uhm', 'um', 'umm', 'erm', 'er', 'hm', 'hmm', 'hmmm', 'mmm', 'mm',
-                         'ehm', 'eh', 'ah', 'ahh'})
+                         'ehm', 'eh', 'ah', 'ahh', 'ehh', 'ehhh', 'ahhh'})
 
 
 # Words after which a phrase cannot end: a pause after one is never a correction ("at the, um, ...").

@@ -72,7 +72,7 @@ _RISKY = frozenset('''
 clear away off limits bounds forbidden prohibited banned restricted dangerous danger hazard hazardous unsafe
 careful steer staying keeping dodge dodging bypass bypassing skip skipping evade evading avoid avoiding
 avoidance except excluding unless without remain remaining wait waiting hold holding stop stopping stay keep
-out outside beyond around toward towards careful risky blocked closed
+out outside beyond around toward towards careful risky blocked closed reverse backwards
 '''.split())
 
 

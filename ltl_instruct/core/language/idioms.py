@@ -1005,6 +1005,17 @@ RULES: tuple[Rule, ...] = (
     Rule('visit the printer minimum two times: at least',
          r'\b(?:at minimum|minimum|at the minimum|a minimum of|min)\b(?= (?:one|two|three|four|five|once|'
          r'twice|thrice|[0-9]+)\b)', 'at least'),
+    Rule('while you carry the motor to the test bench, avoid the wash station: the delivery, then its scope',
+         rf'^(?:okay |so |now )?while (?:you )?(?:are )?(?:carry|carrying|bring|bringing|take|taking) '
+         rf'(?P<x>(?:the|my|your|our) {_THING}) to (?P<y>(?:the|my|your|our) {_THING}) , '
+         rf'(?P<r>(?:avoid|stay away from|keep away from|do not go near|never go near|keep clear of) '
+         rf'(?:the|my|your|our) {_THING})$',
+         r'bring \g<x> to \g<y> and \g<r> while carrying it'),
+    Rule('go in the paint booth maximum one time: at most',
+         r'\b(?:maximum|max)\b(?= (?:one|two|three|four|five|once|twice|thrice|[0-9]+)\b)', 'at most'),
+    Rule('exactly two times, not more: said once',
+         r'(?P<a>\bexactly (?:(?:one|two|three|four|five) times?|once|twice|thrice)) (?:, )?'
+         r'(?:and )?(?:not|no|never) more(?: than that)?(?= [,.;]|$)', r'\g<a>'),
     Rule('pass by the break room two times exactly: exactly two times',
          r'\b(?P<n>(?:one|two|three|four|five) times?|once|twice|thrice) exactly\b', r'exactly \g<n>'),
     Rule('exactly two trips, no more and no less: said once',
@@ -1218,7 +1229,8 @@ RULES: tuple[Rule, ...] = (
     Rule('go exactly one time to the coffee machine: the count after the place',
          rf'\b(?P<v>go|fly|stop|head|come|drive) (?P<c>exactly |at least |at most |only )?'
          rf'(?P<n>once|twice|thrice|'
-         rf'(?:one|two|three|four|five) times?) (?P<p>to|at|by|over|past) (?P<x>(?:the|my|your|our) {_THING})'
+         rf'(?:one|two|three|four|five) times?) (?P<p>to|at|by|over|past) (?P<x>(?:the|my|your|our) {_THING}'
+         rf'(?: {_WHERE} (?:the|my|your|our) {_THING})?)'   # "go two times to the valve under the tank"
          rf'(?= [,.;]|$| and\b| then\b)', r'\g<v> \g<p> \g<x> \g<c>\g<n>'),
     Rule('and after the second time go to the copier: then',
          r'(?: ,)? (?:and )?after the (?:second|third|fourth|2nd|3rd) (?:one|pass|visit|time|lap|round)'

@@ -267,6 +267,10 @@ def _rule_in(words: Sequence[str]) -> bool:
         w == 'not' and words[k + 1:k + 2] and words[k + 1] in states) for k, w in enumerate(words))
 
 
+# Words after "and", "but", "so" that end a reason and start a command ("because it's wet and avoid X").
+_REASON_ENDS = frozenset({'go', 'avoid', 'stay', 'keep', 'never', 'do', 'then', 'visit', 'head', 'bring',
+                          'take', 'put', 'only', 'after', 'once', 'come', 'fly', 'land', 'get', 'grab',
+                          'drop'})
 # "I don't want you tumbling down them": a mishap feared, no rule of where to go.
 _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
                       'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'toppling'})
@@ -587,6 +591,10 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., grandma is sleeping"
         if first in ('i', 'we', 'somebody', 'someone', 'everyone', 'nobody', 'my', 'our', 'his', 'her',
                      'their'):
+            if first in DETS:
+                nps, joiner, end = self.phrases.parse_list(tail, 0)
+                if joiner and end < len(tail) and tail[end] in ('to', 'on', 'onto', 'into', 'in'):
+                    return sentence   # "bring my hoodie, my backpack and my shoes to my bed": a list
             return self._noted_cut(sentence, cut)
         if first in ('he', 'she', 'they', 'it') and tail[1] in ('is', 'are', 'was', 'were', 'has', 'have',
                                                                 'keeps', 'gets', 'bites', 'barks'):
@@ -1059,6 +1067,18 @@ class _Reader:
         n = len(tokens)
         while i < n:
             t = tokens[i]
+            if t == 'because' and clauses[-1].tokens and i + 2 < n:
+                # "put it on the porch because my friends are coming over, then ...": the reason is a
+                # clause of its own up to the next comma, "then" or new command, never part of the
+                # request's words (left out if it holds no rule word, refused otherwise)
+                j = i + 1
+                while j < n and tokens[j] not in PUNCT and tokens[j] != 'then' and not (
+                        tokens[j] in ('and', 'but', 'so') and j + 1 < n and tokens[j + 1] in _REASON_ENDS):
+                    j += 1
+                clauses.append(_Clause('and', tokens[i:j]))
+                clauses.append(_Clause('and', []))
+                i = j
+                continue
             if t not in CLAUSE_OPENING_WORDS:
                 clauses[-1].tokens.append(t)   # no boundary can start here (the common case, kept fast)
                 i += 1
@@ -1305,6 +1325,9 @@ class _Reader:
         if chatter.is_remark(tokens) and not (tokens[:1] == ['either'] and 'or' in tokens):
             self.notes.append(f'left out "{s}" (asks for nothing)')
             return scope
+        if s.startswith(('because ', 'since ')) and _rule_in(tokens):
+            # "because you must never go there": a reason holding a rule is never dropped
+            raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
         if s.endswith(fine) or s in IGNORED_CLAUSES or \
                 s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                               'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
@@ -2882,6 +2905,10 @@ class _Reader:
             self._read_tail(rest)   # "..., and the pond is off limits": a clause the splitter did not see
             return
         rest = [t for t in rest if t not in (',', 'please', 'first', 'too', 'again', 'then')]
+        if rest and rest[0] == 'because' and chatter.is_reason(rest) and not _rule_in(rest):
+            # "go to the porch because my friends are coming over": why, said after the request
+            self.notes.append(f'left out "{" ".join(rest)}" (says why, asks for nothing)')
+            return
         if rest and not self._leave_out(rest):
             raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
                                    details={'part': ' '.join(rest)})

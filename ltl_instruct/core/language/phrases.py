@@ -37,6 +37,11 @@ RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
     (('adjacent', 'to'), 'isnextto'), (('nearby',), 'isnextto'),
     (('across', 'from'), 'isinfrontof'), (('opposite',), 'isinfrontof'), (('opposite', 'to'), 'isinfrontof'),
     (('facing',), 'isinfrontof'),
+    # as learners of English say them ("the table at right of the lathe", "the cabinet behind of the bench")
+    (('at', 'right', 'of'), 'isrightof'), (('at', 'the', 'right', 'of'), 'isrightof'),
+    (('on', 'right', 'of'), 'isrightof'), (('at', 'left', 'of'), 'isleftof'),
+    (('at', 'the', 'left', 'of'), 'isleftof'), (('on', 'left', 'of'), 'isleftof'),
+    (('behind', 'of'), 'isbehind'), (('under', 'of'), 'isbelow'), (('in', 'front', 'to'), 'isinfrontof'),
 ), key=lambda p: -len(p[0])))
 
 # Destination prepositions: in "put X on Y" they end the object, they are not relations.
@@ -505,8 +510,10 @@ class PhraseParser:
                     phrases[-1] = NounPhrase(merged, phrases[-1].start, nxt.end, phrases[-1].head)
                     i = nxt.end
                     continue
-            if j < len(tokens) and tokens[j] in NAME_VERBS:
-                break
+            if j < len(tokens) and tokens[j] in NAME_VERBS and not (
+                    nxt.end < len(tokens) and tokens[nxt.end] == ':' and nxt.end - j > 1 and
+                    tokens[j + 1] not in DETERMINERS):
+                break   # (but "trampoline, pool, swing set: ...": a name that starts with a verb's word)
             phrases.append(nxt)
             joiner = sep if sep == 'or' or not joiner else joiner
             i = nxt.end

@@ -75,6 +75,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in _LEAD_ADVERBS and (
             i == 1 or tokens[i - 2] in PUNCT) or tokens[i + 1:i + 2] in (
             ['keep'], ['have'], ['left'], ['stored'], ['parked'], ['own'], ['got']))]
+    lead = next((k for k, t in enumerate(tokens) if t not in _LEAD_ADVERBS and t != ','), 0)
+    if lead:
+        starts.append(lead)   # "ok so the fridge, the microwave, the toaster. go to the last one"
     starts.sort()
     for s in starts:
         if s >= len(tokens):
@@ -94,6 +97,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
                 tokens[end] == 'to' and len(nps) >= 3 and tokens[end + 1:end + 2] != [] and
                 tokens[end + 1] not in DETERMINERS):
             continue
+        colon = next((k for k in range(end + 1, len(tokens)) if tokens[k] in PUNCT), 0)
+        if end < len(tokens) and tokens[end] == ',' and colon and tokens[colon] == ':' and colon - end < 5:
+            continue   # "trampoline, pool, swing set: ...": the list goes on in words not read as a name
         if tokens[nps[0].end:nps[0].end + 1] == [','] and any(
                 t in NUMBER_WORDS and t != 'one' for t in tokens[s:nps[0].end]):
             continue   # "name two rooms, the den and the study": the count names the list that follows
@@ -106,7 +112,7 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             counted = parser.parse(tokens, q + 1) if q >= 0 else None
             if counted is not None and counted.end <= s - 1:
                 category = _kind_name(counted)   # "three bins by the gate: a green one, ..."
-        elif s >= 2 and tokens[s - 1] == ',':
+        elif s >= 2 and tokens[s - 1] == ',' and s != lead:
             # "two carts in the corridor, a housekeeping cart and a minibar cart": the count names them
             back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
             q = next((q for q in range(s - 2, back, -1) if tokens[q] in NUMBER_WORDS and tokens[q] != 'one'),
@@ -202,9 +208,10 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'(?:^|(?<=[.;!?] ))(?:i am|we are) (?:looking at|seeing|facing|in front of) '
      r'(?=(?:a|an|two|three|some) )',
      'there is '),
-    # "i see a hat a scarf and some gloves": a list said without commas
-    (r'\b(?P<a>(?:a|an|some|the) [a-z]+(?: [a-z]+)?) (?=(?:a|an|some|the) [a-z]+(?: [a-z]+)? '
-     r'(?:(?:a|an|some|the) [a-z]+(?: [a-z]+)? )*and (?:a|an|some|the) [a-z]+)',
+    # "i see a hat a scarf and some gloves", "my hoodie my backpack and my shoes": a list said without commas
+    (r'\b(?P<a>(?:a|an|some|the|my|our|your) [a-z]+(?: [a-z]+)?) (?=(?:a|an|some|the|my|our|your) [a-z]+'
+     r'(?: [a-z]+)? (?:(?:a|an|some|the|my|our|your) [a-z]+(?: [a-z]+)? )*and (?:a|an|some|the|my|our|your) '
+     r'[a-z]+)',
      lambda m: m.group('a') + (' , ' if not set(m.group('a').split()[1:]) & _NOT_LISTED else ' ')),
     # "in the reverse of that order", "last to first", "backwards": in reverse order
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
@@ -484,14 +491,17 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
     ('no', 'hang', 'on'), ('no', 'hold', 'on'), ('oh', 'hang', 'on'), ('no', 'actually'), ('no', 'i', 'mean'),
     ('no', 'make', 'that'), ('no', 'rather'), ('no', 'make', 'it'), ('ehm',), ('mm',), ('mmm',),
-    ('scrap', 'that'), ('scrap',),
+    ('scrap', 'that'), ('scrap',), ('just', 'kidding'), ('only', 'kidding'), ('ehh',), ('eh',),
+    # "ah no, I say it wrong: the mill before the lathe"
+    ('i', 'say', 'it', 'wrong'), ('i', 'said', 'it', 'wrong'), ('i', 'got', 'it', 'wrong'),
+    ('i', 'say', 'wrong'), ('i', 'said', 'wrong'), ('i', 'was', 'wrong'), ('i', 'said', 'that', 'wrong'),
 ), key=lambda m: -len(m)))
 _CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
                      'leave', 'scrap'})
 # Markers that restate a whole clause ("on second thought, bring it to the couch").
 _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
                       'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my', 'correction', 'ehm', 'mm',
-                      'mmm'})
+                      'mmm', 'just', 'only'})
 # Words that start a clause of their own (the verbs of goals and deliveries).
 _VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
                        'deliver', 'carry', 'return', 'avoid'}
@@ -522,8 +532,10 @@ def _marker_at(tokens: list[str], i: int) -> int:
         return len(bare) if len(bare) > 1 or bare != ('no', 'no') else 2
     for m in _MARKERS:
         if tuple(tokens[i:i + len(m)]) == m:
-            if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',', ':'):
-                return 0
+            if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',', ':') and not (
+                    i > 0 and tokens[i - 1] in '.;!?' and tokens[i + 1] == 'the' and i + 2 < len(tokens) and
+                    tokens[i + 2] in ('one', 'other', 'ones')):
+                return 0   # (but "... . no the one on the right of it": a correction, the comma left out)
             if m == ('ignore',) and i == 0:
                 return 0
             if m == ('forget',) and i == 0:
@@ -789,6 +801,9 @@ _START_FINISH = re.compile(rf'\b(?:(?:it is )?better |maybe |instead )?(?:you )?
                            rf'(?P<a>{_NP_RE}) and (?:then )?(?:finish|end) (?:with|at|up at) (?P<b>{_NP_RE})')
 _DROP_RULE = re.compile(r'\b(?:drop|remove|lose|ditch) '
                         r'(?=(?:that|the) (?:condition|order|ordering|rule|sequence)\b)')
+_INSTEAD_GO = re.compile(rf'(?<=[,.;!?] )instead of (?P<x>(?:the |my |your |our )?(?:[a-z0-9_]+ ){{0,2}}?'
+                         rf'[a-z0-9_]+) (?:, )?(?:you )?(?:go to|visit|head to|use|take) (?P<y>{_NP_RE})'
+                         rf'(?= [,.;!?]|$)')
 _SWAP_WORDS = frozenset({'swap', 'switch', 'replace', 'exchange', 'trade', 'change', 'substitute'})
 _SWAP = re.compile(rf'\b(?:{"|".join(sorted(_SWAP_WORDS))}) (?P<x>{_NP_RE}) (?:for|with|to|by) '
                    rf'(?P<y>{_NP_RE})(?= [,.;!?]|$)')
@@ -800,13 +815,15 @@ def _uncleft(tokens: list[str]) -> list[str]:
     "it is the cat you need to avoid" is "avoid the cat"; "I wanted to say" is "I meant".
     """
     if not ({'it', 'its', 'i', 'start', 'begin', 'drop', 'remove', 'lose', 'ditch', 'thing', 'part', 'bit',
-             'about'} | _SWAP_WORDS) & set(tokens):
+             'about', 'instead'} | _SWAP_WORDS) & set(tokens):
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
     new = _START_FINISH.sub(lambda m: f'go to {m.group("a")} then {m.group("b")}', new)
     # "swap the shed for the patio": the patio instead of the shed
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
+    # "instead of the saw go to the drill press": the drill press instead of the saw
+    new = _INSTEAD_GO.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
     new = _DROP_RULE.sub('forget ', new)   # "drop that condition": cancel it
     new = _THING_PART.sub(lambda m: f'{m.group("v")} {m.group("x")}', new)
     new = _SAID_ABOUT.sub(r'\1', new)
@@ -853,6 +870,10 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         after = out[stop:]
         marker = out[i]
         lead = 1 if seg[:1] == [','] else 0
+        rel = match_relation(seg, lead + 1) if seg[lead:lead + 1] == ['not'] else None
+        if rel is not None and seg[rel[1]:rel[1] + 1] == [','] and match_relation(seg, rel[1] + 1):
+            # "sorry, not behind, in front of the press": what it was not, then what it is
+            seg = seg[:lead] + seg[rel[1] + 1:]
         c = seg.index(',', lead) if ',' in seg[lead:] else -1
         said = seg[lead:c] if c <= lead or seg[lead] in DETERMINERS | chatter.STATEMENT_SUBJECTS else \
             ['the'] + seg[lead:c]   # "milk is already in there": a name said without its article
@@ -861,12 +882,13 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             out = moved + after
             i = len(moved)
             continue
-        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 < len(seg) and \
-                seg[c + 1] in _VERBS and marker not in _CANCEL:
+        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 < len(seg) and (
+                seg[c + 1] in _VERBS or seg[c + 1] in ('the', 'my', 'your', 'our') and
+                'instead' in seg[c + 1:]) and marker not in _CANCEL:
             # "actually it has been washed already, put it in the dryer": the reason, then the step
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
-            out = out[:j] + seg[c + 1:] + after
-            continue
+            out = out[:j] + ([','] if out[j - 1] not in PUNCT else []) + seg[c + 1:] + after
+            continue   # ("no, the saw is broken, go to the drill press": not "no go to")
         if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
@@ -882,8 +904,9 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 result = result + seg[cut:]
         if result is None:
             # not a correction we understand: drop the marker word and read on
-            out = prev + ([','] if prev and prev[-1] not in PUNCT else []) + seg + after
-            i = len(prev) + 1
+            comma = [','] if prev and prev[-1] not in PUNCT else []
+            out = prev + comma + seg + after
+            i = len(prev) + len(comma)   # (a marker right after it is read: "ah no, ...")
             continue
         out = result + after
         i = len(result)
@@ -940,7 +963,7 @@ def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Option
                 ['a'], ['dangerous'], ['blocked'], ['off'], ['wet'], ['closed']):
             continue
         end = e + 1
-        while end < len(seg) and seg[end] != ',':
+        while end < len(seg) and seg[end] != ',' and not _opens_command(seg, end):
             end += 1   # "the stairs are fine now that the gate is up": the reason goes with it
         return _drop_avoidance(prev, seg, k, end, named.head, notes)
     return None
@@ -967,8 +990,8 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             notes.append('the avoidance was retracted')
             parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
                      for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
-            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS | {
-                'keep', 'stay', 'steer'}]
+            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and
+                    c[0] in _COMMAND_START]
             a, b = p + spans[0].start, p + spans[0].end
             if len(kept) == 1 and b < len(prev) and prev[b] in _SCOPE_WORDS:
                 # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place
@@ -980,6 +1003,20 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
                 t for c in kept for t in [','] + c]
     return None
+
+
+# Words a command starts with, and the words that join it to a remark before it ("the cat is fine just
+# don't go near the fish tank": no comma between them).
+_COMMAND_START = _VERBS | {'keep', 'stay', 'steer', 'avoid', 'do', 'never'}
+_COMMAND_JOINERS = frozenset({'just', 'but', 'and', 'so', 'only', 'instead', 'then'})
+
+
+def _opens_command(seg: list[str], k: int) -> bool:
+    """Whether a command starts at ``seg[k]``, after a remark ("..., the cat is fine just avoid X")."""
+    if seg[k] in _COMMAND_JOINERS:
+        k += 1
+    return k < len(seg) and seg[k] in _COMMAND_START and (
+        seg[k] != 'do' or seg[k + 1:k + 2] in (['not'], ['never']))
 
 
 def _split_commas(seg: list[str]) -> list[list[str]]:
@@ -1398,7 +1435,53 @@ def _clause_kind(words: list[str]) -> str:
     return 'go' if {'go', 'visit', 'head', 'drive', 'fly', 'walk'} & set(words) else ''
 
 
+def _order_restated(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Say again an ordering corrected ("visit A before B. Ah no, I say it wrong: B before A").
+
+    The correction is two places joined by "before" or "after", as the sentence before joined them
+    (both named there); that sentence is said again with the new order, its verb kept.
+    """
+    words = [t for t in seg if t not in PUNCT]
+    word = next((t for t in words if t in ('before', 'after')), '')
+    if not word:
+        return None
+    parser = PhraseParser()
+    a = parser.parse(words, 0)
+    if a is None or a.pronoun or words[a.end:a.end + 1] != [word]:
+        return None
+    b = parser.parse(words, a.end + 1)
+    if b is None or b.pronoun or b.end != len(words):
+        return None
+    body = len(prev) - 1 if prev and prev[-1] in '.;!?' else len(prev)
+    start = max((k for k in range(body) if prev[k] in '.;!?'), default=-1) + 1
+    sentence = prev[start:]
+    heads = {np.head for np in _np_spans(sentence)}
+    if word not in sentence or not {a.head, b.head} <= heads:
+        return None
+    verb = next((k for k, t in enumerate(sentence) if t in DETERMINERS), 0)
+    if not verb or not any(t in _VERBS for t in sentence[:verb]):
+        return None
+    notes.append(f'"{" ".join(t for t in sentence if t not in PUNCT)}" said again as "{" ".join(words)}"')
+    return prev[:start] + sentence[:verb] + words + [t for t in sentence[-1:] if t in PUNCT]
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    lead = 1 if seg[:1] == [','] else 0
+    for said in (['the', 'opposite', ','], ['the', 'other', 'way', 'round', ','],
+                 ['the', 'other', 'way', 'around', ',']):
+        if seg[lead:lead + len(said)] == said and len(seg) > lead + len(said) + 2:
+            # "no, the opposite, first the office then the bench": the order reversed, then said again
+            seg = seg[:lead] + ['the', 'opposite']
+            break
+    c = max((k for k, t in enumerate(seg) if t == ','), default=-1)
+    fine = seg[c + 1:]
+    if c > lead + 2 and 3 <= len(fine) <= 4 and fine[-2] in ('is', 'are') and fine[-1] in (
+            'fine', 'ok', 'okay', 'alright', 'safe') and fine[0] not in DETERMINERS and \
+            all(is_name_word(fine, k, k > 0) for k in range(len(fine) - 2)):
+        seg = seg[:c]   # "no, avoid the grinding station, wash is ok": the one replaced, said by a word
+    reordered = _order_restated(prev, seg, notes)
+    if reordered is not None:
+        return reordered
     numbered = _renumber(prev, seg)
     if numbered is not None:
         notes.append('the number was corrected')
@@ -1673,6 +1756,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                     prev = _remove_clause(prev, sp.start)
                     break
         return prev + ([','] if prev and prev[-1] not in PUNCT else []) + rest
+    words = [t for t in seg if t not in PUNCT]
+    if words in (['the', 'opposite'], ['opposite'], ['the', 'contrary']):
+        s = 'the other way'   # "go to A and after to B... no, the opposite"
     if 'other way' in s or 'reverse' in s or 'opposite order' in s or 'backward' in s or 'wrong way' in s or \
             'mixed up' in s or 'mixed that up' in s or 'wrong order' in s or 'mixed them up' in s:
         spans = _np_spans(prev)

@@ -53,6 +53,10 @@ TYPOS: dict[str, str] = {
     'wya': 'way', 'sory': 'sorry',
     'jsut': 'just', 'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from',
     'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
+    # chat spellings of "because" (a reason follows) and of a subject with its verb
+    'bc': 'because', 'bcuz': 'because', 'becuz': 'because', 'cuz': 'because', 'coz': 'because',
+    'uve': 'you have', 'hes': 'he is', 'shes': 'she is', 'theyre': 'they are', 'tmrw': 'tomorrow',
+    'lmao': '', 'jk': 'just kidding', 'beetwen': 'between', 'bewteen': 'between', 'betwean': 'between',
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')

@@ -1198,6 +1198,14 @@ RULES: tuple[Rule, ...] = (
          r'^(?:once|after|when) (?P<e>[^,]+?) , (?:and )?not (?:before|earlier|sooner)(?: that)? , '
          r'(?P<m>.+)$',
          r'\g<m> , but only after \g<e>'),
+    Rule('go to either elevator bank, east or west: the east elevator bank or the west elevator bank',
+         rf'\beither (?:the |one )?(?P<n>{_W}(?: {_W}){{0,2}}) , (?:the )?(?P<a>{_SIDE})(?: one)? (?P<j>or) '
+         rf'(?:the )?(?P<b>{_SIDE})(?: one)?(?= [,.;]|$)',
+         lambda m: 'either ' + _each_named(m)),
+    Rule('north or south stairwell: each named in full',
+         rf'^(?P<a>{_SIDE}) (?P<j>or|and) (?:the )?(?P<b>{_SIDE}) (?P<n>{_W}(?: {_W}){{0,2}}?)'
+         rf'(?= [,.;]|$| then\b| but\b| first\b| whichever\b| if\b)',
+         _each_named),
     Rule('the east or the west nurses station: each named in full',
          rf'\bthe (?P<a>{_SIDE}) (?P<j>or|and) (?:the )?(?P<b>{_SIDE}) '
          rf'(?P<n>[a-z0-9_]+(?: [a-z0-9_]+){{0,2}}?)'
@@ -1206,6 +1214,13 @@ RULES: tuple[Rule, ...] = (
     Rule('stay away from the wires until you get there: on the way there',
          r'\buntil (?:you|we|the robot) (?:get there|arrive(?: there)?|are there|make it there|reach it|'
          r'get to it)(?= [,.;]|$)', 'on the way there'),
+    Rule('avoid the gate the whole time, and the kiosk on the way there: the verb said again',
+         rf'\b(?P<v>avoid|keep away from|stay away from|keep clear of|steer clear of|stay clear of|'
+         rf'stay out of|keep out of|keep off|stay off|do not go near) (?P<x>(?:the|my|your|our) {_NP})'
+         rf'(?P<d> (?:the whole time|the entire time|at all times|throughout|the whole way|the entire way|'
+         rf'at any point|at any time)) , and (?P<y>(?:the|my|your|our) {_NP}) '
+         rf'(?=(?:on the way|until|till|before|after|once|while)\b)',
+         r'\g<v> \g<x>\g<d> , and \g<v> \g<y> '),
     Rule('not before you visited the changing room and also the shower: and',
          r'\band also (?=(?:the|my|your|our)\b)', 'and '),
     Rule('it must be only one of the two, never both of them: not both',

@@ -230,6 +230,17 @@ def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Read
                          left_out=[u.note() for u in reader.unread])
 
 
+def _is_label(word: str) -> bool:
+    """Whether a name's last word is a label ("stairwell e", "row 8", "crane two")."""
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4 or word in NUMBER_WORDS
+
+
+def _labelled(name: str, head: str) -> bool:
+    """Whether ``name`` is ``head`` with a label after it ("stairwell_e" for "the stairwell")."""
+    return name.startswith(head + '_') and name.count('_') == head.count('_') + 1 and \
+        _is_label(name.rpartition('_')[2])
+
+
 def _after_relation(tokens: Sequence[str], i: int) -> bool:
     """Whether the phrase just before ``tokens[i]`` is the object of a relation ("behind the library").
 
@@ -665,9 +676,19 @@ class _Reader:
         longer = {d.name for d in refs + self.mentions if not d.relations and '_' in d.name}
         mapping: dict[Descriptor, Descriptor] = {}
         for d in refs:
-            if d.relations or '_' in d.name or d in mapping:
+            if d.relations or d in mapping:
                 continue
-            full = [n for n in longer if n.endswith('_' + d.name)]
+            if '_' in d.name:
+                # "panel row 7, then row 8": row 8 of the panel rows named in full before
+                head, _, label = d.name.rpartition('_')
+                kinds = {n.rpartition('_')[0] for n in longer
+                         if n.rpartition('_')[0].endswith('_' + head) and _is_label(n.rpartition('_')[2])}
+                if '_' not in head and _is_label(label) and len(kinds) == 1:
+                    mapping[d] = Descriptor(f'{kinds.pop()}_{label}')
+                    said, meant = d.name.replace('_', ' '), mapping[d].name.replace('_', ' ')
+                    self.notes.append(f'took "{said}" as the {meant}')
+                continue
+            full = [n for n in longer if n.endswith('_' + d.name) or _labelled(n, d.name)]
             if len(full) == 1:
                 mapping[d] = Descriptor(full[0])
                 self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
@@ -1779,7 +1800,8 @@ class _Reader:
             return NounPhrase(described.pop(), np.start, np.end, np.head, np.pronoun)
         if '_' in d.name:
             return np
-        full = {g for g in self._goals_named() if not g.relations and g.name.endswith('_' + d.name)}
+        full = {g for g in self._goals_named() if not g.relations and (
+            g.name.endswith('_' + d.name) or _labelled(g.name, d.name))}
         if len(full) != 1:
             return np
         return NounPhrase(full.pop(), np.start, np.end, np.head, np.pronoun)
@@ -2143,7 +2165,11 @@ class _Reader:
             self.notes.append(f'left out "{" ".join(rest[reason:])}" (says why, asks for nothing)')
             rest = rest[:reason]
         leftover = [t for t in rest if t not in harmless]
-        if leftover and leftover[0] not in ('when', 'while') and not self._leave_out(leftover):
+        # a determiner before a word that is not harmless names a thing ("..., and the kiosk on the
+        # way there"): never left out, though the harmless words taken away included the determiner
+        named = any(t in DETS and k + 1 < len(rest) and rest[k + 1] not in harmless and
+                    rest[k + 1] not in PUNCT for k, t in enumerate(rest))
+        if leftover and leftover[0] not in ('when', 'while') and (named or not self._leave_out(leftover)):
             if not self._tail_clause(rest):
                 raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
                                        details={'part': ' '.join(leftover)})
@@ -2255,9 +2281,11 @@ class _Reader:
 
     def _drop_location(self, rest: list[str], nps: Sequence[NounPhrase]) -> list[str]:
         """Leave out where the things just named are ("the box in the closet": the box), noted."""
+        last = self.phrases.last
         end = location_phrase(rest, 0, self.phrases) if nps else -1
         if end < 0:
             return rest
+        self.phrases.last = last   # "the boxes in the break room - throw them out": them, the boxes
         self.notes.append(f'"{" ".join(rest[:end])}": where {nps[-1].descriptor} is, not part of its name')
         return rest[end:]
 

@@ -504,7 +504,7 @@ _BARE_MARKERS = frozenset({('sorry',), ('no', 'wait'), ('wait', 'no'), ('no', 's
 _SCOPE_WORDS = frozenset({'while', 'until', 'till', 'on', 'when', 'after', 'before', 'during', 'as', 'once'})
 # The verb of a replacement said again ("forget the dog, avoid the cat").
 _REPLACED_VERB_WORDS = frozenset({'avoid', 'stay', 'keep', 'away', 'from', 'clear', 'of', 'steer', 'go', 'to',
-                                  'visit', 'near', 'instead', 'just'})
+                                  'visit', 'near', 'instead', 'just', 'off', 'out'})
 
 
 def _marker_at(tokens: list[str], i: int) -> int:
@@ -1063,6 +1063,10 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
     words = [t for t in seg if t not in PUNCT]
     if len(words) > 2 and words[-1] == 'only' and words[0] in DETERMINERS:
         words = ['only'] + words[:-1]   # "actually, the east one only"
+    elif len(words) > 2 and words[-1] == 'only' and not DETERMINERS & set(words):
+        bare = PhraseParser().parse(words[:-1], 0)
+        if bare is not None and not bare.pronoun and bare.end == len(words) - 1:
+            words = ['only'] + words[:-1]   # "correction: north stairwell only"
     if not words or words[0] not in ('just', 'only'):
         return None
     if words[1:3] in (['go', 'to'], ['head', 'to'], ['visit', 'the']) and len(words) > 3:
@@ -1088,7 +1092,7 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     hit = next((k for k in range(len(spans) - 1, -1, -1) if spans[k].descriptor == np.descriptor), -1)
     if hit < 0:
-        return None
+        return _only_this_side(prev, words[np.start:np.end], spans, notes)
     # the list it is in: phrases joined by "," / "and" / "or" only
     a = b = hit
     while a > 0 and all(t in (',', 'and', 'or', 'the') for t in prev[spans[a - 1].end:spans[a].start]):
@@ -1100,6 +1104,23 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     notes.append(f'only {np.descriptor} kept of that list')
     return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
+
+
+def _only_this_side(prev: list[str], named: list[str], spans: list[NounPhrase], notes: list[str]
+                    ) -> Optional[list[str]]:
+    """Keep one of 'north or south stairwell' named in full ("... north stairwell only")."""
+    named = [w for w in named if w not in DETERMINERS]
+    if len(named) < 2:
+        return None
+    for k, sp in enumerate(spans[:-1]):
+        nxt = spans[k + 1]
+        words = [w for w in prev[sp.start:sp.end] if w not in DETERMINERS and w != 'either']
+        other = [w for w in prev[nxt.start:nxt.end] if w not in DETERMINERS]
+        if words == named[:1] and prev[sp.end:nxt.start] in (['or'], ['and']) and \
+                len(other) == len(named) and other[1:] == named[1:]:
+            notes.append(f'only the {" ".join(named)} kept of that choice')
+            return prev[:sp.start] + ['the'] + named + prev[nxt.end:]
+    return None
 
 
 def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
@@ -1614,6 +1635,12 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return None
         hit = next((sp for sp in reversed(spans)
                     if sp.descriptor == tnp.descriptor or sp.head == tnp.head), None)
+        if hit is None and not tnp.pronoun and not tnp.descriptor.relations:
+            # "stay off the atrium floor. scratch the atrium, ...": the one name that starts so
+            short = tnp.descriptor.name + '_'
+            named = {sp.descriptor for sp in spans if sp.descriptor.name.startswith(short)}
+            hit = next((sp for sp in reversed(spans) if sp.descriptor in named), None) if len(named) == 1 \
+                else None
         if hit is None and tnp.pronoun == 'one' and tnp.end == len(target):
             # "the left elevator or the right one. no, forget the right one": the words said again
             at = next((p for p in range(len(prev) - len(target), -1, -1)

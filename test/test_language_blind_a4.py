@@ -1,0 +1,56 @@
+"""Readings found on the blind sets A4 and C4: each construction was misread while its set was blind.
+
+A4 is a building's facilities and security staff (offices, server rooms, stairwells), C4 a
+construction and solar site with drone operators. Each case is an instruction of the set with its
+writer's formula, or a sentence of our own for the same construction; the translator must give a
+formula equivalent to it on automata (names included). The whole sets stay outside the repository.
+"""
+from __future__ import annotations
+
+import pytest
+
+from translation_cases import check_translation
+
+BLIND_ROUND_A4 = [
+    # an avoidance verb said once for two things with their own scopes: "avoid X the whole
+    # time, and Y until you get there" (Y was left out as a remark)
+    ('Go to the parking garage. Avoid the exit gate the whole time, and the pay station until you get there.',
+     'F near[parking_garage] & G !near[exit_gate] & (!near[pay_station] U near[parking_garage])'),
+    ('Head to the barn, keep away from the pond at all times, and the bull pen on the way there.',
+     'F near[barn] & G !near[pond] & (!near[bull_pen] U near[barn])'),
+    # "the boxes in the break room - throw them out": "them" is the boxes, not the room they are in
+    ('Those pizza boxes in the break room - throw them out, and once they\'re dumped stay out of the break '
+     'room.',
+     'F (near[pizza_boxes] & F (pick[pizza_boxes] & F (near[trash_can] & F (release[pizza_boxes, trash_can] '
+     '& G !near[break_room]))))'),
+    ('The mug in the kitchen, bring it to the sink.',
+     'F (near[mug] & F (pick[mug] & F (near[sink] & F release[mug, sink])))'),
+    # a labelled thing said again by its kind ("stairwell E ... the stairwell"), and one said by its
+    # kind and label after the first was named in full ("panel row 7, then row 8")
+    ('Check the ninth floor fire door, then go to stairwell E. On the way to the stairwell don\'t go by the '
+     'motion sensor next to the copier.',
+     'F (near[ninth_floor_fire_door] & (!near[motion_sensor::isnextto(copier)] U near[stairwell_e]))'),
+    ('Fly over panel row 7, then row 8, then land at the site office.',
+     'F (near[panel_row_7] & F (near[panel_row_8] & F near[site_office]))'),
+    ('keep off the scafolding and the hoist at all times, just fly panel rows 1 and 2',
+     'F near[panel_row_1] & F near[panel_row_2] & G !near[scaffolding] & G !near[hoist]'),
+    # a choice of two sides of one kind: "either elevator bank, east or west", "north or south stairwell"
+    ('Go to either elevator bank, east or west.',
+     'F near[east_elevator_bank] | F near[west_elevator_bank]'),
+    ('North or south stairwell. Correction: north stairwell only.',
+     'F near[north_stairwell]'),
+    ('Go to the east or west wing. Wait, east wing only.',
+     'F near[east_wing]'),
+    # "scratch the atrium, stay off the marble stairs instead": the avoided place replaced (the short
+    # name finds the atrium floor, and the verb said again is not doubled)
+    ('Go to the east exit and stay off the atrium floor. Scratch the atrium, stay off the marble stairs '
+     'instead.',
+     'F near[east_exit] & G !near[marble_stairs]'),
+    ('Go to the lobby and keep out of the atrium. Forget the atrium, keep out of the cafeteria instead.',
+     'F near[lobby] & G !near[cafeteria]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', BLIND_ROUND_A4)
+def test_readings_found_on_blind_sets_a4_c4(instruction: str, gold: str) -> None:
+    check_translation(instruction, gold)

@@ -48,6 +48,24 @@ BLIND_ROUND_A4 = [
      'F near[east_exit] & G !near[marble_stairs]'),
     ('Go to the lobby and keep out of the atrium. Forget the atrium, keep out of the cafeteria instead.',
      'F near[lobby] & G !near[cafeteria]'),
+    # "the batching plant's fine, just don't go near the silo on the way": the new avoidance kept (it was
+    # dropped with the retracted one, as it does not start with a verb)
+    ('Go to the washout bay and avoid the batching plant on the way. Actually the batching plant\'s fine, '
+     'just don\'t go near the silo on the way.',
+     '!near[silo] U near[washout_bay]'),
+    ('Go to the kitchen and avoid the rug. Actually the rug is fine, never go near the stove though.',
+     'F near[kitchen] & G !near[stove]'),
+    # "I meant stairwell C": the thing of that kind with another label is corrected, not the last phrase
+    ('Don\'t go to the roof till you\'ve checked stairwell A. I meant stairwell C.',
+     '!near[roof] U near[stairwell_c]'),
+    ('Go to dock 3, then the office. Sorry, I meant dock 4.',
+     'F (near[dock_4] & F near[office])'),
+    # a thing said again by its last word inside a description ("the one left of the door")
+    ('Check the badge reader right of the server room door first, and only then the one left of the door.',
+     'F near[badge_reader::isleftof(server_room_door)] & (!near[badge_reader::isleftof(server_room_door)] '
+     'U near[badge_reader::isrightof(server_room_door)])'),
+    ('Go to the junction box between panel rows 5 and 6.',
+     'F near[junction_box::isbetween(panel_row_5, panel_row_6)]'),
 ]
 
 

@@ -230,6 +230,21 @@ def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Read
                          left_out=[u.note() for u in reader.unread])
 
 
+def _nested(d: Descriptor) -> list[Descriptor]:
+    """``d`` and every descriptor inside its relations."""
+    return [d] + [n for r in d.relations for a in r.args for n in _nested(a)]
+
+
+def _renamed(d: Descriptor, mapping: dict[Descriptor, Descriptor]) -> Descriptor:
+    """``d`` with each descriptor in ``mapping`` replaced, inside its relations too."""
+    if d in mapping:
+        return mapping[d]
+    if not d.relations:
+        return d
+    return Descriptor(d.name, tuple(Relation(r.comparator, tuple(_renamed(a, mapping) for a in r.args))
+                                    for r in d.relations))
+
+
 def _is_label(word: str) -> bool:
     """Whether a name's last word is a label ("stairwell e", "row 8", "crane two")."""
     return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4 or word in NUMBER_WORDS
@@ -671,12 +686,13 @@ class _Reader:
         instruction ends in it; each renaming is noted.
         """
         refs = list(referents_of(formula))
-        if len(refs) < 2 and not self.mentions:
+        if len(refs) < 2 and not self.mentions and not any(d.relations for d in refs):
             return formula
-        longer = {d.name for d in refs + self.mentions if not d.relations and '_' in d.name}
+        every = [n for d in refs + self.mentions for n in _nested(d)]
+        longer = {d.name for d in every if not d.relations and '_' in d.name}
         mapping: dict[Descriptor, Descriptor] = {}
-        for d in refs:
-            if d.relations or d in mapping:
+        for d in every:
+            if d.relations or d in mapping or d in self.mentions and d not in refs:
                 continue
             if '_' in d.name:
                 # "panel row 7, then row 8": row 8 of the panel rows named in full before
@@ -692,7 +708,11 @@ class _Reader:
             if len(full) == 1:
                 mapping[d] = Descriptor(full[0])
                 self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
-        return rename_descriptors(formula, mapping) if mapping else formula
+        if not mapping:
+            return formula
+        # "the badge reader left of the door": renamed inside a description too
+        deep = {d: _renamed(d, mapping) for d in refs}
+        return rename_descriptors(formula, {d: e for d, e in deep.items() if e != d})
 
     def _bare_goal_start(self, sentence: list[str]) -> bool:
         """Whether a sentence starts with a place and no verb ("aisle 14, but not till ...")."""

@@ -586,6 +586,30 @@ def _strip_corr(seg: list[str]) -> list[str]:
     return seg
 
 
+def _is_label(word: str) -> bool:
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4 or word in NUMBER_WORDS
+
+
+def _relabel(prev: list[str], new: list[str]) -> Optional[list[str]]:
+    """'... checked stairwell A. I meant stairwell C': the last thing of that kind with another label."""
+    words = new[1:] if new[:1] and new[0] in DETERMINERS else new
+    if len(words) < 2 or not _is_label(words[-1]) or not all(w.isalpha() for w in words[:-1]):
+        return None
+    kind = words[:-1]
+    n = len(kind)
+    for p in range(len(prev) - n - 1, -1, -1):
+        if prev[p:p + n] == kind and _is_label(prev[p + n]) and (p + n + 1 == len(prev) or prev[
+                p + n + 1] in PUNCT or prev[p + n + 1] in _AFTER_LABEL):
+            return None if prev[p + n].lower() == words[-1].lower() else \
+                prev[:p + n] + [words[-1]] + prev[p + n + 1:]
+    return None
+
+
+# Words that may follow a labelled name ("stairwell A first", "dock 3 and then ...").
+_AFTER_LABEL = frozenset({'and', 'or', 'then', 'first', 'last', 'next', 'before', 'after', 'until', 'till',
+                          'on', 'in', 'at', 'but', 'twice', 'once', 'again', 'only', 'exactly'})
+
+
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
     if 'it' in new and 'one' in new:
@@ -602,6 +626,9 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
                 if inner is not None:
                     k = new.index('it')
                     new = new[:k] + prev[rel_at:inner.end] + new[k + 1:]
+    relabelled = _relabel(prev, new)
+    if relabelled is not None:
+        return relabelled
     parser = PhraseParser()
     np = parser.parse(new, 0)
     if np is None or np.end != len(new):
@@ -962,8 +989,9 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             notes.append('the avoidance was retracted')
             parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
                      for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
-            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and c[0] in _VERBS | {
-                'keep', 'stay', 'steer'}]
+            # what else is said is kept: a command, or any part holding a rule ("just don't go near X")
+            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and (c[0] in _VERBS | {
+                'keep', 'stay', 'steer'} or chatter.carries_constraint(c))]
             a, b = p + spans[0].start, p + spans[0].end
             if len(kept) == 1 and b < len(prev) and prev[b] in _SCOPE_WORDS:
                 # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place

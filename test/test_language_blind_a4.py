@@ -66,6 +66,15 @@ BLIND_ROUND_A4 = [
      'U near[badge_reader::isrightof(server_room_door)])'),
     ('Go to the junction box between panel rows 5 and 6.',
      'F near[junction_box::isbetween(panel_row_5, panel_row_6)]'),
+    # "A or B. If it's B, avoid Y on the way in": the avoidance scoped to that branch, until B is reached;
+    # a branch named by its label alone ("if you take 21")
+    ('Go to the IT closet or the server room. If it\'s the server room, avoid the cooling unit on the way '
+     'in.',
+     'F near[it_closet] | (!near[cooling_unit] U near[server_room])'),
+    ('Go to the den or the hall. If you go to the hall, avoid the rug on the way there.',
+     'F near[den] | (!near[rug] U near[hall])'),
+    ('Fly to panel row 20 or row 21. If you take 21, keep off the substation.',
+     'F near[panel_row_20] | (F near[panel_row_21] & G !near[substation])'),
 ]
 
 

@@ -2343,8 +2343,18 @@ class _Reader:
         if self.choice is not None:
             step = self.task.last_step(('visit',))
             if step is not None and self.choice in step.targets:
+                kind = scope.kind if scope is not None else 'global'
+                to = scope.target.descriptor if scope is not None and scope.target is not None else None
+                onway = kind == 'onway' and to in (None, self.choice) or kind == 'until' and to == self.choice
+                if kind not in ('global', 'onway', 'until') or kind != 'global' and not onway:
+                    raise TranslationError('could not place the scope of the avoidance in that choice',
+                                           details={'part': ' '.join(map(str, targets))})
                 chains = []
                 for d in step.targets:
+                    if onway and d == self.choice:
+                        # "if it's the server room, avoid the cooling unit on the way in": until it is reached
+                        chains.append([Step('visit', [d], avoid_until=list(targets))])
+                        continue
                     extra = [Step('formula', formula=f) for f in _never(targets)] if d == self.choice else []
                     chains.append(extra + [Step('visit', [d])])
                 step.kind, step.targets, step.chains = 'any', [], chains
@@ -2725,12 +2735,25 @@ class _Reader:
         while j < len(tokens) and tokens[j] in ('choose', 'pick', 'decide', 'opt', 'on', 'for', 'with',
                                                 'end', 'take', 'use', 'up', 'at', 'go', 'to', 'select'):
             j += 1
-        np = self.phrases.parse(tokens, j)
+        np = self._choice_phrase(tokens, j)
         return np is not None and self._alternative(np, last.targets) in last.targets
+
+    def _choice_phrase(self, tokens: list[str], j: int) -> Optional[NounPhrase]:
+        """Return the alternative a condition names, a bare label too ("if you take 21")."""
+        np = self.phrases.parse(tokens, j)
+        last = self.task.last_step(('visit',))
+        if np is None and j < len(tokens) and tokens[j].isdigit() and len(tokens[j]) < 4 and \
+                last is not None and sum(t.name.endswith('_' + tokens[j]) for t in last.targets) == 1:
+            np = NounPhrase(Descriptor(tokens[j]), j, j + 1, tokens[j])
+        return np
 
     def _alternative(self, np: NounPhrase, targets: Sequence[Descriptor]) -> Descriptor:
         """Return the alternative a condition names ("the passenger one": the passenger elevator)."""
         d = self._resolve(np, place=True).descriptor
+        if not d.relations and _is_label(d.name):
+            # "row 20 or row 21. If you take 21, ...": the one with that label
+            fits = [t for t in targets if t.name.endswith('_' + d.name)]
+            return fits[0] if len(fits) == 1 else d
         if d in targets or not d.name.endswith('_one'):
             return d
         mod = d.name[:-len('one')]
@@ -2744,7 +2767,7 @@ class _Reader:
                 'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already',
                 'end', 'opt', 'settle', 'with', 'take', 'use', 'select'}:
             j += 1
-        np = self.phrases.parse(tokens, j)
+        np = self._choice_phrase(tokens, j)
         if np is None:
             raise TranslationError(f'could not place the condition "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
@@ -2767,9 +2790,19 @@ class _Reader:
                                        details={'part': ' '.join(tokens)})
             k = self._avoid_start(rest)
             assert k is not None
-            nps, _, _ = self._np_list(rest, k, place=False)
+            nps, _, end = self._np_list(rest, k, place=False)
+            after = [t for t in rest[end:] if t not in PUNCT]
+            onway = after[:3] in (['on', 'the', 'way'], ['on', 'your', 'way']) and after[3:] in (
+                [], ['in'], ['there'], ['over'], ['in', 'there'])
+            if after and not onway and not self._leave_out(after):
+                raise TranslationError(f'could not place "{" ".join(after)}" in "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(after)})
             chains = []
             for d in step.targets:
+                if onway and d == np.descriptor:
+                    # "if it's the server room, avoid the cooling unit on the way in": until it is reached
+                    chains.append([Step('visit', [d], avoid_until=[n.descriptor for n in nps])])
+                    continue
                 extra = [Step('formula', formula=f) for f in _never([n.descriptor for n in nps])] \
                     if d == np.descriptor else []
                 chains.append(extra + [Step('visit', [d])])

@@ -75,6 +75,23 @@ BLIND_ROUND_A4 = [
      'F near[den] | (!near[rug] U near[hall])'),
     ('Fly to panel row 20 or row 21. If you take 21, keep off the substation.',
      'F near[panel_row_20] | (F near[panel_row_21] & G !near[substation])'),
+    # a drone's load: "airlift / fly the sensor to X" carries it there, "land it on X" puts it there,
+    # "while it's slung underneath" is while carrying it; "drop to the second floor slab" is going there
+    ('Airlift the water sample kit to the pump station and drop it there.',
+     'F (near[water_sample_kit] & F (pick[water_sample_kit] & F (near[pump_station] & F '
+     'release[water_sample_kit, pump_station])))'),
+    ('Fly the replacement sensor to the met mast. Once it\'s dropped off, stay off the substation.',
+     'F (near[replacement_sensor] & F (pick[replacement_sensor] & F (near[met_mast] & F '
+     '(release[replacement_sensor, met_mast] & G !near[substation]))))'),
+    ('Pick the sensor off the pallet left of the hoist and land it on the canteen roof.',
+     'F (near[sensor::isabove(pallet::isleftof(hoist))] & F (pick[sensor::isabove(pallet::isleftof(hoist))] '
+     '& F (near[canteen_roof] & F release[sensor::isabove(pallet::isleftof(hoist)), canteen_roof])))'),
+    ('Pick up the spare anemometer, fly it to the met mast and release it there. Avoid the transmission '
+     'lines while it\'s slung underneath.',
+     'F (near[spare_anemometer] & F (pick[spare_anemometer] & (!near[transmission_lines] U (near[met_mast] & '
+     'F release[spare_anemometer, met_mast]))))'),
+    ('Climb to the 4th floor slab, then drop to the 2nd floor slab.',
+     'F (near[fourth_floor_slab] & F near[second_floor_slab])'),
 ]
 
 

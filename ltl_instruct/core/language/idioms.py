@@ -152,6 +152,20 @@ def _held(m: 're.Match[str]') -> str:
     return m.group('p')
 
 
+# What a drone flies as a route, not as a load ("fly the perimeter to the gate", "fly the drone to X").
+_FLOWN = frozenset('''
+drone robot uav quad quadcopter copter aircraft route loop path perimeter circuit stretch leg lap laps fence
+line boundary edge way course rest length corridor road river track pattern
+'''.split())
+
+
+def _carried(m: 're.Match[str]') -> str:
+    """'fly the sensor to the mast' carries the sensor there; 'fly the perimeter to the gate' does not."""
+    if m.group(0).startswith('fly') and m.group('x').split()[-1] in _FLOWN:
+        return m.group(0)
+    return f'carry {m.group("x")} {m.group("p")}'
+
+
 def _each_named(m: 're.Match[str]') -> str:
     """Name one of each: 'the first and third floors' is 'the first floor and the third floor'."""
     words = m.group('n').split()
@@ -558,7 +572,8 @@ RULES: tuple[Rule, ...] = (
          r'\b(?:set|touch|settle|bring (?:it|yourself)) down (?:on|at|in|onto|by|near)'
          r'(?= (?:the|my|your|our|a)\b)',
          'land at'),
-    Rule('climb to level four: go there', r'\bclimb (?:up )?to(?= (?:the|level|floor|roof|my|our|your)\b)',
+    Rule('climb to level four, drop to the second floor slab: go there',
+         r'\b(?:climb|drop|descend|ascend|rise) (?:up )?to(?= (?:the|level|floor|roof|my|our|your)\b)',
          'go to'),
 
     Rule('the 2 nd floor', rf'\b(?P<n>{_SMALL}) (?:st|nd|rd|th) floor\b',
@@ -985,6 +1000,17 @@ RULES: tuple[Rule, ...] = (
          r'\b(?:do|make|walk|run|fly) the (?P<a>(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) to (?:the )?'
          r'(?P<b>(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:run|loop|route|circuit|lap|trip|leg)\b',
          r'go from the \g<a> to the \g<b>'),
+    Rule('airlift the kit to the pump station, fly the sensor to the mast: carrying it there',
+         rf'\b(?:airlift|air lift|sling|winch|fly) (?P<x>it|them|(?:the|a|an|my|your|our|this|that|'
+         rf'these|those) {_NP}) (?P<p>(?:over |across |up |down )?(?:to|into|onto))\b', _carried),
+    Rule('land it on the canteen roof: put it there',
+         r'\b(?:land|lower|winch|set) (?P<o>it|them) (?:down )?'
+         r'(?=(?:on|onto|at|in|into) (?:the|my|your|our)\b)',
+         r'put \g<o> '),
+    Rule('avoid the lines while it is slung underneath: while carrying it',
+         r'\b(?:while|as long as) (?:it is|they are|the load is) (?:still )?(?:slung|hanging|attached|'
+         r'on board|aboard|loaded|being carried|held|in tow|in the (?:gripper|claw|basket|sling|winch|hook))'
+         r'(?: (?:underneath|below|beneath|under the drone|under you|under it))?\b', 'while carrying it'),
     Rule('two times back to back: twice in a row',
          r'\b(?:two times|twice|2 times) (?:back to back|consecutively|one after the other|straight)\b',
          'twice in a row'),

@@ -92,6 +92,23 @@ BLIND_ROUND_A4 = [
      'F release[spare_anemometer, met_mast]))))'),
     ('Climb to the 4th floor slab, then drop to the 2nd floor slab.',
      'F (near[fourth_floor_slab] & F near[second_floor_slab])'),
+    # a count said as a noun phrase of its own: "max one visit to the gate", "only one trip to the dock"
+    ('Move the traffic cone to the north gate. Max one visit to the gate.',
+     'F (near[traffic_cone] & F (pick[traffic_cone] & F (near[north_gate] & F release[traffic_cone, '
+     'north_gate]))) & (!near[north_gate] W (near[north_gate] & (near[north_gate] W G !near[north_gate])))'),
+    ('Take the recycling bin out to the loading dock. Only one trip to the loading dock, got it?',
+     'F (near[recycling_bin] & F (pick[recycling_bin] & F (near[loading_dock] & F release[recycling_bin, '
+     'loading_dock]))) & !near[loading_dock] W (near[loading_dock] & (near[loading_dock] W G '
+     '!near[loading_dock]))'),
+    ('Go to the kitchen. At most two visits to the den.',
+     'F near[kitchen] & (!near[den] W (near[den] & (near[den] W (!near[den] & (!near[den] W (near[den] & '
+     '(near[den] W G !near[den])))))))'),
+    # "skip 5" after "rows 4, 5 and 6": the one labelled 5 (the list was taken for positions and dropped,
+    # and "skip 5" read as a place)
+    ('Survey panel rows 4, 5 and 6 in sequence. Actually skip 5.',
+     'F (near[panel_row_4] & F near[panel_row_6])'),
+    ('Go to stairwell A, then stairwell B. Wait, forget B.',
+     'F near[stairwell_a]'),
 ]
 
 

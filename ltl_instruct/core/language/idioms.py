@@ -166,6 +166,13 @@ def _carried(m: 're.Match[str]') -> str:
     return f'carry {m.group("x")} {m.group("p")}'
 
 
+def _count_phrase(m: 're.Match[str]') -> str:
+    """'max one visit to the gate' -> 'visit the gate at most once'."""
+    mode = {'at least': 'at least', 'min': 'at least', 'minimum': 'at least', 'exactly': 'exactly'}.get(
+        m.group('mode'), 'at most')
+    return f'visit {m.group("x")} {mode} {_times(_number(m.group("n").split()[-1]))}'
+
+
 def _each_named(m: 're.Match[str]') -> str:
     """Name one of each: 'the first and third floors' is 'the first floor and the third floor'."""
     words = m.group('n').split()
@@ -639,6 +646,11 @@ RULES: tuple[Rule, ...] = (
          rf'\bthe (?P<bound>maximum|max|minimum|min|required) (?:allowable |allowed |permitted )?number of '
          rf'times (?:that )?you (?:can|must|may|should|are allowed to|have to|need to) {_GO} (?P<x>{_NP}) '
          rf'(?:is |are )?(?:exactly )?(?P<n>{_NUM}|once|twice)\b', _bound),
+    Rule('max one visit to the gate, only one trip to the dock: a count on its own',
+         rf'(?:^|(?<=, ))(?P<mode>max|maximum|at most|no more than|only|just|at least|min|minimum|exactly) '
+         rf'(?P<n>{_NUM}|a|a single|one single) {_KIND}(?:visits?|trips?|passes|stops?) '
+         rf'(?:to|through|at|in) (?P<x>(?:the|my|your|our) {_NP})(?= [,.;]|$)',
+         _count_phrase),
     Rule('do not make any single visit to X', r'\b(?:make|pay) (?:any|a) (?:single )?(?:visits?|trips?) to\b',
          'visit'),
     Rule('make at least three separate visits to X',

@@ -261,7 +261,9 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     ahead = s >= 2 and tokens[s - 1] == ':' and any(t in ORDINALS or t in ('last', 'middle') for t in tokens[
         start:s - 1])   # "the first and third things on this list: ..."
     refers = _refers_to_list(tail)
-    if not refers and not any(t.isdigit() for t in tail) and not ahead:
+    # a number is a position, unless the things listed are labelled with it ("rows 4, 5 and 6 ... skip 5")
+    labels = {np.descriptor.name.rpartition('_')[2] for np in nps}
+    if not refers and not any(t.isdigit() and t not in labels for t in tail) and not ahead:
         heads = {np.head for np in nps}
         if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
                 not any(t in NAME_VERBS for t in tokens[:end]):
@@ -1659,6 +1661,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{tgt}" ({hit.descriptor}) was dropped')
             return _remove_from_list(prev, 0, hit) or _remove_clause(prev, hit.start, narrow=True)
         tnp = parser.parse(target, 0)
+        if tnp is None and len(target) == 1 and _is_label(target[0]):
+            # "survey rows 4, 5 and 6. actually skip 5": the one with that label
+            labelled = [sp for sp in spans if sp.descriptor.name.endswith('_' + target[0].lower())]
+            if len(labelled) == 1:
+                tnp = labelled[0]
         if tnp is None:
             return None
         hit = next((sp for sp in reversed(spans)

@@ -109,6 +109,12 @@ BLIND_ROUND_A4 = [
      'F (near[panel_row_4] & F near[panel_row_6])'),
     ('Go to stairwell A, then stairwell B. Wait, forget B.',
      'F near[stairwell_a]'),
+    # "either of the last two": a choice (the list resolved to "either of the east gate and the south gate"
+    # was read as the last gate only)
+    ('North gate, east gate, south gate: either of the last two is fine, go there.',
+     'F near[east_gate] | F near[south_gate]'),
+    ('Go to either of the kitchen and the den.',
+     'F near[kitchen] | F near[den]'),
 ]
 
 

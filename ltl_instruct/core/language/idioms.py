@@ -1236,6 +1236,9 @@ RULES: tuple[Rule, ...] = (
          r'^(?:once|after|when) (?P<e>[^,]+?) , (?:and )?not (?:before|earlier|sooner)(?: that)? , '
          r'(?P<m>.+)$',
          r'\g<m> , but only after \g<e>'),
+    Rule('either of the east gate and the south gate: either the one or the other',
+         rf'\b(?:either|any one|any|one|whichever) of (?P<a>(?:the|my|your|our) {_NP}) and '
+         rf'(?P<b>(?:the|my|your|our) {_NP})(?= is| are| will| works| [,.;]|$)', r'either \g<a> or \g<b>'),
     Rule('go to either elevator bank, east or west: the east elevator bank or the west elevator bank',
          rf'\beither (?:the |one )?(?P<n>{_W}(?: {_W}){{0,2}}) , (?:the )?(?P<a>{_SIDE})(?: one)? (?P<j>or) '
          rf'(?:the )?(?P<b>{_SIDE})(?: one)?(?= [,.;]|$)',

@@ -152,6 +152,27 @@ def _held(m: 're.Match[str]') -> str:
     return m.group('p')
 
 
+# What a drone flies as a route, not as a load ("fly the perimeter to the gate", "fly the drone to X").
+_FLOWN = frozenset('''
+drone robot uav quad quadcopter copter aircraft route loop path perimeter circuit stretch leg lap laps fence
+line boundary edge way course rest length corridor road river track pattern
+'''.split())
+
+
+def _carried(m: 're.Match[str]') -> str:
+    """'fly the sensor to the mast' carries the sensor there; 'fly the perimeter to the gate' does not."""
+    if m.group(0).startswith('fly') and m.group('x').split()[-1] in _FLOWN:
+        return m.group(0)
+    return f'carry {m.group("x")} {m.group("p")}'
+
+
+def _count_phrase(m: 're.Match[str]') -> str:
+    """'max one visit to the gate' -> 'visit the gate at most once'."""
+    mode = {'at least': 'at least', 'min': 'at least', 'minimum': 'at least', 'exactly': 'exactly'}.get(
+        m.group('mode'), 'at most')
+    return f'visit {m.group("x")} {mode} {_times(_number(m.group("n").split()[-1]))}'
+
+
 def _each_named(m: 're.Match[str]') -> str:
     """Name one of each: 'the first and third floors' is 'the first floor and the third floor'."""
     words = m.group('n').split()
@@ -558,7 +579,8 @@ RULES: tuple[Rule, ...] = (
          r'\b(?:set|touch|settle|bring (?:it|yourself)) down (?:on|at|in|onto|by|near)'
          r'(?= (?:the|my|your|our|a)\b)',
          'land at'),
-    Rule('climb to level four: go there', r'\bclimb (?:up )?to(?= (?:the|level|floor|roof|my|our|your)\b)',
+    Rule('climb to level four, drop to the second floor slab: go there',
+         r'\b(?:climb|drop|descend|ascend|rise) (?:up )?to(?= (?:the|level|floor|roof|my|our|your)\b)',
          'go to'),
 
     Rule('the 2 nd floor', rf'\b(?P<n>{_SMALL}) (?:st|nd|rd|th) floor\b',
@@ -624,6 +646,11 @@ RULES: tuple[Rule, ...] = (
          rf'\bthe (?P<bound>maximum|max|minimum|min|required) (?:allowable |allowed |permitted )?number of '
          rf'times (?:that )?you (?:can|must|may|should|are allowed to|have to|need to) {_GO} (?P<x>{_NP}) '
          rf'(?:is |are )?(?:exactly )?(?P<n>{_NUM}|once|twice)\b', _bound),
+    Rule('max one visit to the gate, only one trip to the dock: a count on its own',
+         rf'(?:^|(?<=, ))(?P<mode>max|maximum|at most|no more than|only|just|at least|min|minimum|exactly) '
+         rf'(?P<n>{_NUM}|a|a single|one single) {_KIND}(?:visits?|trips?|passes|stops?) '
+         rf'(?:to|through|at|in) (?P<x>(?:the|my|your|our) {_NP})(?= [,.;]|$)',
+         _count_phrase),
     Rule('do not make any single visit to X', r'\b(?:make|pay) (?:any|a) (?:single )?(?:visits?|trips?) to\b',
          'visit'),
     Rule('make at least three separate visits to X',
@@ -985,6 +1012,17 @@ RULES: tuple[Rule, ...] = (
          r'\b(?:do|make|walk|run|fly) the (?P<a>(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) to (?:the )?'
          r'(?P<b>(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:run|loop|route|circuit|lap|trip|leg)\b',
          r'go from the \g<a> to the \g<b>'),
+    Rule('airlift the kit to the pump station, fly the sensor to the mast: carrying it there',
+         rf'\b(?:airlift|air lift|sling|winch|fly) (?P<x>it|them|(?:the|a|an|my|your|our|this|that|'
+         rf'these|those) {_NP}) (?P<p>(?:over |across |up |down )?(?:to|into|onto))\b', _carried),
+    Rule('land it on the canteen roof: put it there',
+         r'\b(?:land|lower|winch|set) (?P<o>it|them) (?:down )?'
+         r'(?=(?:on|onto|at|in|into) (?:the|my|your|our)\b)',
+         r'put \g<o> '),
+    Rule('avoid the lines while it is slung underneath: while carrying it',
+         r'\b(?:while|as long as) (?:it is|they are|the load is) (?:still )?(?:slung|hanging|attached|'
+         r'on board|aboard|loaded|being carried|held|in tow|in the (?:gripper|claw|basket|sling|winch|hook))'
+         r'(?: (?:underneath|below|beneath|under the drone|under you|under it))?\b', 'while carrying it'),
     Rule('two times back to back: twice in a row',
          r'\b(?:two times|twice|2 times) (?:back to back|consecutively|one after the other|straight)\b',
          'twice in a row'),
@@ -1214,6 +1252,17 @@ RULES: tuple[Rule, ...] = (
          r'^(?:once|after|when) (?P<e>[^,]+?) , (?:and )?not (?:before|earlier|sooner)(?: that)? , '
          r'(?P<m>.+)$',
          r'\g<m> , but only after \g<e>'),
+    Rule('either of the east gate and the south gate: either the one or the other',
+         rf'\b(?:either|any one|any|one|whichever) of (?P<a>(?:the|my|your|our) {_NP}) and '
+         rf'(?P<b>(?:the|my|your|our) {_NP})(?= is| are| will| works| [,.;]|$)', r'either \g<a> or \g<b>'),
+    Rule('go to either elevator bank, east or west: the east elevator bank or the west elevator bank',
+         rf'\beither (?:the |one )?(?P<n>{_W}(?: {_W}){{0,2}}) , (?:the )?(?P<a>{_SIDE})(?: one)? (?P<j>or) '
+         rf'(?:the )?(?P<b>{_SIDE})(?: one)?(?= [,.;]|$)',
+         lambda m: 'either ' + _each_named(m)),
+    Rule('north or south stairwell: each named in full',
+         rf'^(?P<a>{_SIDE}) (?P<j>or|and) (?:the )?(?P<b>{_SIDE}) (?P<n>{_W}(?: {_W}){{0,2}}?)'
+         rf'(?= [,.;]|$| then\b| but\b| first\b| whichever\b| if\b)',
+         _each_named),
     Rule('the east or the west nurses station: each named in full',
          rf'\bthe (?P<a>{_SIDE}) (?P<j>or|and) (?:the )?(?P<b>{_SIDE}) '
          rf'(?P<n>[a-z0-9_]+(?: [a-z0-9_]+){{0,2}}?)'
@@ -1222,6 +1271,13 @@ RULES: tuple[Rule, ...] = (
     Rule('stay away from the wires until you get there: on the way there',
          r'\buntil (?:you|we|the robot) (?:get there|arrive(?: there)?|are there|make it there|reach it|'
          r'get to it)(?= [,.;]|$)', 'on the way there'),
+    Rule('avoid the gate the whole time, and the kiosk on the way there: the verb said again',
+         rf'\b(?P<v>avoid|keep away from|stay away from|keep clear of|steer clear of|stay clear of|'
+         rf'stay out of|keep out of|keep off|stay off|do not go near) (?P<x>(?:the|my|your|our) {_NP})'
+         rf'(?P<d> (?:the whole time|the entire time|at all times|throughout|the whole way|the entire way|'
+         rf'at any point|at any time)) , and (?P<y>(?:the|my|your|our) {_NP}) '
+         rf'(?=(?:on the way|until|till|before|after|once|while)\b)',
+         r'\g<v> \g<x>\g<d> , and \g<v> \g<y> '),
     Rule('not before you visited the changing room and also the shower: and',
          r'\band also (?=(?:the|my|your|our)\b)', 'and '),
     Rule('it must be only one of the two, never both of them: not both',

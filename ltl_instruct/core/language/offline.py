@@ -230,6 +230,32 @@ def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Read
                          left_out=[u.note() for u in reader.unread])
 
 
+def _nested(d: Descriptor) -> list[Descriptor]:
+    """``d`` and every descriptor inside its relations."""
+    return [d] + [n for r in d.relations for a in r.args for n in _nested(a)]
+
+
+def _renamed(d: Descriptor, mapping: dict[Descriptor, Descriptor]) -> Descriptor:
+    """``d`` with each descriptor in ``mapping`` replaced, inside its relations too."""
+    if d in mapping:
+        return mapping[d]
+    if not d.relations:
+        return d
+    return Descriptor(d.name, tuple(Relation(r.comparator, tuple(_renamed(a, mapping) for a in r.args))
+                                    for r in d.relations))
+
+
+def _is_label(word: str) -> bool:
+    """Whether a name's last word is a label ("stairwell e", "row 8", "crane two")."""
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4 or word in NUMBER_WORDS
+
+
+def _labelled(name: str, head: str) -> bool:
+    """Whether ``name`` is ``head`` with a label after it ("stairwell_e" for "the stairwell")."""
+    return name.startswith(head + '_') and name.count('_') == head.count('_') + 1 and \
+        _is_label(name.rpartition('_')[2])
+
+
 def _after_relation(tokens: Sequence[str], i: int) -> bool:
     """Whether the phrase just before ``tokens[i]`` is the object of a relation ("behind the library").
 
@@ -695,18 +721,33 @@ class _Reader:
         instruction ends in it; each renaming is noted.
         """
         refs = list(referents_of(formula))
-        if len(refs) < 2 and not self.mentions:
+        if len(refs) < 2 and not self.mentions and not any(d.relations for d in refs):
             return formula
-        longer = {d.name for d in refs + self.mentions if not d.relations and '_' in d.name}
+        every = [n for d in refs + self.mentions for n in _nested(d)]
+        longer = {d.name for d in every if not d.relations and '_' in d.name}
         mapping: dict[Descriptor, Descriptor] = {}
-        for d in refs:
-            if d.relations or '_' in d.name or d in mapping:
+        for d in every:
+            if d.relations or d in mapping or d in self.mentions and d not in refs:
                 continue
-            full = [n for n in longer if n.endswith('_' + d.name)]
+            if '_' in d.name:
+                # "panel row 7, then row 8": row 8 of the panel rows named in full before
+                head, _, label = d.name.rpartition('_')
+                kinds = {n.rpartition('_')[0] for n in longer
+                         if n.rpartition('_')[0].endswith('_' + head) and _is_label(n.rpartition('_')[2])}
+                if '_' not in head and _is_label(label) and len(kinds) == 1:
+                    mapping[d] = Descriptor(f'{kinds.pop()}_{label}')
+                    said, meant = d.name.replace('_', ' '), mapping[d].name.replace('_', ' ')
+                    self.notes.append(f'took "{said}" as the {meant}')
+                continue
+            full = [n for n in longer if n.endswith('_' + d.name) or _labelled(n, d.name)]
             if len(full) == 1:
                 mapping[d] = Descriptor(full[0])
                 self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
-        return rename_descriptors(formula, mapping) if mapping else formula
+        if not mapping:
+            return formula
+        # "the badge reader left of the door": renamed inside a description too
+        deep = {d: _renamed(d, mapping) for d in refs}
+        return rename_descriptors(formula, {d: e for d, e in deep.items() if e != d})
 
     def _bare_goal_start(self, sentence: list[str]) -> bool:
         """Whether a sentence starts with a place and no verb ("aisle 14, but not till ...")."""
@@ -1854,7 +1895,8 @@ class _Reader:
             return NounPhrase(described.pop(), np.start, np.end, np.head, np.pronoun)
         if '_' in d.name:
             return np
-        full = {g for g in self._goals_named() if not g.relations and g.name.endswith('_' + d.name)}
+        full = {g for g in self._goals_named() if not g.relations and (
+            g.name.endswith('_' + d.name) or _labelled(g.name, d.name))}
         if len(full) != 1:
             return np
         return NounPhrase(full.pop(), np.start, np.end, np.head, np.pronoun)
@@ -2221,7 +2263,11 @@ class _Reader:
             self.notes.append(f'left out "{" ".join(rest[reason:])}" (says why, asks for nothing)')
             rest = rest[:reason]
         leftover = [t for t in rest if t not in harmless]
-        if leftover and leftover[0] not in ('when', 'while') and not self._leave_out(leftover):
+        # a determiner before a word that is not harmless names a thing ("..., and the kiosk on the
+        # way there"): never left out, though the harmless words taken away included the determiner
+        named = any(t in DETS and k + 1 < len(rest) and rest[k + 1] not in harmless and
+                    rest[k + 1] not in PUNCT for k, t in enumerate(rest))
+        if leftover and leftover[0] not in ('when', 'while') and (named or not self._leave_out(leftover)):
             if not self._tail_clause(rest):
                 raise TranslationError(f'could not place "{" ".join(leftover)}" in "{" ".join(tokens)}"',
                                        details={'part': ' '.join(leftover)})
@@ -2333,9 +2379,11 @@ class _Reader:
 
     def _drop_location(self, rest: list[str], nps: Sequence[NounPhrase]) -> list[str]:
         """Leave out where the things just named are ("the box in the closet": the box), noted."""
+        last = self.phrases.last
         end = location_phrase(rest, 0, self.phrases) if nps else -1
         if end < 0:
             return rest
+        self.phrases.last = last   # "the boxes in the break room - throw them out": them, the boxes
         self.notes.append(f'"{" ".join(rest[:end])}": where {nps[-1].descriptor} is, not part of its name')
         return rest[end:]
 
@@ -2373,8 +2421,18 @@ class _Reader:
         if self.choice is not None:
             step = self.task.last_step(('visit',))
             if step is not None and self.choice in step.targets:
+                kind = scope.kind if scope is not None else 'global'
+                to = scope.target.descriptor if scope is not None and scope.target is not None else None
+                onway = kind == 'onway' and to in (None, self.choice) or kind == 'until' and to == self.choice
+                if kind not in ('global', 'onway', 'until') or kind != 'global' and not onway:
+                    raise TranslationError('could not place the scope of the avoidance in that choice',
+                                           details={'part': ' '.join(map(str, targets))})
                 chains = []
                 for d in step.targets:
+                    if onway and d == self.choice:
+                        # "if it's the server room, avoid the cooling unit on the way in": until it is reached
+                        chains.append([Step('visit', [d], avoid_until=list(targets))])
+                        continue
                     extra = [Step('formula', formula=f) for f in _never(targets)] if d == self.choice else []
                     chains.append(extra + [Step('visit', [d])])
                 step.kind, step.targets, step.chains = 'any', [], chains
@@ -2755,12 +2813,25 @@ class _Reader:
         while j < len(tokens) and tokens[j] in ('choose', 'pick', 'decide', 'opt', 'on', 'for', 'with',
                                                 'end', 'take', 'use', 'up', 'at', 'go', 'to', 'select'):
             j += 1
-        np = self.phrases.parse(tokens, j)
+        np = self._choice_phrase(tokens, j)
         return np is not None and self._alternative(np, last.targets) in last.targets
+
+    def _choice_phrase(self, tokens: list[str], j: int) -> Optional[NounPhrase]:
+        """Return the alternative a condition names, a bare label too ("if you take 21")."""
+        np = self.phrases.parse(tokens, j)
+        last = self.task.last_step(('visit',))
+        if np is None and j < len(tokens) and tokens[j].isdigit() and len(tokens[j]) < 4 and \
+                last is not None and sum(t.name.endswith('_' + tokens[j]) for t in last.targets) == 1:
+            np = NounPhrase(Descriptor(tokens[j]), j, j + 1, tokens[j])
+        return np
 
     def _alternative(self, np: NounPhrase, targets: Sequence[Descriptor]) -> Descriptor:
         """Return the alternative a condition names ("the passenger one": the passenger elevator)."""
         d = self._resolve(np, place=True).descriptor
+        if not d.relations and _is_label(d.name):
+            # "row 20 or row 21. If you take 21, ...": the one with that label
+            fits = [t for t in targets if t.name.endswith('_' + d.name)]
+            return fits[0] if len(fits) == 1 else d
         if d in targets or not d.name.endswith('_one'):
             return d
         mod = d.name[:-len('one')]
@@ -2774,7 +2845,7 @@ class _Reader:
                 'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already',
                 'end', 'opt', 'settle', 'with', 'take', 'use', 'select'}:
             j += 1
-        np = self.phrases.parse(tokens, j)
+        np = self._choice_phrase(tokens, j)
         if np is None:
             raise TranslationError(f'could not place the condition "{" ".join(tokens)}"',
                                    details={'part': ' '.join(tokens)})
@@ -2797,9 +2868,19 @@ class _Reader:
                                        details={'part': ' '.join(tokens)})
             k = self._avoid_start(rest)
             assert k is not None
-            nps, _, _ = self._np_list(rest, k, place=False)
+            nps, _, end = self._np_list(rest, k, place=False)
+            after = [t for t in rest[end:] if t not in PUNCT]
+            onway = after[:3] in (['on', 'the', 'way'], ['on', 'your', 'way']) and after[3:] in (
+                [], ['in'], ['there'], ['over'], ['in', 'there'])
+            if after and not onway and not self._leave_out(after):
+                raise TranslationError(f'could not place "{" ".join(after)}" in "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(after)})
             chains = []
             for d in step.targets:
+                if onway and d == np.descriptor:
+                    # "if it's the server room, avoid the cooling unit on the way in": until it is reached
+                    chains.append([Step('visit', [d], avoid_until=[n.descriptor for n in nps])])
+                    continue
                 extra = [Step('formula', formula=f) for f in _never([n.descriptor for n in nps])] \
                     if d == np.descriptor else []
                 chains.append(extra + [Step('visit', [d])])

@@ -273,7 +273,9 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     ahead = s >= 2 and tokens[s - 1] == ':' and any(t in ORDINALS or t in ('last', 'middle') for t in tokens[
         start:s - 1])   # "the first and third things on this list: ..."
     refers = _refers_to_list(tail)
-    if not refers and not any(t.isdigit() for t in tail) and not ahead:
+    # a number is a position, unless the things listed are labelled with it ("rows 4, 5 and 6 ... skip 5")
+    labels = {np.descriptor.name.rpartition('_')[2] for np in nps}
+    if not refers and not any(t.isdigit() and t not in labels for t in tail) and not ahead:
         heads = {np.head for np in nps}
         if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
                 not any(t in NAME_VERBS for t in tokens[:end]):
@@ -519,7 +521,7 @@ _BARE_MARKERS = frozenset({('sorry',), ('no', 'wait'), ('wait', 'no'), ('no', 's
 _SCOPE_WORDS = frozenset({'while', 'until', 'till', 'on', 'when', 'after', 'before', 'during', 'as', 'once'})
 # The verb of a replacement said again ("forget the dog, avoid the cat").
 _REPLACED_VERB_WORDS = frozenset({'avoid', 'stay', 'keep', 'away', 'from', 'clear', 'of', 'steer', 'go', 'to',
-                                  'visit', 'near', 'instead', 'just'})
+                                  'visit', 'near', 'instead', 'just', 'off', 'out'})
 
 
 def _marker_at(tokens: list[str], i: int) -> int:
@@ -603,6 +605,30 @@ def _strip_corr(seg: list[str]) -> list[str]:
     return seg
 
 
+def _is_label(word: str) -> bool:
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4 or word in NUMBER_WORDS
+
+
+def _relabel(prev: list[str], new: list[str]) -> Optional[list[str]]:
+    """'... checked stairwell A. I meant stairwell C': the last thing of that kind with another label."""
+    words = new[1:] if new[:1] and new[0] in DETERMINERS else new
+    if len(words) < 2 or not _is_label(words[-1]) or not all(w.isalpha() for w in words[:-1]):
+        return None
+    kind = words[:-1]
+    n = len(kind)
+    for p in range(len(prev) - n - 1, -1, -1):
+        if prev[p:p + n] == kind and _is_label(prev[p + n]) and (p + n + 1 == len(prev) or prev[
+                p + n + 1] in PUNCT or prev[p + n + 1] in _AFTER_LABEL):
+            return None if prev[p + n].lower() == words[-1].lower() else \
+                prev[:p + n] + [words[-1]] + prev[p + n + 1:]
+    return None
+
+
+# Words that may follow a labelled name ("stairwell A first", "dock 3 and then ...").
+_AFTER_LABEL = frozenset({'and', 'or', 'then', 'first', 'last', 'next', 'before', 'after', 'until', 'till',
+                          'on', 'in', 'at', 'but', 'twice', 'once', 'again', 'only', 'exactly'})
+
+
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
     if 'it' in new and 'one' in new:
@@ -619,6 +645,9 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
                 if inner is not None:
                     k = new.index('it')
                     new = new[:k] + prev[rel_at:inner.end] + new[k + 1:]
+    relabelled = _relabel(prev, new)
+    if relabelled is not None:
+        return relabelled
     parser = PhraseParser()
     np = parser.parse(new, 0)
     if np is None or np.end != len(new):
@@ -990,8 +1019,9 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             notes.append('the avoidance was retracted')
             parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
                      for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
-            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and
-                    c[0] in _COMMAND_START]
+            # what else is said is kept: a command, or any part holding a rule ("just don't go near X")
+            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and (
+                c[0] in _COMMAND_START or chatter.carries_constraint(c))]
             a, b = p + spans[0].start, p + spans[0].end
             if len(kept) == 1 and b < len(prev) and prev[b] in _SCOPE_WORDS:
                 # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place
@@ -1105,6 +1135,10 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
     words = [t for t in seg if t not in PUNCT]
     if len(words) > 2 and words[-1] == 'only' and words[0] in DETERMINERS:
         words = ['only'] + words[:-1]   # "actually, the east one only"
+    elif len(words) > 2 and words[-1] == 'only' and not DETERMINERS & set(words):
+        bare = PhraseParser().parse(words[:-1], 0)
+        if bare is not None and not bare.pronoun and bare.end == len(words) - 1:
+            words = ['only'] + words[:-1]   # "correction: north stairwell only"
     if not words or words[0] not in ('just', 'only'):
         return None
     if words[1:3] in (['go', 'to'], ['head', 'to'], ['visit', 'the']) and len(words) > 3:
@@ -1130,7 +1164,7 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     hit = next((k for k in range(len(spans) - 1, -1, -1) if spans[k].descriptor == np.descriptor), -1)
     if hit < 0:
-        return None
+        return _only_this_side(prev, words[np.start:np.end], spans, notes)
     # the list it is in: phrases joined by "," / "and" / "or" only
     a = b = hit
     while a > 0 and all(t in (',', 'and', 'or', 'the') for t in prev[spans[a - 1].end:spans[a].start]):
@@ -1142,6 +1176,23 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     notes.append(f'only {np.descriptor} kept of that list')
     return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
+
+
+def _only_this_side(prev: list[str], named: list[str], spans: list[NounPhrase], notes: list[str]
+                    ) -> Optional[list[str]]:
+    """Keep one of 'north or south stairwell' named in full ("... north stairwell only")."""
+    named = [w for w in named if w not in DETERMINERS]
+    if len(named) < 2:
+        return None
+    for k, sp in enumerate(spans[:-1]):
+        nxt = spans[k + 1]
+        words = [w for w in prev[sp.start:sp.end] if w not in DETERMINERS and w != 'either']
+        other = [w for w in prev[nxt.start:nxt.end] if w not in DETERMINERS]
+        if words == named[:1] and prev[sp.end:nxt.start] in (['or'], ['and']) and \
+                len(other) == len(named) and other[1:] == named[1:]:
+            notes.append(f'only the {" ".join(named)} kept of that choice')
+            return prev[:sp.start] + ['the'] + named + prev[nxt.end:]
+    return None
 
 
 def _swap(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
@@ -1698,10 +1749,21 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{tgt}" ({hit.descriptor}) was dropped')
             return _remove_from_list(prev, 0, hit) or _remove_clause(prev, hit.start, narrow=True)
         tnp = parser.parse(target, 0)
+        if tnp is None and len(target) == 1 and _is_label(target[0]):
+            # "survey rows 4, 5 and 6. actually skip 5": the one with that label
+            labelled = [sp for sp in spans if sp.descriptor.name.endswith('_' + target[0].lower())]
+            if len(labelled) == 1:
+                tnp = labelled[0]
         if tnp is None:
             return None
         hit = next((sp for sp in reversed(spans)
                     if sp.descriptor == tnp.descriptor or sp.head == tnp.head), None)
+        if hit is None and not tnp.pronoun and not tnp.descriptor.relations:
+            # "stay off the atrium floor. scratch the atrium, ...": the one name that starts so
+            short = tnp.descriptor.name + '_'
+            named = {sp.descriptor for sp in spans if sp.descriptor.name.startswith(short)}
+            hit = next((sp for sp in reversed(spans) if sp.descriptor in named), None) if len(named) == 1 \
+                else None
         if hit is None and tnp.pronoun == 'one' and tnp.end == len(target):
             # "the left elevator or the right one. no, forget the right one": the words said again
             at = next((p for p in range(len(prev) - len(target), -1, -1)

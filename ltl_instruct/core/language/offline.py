@@ -685,8 +685,11 @@ class _Reader:
                 self.notes.append(f'read "{" ".join(sentence)}" as going there')
                 # a name that is also a verb ("pass then walk-in") read as the name it is in the list
                 listed = (',', 'then', 'and', 'or')
+                # alone between joiners; "inspect tank 2" stays a verb
                 sentence = ['go', 'to'] + [w for k, t in enumerate(sentence) for w in (
-                    ['the', t] if t in SKILL_VERBS and (k == 0 or sentence[k - 1] in listed) else [t])]
+                    ['the', t] if t in SKILL_VERBS and (k == 0 or sentence[k - 1] in listed) and (
+                        k + 1 == len(sentence) or sentence[k + 1] in listed or sentence[k + 1] in PUNCT)
+                    else [t])]
             elif self._bare_goal_start(sentence):
                 self._read_bare_goal(sentence)
                 continue

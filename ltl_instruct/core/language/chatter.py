@@ -408,6 +408,50 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+# Words before a form of address that make it one phrase ("little drone", "my dear", "good robot").
+_ADDRESS_ADJECTIVES = frozenset({'little', 'my', 'good', 'clever', 'dear', 'old', 'silly', 'sweet', 'young'})
+# Exclamations about oneself, set off by commas ("oh, no, silly me, I meant ..."): they ask for nothing.
+_SELF_EXCLAIMS: tuple[tuple[str, ...], ...] = (
+    ('dear', 'oh', 'dear'), ('oh', 'my', 'goodness'), ('silly', 'me'), ('dear', 'me'), ('oh', 'dear'),
+    ('bless', 'me'), ('goodness', 'me'), ('my', 'goodness'), ('oh', 'my'), ('stupid', 'me'))   # longest first
+
+
+def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
+    """Drop forms of address and exclamations set off by punctuation, before corrections are read.
+
+    "no, sorry, dear, I meant the toilet", "oh, no, silly me, I meant the nook", "Now, little
+    drone, would you ...": the words between the commas address someone or exclaim and name
+    nothing, so the correction marker reaches what it corrects. A single address word is also
+    left to :func:`strip_hesitations`; here only a word set off on both sides, or a phrase.
+    """
+    if not (VOCATIVES | {'me', 'my'}) & set(tokens):
+        return tokens
+    out: list[str] = []
+    dropped: list[str] = []
+    k = 0
+    n = len(tokens)
+    while k < n:
+        before = out[-1] if out else '.'
+        if before in PUNCT:
+            m = next((len(p) for p in _SELF_EXCLAIMS if tuple(tokens[k:k + len(p)]) == p), 0)
+            if not m and tokens[k] in VOCATIVES:
+                m = 1
+            elif not m and tokens[k] in _ADDRESS_ADJECTIVES and tokens[k + 1:k + 2] and \
+                    tokens[k + 1] in VOCATIVES:
+                m = 2
+            if m and (k + m >= n or tokens[k + m] in PUNCT) and (m > 1 or out):
+                dropped.append(' '.join(tokens[k:k + m]))
+                k += m
+                if out and out[-1] == ',' and k < n and tokens[k] in PUNCT:
+                    k += tokens[k] == ','   # one comma stays: "no , sorry , i meant"
+                continue
+        out.append(tokens[k])
+        k += 1
+    if dropped:
+        notes.append(f'left out "{", ".join(dropped)}" (a form of address)')
+    return out
+
+
 # Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
 VOCATIVES = frozenset({'dear', 'honey', 'sweetie', 'buddy', 'pal', 'mate', 'love', 'sir', 'madam', 'maam',
                        'robot', 'drone', 'bot', 'friend', 'darling', 'hun', 'bro', 'dude', 'sweetheart',

@@ -204,6 +204,7 @@ class OfflineTranslator:
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         tokens = _correct_spelling(tokens, notes, self.landmarks)
+        tokens = chatter.strip_addresses(tokens, notes)   # before lists and corrections ("no, sorry, dear")
         tokens = chatter.strip_headings(tokens, notes) if ':' in tokens else tokens
         tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
                                                  notes))

@@ -32,6 +32,27 @@ BLIND_ROUND_B4 = [
     # an address inside a list of alternatives is no alternative
     ('Either the sun lounger or the garden swing, dear, go to one of them. It\'s such a lovely day.',
      'F near[sun_lounger] | F near[garden_swing]'),
+    # a reason after an avoidance, said about people, animals or the thing ("the corner curls up"), and
+    # reasons said one after another: left out, never read as more things to avoid
+    ('Could you take the teapot to the dining table, and while you\'re carrying it please keep away from '
+     'the toy box, Sam leaves his little cars all around it.',
+     'F (near[teapot] & F (pick[teapot] & (!near[toy_box] U (near[dining_table] & F release[teapot, '
+     'dining_table]))))'),
+    ("On your way to the greenhouse, do stay away from the pond, the grandchildren's frogs live in there.",
+     '!near[pond] U near[greenhouse]'),
+    ('Go to the lamp to the right of the sofa, but keep away from the rug in front of the fireplace, the '
+     'corner curls up.',
+     'F near[lamp::isrightof(sofa)] & G !near[rug::isinfrontof(fireplace)]'),
+    ('Go to the coat stand and then to the shoe cupboard, but keep away form the glass-topped table the '
+     'whole time, the grandchildren already chipped it once.',
+     'F (near[coat_stand] & F near[shoe_cupboard]) & G !near[glass_topped_table]'),
+    ("Bring the cushion that's on the window seat over to the rocking chair, and while you're holding it "
+     "don't go near the cat, she thinks every cushion in this house belongs to her, and she has claws "
+     'like little fish hooks.',
+     'F (near[cushion::isabove(window_seat)] & F (pick[cushion::isabove(window_seat)] & (!near[cat] U '
+     '(near[rocking_chair] & F release[cushion::isabove(window_seat), rocking_chair]))))'),
+    ('Go to the shed, avoid the pond, Tom leaves his bike next to it.',
+     'F near[shed] & G !near[pond]'),
 ]
 
 

@@ -52,6 +52,7 @@ is are was were keeps keep has had seems seem looks look sits sit stands lies li
 belongs goes went broke fell spilled leaks leaked smells tends happens arrive arrives arrived came comes
 dropped jammed stopped started moved died spilt broken overflowed overflows ran runs get sticks jams
 bites barks sleeps wobbles squeaks creaks
+live lives curls hide hides play plays nest nests
 '''.split())
 
 # How a thing is ("the floor is wet"): after "is" a description of the scene, not a request.
@@ -565,6 +566,7 @@ teacher nurse doctor patient patients boy girl baby toddler student students sup
 gardener chef waiter owner tenant landlord friend friends people someone somebody everyone everybody nobody
 guard caretaker porter receptionist volunteers animals pigeon pigeons cat dog dogs birds lifeguard trainer
 carer guest customer technician electrician plumber vet housekeeper contractor contractors crew
+grandchildren grandchild grandkids grandkid grandson granddaughter grandsons granddaughters nephew niece
 '''.split())
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
@@ -894,6 +896,7 @@ _STORY_VERBS = frozenset('''
 says said bought took left told thinks thought rang called came went gets got is was has had keeps kept
 will would did does loves hates likes used moved broke fixed planted put set lost found rearranged
 always never usually often still just only
+leaves lives plays hides sleeps thinks makes loses forgets drops
 '''.split())
 _STORY_LEADS = frozenset({'oh', 'well', 'and', 'but', 'so', 'anyway', 'honestly', 'now', 'mind', 'although',
                           'though', 'because'})

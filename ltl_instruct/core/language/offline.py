@@ -524,16 +524,26 @@ class _Reader:
         return sentence
 
     def _drop_reason_after_comma(self, sentence: list[str]) -> list[str]:
-        """Leave out a last comma part that says why ("..., the neighbours complain", "..., she's jumpy").
+        """Leave out the last comma parts that say why ("..., the neighbours complain", "..., she's jumpy").
 
         Only a part with a subject other than the robot (I, we, she, somebody, my husband, the
         neighbours...), no request word after it ("I need", "we want") and no "you", after a part
-        that asks for something; "they are in the kitchen" (where a thing is) is kept.
+        that asks for something; "they are in the kitchen" (where a thing is) is kept. Reasons
+        said one after another ("..., she thinks it's hers, and she has claws") all go.
         """
+        out = self._drop_one_reason(sentence)
+        while out is not sentence and len(out) < len(sentence):
+            sentence = out
+            out = self._drop_one_reason(sentence)
+        return out
+
+    def _drop_one_reason(self, sentence: list[str]) -> list[str]:
         cut = max((k for k, t in enumerate(sentence) if t == ','), default=-1)
         if cut <= 0:
             return sentence
         tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
+        if tail[:1] == ['and'] and tail[1:2] and tail[1] in ('she', 'he', 'they', 'i', 'we'):
+            tail = tail[1:]   # "..., and she has claws like fish hooks": a second reason
         if tail == ['you', 'know', 'why'] or len(tail) > 3 and chatter.is_remark(tail):
             return self._noted_cut(sentence, cut)   # "..., I'll be there in a minute with the shirts"
         if len(tail) >= 3 and tail[0] in ('it', 'they', 'he', 'she') and tail[1] in (

@@ -53,6 +53,25 @@ BLIND_ROUND_B4 = [
      '(near[rocking_chair] & F release[cushion::isabove(window_seat), rocking_chair]))))'),
     ('Go to the shed, avoid the pond, Tom leaves his bike next to it.',
      'F near[shed] & G !near[pond]'),
+    # "altogether" is no part of a name: "skip X altogether" cancels X, "stay away from X altogether"
+    ('Go to the larder, then the back porch, then the garden shed - hmm, actually, skip the back porch '
+     'altogether.',
+     'F (near[larder] & F near[garden_shed])'),
+    ("Put the milk back in the fridge, please, and stay away from the cat flap altogether, she's been "
+     'bringing in mice.',
+     'F (near[milk] & F (pick[milk] & F (near[fridge] & F release[milk, fridge]))) & G !near[cat_flap]'),
+    # a reason, then "so" and the correction: "..., she's gone out, so forget about the cat"
+    ('Go to the kitchen and then the dining room, and avoid the cat on the way to the dining room - oh, '
+     "she's gone out, so forget about the cat.",
+     'F (near[kitchen] & F near[dining_room])'),
+    ("go to the kitchen, the door is shut, so forget the kitchen and go to the hall",
+     'F near[hall]'),
+    ('Please go to the pantry, and avoid the mop bucket - oh, actually, I moved the bucket outside this '
+     'morning, so avoid the step stool instead.',
+     'F near[pantry] & G !near[step_stool]'),
+    ('Go to the pantry and avoid the mop bucket. Actually, the bucket is outside, so avoid the step stool '
+     'instead.',
+     'F near[pantry] & G !near[step_stool]'),
 ]
 
 

@@ -509,7 +509,9 @@ _REPLACED_VERB_WORDS = frozenset({'avoid', 'stay', 'keep', 'away', 'from', 'clea
 
 def _marker_at(tokens: list[str], i: int) -> int:
     if i > 0 and tokens[i - 1] not in PUNCT and tokens[i - 1] not in ('hmm', 'oh', 'wait', 'actually', 'er',
-                                                                      'um', 'sorry', 'no'):
+                                                                      'um', 'sorry', 'no') and not (
+            # "..., she's gone out, so forget about the cat": the reason, then the correction
+            tokens[i - 1] == 'so' and i > 1 and tokens[i - 2] == ','):
         bare = next((m for m in _BARE_MARKERS if tuple(tokens[i:i + len(m)]) == m), None)
         if bare is None or tokens[i - 1] in DETERMINERS or tokens[i - 1] in _NOT_A_NAME_END or \
                 i + len(bare) >= len(tokens) or tokens[i + len(bare)] in PUNCT:
@@ -838,7 +840,8 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             i += 1
             continue
         prev = out[:i]
-        while prev and prev[-1] in (',', 'hmm', 'oh', 'eh', 'uh', 'um', 'er', 'erm', 'ah'):
+        while prev and prev[-1] in (',', 'hmm', 'oh', 'eh', 'uh', 'um', 'er', 'erm', 'ah') or \
+                prev[-2:] == [',', 'so']:
             prev = prev[:-1]
         j = i + m
         stop = j
@@ -856,11 +859,12 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             out = moved + after
             i = len(moved)
             continue
-        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 < len(seg) and \
-                seg[c + 1] in _VERBS and marker not in _CANCEL:
-            # "actually it has been washed already, put it in the dryer": the reason, then the step
+        so = 1 if seg[c + 1:c + 2] == ['so'] else 0
+        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 + so < len(seg) and \
+                seg[c + 1 + so] in _VERBS and marker not in _CANCEL:
+            # "actually it has been washed already, (so) put it in the dryer": the reason, then the step
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
-            out = out[:j] + seg[c + 1:] + after
+            out = out[:j] + seg[c + 1 + so:] + after
             continue
         if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction

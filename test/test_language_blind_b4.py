@@ -72,6 +72,22 @@ BLIND_ROUND_B4 = [
     ('Go to the pantry and avoid the mop bucket. Actually, the bucket is outside, so avoid the step stool '
      'instead.',
      'F near[pantry] & G !near[step_stool]'),
+    # a reason said after a correction, with the person as subject ("I always muddle them up")
+    ("I've got a toaster, a kettle and a microwave on the counter. Go to the second one... no, sorry, the "
+     'third, I always muddle them up.',
+     'F near[microwave]'),
+    # an aside between commas ("definitely") keeps the parts on either side apart
+    ('Go to the piano or the bureau - actually, make it the bureau, definitely, Lily has been fiddling '
+     'with the piano lid.',
+     'F near[bureau]'),
+    # a sentence ending in "instead" replaces the step before; "no, that's too small" drops it
+    ("Land on the garden bench - oh no, it's just been painted! Land on the bird table instead. No, "
+     "that's too small; the patio, then.",
+     'F near[patio]'),
+    ('Go to the garage. Go to the shed instead.',
+     'F near[shed]'),
+    ('Go to the garage and avoid the pond. Avoid the barn instead.',
+     'F near[garage] & G !near[barn]'),
 ]
 
 

@@ -728,7 +728,8 @@ TIMING: frozenset[tuple[str, ...]] = frozenset({('right', 'away'), ('at', 'once'
 # Discourse fillers between commas ("go to the hall, like, now").
 ASIDES: tuple[tuple[str, ...], ...] = (
     ('like',), ('you', 'know'), ('i', 'guess'), ('basically',), ('i', 'think'), ('honestly',), ('kinda',),
-    ('sort', 'of'), ('i', 'suppose'), ('mind',), ('mind', 'you'),
+    ('sort', 'of'), ('i', 'suppose'), ('mind',), ('mind', 'you'), ('definitely',), ('certainly',),
+    ('absolutely',), ('for', 'sure'), ('of', 'course'),
 )   # not "uh", "um": they mark self-corrections
 
 
@@ -770,18 +771,21 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
                 if tuple(tokens[i:i + m]) == phrase and ends and not (timing and phrase in TIMING):
                     hit = m
                     break
+        aside = False
         if not hit and i > 0 and tokens[i - 1] == ',':
             for phrase in ASIDES:
                 m = len(phrase)
                 if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] == ',':
-                    hit = m
+                    hit, aside = m, True
                     break
         if hit and (hit > 1 or tokens[i] not in ('please', 'okay', 'ok', 'now')):
             notes.append(f'left out "{" ".join(tokens[i:i + hit])}" (asks for nothing)')
             i += hit
             if out and out[-1] == ',' and i < n and tokens[i] == ',':
-                out.pop()   # "don't, under any circumstances, enter": no commas are left
-                i += 1
+                if not aside or i + 1 < n and tokens[i + 1] not in DETERMINERS and not is_name_word(
+                        tokens, i + 1, False):
+                    out.pop()   # "don't, under any circumstances, enter": no commas are left
+                i += 1   # (but "the bureau, definitely, Lily has been ...": one stays between two parts)
             continue
         out.append(tokens[i])
         i += 1

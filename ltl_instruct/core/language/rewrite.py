@@ -835,6 +835,16 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 out = fine + out[stop:]
                 i = len(fine)
                 continue
+        if 1 < i and out[i - 1] in '.;!?' and out[i - 2] not in PUNCT and out[i] in _VERBS:
+            # "Land on the bench. Land on the bird table instead.": the sentence replaces the step before
+            # (not where a correction before it has already dropped that step: "no wait, that's closed.")
+            stop = next((k for k in range(i, len(out)) if out[k] in '.;!?'), len(out))
+            if out[stop - 1] == 'instead' and stop - i > 2 and ',' not in out[i:stop]:
+                result = _correct(out[:i], 'actually', [','] + out[i:stop], notes)
+                if result is not None:
+                    out = result + out[stop:]
+                    i = len(result)
+                    continue
         m = _marker_at(out, i)
         if not m or i == 0 and out[i] not in ('actually',):
             i += 1
@@ -1498,8 +1508,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{" ".join(tail)}" read as part of the correction')
             seg = seg[:k]
             break
-        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or chatter.is_statement(
-                tail, _np_end(tail)) and not [
+        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or (chatter.is_statement(
+                tail, _np_end(tail)) or chatter.is_story(tail, _VERBS) and not (chatter.PLACE_RULE_WORDS | {
+                    'before', 'after', 'first', 'last'}) & set(tail)) and not [
                 t for t in seg[end:] if t not in PUNCT]:
             # "I meant the cooler, sorry, it's been a long day": the apology and the reason ask for nothing
             dropped = ' '.join(t for t in seg[k + 1:] if t not in PUNCT)
@@ -1508,7 +1519,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             break
     words = [t for t in seg if t not in PUNCT]
     if said_no and len(words) in (3, 4) and words[0] in ('that', 'it') and \
-            words[1] in ('is', 'was', 'will') and words[-1] in chatter.STATES:
+            words[1] in ('is', 'was', 'will') and (
+                words[-1] in chatter.STATES or len(words) == 4 and words[2] in ('too', 'far', 'much')):
+        # ("no, that's too small": a judgement that drops it)
         # "go to the staff room. hmm, no, that's locked. go to the lounge instead": that goal is dropped
         spans = _np_spans(prev)
         if spans:

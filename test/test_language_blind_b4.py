@@ -88,6 +88,20 @@ BLIND_ROUND_B4 = [
      'F near[shed]'),
     ('Go to the garage and avoid the pond. Avoid the barn instead.',
      'F near[garage] & G !near[barn]'),
+    # a greeting ("good morning") is no place; an emphatic "do" before "be" ("do be gentle")
+    ('Good morning, dear. Would you be so kind as to go over to the upright piano? My late husband used to '
+     'play it every Sunday after church, so do be gentle around it.',
+     'F near[upright_piano]'),
+    ('Good evening. Go to the piano.',
+     'F near[piano]'),
+    # a state checked where the robot goes ("to see that it's locked", "to make sure it is"): no goal
+    ("Would you go by the front door to see that it's locked, and then the back door as well? I always "
+     'worry about that at night.',
+     'F (near[front_door] & F near[back_door])'),
+    ('go to the window to see if it is raining',
+     'F near[window]'),
+    ('go to the front door to make sure it is locked, then the shed',
+     'F (near[front_door] & F near[shed])'),
 ]
 
 

@@ -762,8 +762,10 @@ class _Reader:
                     w.isalpha() and any(v in w for v in 'aeiouy') for w in sentence[i:np.end]
                     if w not in PUNCT)) or any(
                     w in chatter.FINITE_VERBS or w in _REFLEXIVE for w in sentence[i:np.end]) or (
-                    np.end - i == 1 and sentence[i] in chatter.INTERJECTIONS):
-                return False   # no words it knows ("qwzx vvv"), or a statement ("my keys fell behind...")
+                    all(w in chatter.INTERJECTIONS for w in sentence[i:np.end])):
+                # no words it knows ("qwzx vvv"), a statement ("my keys fell behind..."), a greeting
+                # ("good morning")
+                return False
             seen += 1
             i = np.end
         return seen > 0 and 'one' not in sentence[:1]

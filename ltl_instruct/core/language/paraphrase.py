@@ -152,6 +152,12 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "make sure the door is shut": a state to check there (not "make sure you never...")
     (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=(?:the|my|your|our) (?:\w+ ){1,3}(?:is|are) '
      r'(?!never|not|visited|reached|avoided|always)\w)', ' check '),
+    (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=(?:it|they|both of them|all of them|each of them) '
+     r'(?:is|are) (?!never|not|visited|reached|avoided|always)\w)', ' check '),
+    # "go by the front door to check it's locked", "visit the tank twice to check": what is done there
+    (r'(?<=[a-z]) to check (?=(?:(?:it|they|both of them|all of them|each of them) |'
+     r'(?:the|my|your|our|its|her|his) (?:\w+ ){1,2})(?:is|are) )', ' and check '),
+    (r'(?<=[a-z]) to check(?= [,.;!?]|$)', ' and check'),
     # "check the cat is in the laundry room": the place where it is
     (r' check (?:the |my |our |your )(?:\w+ ){1,3}(?:is|are) (?:still )?(?:in|at|inside|on|by|near|next to) '
      r'(?=(?:the|a|an|my|your|our) )', ' check '),

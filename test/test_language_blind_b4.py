@@ -102,6 +102,26 @@ BLIND_ROUND_B4 = [
      'F near[window]'),
     ('go to the front door to make sure it is locked, then the shed',
      'F (near[front_door] & F near[shed])'),
+    # "bring in the post", "bring up the basket": the particle before the thing
+    ("Bring in the post and put it on the hall table, and please don't go out to the letterbox more than "
+     "once, the neighbours will think I'm expecting a parcel.",
+     'F (near[post] & F (pick[post] & F (near[hall_table] & F release[post, hall_table]))) & '
+     '(!near[letterbox] W (near[letterbox] & (near[letterbox] W G !near[letterbox])))'),
+    ('bring up the laundry basket to the bedroom',
+     'F (near[laundry_basket] & F (pick[laundry_basket] & F (near[bedroom] & F release[laundry_basket, '
+     'bedroom])))'),
+    # a sentence after the request about the person ("I'm halfway through it") or about what is in the
+    # thing named before ("Lily's flowers are in it"): a story, no goal
+    ("Could you bring me the book that's on the bedside table and to the left of the lamp, and put it on "
+     "my armchair? I'm halfway through it.",
+     'F (near[book::isabove(bedside_table)::isleftof(lamp)] & F (pick[book::isabove(bedside_table)::'
+     'isleftof(lamp)] & F (near[armchair] & F release[book::isabove(bedside_table)::isleftof(lamp), '
+     'armchair])))'),
+    ("Would you go to the television, and please don't go near the vase on the little table next to the "
+     "sofa. Lily's flowers are in it.",
+     'F near[television] & G !near[vase::isabove(little_table::isnextto(sofa))]'),
+    ("Go to the shed. Tom's tools are in there.",
+     'F near[shed]'),
 ]
 
 

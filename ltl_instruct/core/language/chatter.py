@@ -944,15 +944,23 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
             words[2] in ('one', 'ones', 'where', 'here')):
         return False   # "it's the one by the sink", "they are in the kitchen": which thing, or where
     if first in ('i', 'we'):
+        if second in ('am', 'are') and words[2] not in _HERE_OR_ASKING and words[2] not in PREPOSITIONS:
+            return True   # "I'm halfway through it", "we are expecting guests"
         return second not in REQUEST_WORDS and second not in ('need', 'want', 'wanted', 'needed', 'expect')
     if first in ('he', 'she', 'they', 'it', 'that', 'there') or first in FAMILY_NAMES:
         return second not in ('is', 'was') or words[2] not in PERMISSIVE
     if first in ('my', 'our', 'his', 'her', 'their') or first in ('the', 'a') and second in PERSON_NOUNS:
         return not {'needs', 'need', 'wants', 'want'} & set(words[1:5])
-    if first == 'the':
-        # "the light down there has been flickering": a finite verb within the first words
+    if first == 'the' or len(first) > 3 and first.endswith('s') and first not in commands and \
+            first not in STOPWORDS_STORY and first not in PRONOUN_OBJECTS and second not in FINITE_VERBS and \
+            is_name_word(words, 0, False) and is_name_word(words, 1, True):
+        # "the light down there has been flickering", "Lily's flowers are in it" (a possessive name):
+        # a finite verb within the first words
         f = next((k for k in range(2, min(6, len(words))) if words[k] in FINITE_VERBS or
                   words[k] in ('has', 'had', 'will')), -1)
+        if f > 0 and f + 3 == len(words) and words[f] in ('is', 'are') and words[f + 1] in (
+                'in', 'on', 'inside', 'under') and words[f + 2] in ('it', 'them', 'there'):
+            return True   # "Lily's flowers are in it": what is in the thing named before
         if f < 0 or {'needs', 'need', 'wants', 'want', 'one', 'that', 'which', 'who', 'and', 'or'} & set(
                 words[1:f + 1]):
             return False   # "the table that is next to ...", "the mug and the jar are ..."
@@ -964,6 +972,12 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
         second in _STORY_VERBS and is_name_word(words, 0, False)
 
 
+# After "I am": words that say where the person is or what they ask ("I'm asking you to ...").
+_HERE_OR_ASKING = frozenset({'going', 'asking', 'telling', 'sending', 'to', 'here', 'there', 'sitting',
+                             'waiting', 'standing', 'lying', 'back', 'off', 'out', 'coming', 'not',
+                             'expecting'})
+PRONOUN_OBJECTS = frozenset({'this', 'that', 'these', 'those', 'its', 'his', 'hers', 'ours', 'yours',
+                             'theirs'})
 STOPWORDS_STORY = frozenset({'please', 'if', 'when', 'once', 'after', 'before', 'only', 'never', 'do', 'not',
                              'no', 'then', 'first', 'just', 'also', 'either', 'both', 'each', 'every', 'all',
                              'here', 'this', 'these', 'those'})

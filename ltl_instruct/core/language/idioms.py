@@ -889,6 +889,9 @@ RULES: tuple[Rule, ...] = (
          ''),
     Rule('would you be a dear and go',
          r'\b(?:(?:would|could|will) you )?be a (?:dear|star|love|darling) and\b', ''),
+    Rule('bring in the post and put it on the table: the particle before the thing',
+         r'\b(bring|fetch|carry|get) (?:in|inside|up|down|over|along) (?=(?:the|my|your|our|his|her) )',
+         r'\1 '),
     Rule('do keep away from the radiator: an emphatic "do"',
          r'(?<!you )\bdo (?:please )?(?=(?:keep|stay|avoid|go|bring|take|visit|come|check|head|remember|'
          r'steer|fly|be)\b)', ''),

@@ -122,6 +122,13 @@ BLIND_ROUND_B4 = [
      'F near[television] & G !near[vase::isabove(little_table::isnextto(sofa))]'),
     ("Go to the shed. Tom's tools are in there.",
      'F near[shed]'),
+    # "..., I'd like to do some mending": after a comma and without "you", the person's own plan
+    ("Please move the sewing box from under the bed up onto the dressing table, I'd like to do some "
+     'mending.',
+     'F (near[sewing_box::isbelow(bed)] & F (pick[sewing_box::isbelow(bed)] & F (near[dressing_table] & F '
+     'release[sewing_box::isbelow(bed), dressing_table])))'),
+    ('take the mug to the sink, I want to get some sleep',
+     'F (near[mug] & F (pick[mug] & F (near[sink] & F release[mug, sink])))'),
 ]
 
 

@@ -252,7 +252,9 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
      r'(?:as )?to ', r'\1 '),
     (r'(^ | [,.;!?] )whatever (?:you do|happens)(?: ,)? (?=(?:do not|never|avoid|stay|keep|steer|no) )',
      r'\1 '),
-    (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
+    (r'(^ | [.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
+    # (after a comma only with "you": "..., I'd like to do some mending" is the person's own plan)
+    (r'( , )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?you to ', r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you '
      r'(?:could|would|can|will) ',
      r'\1 '),

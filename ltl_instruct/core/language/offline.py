@@ -268,6 +268,8 @@ def _rule_in(words: Sequence[str]) -> bool:
         w == 'not' and words[k + 1:k + 2] and words[k + 1] in states) for k, w in enumerate(words))
 
 
+# Words that point at a thing or a step ("I'd like to do the kitchen next"): a plan with one may be the task.
+_NAMING_WORDS = frozenset({'the', 'my', 'your', 'our', 'this', 'that', 'next', 'there', 'it', 'them'})
 # "I don't want you tumbling down them": a mishap feared, no rule of where to go.
 _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
                       'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'toppling'})
@@ -544,6 +546,12 @@ class _Reader:
         tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
         if tail[:1] == ['and'] and tail[1:2] and tail[1] in ('she', 'he', 'they', 'i', 'we'):
             tail = tail[1:]   # "..., and she has claws like fish hooks": a second reason
+        if tail[:2] in (['i', 'would'], ['we', 'would'], ['i', 'want'], ['we', 'want']) and \
+                tail[2:4] in (['like', 'to'], ['love', 'to'], ['to', 'do'], ['to', 'get'], ['to', 'have']) \
+                and 'you' not in tail and not chatter.carries_constraint(tail) and not _rule_in(tail) and \
+                not any(t in SKILL_VERBS - {'do', 'get', 'have'} or t in _NAMING_WORDS for t in tail[2:]):
+            # (not "I'd like to do the kitchen next": that may be the task)
+            return self._noted_cut(sentence, cut)   # "..., I'd like to do some mending": the person's plan
         if tail == ['you', 'know', 'why'] or len(tail) > 3 and chatter.is_remark(tail):
             return self._noted_cut(sentence, cut)   # "..., I'll be there in a minute with the shirts"
         if len(tail) >= 3 and tail[0] in ('it', 'they', 'he', 'she') and tail[1] in (

@@ -129,6 +129,16 @@ BLIND_ROUND_B4 = [
      'release[sewing_box::isbelow(bed), dressing_table])))'),
     ('take the mug to the sink, I want to get some sleep',
      'F (near[mug] & F (pick[mug] & F (near[sink] & F release[mug, sink])))'),
+    # "..., that's where I keep ...", "that's where she sleeps": why the place matters, no request
+    ('Please go to the armchair by the fireplace first, and then the bookcase behind the sofa, that\'s where '
+     'I keep all the old photo albums.',
+     'F (near[armchair::isnextto(fireplace)] & F near[bookcase::isbehind(sofa)])'),
+    # a time word before the purpose ("twice today to check"); grandchildren as the people of a story
+    ("The cat's off her food, so pop over to her food bowl at least twice today to check, and stay away "
+     "from the sofa cushions, that's where she sleeps.",
+     'F (near[food_bowl] & F (!near[food_bowl] & F near[food_bowl])) & G !near[sofa_cushions]'),
+    ('Could you put the tv remote on the side table? The grandkids hide it evrey time they visit.',
+     'F (near[tv_remote] & F (pick[tv_remote] & F (near[side_table] & F release[tv_remote, side_table])))'),
 ]
 
 

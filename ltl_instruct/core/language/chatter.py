@@ -769,7 +769,8 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
             for phrase in _COURTESY_BY_FIRST.get(tokens[i], ()):
                 m = len(phrase)
                 ends = i + m >= n or tokens[i + m] in _CLAUSE_END or (   # (or "..., please")
-                    tokens[i + m] == 'please' and (i + m + 1 >= n or tokens[i + m + 1] in _CLAUSE_END))
+                    tokens[i + m] == 'please' and (i + m + 1 >= n or tokens[i + m + 1] in _CLAUSE_END)) or \
+                    tokens[i + m:i + m + 2] in (['to', 'check'], ['to', 'see'], ['to', 'make'])   # what for
                 if tuple(tokens[i:i + m]) == phrase and ends and not (timing and phrase in TIMING):
                     hit = m
                     break

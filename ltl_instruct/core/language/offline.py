@@ -552,6 +552,10 @@ class _Reader:
                 not any(t in SKILL_VERBS - {'do', 'get', 'have'} or t in _NAMING_WORDS for t in tail[2:]):
             # (not "I'd like to do the kitchen next": that may be the task)
             return self._noted_cut(sentence, cut)   # "..., I'd like to do some mending": the person's plan
+        if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when']) and \
+                tail[3:4] and tail[3] in ('i', 'we', 'she', 'he', 'they') and not _rule_in(tail) and \
+                not chatter.carries_constraint(tail):
+            return self._noted_cut(sentence, cut)   # "..., that's where I keep the old photo albums"
         if tail == ['you', 'know', 'why'] or len(tail) > 3 and chatter.is_remark(tail):
             return self._noted_cut(sentence, cut)   # "..., I'll be there in a minute with the shirts"
         if len(tail) >= 3 and tail[0] in ('it', 'they', 'he', 'she') and tail[1] in (

@@ -139,6 +139,10 @@ BLIND_ROUND_B4 = [
      'F (near[food_bowl] & F (!near[food_bowl] & F near[food_bowl])) & G !near[sofa_cushions]'),
     ('Could you put the tv remote on the side table? The grandkids hide it evrey time they visit.',
      'F (near[tv_remote] & F (pick[tv_remote] & F (near[side_table] & F release[tv_remote, side_table])))'),
+    # a purpose before a colon ("Just to check the cat has everything: ...") heads the list, names no place
+    ('Just to check the cat has everything: go to the cat flap, then her water bowl, and then her basket '
+     'next to the boiler, in that order please.',
+     'F (near[cat_flap] & F (near[water_bowl] & F near[basket::isnextto(boiler)]))'),
 ]
 
 

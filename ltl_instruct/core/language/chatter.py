@@ -481,7 +481,11 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
             head = tokens[i:c] if c > i and tokens[c] == ':' else []
             counted = [w for k, w in enumerate(head) if not (   # "three things to do:": no count of visits
                 w in NUMBER_WORDS and head[k + 1:k + 2] and head[k + 1] in TASK_NOUNS)]
-            if head and c + 1 < n and any(w in TASK_NOUNS for w in head) and not carries_constraint(counted) \
+            # "Just to check the cat has everything: ...": what the list is for
+            aim = head[1:] if head[:1] == ['just'] else head
+            purpose = aim[:2] in (['to', 'check'], ['to', 'make'], ['to', 'see'])
+            if head and c + 1 < n and (any(w in TASK_NOUNS for w in head) or purpose) and \
+                    not carries_constraint(counted) \
                     and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
                         w in DETERMINERS and k > 0 and head[k - 1] in (',', 'and', 'or')
                         for k, w in enumerate(head)):

@@ -8,7 +8,8 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import check_translation
+from ltl_instruct.core.errors import TranslationError
+from translation_cases import T, check_translation
 
 BLIND_ROUND_B4 = [
     # forms of address and exclamations between a correction marker and what it corrects
@@ -149,3 +150,18 @@ BLIND_ROUND_B4 = [
 @pytest.mark.parametrize('instruction,gold', BLIND_ROUND_B4)
 def test_readings_found_on_blind_set_b4(instruction: str, gold: str) -> None:
     check_translation(instruction, gold)
+
+
+# A purpose inside a clause that orders ("not until you've been to X to make sure ...") is left as said:
+# the clause reader refuses it rather than reading a goal after the one it orders.
+REFUSED_B4 = [
+    "You may go and sit by the fire, but not until you've been to the back door and the cat flap to make "
+    'sure both of them are shut.',
+    "Fly to the washing line, but only after you've been round to the front hedge to check it is trimmed.",
+]
+
+
+@pytest.mark.parametrize('instruction', REFUSED_B4)
+def test_purpose_inside_an_ordering_clause_is_refused(instruction: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(instruction)

@@ -52,6 +52,7 @@ is are was were keeps keep has had seems seem looks look sits sit stands lies li
 belongs goes went broke fell spilled leaks leaked smells tends happens arrive arrives arrived came comes
 dropped jammed stopped started moved died spilt broken overflowed overflows ran runs get sticks jams
 bites barks sleeps wobbles squeaks creaks
+live lives curls hide hides play plays nest nests
 '''.split())
 
 # How a thing is ("the floor is wet"): after "is" a description of the scene, not a request.
@@ -251,7 +252,9 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
      r'(?:as )?to ', r'\1 '),
     (r'(^ | [,.;!?] )whatever (?:you do|happens)(?: ,)? (?=(?:do not|never|avoid|stay|keep|steer|no) )',
      r'\1 '),
-    (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
+    (r'(^ | [.;!?] )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?(?:you )?to ', r'\1 '),
+    # (after a comma only with "you": "..., I'd like to do some mending" is the person's own plan)
+    (r'( , )(?:i|we) (?:would|will|d) (?:love|like|prefer|want) (?:for )?you to ', r'\1 '),
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you '
      r'(?:could|would|can|will) ',
      r'\1 '),
@@ -408,6 +411,50 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
+# Words before a form of address that make it one phrase ("little drone", "my dear", "good robot").
+_ADDRESS_ADJECTIVES = frozenset({'little', 'my', 'good', 'clever', 'dear', 'old', 'silly', 'sweet', 'young'})
+# Exclamations about oneself, set off by commas ("oh, no, silly me, I meant ..."): they ask for nothing.
+_SELF_EXCLAIMS: tuple[tuple[str, ...], ...] = (
+    ('dear', 'oh', 'dear'), ('oh', 'my', 'goodness'), ('silly', 'me'), ('dear', 'me'), ('oh', 'dear'),
+    ('bless', 'me'), ('goodness', 'me'), ('my', 'goodness'), ('oh', 'my'), ('stupid', 'me'))   # longest first
+
+
+def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
+    """Drop forms of address and exclamations set off by punctuation, before corrections are read.
+
+    "no, sorry, dear, I meant the toilet", "oh, no, silly me, I meant the nook", "Now, little
+    drone, would you ...": the words between the commas address someone or exclaim and name
+    nothing, so the correction marker reaches what it corrects. A single address word is also
+    left to :func:`strip_hesitations`; here only a word set off on both sides, or a phrase.
+    """
+    if not (VOCATIVES | {'me', 'my'}) & set(tokens):
+        return tokens
+    out: list[str] = []
+    dropped: list[str] = []
+    k = 0
+    n = len(tokens)
+    while k < n:
+        before = out[-1] if out else '.'
+        if before in PUNCT:
+            m = next((len(p) for p in _SELF_EXCLAIMS if tuple(tokens[k:k + len(p)]) == p), 0)
+            if not m and tokens[k] in VOCATIVES:
+                m = 1
+            elif not m and tokens[k] in _ADDRESS_ADJECTIVES and tokens[k + 1:k + 2] and \
+                    tokens[k + 1] in VOCATIVES:
+                m = 2
+            if m and (k + m >= n or tokens[k + m] in PUNCT) and (m > 1 or out):
+                dropped.append(' '.join(tokens[k:k + m]))
+                k += m
+                if out and out[-1] == ',' and k < n and tokens[k] in PUNCT:
+                    k += tokens[k] == ','   # one comma stays: "no , sorry , i meant"
+                continue
+        out.append(tokens[k])
+        k += 1
+    if dropped:
+        notes.append(f'left out "{", ".join(dropped)}" (a form of address)')
+    return out
+
+
 # Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
 VOCATIVES = frozenset({'dear', 'honey', 'sweetie', 'buddy', 'pal', 'mate', 'love', 'sir', 'madam', 'maam',
                        'robot', 'drone', 'bot', 'friend', 'darling', 'hun', 'bro', 'dude', 'sweetheart',
@@ -434,7 +481,11 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
             head = tokens[i:c] if c > i and tokens[c] == ':' else []
             counted = [w for k, w in enumerate(head) if not (   # "three things to do:": no count of visits
                 w in NUMBER_WORDS and head[k + 1:k + 2] and head[k + 1] in TASK_NOUNS)]
-            if head and c + 1 < n and any(w in TASK_NOUNS for w in head) and not carries_constraint(counted) \
+            # "Just to check the cat has everything: ...": what the list is for
+            aim = head[1:] if head[:1] == ['just'] else head
+            purpose = aim[:2] in (['to', 'check'], ['to', 'make'], ['to', 'see'])
+            if head and c + 1 < n and (any(w in TASK_NOUNS for w in head) or purpose) and \
+                    not carries_constraint(counted) \
                     and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
                         w in DETERMINERS and k > 0 and head[k - 1] in (',', 'and', 'or')
                         for k, w in enumerate(head)):
@@ -521,6 +572,7 @@ teacher nurse doctor patient patients boy girl baby toddler student students sup
 gardener chef waiter owner tenant landlord friend friends people someone somebody everyone everybody nobody
 guard caretaker porter receptionist volunteers animals pigeon pigeons cat dog dogs birds lifeguard trainer
 carer guest customer technician electrician plumber vet housekeeper contractor contractors crew
+grandchildren grandchild grandkids grandkid grandson granddaughter grandsons granddaughters nephew niece
 '''.split())
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
@@ -682,7 +734,8 @@ TIMING: frozenset[tuple[str, ...]] = frozenset({('right', 'away'), ('at', 'once'
 # Discourse fillers between commas ("go to the hall, like, now").
 ASIDES: tuple[tuple[str, ...], ...] = (
     ('like',), ('you', 'know'), ('i', 'guess'), ('basically',), ('i', 'think'), ('honestly',), ('kinda',),
-    ('sort', 'of'), ('i', 'suppose'), ('mind',), ('mind', 'you'),
+    ('sort', 'of'), ('i', 'suppose'), ('mind',), ('mind', 'you'), ('definitely',), ('certainly',),
+    ('absolutely',), ('for', 'sure'), ('of', 'course'),
 )   # not "uh", "um": they mark self-corrections
 
 
@@ -720,22 +773,26 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
             for phrase in _COURTESY_BY_FIRST.get(tokens[i], ()):
                 m = len(phrase)
                 ends = i + m >= n or tokens[i + m] in _CLAUSE_END or (   # (or "..., please")
-                    tokens[i + m] == 'please' and (i + m + 1 >= n or tokens[i + m + 1] in _CLAUSE_END))
+                    tokens[i + m] == 'please' and (i + m + 1 >= n or tokens[i + m + 1] in _CLAUSE_END)) or \
+                    tokens[i + m:i + m + 2] in (['to', 'check'], ['to', 'see'], ['to', 'make'])   # what for
                 if tuple(tokens[i:i + m]) == phrase and ends and not (timing and phrase in TIMING):
                     hit = m
                     break
+        aside = False
         if not hit and i > 0 and tokens[i - 1] == ',':
             for phrase in ASIDES:
                 m = len(phrase)
                 if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] == ',':
-                    hit = m
+                    hit, aside = m, True
                     break
         if hit and (hit > 1 or tokens[i] not in ('please', 'okay', 'ok', 'now')):
             notes.append(f'left out "{" ".join(tokens[i:i + hit])}" (asks for nothing)')
             i += hit
             if out and out[-1] == ',' and i < n and tokens[i] == ',':
-                out.pop()   # "don't, under any circumstances, enter": no commas are left
-                i += 1
+                if not aside or i + 1 < n and tokens[i + 1] not in DETERMINERS and not is_name_word(
+                        tokens, i + 1, False):
+                    out.pop()   # "don't, under any circumstances, enter": no commas are left
+                i += 1   # (but "the bureau, definitely, Lily has been ...": one stays between two parts)
             continue
         out.append(tokens[i])
         i += 1
@@ -850,6 +907,7 @@ _STORY_VERBS = frozenset('''
 says said bought took left told thinks thought rang called came went gets got is was has had keeps kept
 will would did does loves hates likes used moved broke fixed planted put set lost found rearranged
 always never usually often still just only
+leaves lives plays hides sleeps thinks makes loses forgets drops
 '''.split())
 _STORY_LEADS = frozenset({'oh', 'well', 'and', 'but', 'so', 'anyway', 'honestly', 'now', 'mind', 'although',
                           'though', 'because'})
@@ -893,15 +951,23 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
             words[2] in ('one', 'ones', 'where', 'here')):
         return False   # "it's the one by the sink", "they are in the kitchen": which thing, or where
     if first in ('i', 'we'):
+        if second in ('am', 'are') and words[2] not in _HERE_OR_ASKING and words[2] not in PREPOSITIONS:
+            return True   # "I'm halfway through it", "we are expecting guests"
         return second not in REQUEST_WORDS and second not in ('need', 'want', 'wanted', 'needed', 'expect')
     if first in ('he', 'she', 'they', 'it', 'that', 'there') or first in FAMILY_NAMES:
         return second not in ('is', 'was') or words[2] not in PERMISSIVE
     if first in ('my', 'our', 'his', 'her', 'their') or first in ('the', 'a') and second in PERSON_NOUNS:
         return not {'needs', 'need', 'wants', 'want'} & set(words[1:5])
-    if first == 'the':
-        # "the light down there has been flickering": a finite verb within the first words
+    if first == 'the' or len(first) > 3 and first.endswith('s') and first not in commands and \
+            first not in STOPWORDS_STORY and first not in PRONOUN_OBJECTS and second not in FINITE_VERBS and \
+            is_name_word(words, 0, False) and is_name_word(words, 1, True):
+        # "the light down there has been flickering", "Lily's flowers are in it" (a possessive name):
+        # a finite verb within the first words
         f = next((k for k in range(2, min(6, len(words))) if words[k] in FINITE_VERBS or
                   words[k] in ('has', 'had', 'will')), -1)
+        if f > 0 and f + 3 == len(words) and words[f] in ('is', 'are') and words[f + 1] in (
+                'in', 'on', 'inside', 'under') and words[f + 2] in ('it', 'them', 'there'):
+            return True   # "Lily's flowers are in it": what is in the thing named before
         if f < 0 or {'needs', 'need', 'wants', 'want', 'one', 'that', 'which', 'who', 'and', 'or'} & set(
                 words[1:f + 1]):
             return False   # "the table that is next to ...", "the mug and the jar are ..."
@@ -913,6 +979,12 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
         second in _STORY_VERBS and is_name_word(words, 0, False)
 
 
+# After "I am": words that say where the person is or what they ask ("I'm asking you to ...").
+_HERE_OR_ASKING = frozenset({'going', 'asking', 'telling', 'sending', 'to', 'here', 'there', 'sitting',
+                             'waiting', 'standing', 'lying', 'back', 'off', 'out', 'coming', 'not',
+                             'expecting'})
+PRONOUN_OBJECTS = frozenset({'this', 'that', 'these', 'those', 'its', 'his', 'hers', 'ours', 'yours',
+                             'theirs'})
 STOPWORDS_STORY = frozenset({'please', 'if', 'when', 'once', 'after', 'before', 'only', 'never', 'do', 'not',
                              'no', 'then', 'first', 'just', 'also', 'either', 'both', 'each', 'every', 'all',
                              'here', 'this', 'these', 'those'})

@@ -916,9 +916,12 @@ RULES: tuple[Rule, ...] = (
          ''),
     Rule('would you be a dear and go',
          r'\b(?:(?:would|could|will) you )?be a (?:dear|star|love|darling) and\b', ''),
+    Rule('bring in the post and put it on the table: the particle before the thing',
+         r'\b(bring|fetch|carry|get) (?:in|inside|up|down|over|along) (?=(?:the|my|your|our|his|her) )',
+         r'\1 '),
     Rule('do keep away from the radiator: an emphatic "do"',
          r'(?<!you )\bdo (?:please )?(?=(?:keep|stay|avoid|go|bring|take|visit|come|check|head|remember|'
-         r'steer|fly)\b)', ''),
+         r'steer|fly|be)\b)', ''),
     Rule('making your way to the desk',
          r'\bmak(?:e|ing) (?:your|its) way (?:over |back |down |up |across )?(?=to\b)', 'go '),
     Rule('go to the henhouse or the shed does not matter which',

@@ -204,6 +204,7 @@ class OfflineTranslator:
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         tokens = _correct_spelling(tokens, notes, self.landmarks)
+        tokens = chatter.strip_addresses(tokens, notes)   # before lists and corrections ("no, sorry, dear")
         tokens = chatter.strip_headings(tokens, notes) if ':' in tokens else tokens
         tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
                                                  notes))
@@ -297,6 +298,8 @@ def _rule_in(words: Sequence[str]) -> bool:
 _REASON_ENDS = frozenset({'go', 'avoid', 'stay', 'keep', 'never', 'do', 'then', 'visit', 'head', 'bring',
                           'take', 'put', 'only', 'after', 'once', 'come', 'fly', 'land', 'get', 'grab',
                           'drop'})
+# Words that point at a thing or a step ("I'd like to do the kitchen next"): a plan with one may be the task.
+_NAMING_WORDS = frozenset({'the', 'my', 'your', 'our', 'this', 'that', 'next', 'there', 'it', 'them'})
 # "I don't want you tumbling down them": a mishap feared, no rule of where to go.
 _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
                       'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'toppling'})
@@ -555,16 +558,36 @@ class _Reader:
         return sentence
 
     def _drop_reason_after_comma(self, sentence: list[str]) -> list[str]:
-        """Leave out a last comma part that says why ("..., the neighbours complain", "..., she's jumpy").
+        """Leave out the last comma parts that say why ("..., the neighbours complain", "..., she's jumpy").
 
         Only a part with a subject other than the robot (I, we, she, somebody, my husband, the
         neighbours...), no request word after it ("I need", "we want") and no "you", after a part
-        that asks for something; "they are in the kitchen" (where a thing is) is kept.
+        that asks for something; "they are in the kitchen" (where a thing is) is kept. Reasons
+        said one after another ("..., she thinks it's hers, and she has claws") all go.
         """
+        out = self._drop_one_reason(sentence)
+        while out is not sentence and len(out) < len(sentence):
+            sentence = out
+            out = self._drop_one_reason(sentence)
+        return out
+
+    def _drop_one_reason(self, sentence: list[str]) -> list[str]:
         cut = max((k for k, t in enumerate(sentence) if t == ','), default=-1)
         if cut <= 0:
             return sentence
         tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
+        if tail[:1] == ['and'] and tail[1:2] and tail[1] in ('she', 'he', 'they', 'i', 'we'):
+            tail = tail[1:]   # "..., and she has claws like fish hooks": a second reason
+        if tail[:2] in (['i', 'would'], ['we', 'would'], ['i', 'want'], ['we', 'want']) and \
+                tail[2:4] in (['like', 'to'], ['love', 'to'], ['to', 'do'], ['to', 'get'], ['to', 'have']) \
+                and 'you' not in tail and not chatter.carries_constraint(tail) and not _rule_in(tail) and \
+                not any(t in SKILL_VERBS - {'do', 'get', 'have'} or t in _NAMING_WORDS for t in tail[2:]):
+            # (not "I'd like to do the kitchen next": that may be the task)
+            return self._noted_cut(sentence, cut)   # "..., I'd like to do some mending": the person's plan
+        if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when']) and \
+                tail[3:4] and tail[3] in ('i', 'we', 'she', 'he', 'they') and not _rule_in(tail) and \
+                not chatter.carries_constraint(tail):
+            return self._noted_cut(sentence, cut)   # "..., that's where I keep the old photo albums"
         if tail == ['you', 'know', 'why'] or len(tail) > 3 and chatter.is_remark(tail):
             return self._noted_cut(sentence, cut)   # "..., I'll be there in a minute with the shirts"
         if len(tail) >= 3 and tail[0] in ('it', 'they', 'he', 'she') and tail[1] in (
@@ -835,8 +858,10 @@ class _Reader:
                     w.isalpha() and any(v in w for v in 'aeiouy') for w in sentence[i:np.end]
                     if w not in PUNCT)) or any(
                     w in chatter.FINITE_VERBS or w in _REFLEXIVE for w in sentence[i:np.end]) or (
-                    np.end - i == 1 and sentence[i] in chatter.INTERJECTIONS):
-                return False   # no words it knows ("qwzx vvv"), or a statement ("my keys fell behind...")
+                    all(w in chatter.INTERJECTIONS for w in sentence[i:np.end])):
+                # no words it knows ("qwzx vvv"), a statement ("my keys fell behind..."), a greeting
+                # ("good morning")
+                return False
             seen += 1
             i = np.end
         return seen > 0 and 'one' not in sentence[:1]

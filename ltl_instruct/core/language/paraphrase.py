@@ -152,6 +152,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "make sure the door is shut": a state to check there (not "make sure you never...")
     (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=(?:the|my|your|our) (?:\w+ ){1,3}(?:is|are) '
      r'(?!never|not|visited|reached|avoided|always)\w)', ' check '),
+    (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=it (?:is|are) '
+     r'(?!never|not|visited|reached|avoided|always)\w)', ' check '),
     # "check the cat is in the laundry room": the place where it is
     (r' check (?:the |my |our |your )(?:\w+ ){1,3}(?:is|are) (?:still )?(?:in|at|inside|on|by|near|next to) '
      r'(?=(?:the|a|an|my|your|our) )', ' check '),
@@ -292,6 +294,26 @@ _COLON_RE = re.compile(r'(^ | [.;!?] )(?:pick|choose|select) '
 _VERB_COLON_RE = re.compile(r' (avoid|visit|then|never) : ')
 
 
+# "go by the front door to check it's locked", "visit the tank twice to check": what is done there
+_TO_CHECK_RE = re.compile(r'(?<=[a-z]) to check(?= (?:it |(?:the|my|your|our|its|her|his) (?:\w+ ){1,2})'
+                          r'(?:is|are) | [,.;!?]|$)')
+# Words of a clause that orders or scopes ("not until you've been to X to check ..."): left as said there.
+_SCOPING = frozenset({'until', 'till', 'after', 'before', 'once', 'when', 'if', 'unless', 'only', 'while',
+                      'whenever', 'not', 'never'})
+
+
+def _check_there(text: str) -> str:
+    """'go to the door to check it is locked' -> 'go to the door and check it is locked' (a main clause)."""
+    out = []
+    last = 0
+    for m in _TO_CHECK_RE.finditer(text):
+        start = max(text.rfind(p, 0, m.start()) for p in (' , ', ' . ', ' ; ', ' ! ', ' ? ', ' : '))
+        if not _SCOPING & set(text[max(start, 0):m.start()].split()):
+            out.append(text[last:m.start()] + ' and check')
+            last = m.end()
+    return ''.join(out) + text[last:]
+
+
 def paraphrase(tokens: list[str]) -> list[str]:
     """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
     text = ' ' + ' '.join(tokens) + ' '
@@ -323,6 +345,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:
         text = pattern.sub(repl, text)
+    if ' to check' in text:
+        text = _check_there(text)
     text = _GERUND_RE.sub(lambda m: f' {m.group(1)} {_GERUNDS[m.group(2)]} ', text)
     text = _DROP_BY_RE.sub(' visit ', text)
     out = text.split()

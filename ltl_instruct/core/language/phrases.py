@@ -105,7 +105,7 @@ fine enough again cannot cant dont one along throughout entire whole during with
 always directly immediately ever never by near behind between above under below beneath beside
 unless except whenever since because though although otherwise later afterwards afterward means thereafter
 something anything everything nothing someone anyone anymore forever staying keeping steering remaining
-followed remain forth
+followed remain forth altogether
 '''.split()) - {'one'}
 
 # "the roof of the library" -> library_roof: parts named before their whole.

@@ -526,7 +526,9 @@ _REPLACED_VERB_WORDS = frozenset({'avoid', 'stay', 'keep', 'away', 'from', 'clea
 
 def _marker_at(tokens: list[str], i: int) -> int:
     if i > 0 and tokens[i - 1] not in PUNCT and tokens[i - 1] not in ('hmm', 'oh', 'wait', 'actually', 'er',
-                                                                      'um', 'sorry', 'no'):
+                                                                      'um', 'sorry', 'no') and not (
+            # "..., she's gone out, so forget about the cat": the reason, then the correction
+            tokens[i - 1] == 'so' and i > 1 and tokens[i - 2] == ','):
         bare = next((m for m in _BARE_MARKERS if tuple(tokens[i:i + len(m)]) == m), None)
         if bare is None or tokens[i - 1] in DETERMINERS or tokens[i - 1] in _NOT_A_NAME_END or \
                 i + len(bare) >= len(tokens) or tokens[i + len(bare)] in PUNCT:
@@ -884,12 +886,23 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 out = fine + out[stop:]
                 i = len(fine)
                 continue
+        if 1 < i and out[i - 1] in '.;!?' and out[i - 2] not in PUNCT and out[i] in _VERBS:
+            # "Land on the bench. Land on the bird table instead.": the sentence replaces the step before
+            # (not where a correction before it has already dropped that step: "no wait, that's closed.")
+            stop = next((k for k in range(i, len(out)) if out[k] in '.;!?'), len(out))
+            if out[stop - 1] == 'instead' and stop - i > 2 and ',' not in out[i:stop]:
+                result = _correct(out[:i], 'actually', [','] + out[i:stop], notes)
+                if result is not None:
+                    out = result + out[stop:]
+                    i = len(result)
+                    continue
         m = _marker_at(out, i)
         if not m or i == 0 and out[i] not in ('actually',):
             i += 1
             continue
         prev = out[:i]
-        while prev and prev[-1] in (',', 'hmm', 'oh', 'eh', 'uh', 'um', 'er', 'erm', 'ah'):
+        while prev and prev[-1] in (',', 'hmm', 'oh', 'eh', 'uh', 'um', 'er', 'erm', 'ah') or \
+                prev[-2:] == [',', 'so']:
             prev = prev[:-1]
         j = i + m
         stop = j
@@ -911,12 +924,13 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             out = moved + after
             i = len(moved)
             continue
-        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 < len(seg) and (
-                seg[c + 1] in _VERBS or seg[c + 1] in ('the', 'my', 'your', 'our') and
-                'instead' in seg[c + 1:]) and marker not in _CANCEL:
-            # "actually it has been washed already, put it in the dryer": the reason, then the step
+        so = 1 if seg[c + 1:c + 2] == ['so'] else 0
+        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 + so < len(seg) and (
+                seg[c + 1 + so] in _VERBS or seg[c + 1 + so] in ('the', 'my', 'your', 'our') and
+                'instead' in seg[c + 1 + so:]) and marker not in _CANCEL:
+            # "actually it has been washed already, (so) put it in the dryer": the reason, then the step
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
-            out = out[:j] + ([','] if out[j - 1] not in PUNCT else []) + seg[c + 1:] + after
+            out = out[:j] + ([','] if out[j - 1] not in PUNCT else []) + seg[c + 1 + so:] + after
             continue   # ("no, the saw is broken, go to the drill press": not "no go to")
         if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
@@ -1633,8 +1647,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{" ".join(tail)}" read as part of the correction')
             seg = seg[:k]
             break
-        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or chatter.is_statement(
-                tail, _np_end(tail)) and not [
+        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or (chatter.is_statement(
+                tail, _np_end(tail)) or chatter.is_story(tail, _VERBS) and not (chatter.PLACE_RULE_WORDS | {
+                    'before', 'after', 'first', 'last'}) & set(tail)) and not [
                 t for t in seg[end:] if t not in PUNCT]:
             # "I meant the cooler, sorry, it's been a long day": the apology and the reason ask for nothing
             dropped = ' '.join(t for t in seg[k + 1:] if t not in PUNCT)
@@ -1643,7 +1658,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             break
     words = [t for t in seg if t not in PUNCT]
     if said_no and len(words) in (3, 4) and words[0] in ('that', 'it') and \
-            words[1] in ('is', 'was', 'will') and words[-1] in chatter.STATES:
+            words[1] in ('is', 'was', 'will') and (
+                words[-1] in chatter.STATES or len(words) == 4 and words[2] in ('too', 'far', 'much')):
+        # ("no, that's too small": a judgement that drops it)
         # "go to the staff room. hmm, no, that's locked. go to the lounge instead": that goal is dropped
         spans = _np_spans(prev)
         if spans:

@@ -19,6 +19,7 @@ import re
 from typing import Callable, NamedTuple, Union
 
 from ltl_instruct.core.language.phrases import PLACEHOLDER_ADJECTIVES, singular, with_article
+from ltl_instruct.core.language.prefilter import admits, required_text
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS
 
 _NUM = r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+)'
@@ -1628,18 +1629,8 @@ RULES: tuple[Rule, ...] = (
 _SENTENCE_ENDS = frozenset('.;!?')
 
 
-def _literal_words(pattern: str) -> frozenset[str]:
-    """Every word the pattern spells out, outside negative lookaheads.
-
-    A match always contains at least one of them (each rule spells out a word it needs), so a
-    sentence with none of them cannot match: the rule is skipped without running the regex.
-    """
-    text = re.sub(r'\(\?!\(\?:[^)]*\)\\b\)', ' ', pattern)   # the words a noun phrase may not be
-    text = re.sub(r'\\[a-zA-Z]|\(\?P<\w+>|\(\?P=\w+\)|\\g<\w+>', ' ', text)   # escapes and group names
-    return frozenset(re.findall(r'[a-z]+', text))
-
-
-_COMPILED = tuple((re.compile(r.pattern), r.replacement, _literal_words(r.pattern)) for r in RULES)
+# each rule with the literal text any match of it needs (a sentence without it is not tried)
+_COMPILED = tuple((re.compile(r.pattern), r.replacement, required_text(r.pattern)) for r in RULES)
 
 
 _LEVEL_RE = re.compile(rf'\blevel (?P<m>{_SMALL})\b')
@@ -1668,12 +1659,7 @@ def _rewrite_sentence(words: list[str]) -> list[str]:
     if not words:
         return []
     text = ' '.join(words)
-    present = set(words)
     for pattern, replacement, needs in _COMPILED:
-        if present.isdisjoint(needs):
-            continue   # none of the words it spells out: it cannot match
-        new = pattern.sub(replacement, text)
-        if new != text:
-            text = new
-            present = set(text.split())
+        if admits(needs, text):
+            text = pattern.sub(replacement, text)
     return text.split()

@@ -965,7 +965,15 @@ RULES: tuple[Rule, ...] = (
          r'(?P<j>, |\band )after again (?=to\b)', r'\g<j>then back '),
     Rule('go to the copier and after to the printer: "after" alone is "then"',
          r'(?P<j>, |\band )after (?=(?:to|go|come|land|fly|head|return|again|back|visit|check|drive|move|'
-         r'proceed|finish|continue|stop|swing|pop)\b)', r'\g<j>then '),
+         r'proceed|finish|continue|stop|swing|pop|over|through|past|into|onto)\b)', r'\g<j>then '),
+    Rule('and after bring the report to the office: "after" before a request verb is "then"',
+         r'(?P<j>, |\band )after (?=(?:bring|take|carry|deliver|fetch|grab|pick|put|place|drop|throw|toss|'
+         r'hover|survey|inspect|patrol|inspect)\b)', r'\g<j>then '),
+    Rule('after, you go to the mill: "after" alone, with its comma, is "after that"',
+         r'^(?:and )?after , ', 'after that , '),
+    Rule('first you go to the lathe, after you go to the mill: the second after the first',
+         r'^(?P<a>first (?:you )?(?:go|head|fly|drive|move|come) [^,]*) , (?:and )?after you '
+         r'(?=(?:go|head|fly|drive|move|come)\b)(?!.* , )', r'\g<a> , then you '),
     Rule('check the balcony and after the terrace: then the terrace',
          r'\band after (?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+)(?= ,| \.|$| and\b)',
          r'and then \g<x>'),

@@ -59,6 +59,28 @@ BLIND_ROUND_F4 = [
     # a form of address before the request with no comma ("yo drone fly over ...", "bro just go ...")
     ('yo drone fly over the basketball court real quick',
      'F near[basketball_court]'),
+    # list positions: "start from the last one (and finish on the first one)" is the list in reverse order
+    # (the middle item was lost, or all but the last); "the one in middle"; bare letters and colours
+    # named with the kind the list is of ("storage rooms are A, B and C", "three bins: red, blue ...")
+    ('Go to the three machines: mill, lathe, grinder. Start from the last one and finish on the first one.',
+     'F (near[grinder] & F (near[lathe] & F near[mill]))'),
+    ('Go to the three machines: mill, lathe, grinder. Start from the last one.',
+     'F (near[grinder] & F (near[lathe] & F near[mill]))'),
+    ('Storage rooms are A, B and C. Go to the one in middle.',
+     'F near[storage_room_b]'),
+    ('there are three bins: red, blue and green. go to the one in the middle',
+     'F near[blue_bin]'),
+    # the thing avoided said before "you avoid" ("and the other two you avoid")
+    ('Welding station, grinding station, paint booth - go to the first, and the other two you avoid.',
+     'F near[welding_station] & G !near[grinding_station] & G !near[paint_booth]'),
+    ('go to the shed, but the pond you avoid',
+     'F near[shed] & G !near[pond]'),
+    # who a delivery is for, at the end ("..., for the visitor"): no place (it was a goal)
+    ('Bring the safety helmet and the vest to the entrance, for the visitor.',
+     'F (near[safety_helmet] & F (pick[safety_helmet] & F (near[entrance] & F release[safety_helmet, '
+     'entrance]))) & F (near[vest] & F (pick[vest] & F (near[entrance] & F release[vest, entrance])))'),
+    ('bring the cup to the table for the guest',
+     'F (near[cup] & F (pick[cup] & F (near[table] & F release[cup, table])))'),
 ]
 
 

@@ -694,6 +694,29 @@ ASIDES: tuple[tuple[str, ...], ...] = (
 )   # not "uh", "um": they mark self-corrections
 
 
+# Verbs whose "for" names what is sought or awaited, not who a thing is for ("look for the dog").
+_FOR_VERBS = frozenset({'go', 'look', 'looking', 'wait', 'waiting', 'search', 'searching', 'ask', 'asking',
+                        'call', 'calling', 'watch', 'head', 'come', 'check', 'listen', 'care', 'sub',
+                        'cover'})
+
+
+def _for_whom(tokens: Sequence[str], i: int) -> bool:
+    """Whether ``tokens[i]`` is a "for" that can start a phrase naming who something is for."""
+    return tokens[i] == 'for' and i > 1 and tokens[i - 1] not in _FOR_VERBS
+
+
+def _beneficiary(tokens: Sequence[str], i: int) -> int:
+    """Length of "for the visitor" / "for grandma" at ``i`` that ends its clause (who it is for), else 0."""
+    j = i + 1
+    if j < len(tokens) and tokens[j] in ('the', 'my', 'our', 'your', 'a', 'an', 'his', 'her', 'their'):
+        j += 1
+    if j >= len(tokens) or not (tokens[j] in PERSON_NOUNS or tokens[j] in FAMILY_NAMES) or \
+            tokens[j] in ('dog', 'dogs', 'cat', 'animals', 'birds', 'pigeon', 'pigeons', 'delivery'):
+        return 0
+    j += 1
+    return j - i if j >= len(tokens) or tokens[j] in _CLAUSE_END else 0
+
+
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
     """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...").
 
@@ -732,6 +755,8 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
                 if tuple(tokens[i:i + m]) == phrase and ends and not (timing and phrase in TIMING):
                     hit = m
                     break
+        if not hit and _for_whom(tokens, i):
+            hit = _beneficiary(tokens, i)
         if not hit and i > 0 and tokens[i - 1] == ',':
             for phrase in ASIDES:
                 m = len(phrase)

@@ -969,6 +969,10 @@ RULES: tuple[Rule, ...] = (
     Rule('and after bring the report to the office: "after" before a request verb is "then"',
          r'(?P<j>, |\band )after (?=(?:bring|take|carry|deliver|fetch|grab|pick|put|place|drop|throw|toss|'
          r'hover|survey|inspect|patrol|inspect)\b)', r'\g<j>then '),
+    Rule('and the other two you avoid: the thing avoided said first',
+         r'(?P<j>(?:^|, |\band |\bbut ))(?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,8}?[a-z0-9_]+) (?:you|u) '
+         r'(?P<v>avoid|never go to|never visit|do not go to|do not visit|do not go near|stay away from|'
+         r'keep away from)(?= [.;!?]|$)', r'\g<j>\g<v> \g<x>'),
     Rule('after, you go to the mill: "after" alone, with its comma, is "after that"',
          r'^(?:and )?after , ', 'after that , '),
     Rule('first you go to the lathe, after you go to the mill: the second after the first',

@@ -81,6 +81,23 @@ BLIND_ROUND_F4 = [
      'entrance]))) & F (near[vest] & F (pick[vest] & F (near[entrance] & F release[vest, entrance])))'),
     ('bring the cup to the table for the guest',
      'F (near[cup] & F (pick[cup] & F (near[table] & F release[cup, table])))'),
+    # "all the time" / "in whole time" before a rule is "always" (it was "repeatedly", refused)
+    ("Go to the paint booth only after the drying oven, and all the time don't go close to the welding "
+     'station.',
+     'F near[paint_booth] & (!near[paint_booth] U near[drying_oven]) & G !near[welding_station]'),
+    ('Go to the CNC machine and after to the deburring station, and all the time stay away of the robot arm '
+     'cell.',
+     'F (near[cnc_machine] & F near[deburring_station]) & G !near[robot_arm_cell]'),
+    ('Go to the lathe, then to the table at right of the lathe. In whole time avoid the oil barrel next to '
+     'the door of emergency, it leaks.',
+     'F (near[lathe] & F near[table::isrightof(lathe)]) & G !near[oil_barrel::isnextto(emergency_door)]'),
+    # "stay far of X" avoids X; "(you must) stay / stand by X" is to be there
+    ('Survey the roof of warehouse, but stay far of the chimney.',
+     'F near[warehouse_roof] & G !near[chimney]'),
+    ('Now you must stay by the QA bench.',
+     'F near[qa_bench]'),
+    ('go to the shed, then stand next to the gate',
+     'F (near[shed] & F near[gate])'),
 ]
 
 

@@ -830,6 +830,9 @@ RULES: tuple[Rule, ...] = (
          rf'(?:and )?then (?:go |head |move )?to the other(?: one)?\b', r'visit \g<x> and \g<y>'),
 
     # ---- repetition said at length: "again and again", "with no limits", "at any point in time, visit a"
+    Rule('all the time do not go close to X: "all the time" before a rule is "always"',
+         r'\b(?:all the time|(?:in|during|for) (?:the )?(?:whole|entire) time)(?: ,)? '
+         r'(?=(?:do not|never|avoid|stay|keep|steer)\b)', 'always '),
     Rule('visit a again and again', r'\b(?:again and again|over and over(?: again)?|with no limits?|without '
          r'(?:any )?limits?|time after time|all the time)\b', 'repeatedly'),
     Rule('swing by a couple of times', r'\ba couple (?:of )?(?:times|visits|passes|trips|rounds)\b', 'twice'),
@@ -922,6 +925,9 @@ RULES: tuple[Rule, ...] = (
     Rule('exactly twice, no more',
          rf'\b(?P<c>(?:exactly|just|only) {_COUNT})(?: ,)? no more(?: than that)?\b',
          r'\g<c>'),
+    Rule('you must stay by the QA bench: be there',
+         r'(?:^|(?<=^now )|(?<=, )|(?<=\band )|(?<=\bthen ))(?:you (?:must|should|need to|have to) )?'
+         r'(?:stay|stand|sit) (?=(?:by|next to|beside) (?:the|my|your|our)\b)', 'go '),
     Rule('go sit by the couch',
          r'\bgo (?:and )?(?:sit|stand|wait|park|hover|stay) (?=(?:by|next to|near|beside|at) )', 'go '),
     Rule('the register last: the last of a sequence',

@@ -151,7 +151,7 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('at', 'your', 'convenience'), ('when', 'convenient'), ('when', 'it', 'is', 'convenient'),
     ('in', 'a', 'bit'),
     ('later', 'today'), ('later', 'on'), ('when', 'you', 'get', 'around', 'to', 'it'), ('soon',),
-    ('for', 'a', 'bit'),
+    ('for', 'a', 'bit'), ('a', 'bit'),
     ('for', 'a', 'minute'), ('for', 'a', 'moment'), ('if', 'you', 'would', 'not', 'mind'),
     ('thanks', 'in', 'advance'),
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
@@ -385,8 +385,11 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
     skip_comma = False
     for k, t in enumerate(tokens):
         before = tokens[k - 1] if k > 0 else '.'
+        if addressed and k > 0 and before == addressed[-1] and not out:
+            before = '.'   # "yo drone fly over X": both are said to it
         after = tokens[k + 1] if k + 1 < len(tokens) else '.'
-        vocative = t in VOCATIVES and before in PUNCT and after in PUNCT or \
+        vocative = t in VOCATIVES and before in PUNCT and after in (PUNCT | (
+            _COMMAND_STARTS if before in '.;!?' else frozenset())) or \
             t == 'k' and (before in '.;!?' or after in '.;!?')   # "..., dear?", "k go to the desk"
         if t in HESITATIONS and not (t == 'er' and out and out[-1] == 'the') or vocative:
             (addressed if vocative else dropped).append(t)
@@ -456,9 +459,14 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
 
 
 # Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
+# Words a request starts with, after a name it is addressed to ("bro just go to the fridge").
+_COMMAND_STARTS = frozenset({'just', 'go', 'please', 'can', 'could', 'bring', 'take', 'fly', 'come', 'grab',
+                             'put', 'never', 'avoid', 'stay', 'visit', 'head', 'hit', 'now', 'robot',
+                             'drone'})
 VOCATIVES = frozenset({'dear', 'honey', 'sweetie', 'buddy', 'pal', 'mate', 'love', 'sir', 'madam', 'maam',
                        'robot', 'drone', 'bot', 'friend', 'darling', 'hun', 'bro', 'dude', 'sweetheart',
-                       'dearie', 'pet', 'petal', 'duck', 'ducky', 'poppet', 'lovey', 'chum', 'sunshine'})
+                       'dearie', 'pet', 'petal', 'duck', 'ducky', 'poppet', 'lovey', 'chum', 'sunshine',
+                       'yo'})
 
 
 # Words said twice in a row by slip ("the the"), never twice on purpose.
@@ -739,6 +747,29 @@ ASIDES: tuple[tuple[str, ...], ...] = (
 )   # not "uh", "um": they mark self-corrections
 
 
+# Verbs whose "for" names what is sought or awaited, not who a thing is for ("look for the dog").
+_FOR_VERBS = frozenset({'go', 'look', 'looking', 'wait', 'waiting', 'search', 'searching', 'ask', 'asking',
+                        'call', 'calling', 'watch', 'head', 'come', 'check', 'listen', 'care', 'sub',
+                        'cover'})
+
+
+def _for_whom(tokens: Sequence[str], i: int) -> bool:
+    """Whether ``tokens[i]`` is a "for" that can start a phrase naming who something is for."""
+    return tokens[i] == 'for' and i > 1 and tokens[i - 1] not in _FOR_VERBS
+
+
+def _beneficiary(tokens: Sequence[str], i: int) -> int:
+    """Length of "for the visitor" / "for grandma" at ``i`` that ends its clause (who it is for), else 0."""
+    j = i + 1
+    if j < len(tokens) and tokens[j] in ('the', 'my', 'our', 'your', 'a', 'an', 'his', 'her', 'their'):
+        j += 1
+    if j >= len(tokens) or not (tokens[j] in PERSON_NOUNS or tokens[j] in FAMILY_NAMES) or \
+            tokens[j] in ('dog', 'dogs', 'cat', 'animals', 'birds', 'pigeon', 'pigeons', 'delivery'):
+        return 0
+    j += 1
+    return j - i if j >= len(tokens) or tokens[j] in _CLAUSE_END else 0
+
+
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
     """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...").
 
@@ -779,6 +810,8 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
                     hit = m
                     break
         aside = False
+        if not hit and _for_whom(tokens, i):
+            hit = _beneficiary(tokens, i)
         if not hit and i > 0 and tokens[i - 1] == ',':
             for phrase in ASIDES:
                 m = len(phrase)
@@ -802,7 +835,7 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
 # Remarks that leave a choice or the pace to the robot ("your call", "take your time",
 # "both are fine by me", "whichever is less busy"): a clause of their own that asks for nothing.
 _REMARK_RE = re.compile(
-    r'^(?:(?:and|but|so|honestly|really|i mean) )*(?:'
+    r'^(?:(?:and|but|so|honestly|really|i mean|i do not know) )*(?:'
     r'(?:it is )?(?:your (?:choice|call|pick|decision)|up to you|dealer s choice|dealer choice)'
     r'|(?:(?:i am |i m |i )?not (?:fussed|fussy|bothered|picky)|(?:i have )?no preference)'
     r'|(?:it )?(?:does not|do not|will not|would not) matter(?: (?:which|which one|to me|either way))?'
@@ -814,7 +847,8 @@ _REMARK_RE = re.compile(
     r'|(?:either|one|any) of (?:them|those|the two) (?:is|will be|would be) (?:enough|fine|ok|okay|plenty)'
     r'|i (?:need|want) (?:both|all|each|them all|all of them|both of them) '
     r'(?:checked|done|visited|covered|seen)'
-    r'|(?:i )?(?:honestly |really )?(?:do not|will not) (?:mind|care)(?: which| either way)?'
+    r'|(?:i )?(?:honestly |really )?(?:do not|will not) (?:mind|care)'
+    r'(?: which| either way| (?:about )?(?:what|which|the) order)?'
     r'(?: (?:one|option|way|route))?(?: you (?:go for|pick|choose|take|use|do))?'
     r'|take (?:your|as much) time(?: (?:as you need|about it|with it))?'
     r'|(?:both|either|either one|either of them|both of them|any of them|any) (?:is|are|would be|will be) '
@@ -828,12 +862,14 @@ _REMARK_RE = re.compile(
     r'(?: of (?:them|those|these|the (?:two|three|four|five)(?: \w+)?))?(?: (?:will do|is fine|works))?'
     r'|whichever(?: one)? you (?:get to|reach|see|like|want|prefer|come to|find|spot)(?: first)?'
     r'|wherever(?: is| s)? (?:clearer|closer|nearer|quieter|easier|safer|less \w+)'
-    r'|whichever(?: one)? (?:is |s )?(?:easier|easiest|closer|nearer|quicker|faster|nearest)'
+    r'|(?:whichever|which)(?: one)? (?:is |s )?(?:more )?'
+    r'(?:easier|easiest|closer|close|nearer|near|quicker|faster|nearest)'
     r'(?: (?:for you|to you|to get to))?'
     r'|(?:either|any|either one|any one) works(?: (?:for me|fine))?(?: honestly)?'
     r'|(?:i )?do not care which (?:1|one)'
     r'|i (?:just |only )?need you to (?:see|check|find out|look) (?:if|whether) [a-z ]+'
     r'|pick one(?: and go)?'
+    r'|(?:for me|to me) (?:it )?(?:is|s) (?:all )?the same|(?:it )?(?:is|s) (?:all )?the same (?:for|to) me'
     r'|i (?:just |only )?need (?:you )?(?:to )?(?:hold|carry|help (?:me )?with|mind|keep|look after|watch) '
     r'(?:something|this|that|it|a few things|some things|a thing|stuff)'
     r'(?: (?:for me|for a (?:second|minute|bit)))?'
@@ -843,14 +879,15 @@ _REMARK_RE = re.compile(
     r'|i (?:only |just )?need (?:one|one of them|either|either of them|one of the two) '
     r'(?:looked at|checked|done|visited|seen)'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
-    r'|(?:(?:that|this|it) )?is (?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)'
+    r'|(?:(?:that|this|it) )?is (?:literally |really |just )?'
+    r'(?:the only (?:stop|place|goal|errand|task|thing|job)|all|it)'
     r'(?: (?:for )?(?:today|now|'
     r'tonight|this time))?'
     r')$')
 
 
 _REMARK_STARTS = frozenset({'either', 'whichever', 'i', 'any', 'both', 'no', 'it', 'does', 'do', 'your',
-                            'up', 'what', 'whatever', 'which', 'you', 'not'})
+                            'up', 'what', 'whatever', 'which', 'you', 'not', 'that', 'for'})
 
 
 _REMARK_VERBS = frozenset({'go', 'visit', 'pick', 'choose', 'take', 'bring', 'check', 'use', 'try', 'is',

@@ -858,6 +858,9 @@ RULES: tuple[Rule, ...] = (
          rf'(?:and )?then (?:go |head |move )?to the other(?: one)?\b', r'visit \g<x> and \g<y>'),
 
     # ---- repetition said at length: "again and again", "with no limits", "at any point in time, visit a"
+    Rule('all the time do not go close to X: "all the time" before a rule is "always"',
+         r'\b(?:all the time|(?:in|during|for) (?:the )?(?:whole|entire) time)(?: ,)? '
+         r'(?=(?:do not|never|avoid|stay|keep|steer)\b)', 'always '),
     Rule('visit a again and again', r'\b(?:again and again|over and over(?: again)?|with no limits?|without '
          r'(?:any )?limits?|time after time|all the time)\b', 'repeatedly'),
     Rule('swing by a couple of times', r'\ba couple (?:of )?(?:times|visits|passes|trips|rounds)\b', 'twice'),
@@ -953,6 +956,9 @@ RULES: tuple[Rule, ...] = (
     Rule('exactly twice, no more',
          rf'\b(?P<c>(?:exactly|just|only) {_COUNT})(?: ,)? no more(?: than that)?\b',
          r'\g<c>'),
+    Rule('you must stay by the QA bench: be there',
+         r'(?:^|(?<=^now )|(?<=, )|(?<=\band )|(?<=\bthen ))(?:you (?:must|should|need to|have to) )?'
+         r'(?:stay|stand|sit) (?=(?:by|next to|beside) (?:the|my|your|our)\b)', 'go '),
     Rule('go sit by the couch',
          r'\bgo (?:and )?(?:sit|stand|wait|park|hover|stay) (?=(?:by|next to|near|beside|at) )', 'go '),
     Rule('the register last: the last of a sequence',
@@ -996,7 +1002,19 @@ RULES: tuple[Rule, ...] = (
          r'(?P<j>, |\band )after again (?=to\b)', r'\g<j>then back '),
     Rule('go to the copier and after to the printer: "after" alone is "then"',
          r'(?P<j>, |\band )after (?=(?:to|go|come|land|fly|head|return|again|back|visit|check|drive|move|'
-         r'proceed|finish|continue|stop|swing|pop)\b)', r'\g<j>then '),
+         r'proceed|finish|continue|stop|swing|pop|over|through|past|into|onto)\b)', r'\g<j>then '),
+    Rule('and after bring the report to the office: "after" before a request verb is "then"',
+         r'(?P<j>, |\band )after (?=(?:bring|take|carry|deliver|fetch|grab|pick|put|place|drop|throw|toss|'
+         r'hover|survey|inspect|patrol|inspect)\b)', r'\g<j>then '),
+    Rule('and the other two you avoid: the thing avoided said first',
+         r'(?P<j>(?:^|, |\band |\bbut ))(?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,8}?[a-z0-9_]+) (?:you|u) '
+         r'(?P<v>avoid|never go to|never visit|do not go to|do not visit|do not go near|stay away from|'
+         r'keep away from)(?= [.;!?]|$)', r'\g<j>\g<v> \g<x>'),
+    Rule('after, you go to the mill: "after" alone, with its comma, is "after that"',
+         r'^(?:and )?after , ', 'after that , '),
+    Rule('first you go to the lathe, after you go to the mill: the second after the first',
+         r'^(?P<a>first (?:you )?(?:go|head|fly|drive|move|come) [^,]*) , (?:and )?after you '
+         r'(?=(?:go|head|fly|drive|move|come)\b)(?!.* , )', r'\g<a> , then you '),
     Rule('check the balcony and after the terrace: then the terrace',
          r'\band after (?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+)(?= ,| \.|$| and\b)',
          r'and then \g<x>'),

@@ -538,6 +538,8 @@ class _Reader:
         self.global_avoids: list[tuple[Descriptor, Optional[Step], Formula]] = []
         # the last "avoid X until A and B" read in the order said: (its formula, X, [A, B])
         self.last_until: Optional[tuple[Formula, list[Descriptor], list[Descriptor]]] = None
+        # the places of the last "don't go to X until Y" (X, Y): "..., then go to it" is X
+        self.held_until: Optional[tuple[list[Descriptor], Descriptor]] = None
 
     # ----------------------------------------------------------------- structure
     def _drop_trailing_reason(self, sentence: list[str]) -> list[str]:
@@ -2111,6 +2113,13 @@ class _Reader:
             return self.last_object
         if np.pronoun in ('it', 'them') and place and self.left_thing is not None:
             return self.left_thing   # "I left my charger in the hall, go find it": the charger
+        if np.pronoun in ('it', 'them') and place and self.held_until is not None and (
+                self.last_place or np).descriptor == self.held_until[1] and len(self.held_until[0]) == 1 and \
+                self.task.find_step(self.held_until[0][0]) is None:
+            # "don't go to the forklift before you visit the office. After that, go to it": the forklift
+            # held back (the office is where the robot already is)
+            held = self.held_until[0][0]
+            return NounPhrase(held, np.start, np.end, held.name.split('_')[-1], np.pronoun)
         if np.pronoun in ('it', 'them', 'that') and place and self.last_place is not None:
             return self.last_place
         return np
@@ -2484,6 +2493,7 @@ class _Reader:
                 for p in reversed(places[:-1]):
                     goal = _and(_near(p), _until_avoid(targets, goal))
                 self.task.constraints.append(_until_avoid(targets, goal))
+                self.held_until = (targets, places[-1])
                 if len(places) > 1:
                     # in the order said, unless "in any order" follows (see _any_order)
                     self.last_until = (self.task.constraints[-1], list(targets), places)

@@ -145,6 +145,24 @@ place leave drop toss throw carry deliver grab pick fetch survey land stop swing
 '''.split())
 
 
+# Words before "of" that are no thing named after a whole ("one of the boxes", "the rest of them").
+_NOT_OF_NAMES = frozenset('''
+one ones lot lots number kind sort type types couple rest most some none half part parts way ways time times
+bit amount plenty dozen dozens pair group row line list series full left right ahead north south east west
+inside outside
+'''.split())
+
+
+def _of_name(words: Sequence[str], tokens: Sequence[str], j: int) -> bool:
+    """Whether "<words> of <tokens[j:]>" names one thing by its whole ("the machine of welding")."""
+    if words[-1] in _NOT_OF_NAMES or words[-1] in NUMBER_WORDS or words[-1] in CONTAINER_WORDS:
+        return False
+    if j < len(tokens) and tokens[j] in ('the', 'a', 'an'):
+        j += 1
+    return j < len(tokens) and tokens[j] not in STOPWORDS and tokens[j] not in PUNCT and \
+        tokens[j] not in NUMBER_WORDS and not tokens[j].isdigit()
+
+
 def with_article(name: str) -> str:
     """Return ``name`` with "the" before it, unless it has a determiner or is a number ("204")."""
     return name if name.split()[0] in DETERMINERS or name[0].isdigit() else 'the ' + name
@@ -378,7 +396,10 @@ class PhraseParser:
                     i + 3 >= len(tokens) or tokens[i + 3] not in ('of', 'side')):
                 words = [tokens[i + 2]] + words   # "the lamp on the left" is the left lamp
                 i += 3
-            if words and words[-1] in PART_WORDS and i + 1 < len(tokens) and tokens[i] == 'of' and depth < 8:
+            if words and i + 1 < len(tokens) and tokens[i] == 'of' and depth < 8 and (
+                    words[-1] in PART_WORDS or _of_name(words, tokens, i + 1)):
+                # "the roof of the library" -> library_roof; as learners name things, "the machine of
+                # welding" -> welding_machine, "the office of supervisor" -> supervisor_office
                 whole = self.parse(tokens, i + 1, destination_stops, depth + 1)
                 if whole is not None and not whole.descriptor.relations and not whole.pronoun:
                     words = whole.descriptor.name.split('_') + words

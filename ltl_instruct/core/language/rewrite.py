@@ -112,6 +112,12 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             counted = parser.parse(tokens, q + 1) if q >= 0 else None
             if counted is not None and counted.end <= s - 1:
                 category = _kind_name(counted)   # "three bins by the gate: a green one, ..."
+        elif s >= 2 and tokens[s - 1] == 'are' and tokens[s - 2].endswith('s'):
+            # "storage rooms are A, B and C": the kind said before "are"
+            back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
+            kind = parser.parse(tokens, back + 1)
+            if kind is not None and kind.end == s - 1 and not kind.descriptor.relations:
+                category = _kind_name(kind)
         elif s >= 2 and tokens[s - 1] == ',' and s != lead:
             # "two carts in the corridor, a housekeeping cart and a minibar cart": the count names them
             back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
@@ -217,6 +223,12 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
     (r'\bthe one in between\b', 'the middle one'),
+    # "start from the last one and finish on the first one" after a list: the list in reverse order
+    (r'(?:^|(?<=[.;!?] ))(?:and |so |now )?(?:start|begin)(?:ing)? (?:from|with|at|on) the last(?: one)?'
+     r'(?: ,)?(?: (?:and |then )?(?:finish|end)(?:ing)? (?:on|with|at|in) the first(?: one)?)?(?= [.;!?]|$)',
+     'do them in reverse order'),
+    # "the one in middle": the middle one
+    (r'\bthe one in (?:the )?middle\b', 'the middle one'),
     # "the first and last of those": the first and the last
     (r'\bthe (?P<a>first|second|third) and (?P<b>last|second|third|fourth|fifth)\b'
      r'(?! (?:things|ones|items|places|stops|one|two)\b)', r'the \g<a> and the \g<b>'),
@@ -307,10 +319,15 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
         rel = next((k for k in range(nps[-1].start + 1, nps[-1].end) if tokens[k] not in DETERMINERS and
                     not is_name_word(tokens, k, True)), nps[-1].end)
         nps[-1] = NounPhrase(Descriptor(nps[-1].descriptor.name), nps[-1].start, rel, nps[-1].head)
+    bare = category and all(len(_np_text(tokens, np)) == 2 for np in nps)
     for np in nps:
         words = _np_text(tokens, np)
         if category and 'one' in words:
             words = [category if w == 'one' else w for w in words]
+        elif bare and (len(words[1]) == 1 or words[1].isdigit()):
+            words = ['the'] + category.split('_') + words[1:]   # "rooms are A, B and C": room b
+        elif bare and words[1] in COLOURS:
+            words = words + category.split('_')   # "three bins: red, blue and green": the blue bin
         items.append(words)
     used: set[int] = set()
     tail = _drop_mentions(tail)

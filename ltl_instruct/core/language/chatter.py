@@ -592,6 +592,9 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     if len(tokens) > 4 and tokens[-1] == 'yet' and 'not' in tokens and {'it', 'them', 'that', 'this'} & set(
             tokens) and not {'go', 'visit', 'avoid', 'near', 'enter', 'stay', 'keep', 'you'} & set(tokens):
         return True   # "cleanup crew hasn't gotten to it yet": how the scene stands
+    if np_end and is_numbered_subject(tokens, np_end):
+        # "table 4 wants ketchup", "table 12 are celebrating": a numbered place, said without its article
+        return tokens[np_end + 1:np_end + 2] != ['to'] and not has_constraint_word(tokens[np_end:])
     if not tokens or has_constraint_word([t for k, t in enumerate(tokens) if not (
             # "it needs more shade": an amount of something, no count of visits
             t in ('more', 'less') and k > 1 and tokens[k - 1] in FINITE_VERBS and k + 1 < len(tokens) and
@@ -623,6 +626,20 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         f = statement_verb(tokens, np_end)   # not "the desk that is by..."
         return f > 0 and tokens[f + 1:f + 2] != ['to']
     return False
+
+
+# Verbs of a numbered place said as the people at it ("table 4 wants ketchup", "table 3 asked for ...").
+_NUMBERED_SUBJECT_VERBS = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
+                                     'ordered', 'requested', 'has', 'have', 'is', 'are', 'was', 'were',
+                                     'says', 'said', 'complained'})
+
+
+def is_numbered_subject(tokens: Sequence[str], np_end: int) -> bool:
+    """Whether a clause starts with a numbered place without its article, then its verb ("table 4 wants")."""
+    return 2 <= np_end < len(tokens) and tokens[0] not in DETERMINERS and \
+        tokens[0] not in STATEMENT_SUBJECTS and (tokens[np_end - 1].isdigit() or
+                                                 tokens[np_end - 1] in NUMBER_WORDS) and \
+        tokens[np_end] in _NUMBERED_SUBJECT_VERBS
 
 
 def statement_verb(tokens: Sequence[str], np_end: int) -> int:

@@ -31,6 +31,23 @@ BLIND_ROUND_G4B = [
     # "bring them X": the thing, then to whom
     ('go to table 5 and take them the menu',
      'F (near[table_5] & F (near[menu] & F (pick[menu] & F (near[table_5] & F release[menu, table_5]))))'),
+    # "forget / ignore / scratch that" then a command: the whole step is replaced, not one of its places;
+    # then a statement ("Luca's sorting it"): the step is dropped
+    ("Bring a high chair to table 8 - wait, no, ignore that, Luca's already sorting it. Go to the host stand "
+     "instead, the Petersons just walked in with their whole family and there's nobody there to greet them.",
+     'F near[host_stand]'),
+    ('bring a cup to the sink. Actually, forget that, go to the host stand instead.', 'F near[host_stand]'),
+    ('avoid the kitchen. forget that, go to the garage instead.', 'F near[garage]'),
+    ('bring a cup to the sink. scratch that, head to the garage.', 'F near[garage]'),
+    ('go to the kitchen, then bring the cup to the sink. forget that, go to the garage',
+     'F (near[kitchen] & F near[garage])'),
+    # a correction by a thing replaces the thing carried, not a numbered place; a place or a number the place
+    ('Bring the dessert menus to table 4, no wait, the wine list.',
+     'F (near[wine_list] & F (pick[wine_list] & F (near[table_4] & F release[wine_list, table_4])))'),
+    ('bring the cup to room 5, no, the kitchen',
+     'F (near[cup] & F (pick[cup] & F (near[kitchen] & F release[cup, kitchen])))'),
+    ('bring the cup to room 5, no, room 6',
+     'F (near[cup] & F (pick[cup] & F (near[room_6] & F release[cup, room_6])))'),
 ]
 
 

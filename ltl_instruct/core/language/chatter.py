@@ -525,8 +525,9 @@ carer guest customer technician electrician plumber vet housekeeper contractor c
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
                           'students', 'patients', 'volunteers', 'cleaners', 'neighbours', 'neighbors'})
-# Nouns that make a place of a person noun before them ("the staff room", "the nurses' station").
-_PLACE_HEADS = frozenset('''
+# Nouns that make a place of a person noun before them ("the staff room", "the nurses' station"); as
+# head words, places people name: never a person, never a thing carried.
+PLACE_HEADS = frozenset('''
 room rooms station desk office area lounge entrance center centre toilet toilets bathroom bathrooms kitchen
 door car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen
 cafeteria changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
@@ -572,7 +573,7 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     if not k or k >= len(tokens):
         return False
     verb = tokens[k]
-    if verb in _PLACE_HEADS or '_' in verb:
+    if verb in PLACE_HEADS or '_' in verb:
         return False   # "the staff room", "the guest lounge": a place named for people
     return verb not in REQUEST_WORDS and verb not in ('need', 'needs', 'want', 'wants', 'would', 'd', 'like',
                                                       'will', 'must', 'should', 'have', 'has')
@@ -977,6 +978,6 @@ def is_summons(tokens: Sequence[str], ordered: bool = False) -> bool:
     if who[0] in DETERMINERS:
         # "the Garcias", "the chef": people, not "the kitchen needs a hand"
         who = who[1:]
-        if not who or not (who[-1] in PERSON_NOUNS or who[-1].endswith('s') and who[-1] not in _PLACE_HEADS):
+        if not who or not (who[-1] in PERSON_NOUNS or who[-1].endswith('s') and who[-1] not in PLACE_HEADS):
             return False
     return bool(who) and not _NOT_WHO & set(who) and not any('_' in w for w in who)

@@ -48,6 +48,29 @@ BLIND_ROUND_G4B = [
      'F (near[cup] & F (pick[cup] & F (near[kitchen] & F release[cup, kitchen])))'),
     ('bring the cup to room 5, no, room 6',
      'F (near[cup] & F (pick[cup] & F (near[room_6] & F release[cup, room_6])))'),
+    # a remark after the request on what somebody else wants or is like, or who arrives when: left out
+    ('Head to the office, and stop at the bar no more than once, Marco gets chatty.',
+     'F near[office] & (!near[bar] W (near[bar] & (near[bar] W G !near[bar])))'),
+    ('Put the reserved sign on table 10 please, VIPs in at eight.',
+     'F (near[reserved_sign] & F (pick[reserved_sign] & F (near[table_10] & F release[reserved_sign, '
+     'table_10])))'),
+    ('Bring the bill folder and the card machine to table 23, they want to settle up.',
+     'F (near[bill_folder] & F (pick[bill_folder] & F (near[table_23] & F release[bill_folder, table_23]))) '
+     '& F (near[card_machine] & F (pick[card_machine] & F (near[table_23] & F '
+     'release[card_machine, table_23])))'),
+    ('Go to the stool in front of the bar and to the right of the till, the gentleman there wants another.',
+     'F near[stool::isinfrontof(bar)::isrightof(till)]'),
+    ('go to the lounge, the band gets nervous', 'F near[lounge]'),
+    # what pictures are for, the service, "until I call you": no place, left out
+    ('Hover above the pool deck for the wedding photos.', 'F near[pool_deck]'),
+    ('Circle the rooftop sign three times, marketing wants footage for the website.',
+     'F (near[rooftop_sign] & F (!near[rooftop_sign] & F (near[rooftop_sign] & F (!near[rooftop_sign] & F '
+     'near[rooftop_sign]))))'),
+    ('I want you at the pass exactly twice this service, no more, no less.',
+     '!near[pass] U (near[pass] & (near[pass] U (!near[pass] & (!near[pass] U (near[pass] & (near[pass] W G '
+     '!near[pass]))))))'),
+    ('Could you make your way to the room service lift and wait there until I call you?',
+     'F near[room_service_lift]'),
 ]
 
 
@@ -60,6 +83,9 @@ REFUSED_G4B = [
     # "them" as the destination with no one named before: never the thing carried itself
     'bring them a cup',
     'The guests at table 4 want ketchup, take the ketchup bottle to them.',
+    # a remark that names a place after "wants", or a command after "want to", is no remark
+    'go to the bar, chef wants the kitchen',
+    'go to the bar, they want to go to the garden',
 ]
 
 

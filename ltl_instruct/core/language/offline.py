@@ -577,6 +577,8 @@ class _Reader:
                 tail[w + 1] != 'be' or tail[w + 2] in ('here', 'back', 'home', 'in', 'there')):
             # "..., the carer will be here any minute", "..., the kids will grab it"
             return self._noted_cut(sentence, cut)
+        if chatter.is_others_remark(tail, _COMMANDS):
+            return self._noted_cut(sentence, cut)   # "..., Marco gets chatty", "..., they want to settle up"
         if len(tail) < 2 or 'you' in tail or tail[1] in ('not', 'never'):
             return sentence
         if any(t in chatter.REQUEST_WORDS - ({'need'} if tail[0] == 'the' else set()) for t in tail[1:3]):

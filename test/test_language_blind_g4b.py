@@ -71,6 +71,9 @@ BLIND_ROUND_G4B = [
      '!near[pass]))))))'),
     ('Could you make your way to the room service lift and wait there until I call you?',
      'F near[room_service_lift]'),
+    # a list after "at" in a statement, then its position
+    ("We're short at the bar, the terrace and the lobby lounge. Go to the second one.", 'F near[terrace]'),
+    ('we are busy at the patio, the bar and the garden. go to the last one.', 'F near[garden]'),
 ]
 
 

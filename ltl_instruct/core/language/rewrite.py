@@ -28,7 +28,7 @@ from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
                           'notice', 'find', ',', 'from', 'among', 'options', 'choices', 'pass', 'out', 'pass',
-                          'passing', 'past', 'remember', 'you'})
+                          'passing', 'past', 'remember', 'you', 'at'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',

@@ -26,7 +26,7 @@ import re
 from typing import Sequence
 
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS, PLACEHOLDER_ADJECTIVES, is_name_word, match_relation,
+    DETERMINERS, PLACEHOLDER_ADJECTIVES, STOPWORDS, is_name_word, match_relation,
 )
 from ltl_instruct.core.language.text import FAMILY_NAMES, NUMBER_WORDS, ORDINALS, PUNCT
 
@@ -102,6 +102,15 @@ _PURPOSES: tuple[tuple[str, ...], ...] = tuple(
     for art in (('a',), ('an',)) for quick in ((), ('quick',), ('closer',))
     for what in ('inspection', 'check', 'look', 'photo', 'picture', 'survey', 'scan', 'reading', 'visual',
                  'checkup', 'peek', 'glance', 'sweep'))
+
+# Until the person signals ("wait there until I call you"): the person's event, no place to wait for.
+_SIGNALS: tuple[tuple[str, ...], ...] = tuple(
+    (until, who) + signal
+    for until in ('until', 'till') for who in ('i', 'we')
+    for signal in (('call',), ('call', 'you'), ('call', 'for', 'you'), ('ring',), ('ring', 'you'),
+                   ('text', 'you'), ('ping', 'you'), ('message', 'you'), ('shout',),
+                   ('give', 'you', 'a', 'shout'), ('tell', 'you'), ('say', 'so'), ('send', 'for', 'you'),
+                   ('need', 'you')))
 
 # Courtesy and time-of-day phrases that end a clause and ask for nothing.
 COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -179,7 +188,9 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('straight', 'after'), ('right', 'after'), ('for', 'the', 'rest', 'of', 'the', 'shift'),
     ('for', 'the', 'rest', 'of', 'the', 'night'), ('for', 'the', 'rest', 'of', 'the', 'day'),
     ('from', 'the', 'air'), ('right', 'now', 'please'),
-) + _DURATIONS + _SPANS + _PURPOSES,
+    # the service or the session the request is for ("exactly twice this service")
+    ('this', 'service'), ('during', 'service'), ('tonight', 'at', 'service'), ('this', 'session'),
+) + _DURATIONS + _SPANS + _PURPOSES + _SIGNALS,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
@@ -585,8 +596,9 @@ grandchildren grandchild grandkids grandkid grandson granddaughter grandsons gra
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
                           'students', 'patients', 'volunteers', 'cleaners', 'neighbours', 'neighbors'})
-# Nouns that make a place of a person noun before them ("the staff room", "the nurses' station").
-_PLACE_HEADS = frozenset('''
+# Nouns that make a place of a person noun before them ("the staff room", "the nurses' station"); as
+# head words, places people name: never a person, never a thing carried.
+PLACE_HEADS = frozenset('''
 room rooms station desk office area lounge entrance center centre toilet toilets bathroom bathrooms kitchen
 door car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen
 cafeteria changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
@@ -632,10 +644,52 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     if not k or k >= len(tokens):
         return False
     verb = tokens[k]
-    if verb in _PLACE_HEADS or '_' in verb:
+    if verb in PLACE_HEADS or '_' in verb:
         return False   # "the staff room", "the guest lounge": a place named for people
     return verb not in REQUEST_WORDS and verb not in ('need', 'needs', 'want', 'wants', 'would', 'd', 'like',
                                                       'will', 'must', 'should', 'have', 'has')
+
+
+# Verbs of what somebody else wants or is like, in a remark after the request ("marco gets chatty").
+_OTHERS_WANT = frozenset({'wants', 'want', 'needs', 'need'})
+_OTHERS_GET = frozenset({'gets', 'get'})
+# "VIPs in at eight", "the band due at nine": people arriving at a time.
+_ARRIVING = frozenset({'in', 'due', 'arriving', 'here', 'back', 'coming'})
+
+
+def is_others_remark(tail: Sequence[str], commands: frozenset[str]) -> bool:
+    """Whether a part after the request says what somebody else wants or is like, asking the robot nothing.
+
+    "..., Marco gets chatty", "..., marketing wants footage", "..., they want to settle up", "..., the
+    gentleman there wants another", "..., VIPs in at eight". Never with "you", a word of a rule or a
+    count, a command after "want to", or a place named after the verb ("chef needs the kitchen").
+    """
+    if len(tail) < 3 or 'you' in tail or 'your' in tail or PLACE_RULE_WORDS & set(tail) or \
+            has_constraint_word(tail):
+        return False
+    s = 1
+    if tail[0] in DETERMINERS:
+        if tail[1] not in PERSON_NOUNS:
+            return False
+        s = 2
+        while s < len(tail) and tail[s] in ('there', 'here', 'over'):
+            s += 1   # "the gentleman there"
+    elif tail[0] not in ('they', 'he', 'she') and (tail[0] in commands or tail[0] in STATEMENT_SUBJECTS or
+                                                   not is_name_word(tail, 0, False)):
+        return False
+    if s + 1 >= len(tail):
+        return False
+    verb, rest = tail[s], tail[s + 1:]
+    if verb in _ARRIVING and rest[0] == 'at' and len(rest) == 2 and (
+            rest[1] in NUMBER_WORDS or rest[1] in ('noon', 'midnight')):
+        return s == 1 and tail[0] not in STATEMENT_SUBJECTS   # "VIPs in at eight"
+    if verb in _OTHERS_GET:
+        return len(rest) <= 2 and rest[0] not in DETERMINERS and rest[0] not in PREPOSITIONS
+    if verb not in _OTHERS_WANT:
+        return False
+    if rest[0] == 'to':
+        return len(rest) > 1 and rest[1] not in commands and rest[1] not in ('be', 'have', 'see', 'get')
+    return not any(w in PLACE_HEADS for w in rest)
 
 
 def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
@@ -652,6 +706,9 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     if len(tokens) > 4 and tokens[-1] == 'yet' and 'not' in tokens and {'it', 'them', 'that', 'this'} & set(
             tokens) and not {'go', 'visit', 'avoid', 'near', 'enter', 'stay', 'keep', 'you'} & set(tokens):
         return True   # "cleanup crew hasn't gotten to it yet": how the scene stands
+    if np_end and is_numbered_subject(tokens, np_end):
+        # "table 4 wants ketchup", "table 12 are celebrating": a numbered place, said without its article
+        return tokens[np_end + 1:np_end + 2] != ['to'] and not has_constraint_word(tokens[np_end:])
     if not tokens or has_constraint_word([t for k, t in enumerate(tokens) if not (
             # "it needs more shade": an amount of something, no count of visits
             t in ('more', 'less') and k > 1 and tokens[k - 1] in FINITE_VERBS and k + 1 < len(tokens) and
@@ -683,6 +740,20 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         f = statement_verb(tokens, np_end)   # not "the desk that is by..."
         return f > 0 and tokens[f + 1:f + 2] != ['to']
     return False
+
+
+# Verbs of a numbered place said as the people at it ("table 4 wants ketchup", "table 3 asked for ...").
+_NUMBERED_SUBJECT_VERBS = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
+                                     'ordered', 'requested', 'has', 'have', 'is', 'are', 'was', 'were',
+                                     'says', 'said', 'complained'})
+
+
+def is_numbered_subject(tokens: Sequence[str], np_end: int) -> bool:
+    """Whether a clause starts with a numbered place without its article, then its verb ("table 4 wants")."""
+    return 2 <= np_end < len(tokens) and tokens[0] not in DETERMINERS and \
+        tokens[0] not in STATEMENT_SUBJECTS and (tokens[np_end - 1].isdigit() or
+                                                 tokens[np_end - 1] in NUMBER_WORDS) and \
+        tokens[np_end] in _NUMBERED_SUBJECT_VERBS
 
 
 def statement_verb(tokens: Sequence[str], np_end: int) -> int:
@@ -770,6 +841,26 @@ def _beneficiary(tokens: Sequence[str], i: int) -> int:
     return j - i if j >= len(tokens) or tokens[j] in _CLAUSE_END else 0
 
 
+# What pictures or footage are for ("hover above the pool deck for the wedding photos"): the visit is
+# the task.
+_PURPOSE_NOUNS = frozenset({'photos', 'photo', 'pictures', 'picture', 'footage', 'shoot', 'photoshoot',
+                            'video', 'videos', 'shots', 'shot', 'website', 'brochure', 'newsletter', 'album',
+                            'socials', 'records', 'record', 'report', 'archive'})
+
+
+def _purpose_at(tokens: Sequence[str], i: int) -> int:
+    """Length of "for the (wedding) photos" at ``tokens[i]``, ending the clause (0: none)."""
+    j = i + 1
+    if j >= len(tokens) or tokens[j] not in ('the', 'a', 'an', 'some', 'our', 'their', 'your', 'my'):
+        return 0
+    for k in range(j + 1, min(j + 4, len(tokens))):
+        if tokens[k] in _PURPOSE_NOUNS and (k + 1 >= len(tokens) or tokens[k + 1] in _CLAUSE_END):
+            return k + 1 - i
+        if not tokens[k].isalpha() or tokens[k] in STOPWORDS or tokens[k] in CONSTRAINT_WORDS:
+            return 0
+    return 0
+
+
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
     """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...").
 
@@ -812,6 +903,8 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
         aside = False
         if not hit and _for_whom(tokens, i):
             hit = _beneficiary(tokens, i)
+        if not hit and tokens[i] == 'for' and i > 0 and tokens[i - 1] not in PUNCT:
+            hit = _purpose_at(tokens, i)
         if not hit and i > 0 and tokens[i - 1] == ',':
             for phrase in ASIDES:
                 m = len(phrase)
@@ -1069,6 +1162,6 @@ def is_summons(tokens: Sequence[str], ordered: bool = False) -> bool:
     if who[0] in DETERMINERS:
         # "the Garcias", "the chef": people, not "the kitchen needs a hand"
         who = who[1:]
-        if not who or not (who[-1] in PERSON_NOUNS or who[-1].endswith('s') and who[-1] not in _PLACE_HEADS):
+        if not who or not (who[-1] in PERSON_NOUNS or who[-1].endswith('s') and who[-1] not in PLACE_HEADS):
             return False
     return bool(who) and not _NOT_WHO & set(who) and not any('_' in w for w in who)

@@ -365,6 +365,9 @@ RULES: tuple[Rule, ...] = (
          r'\g<v> \g<o> \g<p> \g<x> or '),
     Rule('all I need is for you to get to the bay window',
          r'\b(?:all|what) (?:i|we) (?:really |actually )?(?:need|want) is for you to\b', ''),
+    Rule('table 17 has a toddler, bring them a high chair: the thing, then to whom',
+         rf'\b(?P<v>bring|take|get|fetch|grab) (?P<p>them|him|her) (?P<x>(?:a|an|the|some|another) {_THING}'
+         rf'(?: (?:or|and) (?:a|an|the|some|another) {_THING})?)(?= [,.;!?]|$)', r'\g<v> \g<x> to \g<p>'),
     Rule('bring her either the cardigan or the shawl',
          r'\b(?P<v>bring|fetch|get) (?:her|him|them|us) (?=either )', r'\g<v> '),
     Rule('bring either the cardigan or the shawl, and leave it on her armchair',

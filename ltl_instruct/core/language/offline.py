@@ -632,6 +632,8 @@ class _Reader:
                 tail[w + 1] != 'be' or tail[w + 2] in ('here', 'back', 'home', 'in', 'there')):
             # "..., the carer will be here any minute", "..., the kids will grab it"
             return self._noted_cut(sentence, cut)
+        if chatter.is_others_remark(tail, _COMMANDS):
+            return self._noted_cut(sentence, cut)   # "..., Marco gets chatty", "..., they want to settle up"
         if len(tail) < 2 or 'you' in tail or tail[1] in ('not', 'never'):
             return sentence
         if any(t in chatter.REQUEST_WORDS - ({'need'} if tail[0] == 'the' else set()) for t in tail[1:3]):
@@ -814,7 +816,8 @@ class _Reader:
         snap.restore()
         self.first_error = error
         self.notes.append(f'read "{" ".join(sentence)}" as going to the place it starts with')
-        self._read_part(_Clause('and', ['go', 'to'] + sentence), None, sentence=True)
+        # the idioms read again with the verb there ("X before Y, and Y before Z": the verb said again)
+        self._read_part(_Clause('and', rewrite_idioms(['go', 'to'] + sentence)), None, sentence=True)
         if self.first_error is not error or len(self.unread) > unread:
             first.restore()   # no better read so: as said first
             self.first_error = first_error
@@ -1694,6 +1697,10 @@ class _Reader:
             listed, _, list_end = self.phrases.parse_list(tokens, 0)
             if len(listed) > 1 and list_end < len(tokens) and tokens[list_end] in chatter.FINITE_VERBS:
                 np_end = list_end   # "the lamp, the clock and the radio are on the dresser"
+        elif len(tokens) > 2 and (tokens[1].isdigit() or tokens[1] in NUMBER_WORDS) and \
+                not self.phrases.landmarks:
+            np = self.phrases.parse(tokens, 0)   # "table 4 wants ketchup": a numbered place as the subject
+            np_end = np.end if np is not None and chatter.is_numbered_subject(tokens, np.end) else 0
         if chatter.is_statement(tokens, np_end):
             named: list[NounPhrase] = []
             i = 0
@@ -1726,7 +1733,9 @@ class _Reader:
             if named:
                 self.left_thing = thing
                 self.last_object = thing or (named[0] if np_end else named[-1])
-                self.last_place = named[-1]
+                # "table 17 has a toddler": the numbered place is where "there" and "them" are
+                numbered = np_end and chatter.is_numbered_subject(tokens, np_end)
+                self.last_place = named[0] if numbered else named[-1]
                 self.phrases.last = self.last_object
                 self.mentions.extend(np.descriptor for np in named)
             self.notes.append(f'took "{text}" as a description of the scene, not a task')
@@ -3291,6 +3300,11 @@ class _Reader:
                 if j < len(rest) and rest[j] in ('at', 'by', 'in', 'near', 'next'):
                     j += 2 if _starts(rest, j, ['next', 'to']) else 1
             dests, _, dend = self._np_list(rest, j)
+            if any(d.pronoun and d.descriptor in [o.descriptor for o in objs] for d in dests):
+                # "bring them a cup" with no one named before: "them" is nobody, never the cup itself
+                said = ' '.join(rest[j:dend])
+                raise TranslationError(f'could not tell who "{said}" is in "{" ".join(tokens)}"',
+                                       details={'part': ' '.join(tokens)})
             rest = self._drop_location(rest[dend:], dests)   # "to the shelf in the study": the shelf
         elif implicit_dest is None:
             if verb in ('take', 'bring', 'get', 'fetch', 'grab'):

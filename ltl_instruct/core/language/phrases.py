@@ -219,6 +219,12 @@ def _relative_lead(tokens: Sequence[str], i: int) -> int:
     return 0
 
 
+# Verbs after a numbered name ("table 4 wants ..."): the name's subject's verb, never more of its name.
+_VERBS_AFTER_NUMBER = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
+                                 'ordered', 'orders', 'requested', 'would', 'says', 'said', 'called',
+                                 'complained', 'just'})
+
+
 CAN_DETERMINERS = frozenset({'the', 'a', 'an', 'that', 'this', 'each', 'every', 'my', 'your', 'our',
                              'empty', 'old', 'open', 'tin', 'paint', 'trash', 'garbage', 'watering'})
 
@@ -249,6 +255,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
 
     if w == 'till':
         return True   # "the till", "till 4": the counter (tokenize made every other "till" "until")
+    if have_name and w in _VERBS_AFTER_NUMBER and i > 0 and (
+            tokens[i - 1].isdigit() or tokens[i - 1] in NUMBER_WORDS):
+        return False   # "table 4 wants ketchup", "room 12 asked for towels": the number ends the name
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \

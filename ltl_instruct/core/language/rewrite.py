@@ -28,7 +28,7 @@ from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
                           'notice', 'find', ',', 'from', 'among', 'options', 'choices', 'pass', 'out', 'pass',
-                          'passing', 'past', 'remember', 'you'})
+                          'passing', 'past', 'remember', 'you', 'at'})
 _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'in', 'around', 'on', 'over',
                        'there', '-', 'are', 'sit', 'stand', 'lie', 'out', 'about', 'lying', 'sitting',
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
@@ -648,6 +648,11 @@ _AFTER_LABEL = frozenset({'and', 'or', 'then', 'first', 'last', 'next', 'before'
                           'on', 'in', 'at', 'but', 'twice', 'once', 'again', 'only', 'exactly'})
 
 
+def _numbered(head: str) -> bool:
+    """Whether a name's last word is a number ("table 4", "room twelve"): a place's label."""
+    return head.isdigit() or head in NUMBER_WORDS
+
+
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
     if 'it' in new and 'one' in new:
@@ -693,6 +698,11 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     if target is None:
         # no phrase with the same head: one of the same number ("the glasses ... the cups I mean")
         plural = singular(np.head) != np.head
+        if not _numbered(np.head) and np.head not in chatter.PLACE_HEADS and not np.pronoun:
+            # "bring the dessert menus to table 4, no wait, the wine list": a numbered place is corrected by
+            # a number or a place, the thing carried by a thing
+            things = [sp for sp in spans if not _numbered(sp.head)]
+            spans = things or spans
         same = [sp for sp in spans if (singular(sp.head) != sp.head) == plural]
         target = same[-1] if len(same) == 1 and np.pronoun != 'one' else spans[-1]
         if target.descriptor.relations and np.pronoun != 'one' and not np.descriptor.relations:
@@ -755,6 +765,57 @@ def _renamed(prev: list[str], hit: NounPhrase, new: list[str], new_np: NounPhras
     """
     cut = _relation_start(prev, hit) if hit.descriptor.relations and not new_np.descriptor.relations else None
     return prev[:hit.start] + new + prev[cut if cut is not None else hit.end:]
+
+
+def _step_start(prev: list[str], pos: int) -> int:
+    """Where the step holding token ``pos`` starts: its verb, after a stop or a connective.
+
+    -1 where there is none, or where a connective comes first ("go to the hall, then the gym": the gym
+    is one goal of a list, not a step of its own).
+    """
+    for a in range(pos - 1, -1, -1):
+        if prev[a] in PUNCT or prev[a] in ('and', 'then', 'or'):
+            return -1
+        if prev[a] in _VERBS and (a == 0 or prev[a - 1] in PUNCT or
+                                  prev[a - 1] in ('and', 'then', 'but', 'so')):
+            return a
+    return -1
+
+
+def _replace_step(prev: list[str], pos: int, rest: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Read "forget that" + what follows, where that replaces the whole last step, not one of its places.
+
+    "bring a cup to the sink. forget that, go to the host stand instead": the delivery is gone (it
+    was the sink replaced); "avoid the kitchen. scratch that, go to the garage": the avoidance is gone
+    (it was "avoid the garage"); "bring a high chair to table 8 - ignore that, Luca's sorting it": a
+    statement follows, the step is dropped (it was "bring a high chair to luca"). None where the step's
+    verb is not found or what follows is neither a command nor a statement.
+    """
+    said = list(rest)
+    while said and said[0] in (',', 'just', 'instead', 'and', 'so', 'then'):
+        said = said[1:]
+    words = [t for t in said if t not in PUNCT]
+    if not words:
+        return None
+    command = words[0] in _VERBS and words[1:2] not in (['it'], ['them'])
+    statement = not command and (chatter.is_statement(words, _np_end(words)) or chatter.is_person_statement(
+        words) or len(words) > 2 and words[0] not in DETERMINERS and words[0] not in _VERBS and words[1] in (
+        'is', 'are', 'was', 'has', 'have') and not chatter.carries_constraint(words))
+    if not command and not statement:
+        return None
+    a = _step_start(prev, pos)
+    if a < 0:
+        return None
+    b = pos
+    while b < len(prev) and prev[b] not in '.;!?':
+        b += 1
+    if command:
+        notes.append(f'"{" ".join(prev[a:b])}" replaced by "{" ".join(said)}"')
+        return prev[:a] + said + prev[b:]
+    notes.append(f'"{" ".join(prev[a:b])}" dropped; left out "{" ".join(words)}" (asks for nothing)')
+    while a > 0 and prev[a - 1] in ('and', 'but', 'then', ','):
+        a -= 1
+    return prev[:a] + prev[b:]
 
 
 def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]:
@@ -1572,6 +1633,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     if neither is not None:
         return neither
     named = {w for sp in _np_spans(prev) for w in prev[sp.start:sp.end]} if marker in _CANCEL else set()
+    if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and seg[1] in _VERBS and named:
+        # "bring a cup to the sink. scratch that, head to the garage": the whole step replaced
+        step = _replace_step(prev, _np_spans(prev)[-1].start, seg, notes)
+        if step is not None:
+            return step
     if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and (
             seg[1] in DETERMINERS or seg[1] in _VERBS or seg[1] in named):
         # "scratch that, the observatory dome", "scratch that, bay two": what replaces it
@@ -1753,6 +1819,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if not spans:
                 return None
             last = spans[-1]
+            step = _replace_step(prev, last.start, rest, notes)
+            if step is not None:
+                return step
             if len(new) > 1 and new[0] in _VERBS and new[1] in ('it', 'them'):
                 # "put the bowl on the counter. scratch that, put it in the dishwasher": the whole
                 # step again, with "it" the thing of the step it replaces

@@ -834,6 +834,12 @@ _REMARK_RE = re.compile(
     r'|(?:i )?do not care which (?:1|one)'
     r'|i (?:just |only )?need you to (?:see|check|find out|look) (?:if|whether) [a-z ]+'
     r'|pick one(?: and go)?'
+    # "I want you to learn where it lives", "so you know where they go": where a thing is kept, to remember
+    r'|(?:(?:i|we) (?:want|would like|need) you to |(?:so )?(?:that )?you (?:can |will )?)'
+    r'(?:learn|remember|know|memori[sz]e|note|see) where (?:it|they|this|that|she|he) '
+    r'(?:lives?|is|are|goes|go|belongs?|sits?|stays?|is kept|are kept)'
+    r'|(?:learn|remember|memori[sz]e) where (?:it|they|this|that|she|he) '
+    r'(?:lives?|is|are|goes|go|belongs?|sits?|stays?|is kept|are kept)'
     r'|i (?:just |only )?need (?:you )?(?:to )?(?:hold|carry|help (?:me )?with|mind|keep|look after|watch) '
     r'(?:something|this|that|it|a few things|some things|a thing|stuff)'
     r'(?: (?:for me|for a (?:second|minute|bit)))?'

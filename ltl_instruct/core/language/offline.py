@@ -1905,6 +1905,12 @@ class _Reader:
                 return _Scope('global'), rest
         if tokens[0] in ('once', 'after', 'when', 'while') and len(tokens) > 1:
             sc, end = self._event_phrase(tokens, 1)
+            if sc is not None and sc.target is not None and not sc.target.descriptor.relations and \
+                    sc.target.descriptor.name in chatter.TIME_NOUNS:
+                # "once in the morning", "after the night": a time of day, no place to scope by
+                said = ' '.join(tokens[:end])
+                raise TranslationError(f'could not place "{said}" (a time of day, not a place)',
+                                       details={'part': said})
             if sc is not None:
                 return sc, tokens[end:]
         if tokens[0] in ('until', 'till') and len(tokens) > 1:

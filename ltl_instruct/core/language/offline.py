@@ -584,6 +584,14 @@ class _Reader:
                 not any(t in SKILL_VERBS - {'do', 'get', 'have'} or t in _NAMING_WORDS for t in tail[2:]):
             # (not "I'd like to do the kitchen next": that may be the task)
             return self._noted_cut(sentence, cut)   # "..., I'd like to do some mending": the person's plan
+        wish = 3 if tail[1:3] in (['want', 'to'], ['need', 'to']) else \
+            4 if tail[1:4] == ['would', 'like', 'to'] else 0
+        if wish and tail[0] in ('i', 'we') and (tail[wish:wish + 2] in (
+                ['know', 'if'], ['know', 'whether'], ['see', 'if'], ['see', 'whether'], ['find', 'out'],
+                ['be', 'sure'], ['be', 'certain']) or tail[wish:wish + 1] == ['know'] and
+                tail[wish + 1:wish + 2] and tail[wish + 1] in ('that', 'how')) and not _rule_in(tail) and \
+                not chatter.carries_constraint(tail[wish + 2:]):   # (the "if" of "know if" is no rule)
+            return self._noted_cut(sentence, cut)   # "..., I want to know if the gardener has trimmed it"
         if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when']) and \
                 tail[3:4] and tail[3] in ('i', 'we', 'she', 'he', 'they') and not _rule_in(tail) and \
                 not chatter.carries_constraint(tail):
@@ -3466,6 +3474,9 @@ class _Reader:
         rest, ordered_tail = _strip_tails(self._drop_location([t for t in tokens[end:] if t != ','], nps))
         targets = [np.descriptor for np in nps]
         r0, r1 = orders.find_phrase(rest, orders.REVERSE)
+        if r0 == 1 and rest[0] in ('but', 'and', 'just', 'only'):
+            r0, rest = 0, rest[1:]   # "visit them all, but in reverse order"
+            r1 -= 1
         if r0 == 0 and len(targets) > 1 and joiner != 'or':
             # "visit a, b and c in reverse order": c, then b, then a
             targets, ordered_tail, rest = targets[::-1], 'sequence', rest[r1:]

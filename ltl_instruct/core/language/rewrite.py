@@ -34,7 +34,8 @@ _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'i
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
                        'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
                        'yesterday', 'along', 'against', 'under', 'behind', 'beside', 'inside', 'up',
-                       'down'})   # "the vase, the candle and the frame I showed you?"
+                       'down', 'my', 'our'})   # "the vase, the candle and the frame I showed you?"
+# ("a hairbrush and a little china dog my mother gave me": who gave it, a clause of its own)
 # Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
 _POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
                              'destination', 'choice', 'point', 'bit'})
@@ -213,6 +214,11 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
      r'(?: [a-z]+)? (?:(?:a|an|some|the|my|our|your) [a-z]+(?: [a-z]+)? )*and (?:a|an|some|the|my|our|your) '
      r'[a-z]+)',
      lambda m: m.group('a') + (' , ' if not set(m.group('a').split()[1:]) & _NOT_LISTED else ' ')),
+    # "backwards from how I said them", "in the opposite order to the way I listed them": the order said
+    (r'\b(?P<r>in reverse order|in the reverse order|in the opposite order|in opposite order|in reverse|'
+     r'backwards|back to front) (?:from|to|of|compared to) (?:how|the way|the order|what) (?:i|we) '
+     r'(?:said|listed|named|gave|mentioned|wrote|read)(?: (?:them|it|those|these|that))?'
+     r'(?: (?:out|down|to you|before|earlier))?\b', r'\g<r>'),
     # "in the reverse of that order", "last to first", "backwards": in reverse order
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
      r'backwards|back to front)(?! order)\b', 'in reverse order'),

@@ -69,6 +69,20 @@ BLIND_ROUND_B4B = [
     ("Go and put yourself by the kettle, but only after you've stopped at the fridge, I want to be sure its "
      'door is shut properly.',
      'F near[kettle] & (!near[kettle] U near[fridge])'),
+    # "the other one has the sharp knives in it", "One of them has my hearing aid tucked in it": said about
+    # things named before, no count and no place
+    ('Put the scissors in the drawer under the kitchen counter - sorry, I ment the drawer next to the '
+     'cooker, the other one has the sharp knives in it.',
+     'F (near[scissors] & F (pick[scissors] & F (near[drawer::isnextto(cooker)] & F release[scissors, '
+     'drawer::isnextto(cooker)])))'),
+    ('Would you go to the cushion on the sofa or the cushion under the coffee table? One of them has my '
+     'hearing aid tucked in it.',
+     'F near[cushion::isabove(sofa)] | F near[cushion::isbelow(coffee_table)]'),
+    # "she's in one of her moods", "he's in a bad mood" after an avoidance: how it is, not where
+    ("Go to the airing cupboard, and please keep well away from the cat, she's in one of her moods today.",
+     'F near[airing_cupboard] & G !near[cat]'),
+    ('Go to the den, and avoid the dog, he is in a bad mood.',
+     'F near[den] & G !near[dog]'),
     # "..., I want to know if ..." after the request: why the visit, asks for nothing
     ("Fly to the washing line, but only after you've been round to the front hedge, I want to know if the "
      'gardener has trimmed it.',

@@ -630,6 +630,12 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
                                                       'will', 'must', 'should', 'have', 'has')
 
 
+# Subjects that point at things said before ("the other one", "one of them"): no count, no place.
+_ONE_SUBJECTS: tuple[tuple[str, ...], ...] = (
+    ('the', 'other', 'one'), ('the', 'other', 'ones'), ('one', 'of', 'them'), ('one', 'of', 'those'),
+    ('one', 'of', 'these'), ('the', 'other', 'two'))
+
+
 def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     """Whether a clause describes the world rather than asking the robot for something.
 
@@ -641,6 +647,10 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         Where a noun phrase at the start of the clause ends (0: none), for
         noun-phrase subjects ("the cat keeps...").
     """
+    n = next((len(s) for s in _ONE_SUBJECTS if tuple(tokens[:len(s)]) == s), 0)
+    if n and tokens[n:n + 1] and tokens[n] in FINITE_VERBS and tokens[n + 1:n + 2] != ['to'] and \
+            not has_constraint_word(tokens[n:]) and 'you' not in tokens:
+        return True   # "the other one has the sharp knives in it", "one of them has my hearing aid in it"
     if len(tokens) > 4 and tokens[-1] == 'yet' and 'not' in tokens and {'it', 'them', 'that', 'this'} & set(
             tokens) and not {'go', 'visit', 'avoid', 'near', 'enter', 'stay', 'keep', 'you'} & set(tokens):
         return True   # "cleanup crew hasn't gotten to it yet": how the scene stands

@@ -314,6 +314,8 @@ _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'mi
                            'love', 'loves', 'like', 'likes', 'raid', 'raids', 'eat', 'eats', 'steal',
                            'steals',
                            'smell', 'smells', 'attract', 'attracts'})
+# "in one of her moods", "in a huff": how someone is, not where
+_MOODS = frozenset({'mood', 'moods', 'temper', 'huff', 'strop', 'sulk', 'funk', 'state'})
 # Words after "is/are" that say where something is ("they are next to the door"), not why.
 _PLACE_PREPS = chatter.PREPOSITIONS | {'next', 'above', 'below'}
 # Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
@@ -655,6 +657,8 @@ class _Reader:
             return self._noted_cut(sentence, cut)
         if first in ('he', 'she', 'they', 'it') and tail[1] in ('is', 'are', 'was', 'were', 'has', 'have',
                                                                 'keeps', 'gets', 'bites', 'barks'):
+            if tail[2:3] == ['in'] and _MOODS & set(tail) and not _rule_in(tail):
+                return self._noted_cut(sentence, cut)   # "..., she's in one of her moods today"
             if tail[2:3] and tail[2] in DETS | _PLACE_PREPS | {'fine', 'ok', 'okay', 'your', 'important',
                                                                'better'}:
                 return sentence   # "they are in the kitchen", "it is the red one", "it is up to you"

@@ -692,6 +692,12 @@ def is_others_remark(tail: Sequence[str], commands: frozenset[str]) -> bool:
     return not any(w in PLACE_HEADS for w in rest)
 
 
+# Subjects that point at things said before ("the other one", "one of them"): no count, no place.
+_ONE_SUBJECTS: tuple[tuple[str, ...], ...] = (
+    ('the', 'other', 'one'), ('the', 'other', 'ones'), ('one', 'of', 'them'), ('one', 'of', 'those'),
+    ('one', 'of', 'these'), ('the', 'other', 'two'))
+
+
 def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     """Whether a clause describes the world rather than asking the robot for something.
 
@@ -703,6 +709,10 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
         Where a noun phrase at the start of the clause ends (0: none), for
         noun-phrase subjects ("the cat keeps...").
     """
+    n = next((len(s) for s in _ONE_SUBJECTS if tuple(tokens[:len(s)]) == s), 0)
+    if n and tokens[n:n + 1] and tokens[n] in FINITE_VERBS and tokens[n + 1:n + 2] != ['to'] and \
+            not has_constraint_word(tokens[n:]) and 'you' not in tokens:
+        return True   # "the other one has the sharp knives in it", "one of them has my hearing aid in it"
     if len(tokens) > 4 and tokens[-1] == 'yet' and 'not' in tokens and {'it', 'them', 'that', 'this'} & set(
             tokens) and not {'go', 'visit', 'avoid', 'near', 'enter', 'stay', 'keep', 'you'} & set(tokens):
         return True   # "cleanup crew hasn't gotten to it yet": how the scene stands
@@ -963,6 +973,12 @@ _REMARK_RE = re.compile(
     r'|i (?:just |only )?need you to (?:see|check|find out|look) (?:if|whether) [a-z ]+'
     r'|pick one(?: and go)?'
     r'|(?:for me|to me) (?:it )?(?:is|s) (?:all )?the same|(?:it )?(?:is|s) (?:all )?the same (?:for|to) me'
+    # "I want you to learn where it lives", "so you know where they go": where a thing is kept, to remember
+    r'|(?:(?:i|we) (?:want|would like|need) you to |(?:so )?(?:that )?you (?:can |will )?)'
+    r'(?:learn|remember|know|memori[sz]e|note|see) where (?:it|they|this|that|she|he) '
+    r'(?:lives?|is|are|goes|go|belongs?|sits?|stays?|is kept|are kept)'
+    r'|(?:learn|remember|memori[sz]e) where (?:it|they|this|that|she|he) '
+    r'(?:lives?|is|are|goes|go|belongs?|sits?|stays?|is kept|are kept)'
     r'|i (?:just |only )?need (?:you )?(?:to )?(?:hold|carry|help (?:me )?with|mind|keep|look after|watch) '
     r'(?:something|this|that|it|a few things|some things|a thing|stuff)'
     r'(?: (?:for me|for a (?:second|minute|bit)))?'

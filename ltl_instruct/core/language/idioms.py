@@ -115,6 +115,18 @@ def _plain(gerund: str) -> str:
     return f'{stem} {rest}'.strip()
 
 
+# When in the day a visit falls ("in the morning", "at night", "before lunch"): no place, no order.
+_DAYTIME = (r'(?:(?:in the|at|this|before|after|during the|around|by|on|at about) )?(?:early |late )?'
+            r'(?:morning|afternoon|evening|night|noon|midday|lunch|lunchtime|dinner|dinnertime|breakfast|'
+            r'tea|teatime|supper|bedtime|bed|midnight|dawn|dusk|today|tonight|tomorrow|monday|tuesday|'
+            r'wednesday|thursday|friday|saturday|sunday)')
+
+
+def _spread(m: 're.Match[str]') -> str:
+    # "twice, once in the morning and once at night": as many onces as the count, so it says the count again
+    return m.group('c') if m.group('s').split().count('once') == _count_of(m.group('c')) else m.group(0)
+
+
 def _group(m: 're.Match[str]', name: str) -> str:
     return m.group(name) or ''
 
@@ -1527,6 +1539,10 @@ RULES: tuple[Rule, ...] = (
     Rule('keep away from that wheelbarrow: the wheelbarrow',
          r'\b(?P<v>away from|clear of|near|avoid|to|visit) (?:that|those|this|'
          r'these) (?=[a-z])', r'\g<v> the '),
+    Rule('exactly twice, once in the morning and once at night: the count said again, spread over the day',
+         rf'\b(?P<c>(?:twice|thrice|{_NUM} times)) , (?P<s>once {_DAYTIME}(?: (?:, |and |, and )?once '
+         rf'{_DAYTIME}){{1,3}})(?= [,.;!?]|$)',
+         _spread),
     Rule('more than once in total: the count said once',
          r'(?<=\bonce) in total\b|(?<=\btimes) in total\b', ''),
     Rule('go to the crib but hit the table and the pail first, any order: only after both',

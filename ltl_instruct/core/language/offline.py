@@ -314,6 +314,8 @@ _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'mi
                            'love', 'loves', 'like', 'likes', 'raid', 'raids', 'eat', 'eats', 'steal',
                            'steals',
                            'smell', 'smells', 'attract', 'attracts'})
+# "in one of her moods", "in a huff": how someone is, not where
+_MOODS = frozenset({'mood', 'moods', 'temper', 'huff', 'strop', 'sulk', 'funk', 'state'})
 # Words after "is/are" that say where something is ("they are next to the door"), not why.
 _PLACE_PREPS = chatter.PREPOSITIONS | {'next', 'above', 'below'}
 # Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
@@ -586,6 +588,14 @@ class _Reader:
                 not any(t in SKILL_VERBS - {'do', 'get', 'have'} or t in _NAMING_WORDS for t in tail[2:]):
             # (not "I'd like to do the kitchen next": that may be the task)
             return self._noted_cut(sentence, cut)   # "..., I'd like to do some mending": the person's plan
+        wish = 3 if tail[1:3] in (['want', 'to'], ['need', 'to']) else \
+            4 if tail[1:4] == ['would', 'like', 'to'] else 0
+        if wish and tail[0] in ('i', 'we') and (tail[wish:wish + 2] in (
+                ['know', 'if'], ['know', 'whether'], ['see', 'if'], ['see', 'whether'], ['find', 'out'],
+                ['be', 'sure'], ['be', 'certain']) or tail[wish:wish + 1] == ['know'] and
+                tail[wish + 1:wish + 2] and tail[wish + 1] in ('that', 'how')) and not _rule_in(tail) and \
+                not chatter.carries_constraint(tail[wish + 2:]):   # (the "if" of "know if" is no rule)
+            return self._noted_cut(sentence, cut)   # "..., I want to know if the gardener has trimmed it"
         if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when']) and \
                 tail[3:4] and tail[3] in ('i', 'we', 'she', 'he', 'they') and not _rule_in(tail) and \
                 not chatter.carries_constraint(tail):
@@ -651,6 +661,8 @@ class _Reader:
             return self._noted_cut(sentence, cut)
         if first in ('he', 'she', 'they', 'it') and tail[1] in ('is', 'are', 'was', 'were', 'has', 'have',
                                                                 'keeps', 'gets', 'bites', 'barks'):
+            if tail[2:3] == ['in'] and _MOODS & set(tail) and not _rule_in(tail):
+                return self._noted_cut(sentence, cut)   # "..., she's in one of her moods today"
             if tail[2:3] and tail[2] in DETS | _PLACE_PREPS | {'fine', 'ok', 'okay', 'your', 'important',
                                                                'better'}:
                 return sentence   # "they are in the kitchen", "it is the red one", "it is up to you"
@@ -1916,6 +1928,12 @@ class _Reader:
                 return _Scope('global'), rest
         if tokens[0] in ('once', 'after', 'when', 'while') and len(tokens) > 1:
             sc, end = self._event_phrase(tokens, 1)
+            if sc is not None and sc.target is not None and not sc.target.descriptor.relations and \
+                    sc.target.descriptor.name in chatter.TIME_NOUNS:
+                # "once in the morning", "after the night": a time of day, no place to scope by
+                said = ' '.join(tokens[:end])
+                raise TranslationError(f'could not place "{said}" (a time of day, not a place)',
+                                       details={'part': said})
             if sc is not None:
                 return sc, tokens[end:]
         if tokens[0] in ('until', 'till') and len(tokens) > 1:
@@ -3484,6 +3502,9 @@ class _Reader:
         rest, ordered_tail = _strip_tails(self._drop_location([t for t in tokens[end:] if t != ','], nps))
         targets = [np.descriptor for np in nps]
         r0, r1 = orders.find_phrase(rest, orders.REVERSE)
+        if r0 == 1 and rest[0] in ('but', 'and', 'just', 'only'):
+            r0, rest = 0, rest[1:]   # "visit them all, but in reverse order"
+            r1 -= 1
         if r0 == 0 and len(targets) > 1 and joiner != 'or':
             # "visit a, b and c in reverse order": c, then b, then a
             targets, ordered_tail, rest = targets[::-1], 'sequence', rest[r1:]

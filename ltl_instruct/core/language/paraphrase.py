@@ -221,6 +221,12 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r'(?<! the)(?<! a)(?<! my)(?<! your)(?<! our)(?<! car) (?:wait|stand|sit|park) '
      r'(?:by|near|next to|beside) '
      r'(?=(?:the|a|my|your|our) )', ' go to '),
+    # "go and put yourself by the kettle", "position yourself next to the gate": go there
+    (r'(?: (?:come|go) and)? (?:put|place|plant|park|position|station|get) yourself '
+     r'(?:by|next to|near|beside|at|in|on) (?=(?:the|a|my|your|our) )', ' go to '),
+    # "come and wait by me on the sofa", "sit with me in the kitchen": where the person is
+    (r'(?: (?:come|go) and)? (?:wait|stand|sit|stay) (?:by|with|next to|beside|near) me (?:on|at|in|by) '
+     r'(?=(?:the|my|our) )', ' go to '),
     # "the chair by the window, or if it's taken, the chair by the door": either will do
     (r' (?:, )?or (?:, )?if (?:it|that|this|the \w+|they) (?:is|are|s|happens to be) (?:already )?'
      r'(?:taken|busy|occupied|'

@@ -266,8 +266,20 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     if w in STOPWORDS:
         return False
     if w.endswith('ly') and len(w) > 5 and w not in LY_NOUNS:
-        return False  # adverbs ("quickly", "carefully") are not names
+        # adverbs ("quickly", "carefully") are not names; an adjective is, between an article and a noun
+        # ("a woolly hat", "the curly wig"; not "the really big box")
+        return i > 0 and tokens[i - 1] in DETERMINERS and w not in _LY_ADVERBS and nxt.isalpha() and \
+            not nxt.endswith('ly') and nxt not in STOPWORDS
     return True
+
+
+# Adverbs in -ly that say how much, seen between an article and an adjective ("the really big box").
+_LY_ADVERBS = frozenset({'really', 'fairly', 'truly', 'extremely', 'particularly', 'especially', 'actually',
+                         'nearly', 'mostly', 'totally', 'completely', 'slightly', 'terribly', 'awfully',
+                         'incredibly', 'reasonably', 'relatively', 'entirely', 'absolutely', 'only',
+                         'usually',
+                         'probably', 'definitely', 'certainly', 'possibly', 'exactly', 'quickly', 'carefully',
+                         'slowly', 'gently', 'quietly', 'simply', 'currently', 'normally', 'originally'})
 
 
 def singular(word: str) -> str:

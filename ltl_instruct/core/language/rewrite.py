@@ -34,7 +34,8 @@ _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'i
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
                        'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
                        'yesterday', 'along', 'against', 'under', 'behind', 'beside', 'inside', 'up',
-                       'down'})   # "the vase, the candle and the frame I showed you?"
+                       'down', 'my', 'our'})   # "the vase, the candle and the frame I showed you?"
+# ("a hairbrush and a little china dog my mother gave me": who gave it, a clause of its own)
 # Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
 _POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
                              'destination', 'choice', 'point', 'bit'})
@@ -219,6 +220,11 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
      r'(?: [a-z]+)? (?:(?:a|an|some|the|my|our|your) [a-z]+(?: [a-z]+)? )*and (?:a|an|some|the|my|our|your) '
      r'[a-z]+)',
      lambda m: m.group('a') + (' , ' if not set(m.group('a').split()[1:]) & _NOT_LISTED else ' ')),
+    # "backwards from how I said them", "in the opposite order to the way I listed them": the order said
+    (r'\b(?P<r>in reverse order|in the reverse order|in the opposite order|in opposite order|in reverse|'
+     r'backwards|back to front) (?:from|to|of|compared to) (?:how|the way|the order|what) (?:i|we) '
+     r'(?:said|listed|named|gave|mentioned|wrote|read)(?: (?:them|it|those|these|that))?'
+     r'(?: (?:out|down|to you|before|earlier))?\b', r'\g<r>'),
     # "in the reverse of that order", "last to first", "backwards": in reverse order
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
@@ -1709,7 +1715,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if seg[:1] == ['not'] and len(seg) > 2:
             # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
             named = PhraseParser().parse(seg, 1)
-            swapped = _replace_named(prev, seg, named) if named is not None and not named.pronoun else None
+            swapped = None if named is None else _replace_named(prev, seg, named) if not named.pronoun else \
+                _replace_one(prev, seg, named, notes)
             if swapped is not None:
                 notes.append(f'corrected: {" ".join(seg)}')
                 return swapped
@@ -2063,6 +2070,42 @@ def _replace_named(prev: list[str], seg: list[str], named: NounPhrase) -> Option
                    None)
     # "take the pot on the stove ..., not the pot, the pan": the pan on the stove
     return None if hit is None else _renamed(prev, hit, new, nnp)
+
+
+def _replace_one(prev: list[str], seg: list[str], named: NounPhrase, notes: list[str]) -> Optional[list[str]]:
+    """Replace the thing named by its adjective: "the blue blanket ..., not the blue one, the tartan one".
+
+    The adjectives of the phrase it is not ("the blue one") find the thing said before ("the
+    blue blanket"); the new phrase takes its noun where it says "one" ("the tartan one": the
+    tartan blanket), and its place where it says none. A statement after it, about the thing
+    replaced ("..., the blue one's in the wash"), asks for nothing and is left out, noted.
+    """
+    said = [w for w in seg[named.start:named.end] if w not in DETERMINERS and w != 'one']
+    if not said or seg[named.end:named.end + 1] != [',']:
+        return None
+    rest = seg[named.end + 1:]
+    c = rest.index(',') if ',' in rest else len(rest)
+    new, tail = _strip_corr(rest[:c]), [t for t in rest[c + 1:] if t not in PUNCT]
+    if tail and (chatter.carries_constraint(tail) or not chatter.is_statement(tail, _np_end(tail))):
+        return None   # only a statement may follow: what else is said is read as said
+    nnp = PhraseParser().parse(new, 0) if new else None
+    if nnp is None or nnp.end != len(new):
+        return None
+    n = len(said)
+    hit = next((sp for sp in reversed(_np_spans(prev)) if not sp.pronoun and
+                prev[sp.start + 1:sp.start + 1 + n] == said and sp.start + 1 + n < sp.end and
+                prev[sp.start] in DETERMINERS), None)
+    if hit is None:
+        return None
+    cut = _relation_start(prev, hit)
+    noun = prev[hit.start + 1 + n:cut if cut is not None else hit.end]
+    if nnp.pronoun == 'one' or new[-1] == 'one':
+        k = len(new) - 1 - new[::-1].index('one')
+        new = new[:k] + noun + new[k + 1:]
+    if tail:
+        notes.append(f'left out "{" ".join(tail)}" (asks for nothing)')
+    keep = cut if cut is not None and not nnp.descriptor.relations else hit.end
+    return prev[:hit.start] + new + prev[keep:]
 
 
 def _or_group(prev: list[str]) -> Optional[tuple[int, int, list[NounPhrase]]]:

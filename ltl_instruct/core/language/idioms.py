@@ -32,11 +32,12 @@ _ORD = '(?:' + '|'.join(ORDINALS) + ')'
 _FRAME = (r'then|but|you|is|are|be|once|twice|thrice|more|less|fewer|at|on|for|in|again|must|has|have|'
           r'should|needs|need|shall|will|can|cannot|may|get|gets|do|not|never|no|until|before|after|when|'
           r'while|if|unless|whenever|make|sure|ensure|that|to|go|visit|reach|avoid|only')
-_W = rf'(?:(?!(?:and|or|{_FRAME})\b)[a-z0-9_]+)'
+# (an acronym stays upper case: "the IT closet")
+_W = rf'(?:(?!(?:and|or|{_FRAME})\b)[a-zA-Z0-9_]+)'
 # a noun phrase ("the red room", "a"), and a list of them ("a, b and c"): one bounded repetition
 # each, so that matching stays linear
 _NP = rf'(?:{_W}(?: {_W}){{0,6}})'
-_NPS = rf'(?:{_W}(?: (?:(?!(?:{_FRAME})\b)[a-z0-9_,]+)){{0,12}}?)'
+_NPS = rf'(?:{_W}(?: (?:(?!(?:{_FRAME})\b)[a-zA-Z0-9_,]+)){{0,12}}?)'
 # connectives that open an event ("until", "as soon as")
 _WHEN = (r'until|till|before|after|once|when|whenever|if|unless|as soon as|every time|each time|any time|'
          r'anytime|only after|not until')
@@ -257,8 +258,9 @@ RULES: tuple[Rule, ...] = (
          rf'\bthe (?P<x>{_W}(?: {_W}){{1,4}}) (?P<j>or|and) the (?P<y>{_W}(?: {_W}){{0,2}})'
          rf' one\b', _same_head),
     Rule('I need the laundry room and the closet both looked at',
-         rf'\b(?:i|we) (?:need|want) (?P<x>(?:the|my|our) {_NPS}) (?:both |all |each )?(?:looked at|checked|'
-         r'checked on|seen to|visited|inspected)\b', r'visit \g<x>'),
+         rf'(?:\b(?:i|we) |^)(?:need|want) (?P<x>(?:the|my|our) {_NPS}) (?:both |all |each )?'
+         r'(?:looked at|checked|'
+         r'checked on|seen to|visited|inspected|surveyed|swept)\b', r'visit \g<x>'),
     # ---- a place that needs the robot, a visit said another way
     Rule('room 204 needs you',
          rf'^(?P<x>(?:the )?{_NP}) (?:needs|need|wants|could use) (?:you|a body|the robot|'
@@ -353,9 +355,12 @@ RULES: tuple[Rule, ...] = (
     Rule('fly laps over the track, at least three of them',
          r' , (?P<m>at least|at most|exactly) (?P<n>two|three|four|five|six) of them\b',
          r' \g<m> \g<n> times'),
-    Rule('never overfly the playground', r'\boverfl(?P<e>y|ying|ies|ew|own)\b',
-         lambda m: {'y': 'fly', 'ying': 'flying', 'ies': 'flies', 'ew': 'flew', 'own': 'flown'}[m.group('e')]
-         + ' over'),
+    # (each form spelt whole: a rule runs only on a sentence holding a word it spells out)
+    Rule('never overfly the playground', r'\b(?P<e>overfly|overflying|overflies|overflew|overflown)\b',
+         lambda m: m.group('e')[4:] + ' over'),
+    Rule('no overflight of the highway: do not fly over it',
+         r'\b(?:no|avoid|avoid any|avoid all) (?:overflights?|flyovers?|flying over) (?:of|over|above) ',
+         'never fly over '),
     Rule('loop from the receiving dock to the shipping dock',
          r'\b(?:loop|do (?:the|a) (?:loop|run|walk|trip|circuit)|fly (?:the|a) (?:stretch|leg|route|loop))'
          r' from ',
@@ -538,6 +543,15 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<x>(?:the|a|an|my|your|our|this|that|'
          rf'these|those) {_NP}) back (?P<p>to|into|in|onto|inside)\b', r'\g<v> \g<x> \g<p>'),
     Rule('hold position over it', r'\bhold (?:your |its )?position (?=over|above|there|here|for)', 'hover '),
+    Rule('hold position at inverter station 4: hover there (not "as long as b does not happen")',
+         r'\bhold (?:your |its )?position (?=(?:at|by|near|on) (?!.*\b(?:as long as|unless|until)\b))',
+         'hover '),
+    # "park yourself at the door until I tell you otherwise": the person's word is no event of the
+    # task; what is said before it holds for the whole run
+    Rule('stay at the door until I tell you otherwise',
+         r'(?: ,)? (?:until|unless) (?:(?:i|we) (?:tell|say|call|radio|signal|let) (?:you )?(?:otherwise|'
+         r'differently|so|know)|further notice|told otherwise|you are told otherwise|you hear otherwise)\b',
+         ''),
     Rule('survey the whole array: the array',
          r'\b(?P<v>survey|inspect|cover|scan|search|check|patrol|sweep|map|photograph|visit|over|around|'
          r'clean|'
@@ -577,8 +591,25 @@ RULES: tuple[Rule, ...] = (
     Rule('before anything else, go to X: first', r'(?:^|(?<=, ))before (?:anything|everything) else (?:, )?',
          'first '),
     Rule('hotel robot: the cart first: an address', r'^(?:[a-z]+ )?(?:robot|bot|drone|rover) : ', ''),
-    Rule('give the rug a wide berth', rf'\bgive (?P<x>{_NP}) a (?:wide|good|big|very wide) berth\b',
+    Rule('give the rug a wide berth',
+         rf'\b(?:give|giving) (?P<x>{_NP}) a (?:wide|good|big|very wide) berth\b',
          r'keep away from \g<x>'),
+    Rule('do not go near the server room without it: until you have it',
+         r'\b(?P<a>(?:do not|never|you cannot|you must not) (?:go|enter|fly|walk|drive|head|'
+         r'get)\b(?:(?! (?:then|and|but) ).)*?) without (?P<o>it|them)(?: (?:on you|with you|in hand))?$',
+         r'\g<a> until you have \g<o>'),
+    Rule('put the keys back and do not go through the server room doing it: the whole task',
+         r'\b(?P<a>(?:do not|never|you cannot|you must not|avoid|stay|keep)\b(?:(?! (?:then|and|but) ).)*?)'
+         r'(?: ,)? (?:while |when )?(?:doing (?:it|so|that|this|the job|the task)|'
+         r'you do (?:it|so|that|this))$',
+         r'\g<a> at any point'),
+    Rule('only once rows 10 and 11 are done: only after them',
+         rf'\bonly (?:once|when|after) (?P<x>(?:the |my |our )?{_NPS}) (?:are|is|have been|has been) '
+         r'(?:both |all )?(?:done|checked|finished|complete|completed|visited|surveyed|inspected|covered)\b',
+         r'only after \g<x>'),
+    Rule('stay the hell away from the jack: stay away from it',
+         r'\b(?P<v>stay|keep|get|steer) the (?:hell|heck|fuck|frick) (?=away|out|off|clear|back)\b',
+         r'\g<v> '),
     Rule('do not cut across the lawn', r'\b(?:cut|shortcut|short cut) (?:across|through|over)\b',
          'go through'),
     Rule('go to the lab from the second floor only', rf'\b(?:from|via|through) (?P<x>{_NP}) only\b',
@@ -1042,6 +1073,11 @@ RULES: tuple[Rule, ...] = (
     Rule('during the carrying: while carrying it',
          r'\b(?:during|for) (?:the )?(?:carrying|carry|transport|transportation|delivery)\b',
          'while carrying it'),
+    Rule('run the lobby then mail room then loading dock route: the places in that order',
+         rf'\b(?:do|walk|run|drive|fly|make|complete|follow|take|patrol) (?:the|that|this|a) '
+         rf'(?P<l>{_W}(?: {_W}){{0,3}}(?: (?:,|then|, then|and then) (?:the )?{_W}(?: {_W}){{0,3}}?){{1,6}}) '
+         r'(?:loop|route|run|circuit|round|sequence|course)\b(?! (?:from|to)\b)',
+         lambda m: 'go to the ' + re.sub(r' , (?:and )?(?:then )?', ' then ', m.group('l'))),
     Rule('walk the route from the entrance to the fire door: that route',
          r'\b(?:do|walk|run|drive|fly|make|complete|follow|take|ride) (?:the|that|this|a) '
          r'(?:loop|route|run|circuit|lap|trip|path|round|leg) (?=from\b)', 'go '),
@@ -1063,10 +1099,19 @@ RULES: tuple[Rule, ...] = (
     Rule('two times back to back: twice in a row',
          r'\b(?:two times|twice|2 times) (?:back to back|consecutively|one after the other|straight)\b',
          'twice in a row'),
+    Rule('loop a, b, c, and run that loop twice: twice in a row',
+         r'(?: ,)? (?:and )?(?:then )?(?:run|do|fly|walk|drive|complete|make) (?:that|the|this) '
+         r'(?:same |whole )?'
+         r'(?:loop|route|circuit|round|run|sequence|course|lap) (?P<n>twice|two times|2 times)(?= \.|$)',
+         ' twice in a row'),
     Rule('then repeat the same route once more: twice in a row',
          r'(?: ,)? (?:and )?(?:then )?(?:repeat|do|redo) (?:the same route|that route|the route|'
          r'the same loop|that loop|the loop|the same thing|the whole thing|the same)'
          r'(?: once more| again| one more time)?(?= \.|$)', ' twice in a row'),
+    Rule('loop crane 1, crane 2, site office: the places in that order',
+         rf'^loop (?:through |around |round )?(?P<l>(?:the )?{_W}(?: {_W}){{0,3}}(?: (?:,|then|, then|, and|'
+         rf'and then) (?:the )?{_W}(?: {_W}){{0,3}}?){{1,6}})(?= twice in a row\b|$)',
+         lambda m: 'go to ' + re.sub(r' , (?:and )?(?:then )?', ' then ', m.group('l'))),
     Rule('avoid always the spilled coffee: always avoid it',
          r'\b(?P<v>avoid|visit) (?P<a>always|also|too|again|ever) (?=(?:the|my|your|a|an|our)\b)',
          r'\g<a> \g<v> '),

@@ -348,6 +348,11 @@ _NOT_BOTH = frozenset({'not both', 'but not both', 'not both of them', 'only one
 _ALL_OF_THEM = (['either', 'of', 'them'], ['both', 'of', 'them'], ['any', 'of', 'them'],
                 ['each', 'of', 'them'], ['all', 'of', 'them'], ['them', 'both'], ['them', 'all'],
                 ['either', 'one'], ['any', 'of', 'those'])
+# "before both of those", "after all of them": the goals said before, as a group.
+_THE_GOALS_BEFORE = (['both', 'of', 'those'], ['both', 'of', 'them'], ['all', 'of', 'those'],
+                     ['all', 'of', 'them'], ['them', 'both'], ['them', 'all'], ['those', 'two'],
+                     ['those', 'both'], ['each', 'of', 'them'],
+                     ['each', 'of', 'those'], ['both'], ['all', 'those'], ['all', 'the', 'others'])
 _REFLEXIVE = frozenset({'yourself', 'itself', 'myself', 'ourselves', 'yourselves', 'me', 'us', 'you'})
 _SPELLER: Optional[Speller] = None
 _WISH_FIRST = frozenset(w[0] for w in chatter.WISHES)
@@ -781,6 +786,14 @@ class _Reader:
                     said, meant = d.name.replace('_', ' '), mapping[d].name.replace('_', ' ')
                     self.notes.append(f'took "{said}" as the {meant}')
                 continue
+            if len(d.name) == 1 and not self.phrases.landmarks:
+                # "stairwell A or B", "stockpile A then B": a bare label is one of the kind named with
+                # a label before (of one kind only)
+                kinds = {n.rpartition('_')[0] for n in longer if len(n.rpartition('_')[2]) == 1}
+                if len(kinds) == 1:
+                    mapping[d] = Descriptor(f'{kinds.pop()}_{d.name}')
+                    self.notes.append(f'took "{d.name}" as the {mapping[d].name.replace("_", " ")}')
+                continue
             full = [n for n in longer if n.endswith('_' + d.name) or _labelled(n, d.name)]
             if len(full) == 1:
                 mapping[d] = Descriptor(full[0])
@@ -803,7 +816,8 @@ class _Reader:
         nxt = sentence[np.end]
         if nxt in chatter.FINITE_VERBS or nxt in ('is', 'are', 'was', 'has', 'will', 'can', 'should') or \
                 nxt not in (',', 'before', 'after', 'first', 'next', 'last', 'then', 'at', 'exactly', 'twice',
-                            'once', 'but', 'not', 'only', 'no', 'three', 'two', 'four', 'five'):
+                            'once', 'but', 'not', 'only', 'no', 'three', 'two', 'four', 'five') and not (
+                    nxt.isdigit() and sentence[np.end + 1:np.end + 2] == ['times']):   # "lobby 4 times"
             return False
         # no part of it is a command of its own ("the comms room, go there")
         return not any(t in _COMMANDS and (k == 0 or sentence[k - 1] in PUNCT or sentence[k - 1] in (
@@ -870,8 +884,10 @@ class _Reader:
                 return False   # a verb, not a name ("bin store" is a place, "bin the cups" is no list)
             np = self.phrases.parse(sentence, i)
             if np is None or np.pronoun not in ('', 'one') or np.end <= i or np.end > n or not (all(
-                    _is_word(w) or '_' in w and all(_is_word(p) for p in w.split('_'))   # "walk_in"
-                    for w in sentence[i:np.end] if w not in PUNCT) or _is_word(np.head) and all(
+                    _is_word(w) or '_' in w and all(_is_word(p) for p in w.split('_')) or   # "walk_in"
+                    len(w) == 1 and w.isupper() and k > i   # a label ("stairwell A")
+                    for k, w in enumerate(sentence[i:np.end], i) if w not in PUNCT) or
+                    _is_word(np.head) and all(
                     w.isalpha() and any(v in w for v in 'aeiouy') for w in sentence[i:np.end]
                     if w not in PUNCT)) or any(
                     w in chatter.FINITE_VERBS or w in _REFLEXIVE for w in sentence[i:np.end]) or (
@@ -1201,7 +1217,10 @@ class _Reader:
             elif (_starts(tokens, i, ['before', 'doing', 'that']) or _starts(tokens, i, ['before', 'that'])
                   ) and (any(c.tokens for c in clauses) or self.task.chain) and \
                     'sure' not in clauses[-1].tokens and \
-                    'visited' not in tokens[i:]:
+                    'visited' not in tokens[i:] and \
+                    (i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in ('and', 'but', 'so', 'then') or
+                     tokens[i + (3 if tokens[i + 1] == 'doing' else 2):][:1] not in ([], [','], ['.'])):
+                # ("visit the tag board before that, then the gate": the clause's own trailer, read with it)
                 boundary, skip = 'pre', 3 if tokens[i + 1] == 'doing' else 2
             elif t == 'always' and 0 < i < n - 1 and tokens[i + 1] in ('avoid', 'stay', 'keep') and \
                     tokens[i - 1] not in (',', 'and', 'but', 'while'):
@@ -2641,14 +2660,23 @@ class _Reader:
                          ['comes'], ['goes'], ['must', 'come'], ['should', 'come'], ['has', 'to', 'come'])
 
     def _read_first_last(self, tokens: list[str]) -> bool:
-        """Read 'the shop has to be last' / 'the bank must come first' after the goals are given."""
-        if not tokens or tokens[0] not in DETS or self.phrases.landmarks:
+        """Read 'the shop has to be last' / 'the bank must come first' after the goals are given.
+
+        Said with no verb ("tower crane last", "do the tower crane last") it names a new goal, after
+        (or before) every goal given before it.
+        """
+        bare = tokens[:1] == ['do'] and tokens[-1:] == ['last']
+        if bare:
+            tokens = tokens[1:]
+        if not tokens or self.phrases.landmarks or tokens[0] not in DETS and tokens[-1:] not in (['last'],
+                                                                                                 ['first']):
             return False
         np = self.phrases.parse(tokens, 0)
         if np is None or np.pronoun:
             return False
         rest = tokens[np.end:]
-        verb = next((v for v in self._FIRST_LAST_VERBS if rest[:len(v)] == v), None)
+        verb = [] if rest in (['last'], ['first']) else next(
+            (v for v in self._FIRST_LAST_VERBS if rest[:len(v)] == v), None)
         if verb is None:
             return False
         rest = ['last' if t == 'final' else t for t in rest[len(verb):] if t not in (
@@ -2659,8 +2687,11 @@ class _Reader:
         step = self.task.find_step(x)
         others = list(dict.fromkeys(d for st in self.task._all_steps() if st.kind == 'visit'
                                     for d in st.targets if d != x))   # "visit a, b and c": one step
-        if step is None or not others:
+        if not others or step is None and (verb or not all(_is_word(w) for w in tokens[:np.end])):
             return False
+        if step is None:   # "tower crane last": a goal of its own, ordered against the others
+            self.task.constraints.append(Eventually(_near(x)))
+            self.stated_goals.append(x)
         for d in others:
             if rest == ['last']:   # not there until every other goal is reached
                 self.task.constraints.append(Until(Not(_near(x)), _near(d)))
@@ -3771,7 +3802,28 @@ class _Reader:
         if rest and rest[0] in ('before', 'after', 'through', 'via', 'by', 'past') and len(rest) > 1:
             word = rest[0]
             k = self._skip_event_verbs(rest, 1)
+            group = next((len(g) for g in _THE_GOALS_BEFORE if rest[1:1 + len(g)] == g), 0)
+            if group and word in ('before', 'after') and not rest[1 + group:]:
+                k = 1
+                # "hit the mail room before both of those": the goals said before this one
+                prior = list(dict.fromkeys(d for st in self.task._all_steps() if st.kind == 'visit'
+                                           for d in st.targets if d not in targets))
+                only = only or word == 'after'   # after the group: each of them before, in any order
+                if rest[k] == 'both' and len(prior) >= 2:
+                    prior = prior[-2:]
+                if not prior or rest[k] == 'both' and len(prior) != 2:
+                    raise TranslationError(f'could not tell what "{" ".join(rest)}" refers to in '
+                                           f'"{" ".join(whole)}"', details={'part': rest})
+                rest = rest[:k] + [t for d in prior for t in ('the', d.name, 'and')][:-1]
             nps, _, end = self._np_list(rest, k)
+            if nps and word in ('before', 'after') and rest[k] in ('it', 'that', 'them', 'this') and \
+                    all(np.descriptor in targets for np in nps):
+                # "check the hoist, but do the tag board before it": the place said before this one
+                prior = self.task.chain[-2] if len(self.task.chain) > 1 else None
+                if prior is None or prior.kind != 'visit' or not prior.targets:
+                    raise TranslationError(f'could not tell what "{word} {rest[k]}" refers to in '
+                                           f'"{" ".join(whole)}"', details={'part': rest})
+                nps = [NounPhrase(d, np.start, np.end, d.name, '') for d in prior.targets for np in nps[:1]]
             if nps:
                 others = [np.descriptor for np in nps]
                 moved = self.task.chain.pop()

@@ -255,13 +255,17 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'\1 go to '),
 ))
 
+# "exactly two times. No more, no less.": the count said exact again (no prohibition of its own)
+_NO_MORE_NO_LESS_RE = re.compile(
+    r' (?:exactly |precisely )?((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|'
+    r'thrice) (?:[.,;] )?(?:no|not) more (?:, |and )?(?:no|not) (?:less|fewer)(?: than that)?(?= )')
 # "2 times, exactly two": the count said again, exactly
 _EXACT_AGAIN_RE = re.compile(
     r' (one|two|three|four|five|six|seven|eight|nine|ten|\d+) times , (?:exactly|precisely) '
     r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+|once|twice|thrice)(?: times)?(?= )')
 
 _PASS_RE = re.compile(r'(^| )(make|do|take|fly|run|perform|complete|made|done|did|taken|flown|performed|'
-                      r'completed) (one|two|three|four|five|six|seven|'
+                      r'completed|(?:i |we )?(?:want|need)) (one|two|three|four|five|six|seven|'
                       r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
                       r'(?:passes|pass|trips|trip|laps|lap|rounds|round|sweeps|sweep|runs|run|loops|loop|'
                       r'flyovers|flyover|visits|visit|circuits|circuit) '
@@ -359,13 +363,15 @@ def paraphrase(tokens: list[str]) -> list[str]:
     out = _passes(out)
     if 'exactly' in out or 'precisely' in out:
         out = _EXACT_AGAIN_RE.sub(r' exactly \1 times', ' ' + ' '.join(out) + ' ').split()
+    if 'more' in out and ('less' in out or 'fewer' in out):
+        out = _NO_MORE_NO_LESS_RE.sub(r' exactly \1', ' ' + ' '.join(out) + ' ').split()
     return out
 
 
 # "drone, three passes over the field, then ...": the verb left out at the start of a part
 _BARE_PASS_RE = re.compile(r'(^|[,.;:] )(?=(?:two|three|four|five|six|seven|eight|nine|ten|\d+) '
                            r'(?:separate |more |full |complete |quick )?(?:passes|laps|sweeps|circuits|loops|'
-                           r'flyovers) (?:over|of|around|round|above|across) )')
+                           r'flyovers) (?:over|of|around|round|above|across|through) )')
 
 
 def _passes(tokens: list[str]) -> list[str]:

@@ -2192,16 +2192,21 @@ _COUNT_MODS: tuple[tuple[str, ...], ...] = (
 _BOUNDS = (('more', 'than'), ('no', 'more', 'than'), ('not', 'more', 'than'))
 
 
+def _number(word: str) -> bool:
+    """Whether a word is a number ("three", "4": "lobby 3 times. no, make it 4")."""
+    return word in NUMBER_WORDS or word.isdigit() and len(word) <= 2
+
+
 def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     """'visit X twice. no wait, exactly once': the count said before is replaced (with its modifier)."""
     counts = ('once', 'twice', 'thrice')
     if seg[:1] == ['not'] and ',' in seg[1:5]:
         seg = seg[seg.index(',') + 1:]   # "no wait, not twice, once": the count after the comma
     words = [t for t in seg if t not in PUNCT]
-    if len(words) == 1 and words[0] in NUMBER_WORDS and words[0] not in counts and (
+    if len(words) == 1 and _number(words[0]) and words[0] not in counts and (
             'times' in prev or any(t in counts for t in prev)):
         seg = words = [words[0], 'times']   # "two times, no, make it three": three times
-    new = next((k for k, w in enumerate(seg) if w in counts or (w in NUMBER_WORDS and k + 1 < len(seg)
+    new = next((k for k, w in enumerate(seg) if w in counts or (_number(w) and k + 1 < len(seg)
                                                                 and seg[k + 1] == 'times')), -1)
     bare = bool(words) and (words[-1] in counts or words[-1] == 'times') and len(words) <= 4
     said = {'enough', 'instead', 'is', 'make', 'only', 'just', 'exactly', 'least', 'most'} & set(seg)
@@ -2215,7 +2220,7 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
         tail = []   # "twice, no, make that three times, then go back to the desk": the rest is read on
     for p in range(len(prev) - 1, -1, -1):
         end = p + 1 if prev[p] in counts else (p + 1 if prev[p] == 'times' and p > 0 and
-                                               prev[p - 1] in NUMBER_WORDS else -1)
+                                               _number(prev[p - 1]) else -1)
         if end < 0:
             continue
         start = p if prev[p] in counts else p - 1

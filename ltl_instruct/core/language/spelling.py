@@ -32,7 +32,7 @@ _SUFFIXES = ('s', 'es', 'ies', 'ier', 'iers', 'ied', 'er', 'ers', 'ing', 'ed', '
              'lets',
              'ette', 'ment', 'able', 'ful', 'ness', 'ist', 'ery', 'age', 'al', 'ly', 'en', 'or', 'ors',
              'ster', 'ish', 'ling', 'ings')
-_PREFIXES = ('re', 'un', 'dis', 'pre', 'mini', 'micro', 'over', 'under', 'out', 'up', 'down', 'back',
+_PREFIXES = ('re', 'de', 'un', 'dis', 'pre', 'mini', 'micro', 'over', 'under', 'out', 'up', 'down', 'back',
              'fore', 'mid', 'sub', 'super', 'non', 'multi', 'in', 'side', 'cross', 'half')
 # Preference of slips, likeliest first (a lower rank wins before frequency is looked at).
 _RANK = {'double': 0, 'swap': 0, 'sound': 1, 'vowel': 1, 'missing': 2, 'extra': 2, 'key': 3}
@@ -49,6 +49,10 @@ _EXTRA_RANK = 20000
 _DOUBLING = ('er', 'ers', 'ing', 'ed', 'y', 'ie', 'ies')
 # Rank below which a word counts as common (a four-letter slip is corrected only to a common word).
 _COMMON = 12000
+# Consonant pairs that begin English words: a four-letter word that begins with another pair
+# ("pmup") cannot be a word, so a swap that gives a word is taken from a wider list.
+_ONSETS = frozenset('bl br ch cl cr dr dw fl fr gh gl gn gr kl kn kr ph pl pr ps pt rh sc sh sk sl sm sn sp '
+                    'st sv sw th tr ts tw wh wr'.split())
 # The frequency rank given to a domain word the vocabulary lacks ("freezr": freezer).
 _DOMAIN_RANK = 8000
 # Household, office and outdoor words a robot is sent to that the vocabulary lacks
@@ -169,6 +173,19 @@ class Speller:
             return True   # a plural of a word listed only inflected ("cartons": carton, from "cartoned")
         return self._run_together(word)
 
+    def _base_rank(self, word: str, prefix: bool = True) -> int:
+        """Rank of the listed word ``word`` is made of with a suffix or a prefix ("batching": batch)."""
+        w = self.words
+        bases = [word[len(pre):] for pre in _PREFIXES if prefix and word.startswith(pre) and
+                 len(word) - len(pre) >= 4]
+        # a prefix before a derived word ("dewatering": de + watering, from water)
+        rank = min((self._base_rank(b, False) for b in bases), default=len(w) + _COMMON)
+        for suf in _SUFFIXES:
+            stem = word[:-len(suf)]
+            if word.endswith(suf) and len(stem) >= 3:
+                bases += [stem, stem + 'e'] if suf[0] in _VOWELS else [stem]
+        return min([rank] + [w[b] for b in bases if b in w])
+
     def _run_together(self, word: str) -> bool:
         """Two listed words run together ("loveseat", "nightlight"): both halves of four letters or more."""
         w = self.words
@@ -246,9 +263,12 @@ class Speller:
                     best = key
             out = best[3] if best is not None else None
             if out is None and len(word) == 4:
-                # two letters swapped in a common four-letter word ("hihg"): only when one fits
+                # two letters swapped in a common four-letter word ("hihg"): only when one fits; a
+                # word no English word begins like ("pmup") is a slip, and a less common word fits
+                limit = _COMMON if word[0] not in _VOWELS and word[1] not in _VOWELS and \
+                    word[:2] not in _ONSETS else 3000
                 swaps = {c for c, kind in _slips(word)
-                         if kind == 'swap' and self.words.get(c, _COMMON) < 3000}
+                         if kind == 'swap' and self.words.get(c, _COMMON) < limit}
                 out = swaps.pop() if len(swaps) == 1 else None
             if out is None and len(word) == 4:
                 # a four-letter word with one letter dropped ("towl"): only when one common word fits
@@ -266,6 +286,18 @@ class Speller:
                         if tail is not None:
                             out = word[:k] + tail
                             break
+            if out is None and len(word) >= 7:
+                # a letter dropped or two swapped in a word made of a listed one ("combner": combiner,
+                # "batchign": batching, "substaton": substation): only when exactly one fits
+                # (of two, the one made of a common word: "substation", not "substanton")
+                for slip in ('swap', 'missing'):
+                    ranked = sorted({(self._base_rank(c), c) for c, kind in _slips(word)
+                                     if kind == slip and not _inflection(word, c)})
+                    ranked = [rc for rc in ranked if rc[0] < _EXTRA_RANK]
+                    if ranked:
+                        out = ranked[0][1] if len(ranked) == 1 or ranked[0][0] < _COMMON <= ranked[1][0] \
+                            else None
+                        break
             if out is None and len(word) >= 8:
                 # two neighbouring letters swapped in a compound ("wrokbench": work + bench), when
                 # exactly one swap gives two listed words run together

@@ -53,6 +53,7 @@ TYPOS: dict[str, str] = {
     'fo': 'of', 'backwords': 'backwards', 'itme': 'item', 'itmes': 'items', 'rom': 'room', 'stn': 'station',
     'wya': 'way', 'sory': 'sorry',
     'jsut': 'just', 'hod': 'hood', 'retuning': 'returning', 'wich': 'which', 'whcih': 'which', 'frm': 'from',
+    'flor': 'floor', 'revers': 'reverse',
     'abt': 'about', 'rm': 'room', 'bfore': 'before', 'aftr': 'after', 'agin': 'again',
     # chat spellings of "because" (a reason follows) and of a subject with its verb
     'bc': 'because', 'bcuz': 'because', 'becuz': 'because', 'cuz': 'because', 'coz': 'because',
@@ -72,6 +73,7 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"\bwon't\b", 'will not'), (r"\bcan't\b", 'cannot'), (r"\bdon't\b", 'do not'),
     (r"n't\b", ' not'), (r"'ve\b", ' have'), (r"'re\b", ' are'), (r"'ll\b", ' will'),
     (r"\bi'm\b", 'i am'),
+    (r"'s(?= been\b)", ' has'),   # "until the truck's been inspected": "has", never "is been"
     (r"\b(that|there|it|what|where|here|who|he|she|how|why|when|everything|everyone|nothing|wherever|"
      r"whichever|whatever)'s\b", r'\1 is'),
     (r"\b(either|whichever|which|each|this|that|any|neither|first|second|third|last|other|middle|red|blue|"
@@ -236,6 +238,8 @@ def tokenize(text: str) -> list[str]:
     s = re.sub(r'(^|\n)\s*[-*\u2022\u25cf\u25aa]+\s', r'\1 , ', s)
     s = re.sub(r'(?<![.;:!?,\s])[ \t]*\n', ' . ', s)
     s = re.sub(r'[\u2022\u25cf\u25aa]', ' , ', s)
+    if '>' in s or '\u2192' in s:   # "the lobby > mail room > loading dock", "a -> b": an order
+        s = re.sub(r'(?<=[a-z0-9)])\s*(?:-{1,2}>|={1,2}>|>|\u2192)\s*(?=[a-z0-9(])', ' then ', s)
     s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
     if '.' in s:   # "Mr. Alvarez": the title's full stop ends no sentence
         s = re.sub(r'\b(mr|mrs|ms|dr)\.(?= [a-z])', r'\1', s)

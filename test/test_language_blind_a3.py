@@ -102,6 +102,12 @@ FOUND_ROUND_A3 = [
     ('Inspect tank 2.', 'F near[tank_2]'),
     ("Check crane 1 or crane 2, whichever's closer.", 'F near[crane_1] | F near[crane_2]'),
     ('Survey panel row 3, then row 6.', 'F (near[panel_row_3] & F near[panel_row_6])'),
+    # a plural of a misspelt word before a word made with a prefix ("re" + "storms")
+    ('Avoid the wet floor sign by the restroms and head over to the coat check.',
+     'F near[coat_check] & G !near[wet_floor_sign::isnextto(restrooms)]'),
+    # "X first, then Y" said bare is a route, not "X before every other goal"
+    ('Kitchen, then laundry room. Hang on, swap those. Laundry room first, then kitchen.',
+     'F (near[laundry_room] & F near[kitchen])'),
 ]
 
 

@@ -2668,9 +2668,8 @@ class _Reader:
         bare = tokens[:1] == ['do'] and tokens[-1:] == ['last']
         if bare:
             tokens = tokens[1:]
-        if not tokens or self.phrases.landmarks or tokens[0] not in DETS and tokens[-1:] not in (['last'],
-                                                                                                 ['first']):
-            return False
+        if not tokens or self.phrases.landmarks or tokens[0] not in DETS and tokens[-1:] != ['last']:
+            return False   # ("laundry room first, then kitchen" is a route, read as one)
         np = self.phrases.parse(tokens, 0)
         if np is None or np.pronoun:
             return False

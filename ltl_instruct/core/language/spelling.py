@@ -286,18 +286,6 @@ class Speller:
                         if tail is not None:
                             out = word[:k] + tail
                             break
-            if out is None and len(word) >= 7:
-                # a letter dropped or two swapped in a word made of a listed one ("combner": combiner,
-                # "batchign": batching, "substaton": substation): only when exactly one fits
-                # (of two, the one made of a common word: "substation", not "substanton")
-                for slip in ('swap', 'missing'):
-                    ranked = sorted({(self._base_rank(c), c) for c, kind in _slips(word)
-                                     if kind == slip and not _inflection(word, c)})
-                    ranked = [rc for rc in ranked if rc[0] < _EXTRA_RANK]
-                    if ranked:
-                        out = ranked[0][1] if len(ranked) == 1 or ranked[0][0] < _COMMON <= ranked[1][0] \
-                            else None
-                        break
             if out is None and len(word) >= 8:
                 # two neighbouring letters swapped in a compound ("wrokbench": work + bench), when
                 # exactly one swap gives two listed words run together
@@ -307,6 +295,19 @@ class Speller:
                 word not in self.words and word not in self.lexicon:
             base = self.correct(word[:-1])   # a possessive or plural of a misspelt word ("techer's")
             out = base + 's' if base is not None and (base in self.words or base in DOMAIN_WORDS) else None
+        if out is None and len(word) >= 7 and word.isascii() and word.isalpha() and not self.known(word):
+            # (last: a plural of a misspelt word, "restroms", is "restrooms", not "re" + "storms")
+            # a letter dropped or two swapped in a word made of a listed one ("combner": combiner,
+            # "batchign": batching, "substaton": substation): only when exactly one fits
+            # (of two, the one made of a common word: "substation", not "substanton")
+            for slip in ('swap', 'missing'):
+                ranked = sorted({(self._base_rank(c), c) for c, kind in _slips(word)
+                                 if kind == slip and not _inflection(word, c)})
+                ranked = [rc for rc in ranked if rc[0] < _EXTRA_RANK]
+                if ranked:
+                    out = ranked[0][1] if len(ranked) == 1 or ranked[0][0] < _COMMON <= ranked[1][0] \
+                        else None
+                    break
         self._cache[word] = out
         return out
 

@@ -780,6 +780,23 @@ class _Reader:
                     mapping[d] = Descriptor(f'{kinds.pop()}_{label}')
                     said, meant = d.name.replace('_', ' '), mapping[d].name.replace('_', ' ')
                     self.notes.append(f'took "{said}" as the {meant}')
+                    continue
+                # "the gate 7 apron door ... back to the apron door": the one named in full before
+                # (a label in front of it: "the apron door" is that gate's)
+                full = [n for n in longer if n.endswith('_' + d.name) and any(
+                    _is_label(w) for w in n[:-len(d.name) - 1].split('_'))]
+                if not _is_label(label) and len(full) == 1 and not any(
+                        n.endswith('_' + d.name) for n in longer if n != full[0] and n != d.name):
+                    mapping[d] = Descriptor(full[0])
+                    self.notes.append(f'took "{d.name.replace("_", " ")}" as the {full[0].replace("_", " ")} '
+                                      'named before')
+                continue
+            if _is_label(d.name) and len(d.name) == 1:
+                # "check-in island D or E": the bare letter names one of the same kind
+                kinds = {n.rpartition('_')[0] for n in longer if _is_label(n.rpartition('_')[2])}
+                if len(kinds) == 1:
+                    mapping[d] = Descriptor(f'{kinds.pop()}_{d.name}')
+                    self.notes.append(f'took "{d.name}" as the {mapping[d].name.replace("_", " ")}')
                 continue
             full = [n for n in longer if n.endswith('_' + d.name) or _labelled(n, d.name)]
             if len(full) == 1:

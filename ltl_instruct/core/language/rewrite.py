@@ -20,8 +20,8 @@ from typing import Optional
 from ltl_instruct.core.errors import TranslationError
 from ltl_instruct.core.language import chatter
 from ltl_instruct.core.language.phrases import (
-    COLOURS, DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, NounPhrase, PhraseParser, is_name_word,
-    match_relation, singular,
+    COLOURS, DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, STOPWORDS, NounPhrase, PhraseParser,
+    is_name_word, match_relation, singular,
 )
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 from ltl_instruct.core.spec import Descriptor
@@ -947,13 +947,31 @@ def _uncleft(tokens: list[str]) -> list[str]:
 
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
-    tokens = _uncleft(tokens)
+    tokens = _actually_first(_uncleft(tokens))
     said: list[str] = []
     for k, t in enumerate(tokens):
         said.append(t)
         if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and tokens[k - 1] in PUNCT:
             said.append(',')   # ", no not the couch, the armchair": "no" then what it corrects
     return _apply_corrections(said, notes)
+
+
+def _actually_first(tokens: list[str]) -> list[str]:
+    """Say a trailing "actually" first: "D or E... just D actually, and" -> "..., actually, just D, and".
+
+    Only after a short part of its own that starts with "just" or "only" after a comma (a correction
+    that keeps one of what was said), so the marker is found where corrections start.
+    """
+    if 'actually' not in tokens:
+        return tokens
+    for i, t in enumerate(tokens):
+        if t != 'actually' or i < 3 or tokens[i - 1] in PUNCT or i + 1 < len(tokens) and \
+                tokens[i + 1] not in PUNCT:
+            continue
+        c = next((k for k in range(i - 1, max(i - 7, -1), -1) if tokens[k] in PUNCT), -1)
+        if c > 0 and tokens[c] == ',' and tokens[c + 1] in ('just', 'only') and i - c > 2:
+            return tokens[:c + 1] + ['actually', ','] + tokens[c + 1:i] + tokens[i + 1:]
+    return tokens
 
 
 def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
@@ -1241,6 +1259,8 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     if words[1:3] in (['go', 'to'], ['head', 'to'], ['visit', 'the']) and len(words) > 3:
         words = ['just'] + words[3 if words[1] != 'visit' else 2:]   # "just go to the north one"
+    if len(words) == 2 and _bare_label(words[1]):
+        return _only_label(prev, words[1], notes)   # "check-in island D or E ... just D"
     np = PhraseParser().parse(words, 1)
     spans = _np_spans(prev)
     if np is not None and np.pronoun == 'one' and np.end == len(words) == 4 and \
@@ -1274,6 +1294,32 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     notes.append(f'only {np.descriptor} kept of that list')
     return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
+
+
+def _bare_label(word: str) -> bool:
+    """Tell whether a word is a letter or a short number that labels one of a kind ("island D", "gate 4")."""
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4
+
+
+def _only_label(prev: list[str], label: str, notes: list[str]) -> Optional[list[str]]:
+    """Keep one label of "check-in island D or E" ("... just D"): the kind named with it stays."""
+    for p in range(len(prev) - 2, 0, -1):
+        a, b = prev[p - 1], prev[p + 1]
+        if prev[p] == 'or' and p >= 2 and p + 2 < len(prev) and prev[p + 1] == prev[p - 2] and \
+                _bare_label(a) and _bare_label(prev[p + 2]):
+            b = prev[p + 2]   # "room 4 or room 5" (the kind said again)
+            if label not in (a, b) or prev[p + 3:p + 4] in (['or'], [',']):
+                return None
+            notes.append(f'only {label} kept of that choice')
+            return prev[:p - 1] + [label] + prev[p + 3:]
+        if prev[p] != 'or' or not (_bare_label(a) and _bare_label(b)) or label not in (a, b) or \
+                prev[p - 2:p - 1] in (['or'], [',']) or prev[p + 2:p + 3] in (['or'], [',', 'or']):
+            continue
+        if p < 2 or prev[p - 2] in PUNCT or prev[p - 2] in STOPWORDS:
+            return None   # no kind before the labels
+        notes.append(f'only {label} kept of that choice')
+        return prev[:p - 1] + [label] + prev[p + 2:]
+    return None
 
 
 def _only_this_side(prev: list[str], named: list[str], spans: list[NounPhrase], notes: list[str]
@@ -1476,7 +1522,8 @@ def _insert_between(prev: list[str], seg: list[str]) -> Optional[list[str]]:
 
 
 _ORDER_WORDS = frozenset({'the order', 'that order', 'the ordering', 'the sequence', 'that condition',
-                          'the condition', 'the rule', 'that rule', 'the order part'})
+                          'the condition', 'the rule', 'that rule', 'the order part', 'that ordering',
+                          'that sequence', 'the ordering part', 'the order bit'})
 
 
 def _drop_order(prev: list[str]) -> Optional[list[str]]:
@@ -1491,6 +1538,27 @@ def _drop_order(prev: list[str]) -> Optional[list[str]]:
         end = next((p for p in range(at, len(prev)) if prev[p] in PUNCT), len(prev))
         return prev[:k] + prev[end:]
     return prev[:k] + ['and'] + prev[at + 1:]
+
+
+def _said_after_cancel(kept: list[str], rest: list[str], notes: list[str]) -> list[str]:
+    """Keep what follows "never mind the order, ...": a step said again is dropped, anything else read on.
+
+    "just go to the chapel" after "head to the chapel only after X" says the kept goal again; "and
+    avoid the gym" or "go to the gym" is a new request (it was silently lost).
+    """
+    while rest and rest[0] in ('just', 'simply', 'so', 'then', 'and', 'instead'):
+        rest = rest[1:]
+    if not rest:
+        return []
+    named = {np.head for np in _np_spans(kept)}
+    spans = _np_spans(rest)
+    if rest[0] in _VERBS and rest[0] not in _AVOID_VERBS and spans and spans[0].start <= 3 and \
+            spans[-1].end == len(rest) and all(np.head in named for np in spans) and \
+            not (chatter.PLACE_RULE_WORDS & set(rest)):
+        notes.append(f'"{" ".join(rest)}" says the kept step again')
+        return []
+    end = [] if kept and kept[-1] in '.;!?' else ['.']
+    return end + rest
 
 
 # Words around "both" in "nah, make it both", "actually no, go to both of them".
@@ -1631,7 +1699,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     reordered = _order_restated(prev, seg, notes)
     if reordered is not None:
         return reordered
-    numbered = _renumber(prev, seg)
+    # ("room 4 or 5, no, just 5": one of the choice kept, not a number corrected)
+    just = [t for t in seg if t not in PUNCT][:1] in (['just'], ['only'])
+    numbered = None if just else _renumber(prev, seg)
     if numbered is not None:
         notes.append('the number was corrected')
         return numbered
@@ -1659,7 +1729,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         unordered = _drop_order(prev)
         if unordered is not None:
             notes.append('the order was dropped')
-            return unordered
+            return unordered + _said_after_cancel(unordered, words[k + 2:], notes)
     choice = _replace_choice(prev, seg, notes) if marker in ('make', 'hmm', 'actually', 'no', 'sorry', 'wait',
                                                              'or', 'i', 'oops', 'my') else None
     if choice is not None:

@@ -41,6 +41,23 @@ BLIND_ROUND_N4 = [
      '!near[baggage_belt] U near[check_in_island_d]'),
     ('Go to check-in island D or E. Actually, just E.', 'F near[check_in_island_e]'),
     ('go to room 4 or 5, no wait, just 5', 'F near[room_5]'),
+    # the machine addressed by its kind before a comma ("Service robot, report to ..."): no place
+    ('Service robot, report to baggage carousel 3.', 'F near[baggage_carousel_3]'),
+    ('Cleaning robot, please go to the kitchen.', 'F near[kitchen]'),
+    ('Kitchen robot, then the hall.', 'F (near[kitchen_robot] & F near[hall])'),
+    # a verb that names a numbered place after "go to" / a drone verb ("fly over stand 4")
+    ('Survey stand 4 exactly once, then land at the hangar 2 pad.',
+     '(!near[stand_4] U (near[stand_4] & (near[stand_4] W G !near[stand_4]))) & F (near[stand_4] & F '
+     'near[hangar_2_pad])'),
+    ('Fly over stand 4, then land at the pad.', 'F (near[stand_4] & F near[pad])'),
+    # "until further notice", "per shift", "and wait there for the cleaning crew": how long or how
+    # often, or whom it waits for, no place and no event
+    ('Go stand at the duty-free entrance until further notice.', 'F near[duty_free_entrance]'),
+    ('Check the gate 3 restroom twice per shift.',
+     'F (near[gate_3_restroom] & F (!near[gate_3_restroom] & F near[gate_3_restroom]))'),
+    ('Proceed to gate 14 and wait there for the cleaning crew.', 'F near[gate_14]'),
+    ('Go to gate 14 and wait for the crew, then go to gate 2.', 'F (near[gate_14] & F near[gate_2])'),
+    ('Go to gate 14 and wait for me at the door.', 'F (near[gate_14] & F near[door])'),
 ]
 
 

@@ -443,6 +443,13 @@ def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
     return is_name_word(tokens, i, False) and nxt not in GOAL_VERBS | NAME_VERBS | DELIVER_VERBS | PICK_VERBS
 
 
+def _numbered_name(tokens: Sequence[str], k: int) -> bool:
+    """Whether a verb after "go to" is the name of a numbered place ("fly over stand 4", "survey stand 4")."""
+    nxt = tokens[k + 2] if k + 2 < len(tokens) else '.'
+    return tokens[k] in GOAL_VERBS and tokens[k + 1:k + 2] != [] and tokens[k + 1].isdigit() and \
+        len(tokens[k + 1]) < 4 and (nxt in PUNCT or nxt in STOPWORDS) and nxt not in ('times', 'more')
+
+
 def normalize_counts(rest: list[str]) -> list[str]:
     """Rewrite count idioms to one form: "five or more times" -> "at least five times"."""
     text = ' ' + ' '.join(rest) + ' '
@@ -3444,6 +3451,7 @@ class _Reader:
         while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES or
                                    tokens[k] == 'here') and not (
                 tokens[k] in ORDINALS and _ordinal_name(tokens, k)) and not (
+                k > 0 and _numbered_name(tokens, k)) and not (
                 tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or
                                                     tokens[k + 1] not in DETS) and not (
                     # "come back here to the living room": the place is the one named after

@@ -58,6 +58,23 @@ BLIND_ROUND_N4 = [
     ('Proceed to gate 14 and wait there for the cleaning crew.', 'F near[gate_14]'),
     ('Go to gate 14 and wait for the crew, then go to gate 2.', 'F (near[gate_14] & F near[gate_2])'),
     ('Go to gate 14 and wait for me at the door.', 'F (near[gate_14] & F near[door])'),
+    # "at least twice each" after two things: each of them, in any order (it was one after the other)
+    ("The escalators I'm worried about are number 1, number 4 and number 6. Check the first and the last "
+     'one at least twice each.',
+     'F (near[escalator_1] & F (!near[escalator_1] & F near[escalator_1])) & F (near[escalator_6] & F '
+     '(!near[escalator_6] & F near[escalator_6]))'),
+    ('Check the kitchen and the hall twice each, then go to the dock.',
+     '(F (near[kitchen] & F (!near[kitchen] & F (near[kitchen] & F (near[hall] & F (!near[hall] & F '
+     '(near[hall] & F near[dock]))))))) | (F (near[hall] & F (!near[hall] & F (near[hall] & F '
+     '(near[kitchen] & F (!near[kitchen] & F (near[kitchen] & F near[dock])))))))'),
+    # list positions: "the third hangar on that list" (the kind the list named, then where it was said);
+    # a list that "needs inspection"; "number 1, number 4" in a list of a kind said with who said it
+    ('Hangars 1, 2 and 3: fly over the third hangar on that list, then land at the helipad.',
+     'F (near[hangar_3] & F near[helipad])'),
+    ('Carousels 3, 5, 7 and 9 need inspection. Do the last two, in order.',
+     'F (near[carousel_7] & F near[carousel_9])'),
+    ('The kitchen, the hall and the dock need cleaning. Go to the last one.', 'F near[dock]'),
+    ('The dock needs cleaning, go there.', 'F near[dock]'),
 ]
 
 

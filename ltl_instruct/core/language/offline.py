@@ -3193,6 +3193,13 @@ class _Reader:
             return True, rest[end + 3:]
         if self.only and mode == 'at_least' and i == 0:
             mode = 'exactly'   # "only visit a once"
+        if mode == 'at_least' and n > 1 and len(targets) > 1 and rest[end:end + 1] == ['each'] and \
+                not any(self.task.find_step(d) for d in targets):
+            # "check the first and the last one at least twice each": each of them, in any order
+            self.task.chain.append(Step('all', chains=[
+                [st for _ in range(n) for st in (Step('leave', [d]), Step('visit', [d]))][1:]
+                for d in targets]))
+            return True, rest[end + 1:]
         for d in targets:
             x = _near(d)
             known = self.task.find_step(d)

@@ -94,6 +94,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
             continue
         if end < len(tokens) and tokens[end] not in _LIST_END and not (
+                # "carousels 3, 5, 7 and 9 need inspection": numbered things (not "the lamps and the rugs")
+                tokens[end] in ('need', 'needs') and (len(nps) > 2 or all(
+                    np.descriptor.name.rpartition('_')[2].isdigit() for np in nps))) and not (
                 # "a lamp, a kettle and a dryer to return": what is to be done with them
                 tokens[end] == 'to' and len(nps) >= 3 and tokens[end + 1:end + 2] != [] and
                 tokens[end + 1] not in DETERMINERS):
@@ -118,6 +121,15 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
             kind = parser.parse(tokens, back + 1)
             if kind is not None and kind.end == s - 1 and not kind.descriptor.relations:
+                category = _kind_name(kind)
+        elif s >= 4 and tokens[s - 1] == 'are':
+            # "the escalators I'm worried about are number 1, number 4 and number 6": the kind, then
+            # who said it
+            back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
+            kind = parser.parse(tokens, back + 1)
+            if kind is not None and not kind.descriptor.relations and kind.head.endswith('s') and \
+                    kind.end < s - 2 and tokens[kind.end] in ('i', 'we', 'you', 'that', 'which') and \
+                    not set(tokens[kind.end:s - 1]) & chatter.PLACE_RULE_WORDS:
                 category = _kind_name(kind)
         elif s >= 2 and tokens[s - 1] == ',' and s != lead:
             # "two carts in the corridor, a housekeeping cart and a minibar cart": the count names them
@@ -332,6 +344,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             words = [category if w == 'one' else w for w in words]
         elif bare and (len(words[1]) == 1 or words[1].isdigit()):
             words = ['the'] + category.split('_') + words[1:]   # "rooms are A, B and C": room b
+        elif category and len(words) == 3 and words[1] in ('number', 'no') and words[2].isdigit():
+            words = ['the'] + category.split('_') + words[2:]   # "escalators are number 1, ...": escalator 1
         elif bare and words[1] in COLOURS:
             words = words + category.split('_')   # "three bins: red, blue and green": the blue bin
         items.append(words)
@@ -346,6 +360,10 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += [',', sep] if sep == 'then' else [sep]
             out += items[i]
         return out
+
+    # the kind all the listed things share ("hangar 1, hangar 2, hangar 3": hangar)
+    kinds = {it[-2] for it in items if len(it) >= 3 and (len(it[-1]) == 1 or it[-1].isdigit())}
+    kind = kinds.pop() if len(kinds) == 1 and all(len(it) >= 3 for it in items) else ''
 
     def resolve(tail: list[str]) -> list[str]:
         out: list[str] = []
@@ -367,6 +385,15 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 # "the second", "the latter twice": no noun follows the position word
                 ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
                     not is_name_word(tail, i + 2, False)
+                if not ends and kind and singular(w) == kind and (nxt in ORDINALS or nxt in (
+                        'last', 'middle')):
+                    # "hangars 1, 2 and 3: the third hangar on that list": the kind the list named
+                    after = i + 3
+                    said = next((m for m in _MENTIONED if tuple(tail[after:after + len(m)]) == m), ())
+                    if after == len(tail) or tail[after] in PUNCT or tail[after] in (
+                            'and', 'then', 'or') or said:
+                        tail = tail[:i + 2] + ['one'] + tail[after + len(said):]
+                        w, one, ends = 'one', 1, True
                 if nxt == 'second' and tail[i + 2:i + 4] == ['to', 'last'] and n >= 2:
                     # "the second to last (one)"
                     out += joined([n - 2])

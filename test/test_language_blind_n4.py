@@ -8,7 +8,8 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import check_translation
+from ltl_instruct.core.errors import TranslationError
+from translation_cases import T, check_translation
 
 BLIND_ROUND_N4 = [
     # "once you've been to X, stay clear of Y" said as a command makes X a goal, as "after going to X"
@@ -75,9 +76,27 @@ BLIND_ROUND_N4 = [
      'F (near[carousel_7] & F near[carousel_9])'),
     ('The kitchen, the hall and the dock need cleaning. Go to the last one.', 'F near[dock]'),
     ('The dock needs cleaning, go there.', 'F near[dock]'),
+    # "visit Y before you go (anywhere) near it": "it" is the goal said before, not Y (it was Y, and
+    # "anywhere" a place next to it, silently)
+    ("Go check stand 9, but make sure you've been to the lav service truck before you go anywhere near it.",
+     'F near[stand_9] & (!near[stand_9] U near[lav_service_truck])'),
+    ('Go to the kitchen, but visit the truck before you go to it.',
+     'F near[kitchen] & (!near[kitchen] U near[truck])'),
 ]
 
 
 @pytest.mark.parametrize('instruction,gold', BLIND_ROUND_N4)
 def test_readings_found_on_blind_set_n4(instruction: str, gold: str) -> None:
     check_translation(instruction, gold)
+
+
+# An "it" that can only be the place of its own clause is refused, never read as "Y before Y".
+REFUSED_N4 = [
+    'Visit the truck before you go to it.',
+]
+
+
+@pytest.mark.parametrize('instruction', REFUSED_N4)
+def test_refused_on_blind_set_n4(instruction: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(instruction)

@@ -3804,6 +3804,17 @@ class _Reader:
             word = rest[0]
             k = self._skip_event_verbs(rest, 1)
             nps, _, end = self._np_list(rest, k)
+            p = k + 2 if rest[k:k + 2] == ['anywhere', 'near'] else k
+            if nps and word == 'before' and rest[p:p + 1] in (['it'], ['there'], ['that'], ['them']) and \
+                    [np.descriptor for np in nps] == targets:
+                # "go check stand 9, but visit the truck before you go anywhere near it": "it" is the
+                # goal said before this clause, not its own place (or it is refused)
+                prev = self.task.chain[-2] if len(self.task.chain) > 1 else None
+                said = [] if prev is None else prev.dests if prev.kind == 'deliver' else prev.targets
+                if prev is None or prev.kind not in ('visit', 'deliver') or len(said) != 1 or said == targets:
+                    raise TranslationError(f'cannot tell what "{rest[p]}" is in "{" ".join(rest[:end])}"',
+                                           details={'part': ' '.join(rest[:end])})
+                nps = [NounPhrase(said[0], nps[0].start, nps[0].end, nps[0].head, rest[p])]
             if nps:
                 others = [np.descriptor for np in nps]
                 moved = self.task.chain.pop()

@@ -430,7 +430,8 @@ class PhraseParser:
                     i = whole.end
         if words in (['spot'], ['somewhere'], ['place'], ['point'], ['location'], ['area'], ['anywhere'],
                      ['anyplace']) and i + 1 < len(
-                tokens) and tokens[i] in ('in', 'on', 'inside', 'at', 'of') and depth < 8:
+                tokens) and (tokens[i] in ('in', 'on', 'inside', 'at', 'of') or tokens[i] == 'near' and
+                             words in (['anywhere'], ['somewhere'])) and depth < 8:   # ("anywhere near it")
             inner = self.parse(tokens, i + 1, destination_stops, depth)
             if inner is not None:
                 return NounPhrase(inner.descriptor, start, inner.end, inner.head, inner.pronoun)

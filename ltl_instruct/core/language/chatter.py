@@ -110,7 +110,11 @@ _SIGNALS: tuple[tuple[str, ...], ...] = tuple(
     for signal in (('call',), ('call', 'you'), ('call', 'for', 'you'), ('ring',), ('ring', 'you'),
                    ('text', 'you'), ('ping', 'you'), ('message', 'you'), ('shout',),
                    ('give', 'you', 'a', 'shout'), ('tell', 'you'), ('say', 'so'), ('send', 'for', 'you'),
-                   ('need', 'you')))
+                   ('need', 'you'))) + (
+    # until someone says otherwise: how long to stay, no event
+    ('until', 'further', 'notice'), ('till', 'further', 'notice'), ('until', 'told', 'otherwise'),
+    ('until', 'you', 'are', 'told', 'otherwise'), ('until', 'i', 'say', 'otherwise'),
+    ('until', 'you', 'hear', 'otherwise'))
 
 # Courtesy and time-of-day phrases that end a clause and ask for nothing.
 COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
@@ -166,7 +170,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'you', 'please'), ('when', 'you', 'are', 'able'), ('whenever', 'you', 'are', 'free'),
     ('in', 'a', 'sec'), ('in', 'a', 'second'), ('while', 'you', 'are', 'at', 'it'),
     ('while', 'you', 'are', 'there'), ('no', 'rush', 'at', 'all'), ('no', 'hurry', 'at', 'all'),
-    ('this', 'shift'), ('this', 'week'), ('for', 'the', 'afternoon'), ('for', 'the', 'morning'),
+    ('this', 'shift'), ('this', 'week'), ('per', 'shift'), ('each', 'shift'), ('a', 'shift'), ('per', 'day'),
+    ('per', 'night'), ('for', 'the', 'afternoon'), ('for', 'the', 'morning'),
     ('for', 'the', 'evening'), ('for', 'the', 'day'), ('full', 'stop'), ('on', 'the', 'double'),
     ('when', 'you', 'have', 'got', 'a', 'sec'), ('when', 'you', 'have', 'got', 'a', 'second'),
     ('when', 'you', 'have', 'got', 'a', 'minute'), ('when', 'you', 'have', 'got', 'a', 'moment'),
@@ -456,6 +461,18 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
             elif not m and tokens[k] in _ADDRESS_ADJECTIVES and tokens[k + 1:k + 2] and \
                     tokens[k + 1] in VOCATIVES:
                 m = 2
+            elif not m and not out and tokens[k].isalpha() and tokens[k] not in STOPWORDS:
+                # "Service robot, report to ...", "Apron drone two, ...": the machine addressed by its kind
+                m = next((j + 1 for j in (1, 2) if tokens[k + j:k + j + 1] and tokens[k + j] in (
+                    'robot', 'drone', 'bot') and tokens[k + j + 1:k + j + 2] == [','] and all(
+                        t.isalpha() and t not in STOPWORDS for t in tokens[k:k + j])), 0)
+                after = tokens[k + m + 1] if k + m + 1 < n else '.'
+                if m and (after in STOPWORDS - _COMMAND_STARTS or after in PUNCT):
+                    m = 0   # ("kitchen robot, then the hall": a list of places)
+                if m:
+                    dropped.append(' '.join(tokens[k:k + m]))
+                    k += m + 1
+                    continue
             if m and (k + m >= n or tokens[k + m] in PUNCT) and (m > 1 or out):
                 dropped.append(' '.join(tokens[k:k + m]))
                 k += m
@@ -871,6 +888,29 @@ def _purpose_at(tokens: Sequence[str], i: int) -> int:
     return 0
 
 
+def _wait_for(tokens: list[str], i: int) -> int:
+    """Length of "and wait (there) for the cleaning crew" at ``i``: waiting where it is, for someone.
+
+    Only a short noun phrase after "for" that ends the clause (no place after it: "wait for me at
+    the door" is kept) and holds no rule word.
+    """
+    j = i + 1
+    if tokens[j:j + 1] != ['wait']:
+        return 0
+    j += 1 + (tokens[j + 1:j + 2] in (['there'], ['here']))
+    if tokens[j:j + 1] != ['for'] or j + 1 >= len(tokens) or tokens[j + 1] not in (
+            'the', 'a', 'an', 'some', 'our', 'their', 'your', 'my', 'me', 'us', 'him', 'her', 'them'):
+        return 0
+    if tokens[j + 1] in ('me', 'us', 'him', 'her', 'them'):
+        return j + 2 - i if j + 2 >= len(tokens) or tokens[j + 2] in _CLAUSE_END else 0
+    for k in range(j + 2, min(j + 6, len(tokens) + 1)):
+        if k == len(tokens) or tokens[k] in _CLAUSE_END:
+            return k - i if k > j + 2 else 0
+        if not tokens[k].isalpha() or tokens[k] in STOPWORDS or tokens[k] in CONSTRAINT_WORDS:
+            return 0
+    return 0
+
+
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
     """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...").
 
@@ -915,6 +955,8 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
             hit = _beneficiary(tokens, i)
         if not hit and tokens[i] == 'for' and i > 0 and tokens[i - 1] not in PUNCT:
             hit = _purpose_at(tokens, i)
+        if not hit and tokens[i] == 'and' and i > 0:
+            hit = _wait_for(tokens, i)
         if not hit and i > 0 and tokens[i - 1] == ',':
             for phrase in ASIDES:
                 m = len(phrase)

@@ -1410,8 +1410,9 @@ RULES: tuple[Rule, ...] = (
          rf'(?:somewhere|around here|over there|here|there|in here)(?: around here| nearby| over there)? , '
          rf'(?:can|could|would) you (?:find|get|fetch|locate|look for) (?:it|them)$', r'go to \g<x>'),
     Rule('inspect the tank before the chimney, and the chimney before the dish: the verb said again',
-         r'^(?P<h>(?!visit\b)[a-z]+(?: [a-z]+)? (?:the|my|your|our) [a-z0-9_ ]+? before (?:the|my|your|our) '
-         r'[a-z0-9_ ]+?) , and (?=(?:the|my|your|our) [a-z0-9_ ]+? before )', r'\g<h> , and visit '),
+         r'^(?P<h>(?!visit\b)[a-z]+(?: [a-z]+)? (?:(?:the|my|your|our) )?[a-z0-9_ ]+? before '
+         r'(?:(?:the|my|your|our) )?[a-z0-9_ ]+?) , and (?=(?:(?:the|my|your|our) )?[a-z0-9_ ]+? before )',
+         r'\g<h> , and visit '),   # "do lane 2 before lane 1, and lane 1 before ...": also with no article
     Rule('the aquarium and the bird cage are off limits: avoid both',
          rf'^(?P<x>(?:the|my|your|our) {_THING}(?: , (?:the|my|your|our) {_THING})*(?: ,)? and '
          rf'(?:the|my|your|our) {_THING}) are (?:both |all )?'

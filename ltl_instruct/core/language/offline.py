@@ -448,6 +448,13 @@ def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
     return is_name_word(tokens, i, False) and nxt not in GOAL_VERBS | NAME_VERBS | DELIVER_VERBS | PICK_VERBS
 
 
+def _numbered_name(tokens: Sequence[str], k: int) -> bool:
+    """Whether a verb after "go to" is the name of a numbered place ("fly over stand 4", "survey stand 4")."""
+    nxt = tokens[k + 2] if k + 2 < len(tokens) else '.'
+    return tokens[k] in GOAL_VERBS and tokens[k + 1:k + 2] != [] and tokens[k + 1].isdigit() and \
+        len(tokens[k + 1]) < 4 and (nxt in PUNCT or nxt in STOPWORDS) and nxt not in ('times', 'more')
+
+
 def normalize_counts(rest: list[str]) -> list[str]:
     """Rewrite count idioms to one form: "five or more times" -> "at least five times"."""
     text = ' ' + ' '.join(rest) + ' '
@@ -785,6 +792,23 @@ class _Reader:
                     mapping[d] = Descriptor(f'{kinds.pop()}_{label}')
                     said, meant = d.name.replace('_', ' '), mapping[d].name.replace('_', ' ')
                     self.notes.append(f'took "{said}" as the {meant}')
+                    continue
+                # "the gate 7 apron door ... back to the apron door": the one named in full before
+                # (a label in front of it: "the apron door" is that gate's)
+                full = [n for n in longer if n.endswith('_' + d.name) and any(
+                    _is_label(w) for w in n[:-len(d.name) - 1].split('_'))]
+                if not _is_label(label) and len(full) == 1 and not any(
+                        n.endswith('_' + d.name) for n in longer if n != full[0] and n != d.name):
+                    mapping[d] = Descriptor(full[0])
+                    self.notes.append(f'took "{d.name.replace("_", " ")}" as the {full[0].replace("_", " ")} '
+                                      'named before')
+                continue
+            if _is_label(d.name) and len(d.name) == 1:
+                # "check-in island D or E": the bare letter names one of the same kind
+                kinds = {n.rpartition('_')[0] for n in longer if _is_label(n.rpartition('_')[2])}
+                if len(kinds) == 1:
+                    mapping[d] = Descriptor(f'{kinds.pop()}_{d.name}')
+                    self.notes.append(f'took "{d.name}" as the {mapping[d].name.replace("_", " ")}')
                 continue
             if len(d.name) == 1 and not self.phrases.landmarks:
                 # "stairwell A or B", "stockpile A then B": a bare label is one of the kind named with
@@ -3199,6 +3223,13 @@ class _Reader:
             return True, rest[end + 3:]
         if self.only and mode == 'at_least' and i == 0:
             mode = 'exactly'   # "only visit a once"
+        if mode == 'at_least' and n > 1 and len(targets) > 1 and rest[end:end + 1] == ['each'] and \
+                not any(self.task.find_step(d) for d in targets):
+            # "check the first and the last one at least twice each": each of them, in any order
+            self.task.chain.append(Step('all', chains=[
+                [st for _ in range(n) for st in (Step('leave', [d]), Step('visit', [d]))][1:]
+                for d in targets]))
+            return True, rest[end + 1:]
         for d in targets:
             x = _near(d)
             known = self.task.find_step(d)
@@ -3457,6 +3488,7 @@ class _Reader:
         while k < len(tokens) and (tokens[k] in GOAL_VERBS or tokens[k] in GOAL_PARTICLES or
                                    tokens[k] == 'here') and not (
                 tokens[k] in ORDINALS and _ordinal_name(tokens, k)) and not (
+                k > 0 and _numbered_name(tokens, k)) and not (
                 tokens[k] in ('there', 'here') and (k + 1 >= len(tokens) or
                                                     tokens[k + 1] not in DETS) and not (
                     # "come back here to the living room": the place is the one named after
@@ -3815,14 +3847,19 @@ class _Reader:
                                            f'"{" ".join(whole)}"', details={'part': rest})
                 rest = rest[:k] + [t for d in prior for t in ('the', d.name, 'and')][:-1]
             nps, _, end = self._np_list(rest, k)
-            if nps and word in ('before', 'after') and rest[k] in ('it', 'that', 'them', 'this') and \
+            p = k + 2 if rest[k:k + 2] == ['anywhere', 'near'] else k
+            pointer = rest[p:p + 1] in (['it'], ['there'], ['that'], ['them'], ['this'])
+            if nps and word in ('before', 'after') and pointer and \
                     all(np.descriptor in targets for np in nps):
-                # "check the hoist, but do the tag board before it": the place said before this one
-                prior = self.task.chain[-2] if len(self.task.chain) > 1 else None
-                if prior is None or prior.kind != 'visit' or not prior.targets:
-                    raise TranslationError(f'could not tell what "{word} {rest[k]}" refers to in '
-                                           f'"{" ".join(whole)}"', details={'part': rest})
-                nps = [NounPhrase(d, np.start, np.end, d.name, '') for d in prior.targets for np in nps[:1]]
+                # "check the hoist, but do the tag board before it", "visit the truck before you go
+                # anywhere near it": the goal said before this clause, not its own place (or it is refused)
+                prev = self.task.chain[-2] if len(self.task.chain) > 1 else None
+                said = [] if prev is None else prev.dests if prev.kind == 'deliver' else prev.targets
+                if prev is None or prev.kind not in ('visit', 'deliver') or not said or \
+                        set(said) & set(targets):
+                    raise TranslationError(f'could not tell what "{word} {rest[p]}" refers to in '
+                                           f'"{" ".join(whole)}"', details={'part': ' '.join(rest)})
+                nps = [NounPhrase(d, np.start, np.end, d.name, '') for d in said for np in nps[:1]]
             if nps:
                 others = [np.descriptor for np in nps]
                 moved = self.task.chain.pop()

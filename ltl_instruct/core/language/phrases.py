@@ -258,6 +258,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     if have_name and w in _VERBS_AFTER_NUMBER and i > 0 and (
             tokens[i - 1].isdigit() or tokens[i - 1] in NUMBER_WORDS):
         return False   # "table 4 wants ketchup", "room 12 asked for towels": the number ends the name
+    if w in ('need', 'needs') and have_name and (nxt.endswith('ing') or nxt in (
+            'to', 'a', 'an', 'some', 'inspection', 'attention', 'help', 'work', 'repair', 'repairs')):
+        return False   # "carousels 3, 5 and 9 need inspection", "the dock needs cleaning": the name ends
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \
@@ -427,7 +430,8 @@ class PhraseParser:
                     i = whole.end
         if words in (['spot'], ['somewhere'], ['place'], ['point'], ['location'], ['area'], ['anywhere'],
                      ['anyplace']) and i + 1 < len(
-                tokens) and tokens[i] in ('in', 'on', 'inside', 'at', 'of') and depth < 8:
+                tokens) and (tokens[i] in ('in', 'on', 'inside', 'at', 'of') or tokens[i] == 'near' and
+                             words in (['anywhere'], ['somewhere'])) and depth < 8:   # ("anywhere near it")
             inner = self.parse(tokens, i + 1, destination_stops, depth)
             if inner is not None:
                 return NounPhrase(inner.descriptor, start, inner.end, inner.head, inner.pronoun)

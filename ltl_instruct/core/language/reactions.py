@@ -146,6 +146,14 @@ def _match(tokens: Sequence[str], i: int, phrases: Sequence[tuple[str, ...]]) ->
     return 0
 
 
+def _imperative_avoid(rest: Sequence[str]) -> bool:
+    """Whether a response is an avoidance said as a command ("avoid Y", "stay clear of Y", "never go to")."""
+    words = [w for w in rest if w != ',']
+    while words and words[0] in ('then', 'also', 'just', 'please'):
+        words = words[1:]
+    return bool(words) and words[0] in ('avoid', 'stay', 'keep', 'steer', 'never', 'do')
+
+
 class RuleReader:
     """Reads a whole sentence as trigger-response rules, or gives ``None`` to leave it to the clauses."""
 
@@ -281,8 +289,11 @@ class RuleReader:
             # "once you reach X" scopes the goal X given before ("the bay": the loading bay): the
             # clause reader places it
             return None
-        if not always and response.avoid and not self.conditional_after and words[start] == 'after':
-            return None   # "after going to X, avoid Y": X is a goal, Y avoided after it (the clause reader)
+        if not always and response.avoid and not self.conditional_after and (
+                words[start] == 'after' or words[start] == 'once' and start == 0 and _imperative_avoid(rest)):
+            # "after going to X, avoid Y", "once you've been to X, stay clear of Y": X is a goal, Y
+            # avoided after it (the clause reader); "once ..., you cannot go to Y" stays a rule
+            return None
         t = _any(event)
         if response.avoid:
             never = _conj([Always(Not(_near(d))) for d in response.places])

@@ -20,8 +20,8 @@ from typing import Optional
 from ltl_instruct.core.errors import TranslationError
 from ltl_instruct.core.language import chatter
 from ltl_instruct.core.language.phrases import (
-    COLOURS, DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, NounPhrase, PhraseParser, is_name_word,
-    match_relation, singular,
+    COLOURS, DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, STOPWORDS, NounPhrase, PhraseParser,
+    is_name_word, match_relation, singular,
 )
 from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
 from ltl_instruct.core.spec import Descriptor
@@ -94,6 +94,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
             continue
         if end < len(tokens) and tokens[end] not in _LIST_END and not (
+                # "carousels 3, 5, 7 and 9 need inspection": numbered things (not "the lamps and the rugs")
+                tokens[end] in ('need', 'needs') and (len(nps) > 2 or all(
+                    np.descriptor.name.rpartition('_')[2].isdigit() for np in nps))) and not (
                 # "a lamp, a kettle and a dryer to return": what is to be done with them
                 tokens[end] == 'to' and len(nps) >= 3 and tokens[end + 1:end + 2] != [] and
                 tokens[end + 1] not in DETERMINERS):
@@ -118,6 +121,15 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
             back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
             kind = parser.parse(tokens, back + 1)
             if kind is not None and kind.end == s - 1 and not kind.descriptor.relations:
+                category = _kind_name(kind)
+        elif s >= 4 and tokens[s - 1] == 'are':
+            # "the escalators I'm worried about are number 1, number 4 and number 6": the kind, then
+            # who said it
+            back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
+            kind = parser.parse(tokens, back + 1)
+            if kind is not None and not kind.descriptor.relations and kind.head.endswith('s') and \
+                    kind.end < s - 2 and tokens[kind.end] in ('i', 'we', 'you', 'that', 'which') and \
+                    not set(tokens[kind.end:s - 1]) & chatter.PLACE_RULE_WORDS:
                 category = _kind_name(kind)
         elif s >= 2 and tokens[s - 1] == ',' and s != lead:
             # "two carts in the corridor, a housekeeping cart and a minibar cart": the count names them
@@ -332,6 +344,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
             words = [category if w == 'one' else w for w in words]
         elif bare and (len(words[1]) == 1 or words[1].isdigit()):
             words = ['the'] + category.split('_') + words[1:]   # "rooms are A, B and C": room b
+        elif category and len(words) == 3 and words[1] in ('number', 'no') and words[2].isdigit():
+            words = ['the'] + category.split('_') + words[2:]   # "escalators are number 1, ...": escalator 1
         elif bare and words[1] in COLOURS:
             words = words + category.split('_')   # "three bins: red, blue and green": the blue bin
         items.append(words)
@@ -346,6 +360,10 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 out += [',', sep] if sep == 'then' else [sep]
             out += items[i]
         return out
+
+    # the kind all the listed things share ("hangar 1, hangar 2, hangar 3": hangar)
+    kinds = {it[-2] for it in items if len(it) >= 3 and (len(it[-1]) == 1 or it[-1].isdigit())}
+    kind = kinds.pop() if len(kinds) == 1 and all(len(it) >= 3 for it in items) else ''
 
     def resolve(tail: list[str]) -> list[str]:
         out: list[str] = []
@@ -367,6 +385,15 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
                 # "the second", "the latter twice": no noun follows the position word
                 ends = not w or w in PUNCT or one or w in ('and', 'then', 'to', 'in', 'on', 'or') or \
                     not is_name_word(tail, i + 2, False)
+                if not ends and kind and singular(w) == kind and (nxt in ORDINALS or nxt in (
+                        'last', 'middle')):
+                    # "hangars 1, 2 and 3: the third hangar on that list": the kind the list named
+                    after = i + 3
+                    said = next((m for m in _MENTIONED if tuple(tail[after:after + len(m)]) == m), ())
+                    if after == len(tail) or tail[after] in PUNCT or tail[after] in (
+                            'and', 'then', 'or') or said:
+                        tail = tail[:i + 2] + ['one'] + tail[after + len(said):]
+                        w, one, ends = 'one', 1, True
                 if nxt == 'second' and tail[i + 2:i + 4] == ['to', 'last'] and n >= 2:
                     # "the second to last (one)"
                     out += joined([n - 2])
@@ -947,13 +974,31 @@ def _uncleft(tokens: list[str]) -> list[str]:
 
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
-    tokens = _uncleft(tokens)
+    tokens = _actually_first(_uncleft(tokens))
     said: list[str] = []
     for k, t in enumerate(tokens):
         said.append(t)
         if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and tokens[k - 1] in PUNCT:
             said.append(',')   # ", no not the couch, the armchair": "no" then what it corrects
     return _apply_corrections(said, notes)
+
+
+def _actually_first(tokens: list[str]) -> list[str]:
+    """Say a trailing "actually" first: "D or E... just D actually, and" -> "..., actually, just D, and".
+
+    Only after a short part of its own that starts with "just" or "only" after a comma (a correction
+    that keeps one of what was said), so the marker is found where corrections start.
+    """
+    if 'actually' not in tokens:
+        return tokens
+    for i, t in enumerate(tokens):
+        if t != 'actually' or i < 3 or tokens[i - 1] in PUNCT or i + 1 < len(tokens) and \
+                tokens[i + 1] not in PUNCT:
+            continue
+        c = next((k for k in range(i - 1, max(i - 7, -1), -1) if tokens[k] in PUNCT), -1)
+        if c > 0 and tokens[c] == ',' and tokens[c + 1] in ('just', 'only') and i - c > 2:
+            return tokens[:c + 1] + ['actually', ','] + tokens[c + 1:i] + tokens[i + 1:]
+    return tokens
 
 
 def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
@@ -1241,6 +1286,8 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     if words[1:3] in (['go', 'to'], ['head', 'to'], ['visit', 'the']) and len(words) > 3:
         words = ['just'] + words[3 if words[1] != 'visit' else 2:]   # "just go to the north one"
+    if len(words) == 2 and _bare_label(words[1]):
+        return _only_label(prev, words[1], notes)   # "check-in island D or E ... just D"
     np = PhraseParser().parse(words, 1)
     spans = _np_spans(prev)
     if np is not None and np.pronoun == 'one' and np.end == len(words) == 4 and \
@@ -1274,6 +1321,32 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     notes.append(f'only {np.descriptor} kept of that list')
     return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
+
+
+def _bare_label(word: str) -> bool:
+    """Tell whether a word is a letter or a short number that labels one of a kind ("island D", "gate 4")."""
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4
+
+
+def _only_label(prev: list[str], label: str, notes: list[str]) -> Optional[list[str]]:
+    """Keep one label of "check-in island D or E" ("... just D"): the kind named with it stays."""
+    for p in range(len(prev) - 2, 0, -1):
+        a, b = prev[p - 1], prev[p + 1]
+        if prev[p] == 'or' and p >= 2 and p + 2 < len(prev) and prev[p + 1] == prev[p - 2] and \
+                _bare_label(a) and _bare_label(prev[p + 2]):
+            b = prev[p + 2]   # "room 4 or room 5" (the kind said again)
+            if label not in (a, b) or prev[p + 3:p + 4] in (['or'], [',']):
+                return None
+            notes.append(f'only {label} kept of that choice')
+            return prev[:p - 1] + [label] + prev[p + 3:]
+        if prev[p] != 'or' or not (_bare_label(a) and _bare_label(b)) or label not in (a, b) or \
+                prev[p - 2:p - 1] in (['or'], [',']) or prev[p + 2:p + 3] in (['or'], [',', 'or']):
+            continue
+        if p < 2 or prev[p - 2] in PUNCT or prev[p - 2] in STOPWORDS:
+            return None   # no kind before the labels
+        notes.append(f'only {label} kept of that choice')
+        return prev[:p - 1] + [label] + prev[p + 2:]
+    return None
 
 
 def _only_this_side(prev: list[str], named: list[str], spans: list[NounPhrase], notes: list[str]
@@ -1476,7 +1549,8 @@ def _insert_between(prev: list[str], seg: list[str]) -> Optional[list[str]]:
 
 
 _ORDER_WORDS = frozenset({'the order', 'that order', 'the ordering', 'the sequence', 'that condition',
-                          'the condition', 'the rule', 'that rule', 'the order part'})
+                          'the condition', 'the rule', 'that rule', 'the order part', 'that ordering',
+                          'that sequence', 'the ordering part', 'the order bit'})
 
 
 def _drop_order(prev: list[str]) -> Optional[list[str]]:
@@ -1491,6 +1565,27 @@ def _drop_order(prev: list[str]) -> Optional[list[str]]:
         end = next((p for p in range(at, len(prev)) if prev[p] in PUNCT), len(prev))
         return prev[:k] + prev[end:]
     return prev[:k] + ['and'] + prev[at + 1:]
+
+
+def _said_after_cancel(kept: list[str], rest: list[str], notes: list[str]) -> list[str]:
+    """Keep what follows "never mind the order, ...": a step said again is dropped, anything else read on.
+
+    "just go to the chapel" after "head to the chapel only after X" says the kept goal again; "and
+    avoid the gym" or "go to the gym" is a new request (it was silently lost).
+    """
+    while rest and rest[0] in ('just', 'simply', 'so', 'then', 'and', 'instead'):
+        rest = rest[1:]
+    if not rest:
+        return []
+    named = {np.head for np in _np_spans(kept)}
+    spans = _np_spans(rest)
+    if rest[0] in _VERBS and rest[0] not in _AVOID_VERBS and spans and spans[0].start <= 3 and \
+            spans[-1].end == len(rest) and all(np.head in named for np in spans) and \
+            not (chatter.PLACE_RULE_WORDS & set(rest)):
+        notes.append(f'"{" ".join(rest)}" says the kept step again')
+        return []
+    end = [] if kept and kept[-1] in '.;!?' else ['.']
+    return end + rest
 
 
 # Words around "both" in "nah, make it both", "actually no, go to both of them".
@@ -1631,7 +1726,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     reordered = _order_restated(prev, seg, notes)
     if reordered is not None:
         return reordered
-    numbered = _renumber(prev, seg)
+    # ("room 4 or 5, no, just 5": one of the choice kept, not a number corrected)
+    just = [t for t in seg if t not in PUNCT][:1] in (['just'], ['only'])
+    numbered = None if just else _renumber(prev, seg)
     if numbered is not None:
         notes.append('the number was corrected')
         return numbered
@@ -1659,7 +1756,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         unordered = _drop_order(prev)
         if unordered is not None:
             notes.append('the order was dropped')
-            return unordered
+            return unordered + _said_after_cancel(unordered, words[k + 2:], notes)
     choice = _replace_choice(prev, seg, notes) if marker in ('make', 'hmm', 'actually', 'no', 'sorry', 'wait',
                                                              'or', 'i', 'oops', 'my') else None
     if choice is not None:

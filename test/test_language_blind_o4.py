@@ -25,6 +25,20 @@ BLIND_ROUND_O4 = [
      'F near[lamp::isabove(bedside_table)]'),
     ('Go to the lamp on the dresser. Wait, not the one on the dresser, the one on the bedside table.',
      'F near[lamp::isabove(bedside_table)]'),
+    # a remark set off by dashes inside the request says why, and is left out
+    ("Don't go past the home office more than once - I'm on calls - and keep away from the cat tree.",
+     '(!near[home_office] W (near[home_office] & (near[home_office] W G !near[home_office]))) & '
+     'G !near[cat_tree]'),
+    ("go to the den - we're in a hurry - and then the porch",
+     'F (near[den] & F near[porch])'),
+    # "until you're in one of them" after a choice: the scope ends at whichever is reached
+    ("Make for the north or the south stairwell, and keep out of the lobby until you're in one of them.",
+     '!near[lobby] U (near[north_stairwell] | near[south_stairwell])'),
+    # "the clean ones" after a plural thing: that thing, not the last (singular) place
+    ('Bring the dirty towels to the hamper, and then take the clean ones to the linen closet.',
+     'F (near[dirty_towels] & F (pick[dirty_towels] & F (near[hamper] & F (release[dirty_towels, hamper] & '
+     'F (near[clean_towels] & F (pick[clean_towels] & F (near[linen_closet] & '
+     'F release[clean_towels, linen_closet])))))))'),
 ]
 
 

@@ -1308,6 +1308,11 @@ RULES: tuple[Rule, ...] = (
     Rule('stay away from the wires until you get there: on the way there',
          r'\buntil (?:you|we|the robot) (?:get there|arrive(?: there)?|are there|make it there|reach it|'
          r'get to it)(?= [,.;]|$)', 'on the way there'),
+    Rule('the north or the south stairwell, and keep out of the lobby until you are in one of them: on the '
+         'way there (to whichever of the choice is reached)',
+         r'\bor\b(?P<x>[^.;?!]*?)\buntil (?:you|we|the robot) (?:are in|are at|get to|get into|reach|'
+         r'arrive at|make it to|are inside|enter) (?:one|either|any) of (?:them|those|the two)'
+         r'(?= [,.;]|$)', r'or\g<x>on the way there'),
     Rule('avoid the gate the whole time, and the kiosk on the way there: the verb said again',
          rf'\b(?P<v>avoid|keep away from|stay away from|keep clear of|steer clear of|stay clear of|'
          rf'stay out of|keep out of|keep off|stay off|do not go near) (?P<x>(?:the|my|your|our) {_NP})'

@@ -677,6 +677,28 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., the neighbours complain"
         return sentence
 
+    def _drop_middle_reason(self, sentence: list[str]) -> list[str]:
+        """Leave out a remark set off inside the request ("..., more than once - I'm on calls - and ...").
+
+        A part between commas (dashes) that says why, as it would at the end of the sentence, with
+        the request going on after it ("and", "then", "but" and a command); never one with a rule word.
+        """
+        if sentence.count(',') < 2:
+            return sentence   # the common case, kept fast
+        cuts = [k for k, t in enumerate(sentence) if t == ',']
+        for a, b in zip(cuts, cuts[1:]):
+            part = sentence[a + 1:b]
+            after = sentence[b + 1:b + 3]
+            if a == 0 or len(part) < 3 or part[0] not in ('i', 'we', 'he', 'she', 'they') or \
+                    after[:1] not in (['and'], ['then'], ['but']) or _rule_in(part) or \
+                    chatter.carries_constraint(part) or 'you' in part:
+                continue
+            notes = len(self.notes)
+            if len(self._drop_one_reason(sentence[:b])) == a and len(self.notes) > notes:
+                return self._drop_middle_reason(sentence[:a] + sentence[b:])
+            del self.notes[notes:]
+        return sentence
+
     def _drop_summons(self, sentence: list[str]) -> list[str]:
         """Leave out a part between commas that says who wants the robot ("..., chef wants a word, ...").
 
@@ -718,7 +740,7 @@ class _Reader:
             self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
-            sentence = self._drop_trailing_reason(self._drop_summons(sentence))
+            sentence = self._drop_trailing_reason(self._drop_middle_reason(self._drop_summons(sentence)))
             if self._places_only(sentence):
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
                 self.notes.append(f'read "{" ".join(sentence)}" as going there')

@@ -39,6 +39,21 @@ BLIND_ROUND_O4 = [
      'F (near[dirty_towels] & F (pick[dirty_towels] & F (near[hamper] & F (release[dirty_towels, hamper] & '
      'F (near[clean_towels] & F (pick[clean_towels] & F (near[linen_closet] & '
      'F release[clean_towels, linen_closet])))))))'),
+    # "not before you've been to A and, after that, B": the goal waits for the route A then B
+    ("End up at the window seat, but not before you've been to the bookshelf and, after that, the desk.",
+     'F near[window_seat] & (!near[window_seat] U (near[bookshelf] & (!near[window_seat] U near[desk])))'),
+    ('Go to the window seat, but only after you have visited the bookshelf and then the desk.',
+     'F near[window_seat] & (!near[window_seat] U (near[bookshelf] & (!near[window_seat] U near[desk])))'),
+    # "hold off until": not until
+    ("Go to the guest room, but hold off until you've been to both the upstairs bathroom and the laundry "
+     'nook.',
+     'F near[guest_room] & (!near[guest_room] U near[upstairs_bathroom]) & '
+     '(!near[guest_room] U near[laundry_nook])'),
+    # "X is off limits until Y, then go (out) there": there is X, the place held back
+    ("the patio is off limits untill you've been by the grill, then go out there",
+     'F near[patio] & (!near[patio] U near[grill])'),
+    ("don't go to the shed until you've been to the barn, then go there",
+     'F near[shed] & (!near[shed] U near[barn])'),
 ]
 
 

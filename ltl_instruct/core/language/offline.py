@@ -1101,7 +1101,43 @@ class _Reader:
             if (self.task.chain and permits) or (opens and self._is_permission(later)):
                 self._read_permission(later)
                 return
+            if n + 1 < len(clauses) and self._read_guarded_route(clause, clauses[n + 1]):
+                skip = True
+                continue
             scope = self._read_part(clause, scope)
+
+    def _read_guarded_route(self, clause: _Clause, nxt: _Clause) -> bool:
+        """Read 'X, but not before you've been to A and, after that, B': X waits for the route A then B.
+
+        Only the perfect ("you have been to", "you have visited") with one place after it, and
+        a next clause that is a place alone (a step of that route, no verb of its own):
+        ``!x U (a & (!x U b))``.
+        """
+        s = clause.tokens
+        lead = next((len(w) for w in (['not', 'before'], ['only', 'after'], ['not', 'until'])
+                     if s[:len(w)] == w), 0)
+        if not lead or nxt.connector != 'seq' or s[lead:lead + 2] != ['you', 'have']:
+            return False
+        k = lead + 3 if s[lead + 2:lead + 3] in (['visited'], ['reached']) else \
+            lead + 4 if s[lead + 2:lead + 4] in (['been', 'to'], ['gone', 'to']) else 0
+        first = self.phrases.parse(s, k) if k and s[k:k + 1] and s[k] in DETS else None
+        if first is None or first.pronoun or first.end != len(s):
+            return False
+        words = [t for t in nxt.tokens if t not in PUNCT]
+        then = self.phrases.parse(words, 0) if words[:1] and words[0] in DETS else None
+        if then is None or then.pronoun or then.end != len(words):
+            return False
+        before = len(self.task.constraints)
+        self._read_part(clause, None)
+        added = self.task.constraints[before:]
+        if len(added) != 1 or not isinstance(added[0], Until) or self.first_error is not None:
+            self._read_part(nxt, None)   # not one guard (a route waits): each read as it is
+            return True
+        guard = added[0]
+        then_at = _near(self._resolve(then, place=True).descriptor)
+        self.task.constraints[before] = Until(guard.left, _and(guard.right, Until(guard.left, then_at)))
+        self.notes.append(f'"{" ".join(words)}" read as the last stop before it')
+        return True
 
     def _is_avoidance_clause(self, tokens: list[str]) -> bool:
         """Whether a clause only says what to keep away from ("and either way avoid the hall")."""
@@ -2156,6 +2192,12 @@ class _Reader:
         return None
 
     def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:
+        held_there = self.held_until is not None and (self.last_place or np).descriptor == self.held_until[1]
+        if np.pronoun == 'there' and self.held_until is not None and held_there and \
+                len(self.held_until[0]) == 1 and self.task.find_step(self.held_until[0][0]) is None:
+            # "the patio is off limits until you've been by the grill, then go out there": the patio
+            held = self.held_until[0][0]
+            return NounPhrase(held, np.start, np.end, held.name.split('_')[-1], np.pronoun)
         if np.pronoun in ('there', 'here') and self.last_place is not None:
             return self.last_place
         if np.pronoun in ('it', 'them', 'that') and self.last_object is not None and not place:

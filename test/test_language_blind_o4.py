@@ -54,6 +54,17 @@ BLIND_ROUND_O4 = [
      'F near[patio] & (!near[patio] U near[grill])'),
     ("don't go to the shed until you've been to the barn, then go there",
      'F near[shed] & (!near[shed] U near[barn])'),
+    # "bring me either A or B" with no place: one of them (both were picked up)
+    ('Bring me either the stapler or the hole punch - just leave it on my desk.',
+     '(F (near[stapler] & F (pick[stapler] & F (near[desk] & F release[stapler, desk])))) | '
+     '(F (near[hole_punch] & F (pick[hole_punch] & F (near[desk] & F release[hole_punch, desk]))))'),
+    ('Bring either the stapler or the hole punch.',
+     'F (near[stapler] & F pick[stapler]) | F (near[hole_punch] & F pick[hole_punch])'),
+    # a goal after "if you pick X" binds that alternative only
+    ('Go to either the gym or the pool, but if you pick the pool, stop by the locker room first.',
+     'F near[gym] | (F near[pool] & (!near[pool] U near[locker_room]))'),
+    ('Go to either the gym or the pool. If you choose the pool, go to the sauna afterwards.',
+     'F near[gym] | F (near[pool] & F near[sauna])'),
 ]
 
 

@@ -3406,6 +3406,9 @@ class _Reader:
             self.notes.append(f'"{verb}" releases the object at the implicit {implicit_dest}')
         if not dest_ds:
             self._check_leftover(rest, tokens)
+            if joiner == 'or':   # "bring me either the stapler or the hole punch": one of them
+                self.task.chain.append(Step('any', chains=[[Step('pick', [o.descriptor])] for o in objs]))
+                return True
             for o in objs:
                 self.task.chain.append(Step('pick', [o.descriptor]))
             return True
@@ -3698,6 +3701,36 @@ class _Reader:
                                                    _near(targets[0])))
             self.task.chain = [st for st in self.task.chain if st is not new_step]
             self.conditional = None
+        if self.choice is not None:
+            self._goal_in_choice(new_step, clause.first)
+
+    def _goal_in_choice(self, new_step: Step, first: bool) -> None:
+        """Bind a goal said after "if you pick X" to that alternative only.
+
+        "the gym or the pool, but if you pick the pool, stop by the locker room first": the pool
+        only after the locker room, ``F gym | (F pool & (!pool U locker_room))``; without "first",
+        the goal comes after X in that alternative.
+        """
+        choice, self.choice = self.choice, None
+        step = next((st for st in reversed(self.task.chain) if st is not new_step and st.kind == 'visit'),
+                    None)
+        if step is None or choice not in step.targets or new_step.kind != 'visit' or \
+                len(new_step.targets) != 1:
+            raise TranslationError(f'could not place {new_step.targets} in the choice of {choice}',
+                                   details={'part': str(choice)})
+        self.task.chain = [st for st in self.task.chain if st is not new_step]
+        goal = new_step.targets[0]
+        chains = []
+        for d in step.targets:
+            if d != choice:
+                chains.append([Step('visit', [d])])
+            elif first:
+                guard = Step('formula', formula=Until(Not(_near(d)), _near(goal)))
+                chains.append([guard, Step('visit', [d])])
+            else:
+                chains.append([Step('visit', [d]), Step('visit', [goal])])
+        step.kind, step.targets, step.chains = 'any', [], chains
+        self.notes.append(f'{goal} binds only the choice of {choice}')
 
     def _insert_anchor(self, clause: _Clause) -> Optional[Step]:
         """Return the step a new goal goes before ("but first a, then b": a's tail), if any."""

@@ -65,6 +65,18 @@ BLIND_ROUND_O4 = [
      'F near[gym] | (F near[pool] & (!near[pool] U near[locker_room]))'),
     ('Go to either the gym or the pool. If you choose the pool, go to the sauna afterwards.',
      'F near[gym] | F (near[pool] & F near[sauna])'),
+    # typo of "and" between places
+    ('hit the mail room, the copy room adn then the break room',
+     'F (near[mail_room] & F (near[copy_room] & F near[break_room]))'),
+    # "I'll be down in five minutes" after the request: the person's remark
+    ("Meet me at the bike rack, I'll be down in five minutes.",
+     'F near[bike_rack]'),
+    # a list of places after "without going near", commas kept: each avoided (and never left out as a reason)
+    ('Please go to my desk without going near the plotter, the paper cutter or the coffee urn.',
+     'F near[desk] & G !near[plotter] & G !near[paper_cutter] & G !near[coffee_urn]'),
+    ('bring the cup to the sink without going near the dog, the cat or the bird',
+     'F (near[cup] & F (pick[cup] & ((!near[dog] & !near[cat] & !near[bird]) U (near[sink] & '
+     'F release[cup, sink]))))'),
 ]
 
 

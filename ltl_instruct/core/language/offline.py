@@ -482,6 +482,20 @@ def _strip_tails(rest: list[str]) -> tuple[list[str], str]:
     return rest, order
 
 
+def _uncomma(rest: list[str]) -> list[str]:
+    """Drop the commas of the words after a goal, but for those of a list after "without".
+
+    ("go to my desk without going near the plotter, the cutter or the urn": each of them avoided)
+    """
+    if ',' not in rest:
+        return rest
+    w = rest.index('without') if 'without' in rest else len(rest)
+    listed = w < len(rest) and bool({'or', 'and'} & set(rest[w:])) and not (
+        {'after', 'before', 'then', 'first', 'until', 'once', 'when', 'while'} & set(rest[w:]))
+    return [t for k, t in enumerate(rest) if t != ',' or listed and k > w and rest[k + 1:k + 2] and
+            rest[k + 1] in DETS]
+
+
 def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
     return tuple(tokens[i:i + len(words)]) == tuple(words)
 
@@ -580,6 +594,8 @@ class _Reader:
         if cut <= 0:
             return sentence
         tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
+        if tail[:1] and tail[0] in DETS and ('or' in tail or 'and' in tail) and self._names_only(tail):
+            return sentence   # "without going near the dog, the cat or the bird": the list goes on
         if tail[:1] == ['and'] and tail[1:2] and tail[1] in ('she', 'he', 'they', 'i', 'we'):
             tail = tail[1:]   # "..., and she has claws like fish hooks": a second reason
         if tail[:2] in (['i', 'would'], ['we', 'would'], ['i', 'want'], ['we', 'want']) and \
@@ -698,6 +714,14 @@ class _Reader:
                 return self._drop_middle_reason(sentence[:a] + sentence[b:])
             del self.notes[notes:]
         return sentence
+
+    def _names_only(self, words: list[str]) -> bool:
+        """Whether words are a list of things and nothing else ("the cat or the bird")."""
+        p = self.phrases
+        saved = (p.last, p.last_plural, p._last_key, p._before_last)
+        nps, joiner, end = p.parse_list(words, 0)
+        p.last, p.last_plural, p._last_key, p._before_last = saved
+        return bool(nps) and bool(joiner) and end == len(words)
 
     def _drop_summons(self, sentence: list[str]) -> list[str]:
         """Leave out a part between commas that says who wants the robot ("..., chef wants a word, ...").
@@ -3566,7 +3590,7 @@ class _Reader:
                                    details={'part': ' '.join(tokens)})
         if k > 0 or clause.connector in ('seq', 'pre', 'or'):
             self.saw_action = True
-        rest, ordered_tail = _strip_tails(self._drop_location([t for t in tokens[end:] if t != ','], nps))
+        rest, ordered_tail = _strip_tails(self._drop_location(_uncomma(tokens[end:]), nps))
         targets = [np.descriptor for np in nps]
         r0, r1 = orders.find_phrase(rest, orders.REVERSE)
         if r0 == 1 and rest[0] in ('but', 'and', 'just', 'only'):
@@ -3597,7 +3621,7 @@ class _Reader:
                        ['in', 'arbitrary', 'order'], ['in', 'no', 'particular', 'order']):
             if _starts(rest, 0, phrase):
                 rest = rest[len(phrase):]
-        rest = [t for t in rest if t != ',']
+        rest = _uncomma(rest)
         c = self._count_word(rest, 0)
         if c is not None and _starts(rest, c[1], ['in', 'a', 'row']):
             self.task.repeat = c[0]
@@ -3846,7 +3870,7 @@ class _Reader:
     def _goal_trailer(self, rest: list[str], whole: list[str], targets: list[Descriptor]) -> None:
         """Read what may follow a goal: "before Y", "after Y", "through Y", an avoidance."""
         drop = (',', 'please', 'first', 'too', 'again', 'then', 'instead')
-        rest = [t for t in rest if t != ',']
+        rest = _uncomma(rest)
         while rest and rest[-1] in drop:
             rest = rest[:-1]
         while rest and rest[0] in drop and not (rest[0] == 'first' and _ordinal_name(rest, 0)):

@@ -77,6 +77,9 @@ BLIND_ROUND_O4 = [
     ('bring the cup to the sink without going near the dog, the cat or the bird',
      'F (near[cup] & F (pick[cup] & ((!near[dog] & !near[cat] & !near[bird]) U (near[sink] & '
      'F release[cup, sink]))))'),
+    # "leave by" an exit: going to it
+    ('Stop at the info kiosk, then leave by either the north exit or the south exit.',
+     'F (near[info_kiosk] & F (near[north_exit] | near[south_exit]))'),
 ]
 
 

@@ -1285,6 +1285,8 @@ RULES: tuple[Rule, ...] = (
          rf'^(?P<x>(?:the|my|your|our) {_THING}) (?:can|will have to|has to|must|should|needs to) wait '
          rf'(?=(?:until|till)\b)', r'do not go to \g<x> '),
     Rule('not till after you have visited the amp: not until', r'\bnot (?:until|till) after\b', 'not until'),
+    Rule('then leave by either the north exit or the south exit: going to the exit',
+         r'\b(?:leave|exit) (?:by|via|through) (?=(?:either )?the )', 'go to '),
     Rule('go to the guest room, but hold off until you have been to the bathroom: not until',
          r'(?<=, )(?:but )?hold off(?: on (?:that|it|going there))? (?:until|till)(?= you| i| we)',
          'not until'),

@@ -1330,6 +1330,11 @@ RULES: tuple[Rule, ...] = (
          rf'^(?P<x>(?:the|my|your|our) {_THING}) (?:can|will have to|has to|must|should|needs to) wait '
          rf'(?=(?:until|till)\b)', r'do not go to \g<x> '),
     Rule('not till after you have visited the amp: not until', r'\bnot (?:until|till) after\b', 'not until'),
+    Rule('then leave by either the north exit or the south exit: going to the exit',
+         r'\b(?:leave|exit) (?:by|via|through) (?=(?:either )?the )', 'go to '),
+    Rule('go to the guest room, but hold off until you have been to the bathroom: not until',
+         r'(?<=, )(?:but )?hold off(?: on (?:that|it|going there))? (?:until|till)(?= you| i| we)',
+         'not until'),
     Rule('once you have been to the basket, and not before, go to the footstool: only after',
          r'^(?:once|after|when) (?P<e>[^,]+?) , (?:and )?not (?:before|earlier|sooner)(?: that)? , '
          r'(?P<m>.+)$',
@@ -1353,6 +1358,11 @@ RULES: tuple[Rule, ...] = (
     Rule('stay away from the wires until you get there: on the way there',
          r'\buntil (?:you|we|the robot) (?:get there|arrive(?: there)?|are there|make it there|reach it|'
          r'get to it)(?= [,.;]|$)', 'on the way there'),
+    Rule('the north or the south stairwell, and keep out of the lobby until you are in one of them: on the '
+         'way there (to whichever of the choice is reached)',
+         r'\bor\b(?P<x>[^.;?!]*?)\buntil (?:you|we|the robot) (?:are in|are at|get to|get into|reach|'
+         r'arrive at|make it to|are inside|enter) (?:one|either|any) of (?:them|those|the two)'
+         r'(?= [,.;]|$)', r'or\g<x>on the way there'),
     Rule('avoid the gate the whole time, and the kiosk on the way there: the verb said again',
          rf'\b(?P<v>avoid|keep away from|stay away from|keep clear of|steer clear of|stay clear of|'
          rf'stay out of|keep out of|keep off|stay off|do not go near) (?P<x>(?:the|my|your|our) {_NP})'

@@ -494,6 +494,20 @@ def _strip_tails(rest: list[str]) -> tuple[list[str], str]:
     return rest, order
 
 
+def _uncomma(rest: list[str]) -> list[str]:
+    """Drop the commas of the words after a goal, but for those of a list after "without".
+
+    ("go to my desk without going near the plotter, the cutter or the urn": each of them avoided)
+    """
+    if ',' not in rest:
+        return rest
+    w = rest.index('without') if 'without' in rest else len(rest)
+    listed = w < len(rest) and bool({'or', 'and'} & set(rest[w:])) and not (
+        {'after', 'before', 'then', 'first', 'until', 'once', 'when', 'while'} & set(rest[w:]))
+    return [t for k, t in enumerate(rest) if t != ',' or listed and k > w and rest[k + 1:k + 2] and
+            rest[k + 1] in DETS]
+
+
 def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
     return tuple(tokens[i:i + len(words)]) == tuple(words)
 
@@ -592,6 +606,8 @@ class _Reader:
         if cut <= 0:
             return sentence
         tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
+        if tail[:1] and tail[0] in DETS and ('or' in tail or 'and' in tail) and self._names_only(tail):
+            return sentence   # "without going near the dog, the cat or the bird": the list goes on
         if tail[:1] == ['and'] and tail[1:2] and tail[1] in ('she', 'he', 'they', 'i', 'we'):
             tail = tail[1:]   # "..., and she has claws like fish hooks": a second reason
         if tail[:2] in (['i', 'would'], ['we', 'would'], ['i', 'want'], ['we', 'want']) and \
@@ -689,6 +705,36 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., the neighbours complain"
         return sentence
 
+    def _drop_middle_reason(self, sentence: list[str]) -> list[str]:
+        """Leave out a remark set off inside the request ("..., more than once - I'm on calls - and ...").
+
+        A part between commas (dashes) that says why, as it would at the end of the sentence, with
+        the request going on after it ("and", "then", "but" and a command); never one with a rule word.
+        """
+        if sentence.count(',') < 2:
+            return sentence   # the common case, kept fast
+        cuts = [k for k, t in enumerate(sentence) if t == ',']
+        for a, b in zip(cuts, cuts[1:]):
+            part = sentence[a + 1:b]
+            after = sentence[b + 1:b + 3]
+            if a == 0 or len(part) < 3 or part[0] not in ('i', 'we', 'he', 'she', 'they') or \
+                    after[:1] not in (['and'], ['then'], ['but']) or _rule_in(part) or \
+                    chatter.carries_constraint(part) or 'you' in part:
+                continue
+            notes = len(self.notes)
+            if len(self._drop_one_reason(sentence[:b])) == a and len(self.notes) > notes:
+                return self._drop_middle_reason(sentence[:a] + sentence[b:])
+            del self.notes[notes:]
+        return sentence
+
+    def _names_only(self, words: list[str]) -> bool:
+        """Whether words are a list of things and nothing else ("the cat or the bird")."""
+        p = self.phrases
+        saved = (p.last, p.last_plural, p._last_key, p._before_last)
+        nps, joiner, end = p.parse_list(words, 0)
+        p.last, p.last_plural, p._last_key, p._before_last = saved
+        return bool(nps) and bool(joiner) and end == len(words)
+
     def _drop_summons(self, sentence: list[str]) -> list[str]:
         """Leave out a part between commas that says who wants the robot ("..., chef wants a word, ...").
 
@@ -730,7 +776,7 @@ class _Reader:
             self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
-            sentence = self._drop_trailing_reason(self._drop_summons(sentence))
+            sentence = self._drop_trailing_reason(self._drop_middle_reason(self._drop_summons(sentence)))
             if self._places_only(sentence):
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
                 self.notes.append(f'read "{" ".join(sentence)}" as going there')
@@ -1119,7 +1165,43 @@ class _Reader:
             if (self.task.chain and permits) or (opens and self._is_permission(later)):
                 self._read_permission(later)
                 return
+            if n + 1 < len(clauses) and self._read_guarded_route(clause, clauses[n + 1]):
+                skip = True
+                continue
             scope = self._read_part(clause, scope)
+
+    def _read_guarded_route(self, clause: _Clause, nxt: _Clause) -> bool:
+        """Read 'X, but not before you've been to A and, after that, B': X waits for the route A then B.
+
+        Only the perfect ("you have been to", "you have visited") with one place after it, and
+        a next clause that is a place alone (a step of that route, no verb of its own):
+        ``!x U (a & (!x U b))``.
+        """
+        s = clause.tokens
+        lead = next((len(w) for w in (['not', 'before'], ['only', 'after'], ['not', 'until'])
+                     if s[:len(w)] == w), 0)
+        if not lead or nxt.connector != 'seq' or s[lead:lead + 2] != ['you', 'have']:
+            return False
+        k = lead + 3 if s[lead + 2:lead + 3] in (['visited'], ['reached']) else \
+            lead + 4 if s[lead + 2:lead + 4] in (['been', 'to'], ['gone', 'to']) else 0
+        first = self.phrases.parse(s, k) if k and s[k:k + 1] and s[k] in DETS else None
+        if first is None or first.pronoun or first.end != len(s):
+            return False
+        words = [t for t in nxt.tokens if t not in PUNCT]
+        then = self.phrases.parse(words, 0) if words[:1] and words[0] in DETS else None
+        if then is None or then.pronoun or then.end != len(words):
+            return False
+        before = len(self.task.constraints)
+        self._read_part(clause, None)
+        added = self.task.constraints[before:]
+        if len(added) != 1 or not isinstance(added[0], Until) or self.first_error is not None:
+            self._read_part(nxt, None)   # not one guard (a route waits): each read as it is
+            return True
+        guard = added[0]
+        then_at = _near(self._resolve(then, place=True).descriptor)
+        self.task.constraints[before] = Until(guard.left, _and(guard.right, Until(guard.left, then_at)))
+        self.notes.append(f'"{" ".join(words)}" read as the last stop before it')
+        return True
 
     def _is_avoidance_clause(self, tokens: list[str]) -> bool:
         """Whether a clause only says what to keep away from ("and either way avoid the hall")."""
@@ -2177,6 +2259,12 @@ class _Reader:
         return None
 
     def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:
+        held_there = self.held_until is not None and (self.last_place or np).descriptor == self.held_until[1]
+        if np.pronoun == 'there' and self.held_until is not None and held_there and \
+                len(self.held_until[0]) == 1 and self.task.find_step(self.held_until[0][0]) is None:
+            # "the patio is off limits until you've been by the grill, then go out there": the patio
+            held = self.held_until[0][0]
+            return NounPhrase(held, np.start, np.end, held.name.split('_')[-1], np.pronoun)
         if np.pronoun in ('there', 'here') and self.last_place is not None:
             return self.last_place
         if np.pronoun in ('it', 'them', 'that') and self.last_object is not None and not place:
@@ -3403,6 +3491,9 @@ class _Reader:
             self.notes.append(f'"{verb}" releases the object at the implicit {implicit_dest}')
         if not dest_ds:
             self._check_leftover(rest, tokens)
+            if joiner == 'or':   # "bring me either the stapler or the hole punch": one of them
+                self.task.chain.append(Step('any', chains=[[Step('pick', [o.descriptor])] for o in objs]))
+                return True
             for o in objs:
                 self.task.chain.append(Step('pick', [o.descriptor]))
             return True
@@ -3561,7 +3652,7 @@ class _Reader:
                                    details={'part': ' '.join(tokens)})
         if k > 0 or clause.connector in ('seq', 'pre', 'or'):
             self.saw_action = True
-        rest, ordered_tail = _strip_tails(self._drop_location([t for t in tokens[end:] if t != ','], nps))
+        rest, ordered_tail = _strip_tails(self._drop_location(_uncomma(tokens[end:]), nps))
         targets = [np.descriptor for np in nps]
         r0, r1 = orders.find_phrase(rest, orders.REVERSE)
         if r0 == 1 and rest[0] in ('but', 'and', 'just', 'only'):
@@ -3592,7 +3683,7 @@ class _Reader:
                        ['in', 'arbitrary', 'order'], ['in', 'no', 'particular', 'order']):
             if _starts(rest, 0, phrase):
                 rest = rest[len(phrase):]
-        rest = [t for t in rest if t != ',']
+        rest = _uncomma(rest)
         c = self._count_word(rest, 0)
         if c is not None and _starts(rest, c[1], ['in', 'a', 'row']):
             self.task.repeat = c[0]
@@ -3696,6 +3787,36 @@ class _Reader:
                                                    _near(targets[0])))
             self.task.chain = [st for st in self.task.chain if st is not new_step]
             self.conditional = None
+        if self.choice is not None:
+            self._goal_in_choice(new_step, clause.first)
+
+    def _goal_in_choice(self, new_step: Step, first: bool) -> None:
+        """Bind a goal said after "if you pick X" to that alternative only.
+
+        "the gym or the pool, but if you pick the pool, stop by the locker room first": the pool
+        only after the locker room, ``F gym | (F pool & (!pool U locker_room))``; without "first",
+        the goal comes after X in that alternative.
+        """
+        choice, self.choice = self.choice, None
+        step = next((st for st in reversed(self.task.chain) if st is not new_step and st.kind == 'visit'),
+                    None)
+        if step is None or choice not in step.targets or new_step.kind != 'visit' or \
+                len(new_step.targets) != 1:
+            raise TranslationError(f'could not place {new_step.targets} in the choice of {choice}',
+                                   details={'part': str(choice)})
+        self.task.chain = [st for st in self.task.chain if st is not new_step]
+        goal = new_step.targets[0]
+        chains = []
+        for d in step.targets:
+            if d != choice:
+                chains.append([Step('visit', [d])])
+            elif first:
+                guard = Step('formula', formula=Until(Not(_near(d)), _near(goal)))
+                chains.append([guard, Step('visit', [d])])
+            else:
+                chains.append([Step('visit', [d]), Step('visit', [goal])])
+        step.kind, step.targets, step.chains = 'any', [], chains
+        self.notes.append(f'{goal} binds only the choice of {choice}')
 
     def _insert_anchor(self, clause: _Clause) -> Optional[Step]:
         """Return the step a new goal goes before ("but first a, then b": a's tail), if any."""
@@ -3811,7 +3932,7 @@ class _Reader:
     def _goal_trailer(self, rest: list[str], whole: list[str], targets: list[Descriptor]) -> None:
         """Read what may follow a goal: "before Y", "after Y", "through Y", an avoidance."""
         drop = (',', 'please', 'first', 'too', 'again', 'then', 'instead')
-        rest = [t for t in rest if t != ',']
+        rest = _uncomma(rest)
         while rest and rest[-1] in drop:
             rest = rest[:-1]
         while rest and rest[0] in drop and not (rest[0] == 'first' and _ordinal_name(rest, 0)):

@@ -342,6 +342,7 @@ class PhraseParser:
     def __init__(self, landmarks: Sequence[str] = (), digits: bool = False) -> None:
         self.digits = digits   # number words in names become digits (see name_of)
         self.last: Optional[NounPhrase] = None
+        self.last_plural: Optional[NounPhrase] = None   # "the dirty towels ... the clean ones"
         self._last_key: tuple[str, ...] = ()
         self._before_last: Optional[NounPhrase] = None
         # known landmark names, as token tuples, longest first ("a", "red room", "landmark_1")
@@ -445,17 +446,21 @@ class PhraseParser:
         one = words[-1] in ('one', 'ones') and (len(words) == 1 or words[-2] in PLACEHOLDER_ADJECTIVES) and \
             (words[-1] == 'one' or len(words) > 1)   # "the north vine rows or the south ones"
         if one:
-            base = self.last.descriptor.name if self.last is not None else ''
+            last = self.last
+            if words[-1] == 'ones' and last is not None and singular(last.head) == last.head and \
+                    self.last_plural is not None:
+                last = self.last_plural   # "the dirty towels to the hamper, the clean ones ...": towels
+            base = last.descriptor.name if last is not None else ''
             if len(words) == 1:
                 words = base.split('_') if base else words
-            elif self.last is not None:
-                named = self.last.descriptor.name.split('_')
+            elif last is not None:
+                named = last.descriptor.name.split('_')
                 if len(words) == 2 and len(named) > 2 and named[0] in PLACEHOLDER_ADJECTIVES and not any(
                         w in PLACEHOLDER_ADJECTIVES for w in named[1:]):
                     # "the left loading door or the right one": one is the loading door
                     words = words[:-1] + named[1:]
                 else:
-                    words = words[:-1] + [self.last.head]
+                    words = words[:-1] + [last.head]
         head = words[-1]
         relations: list[Relation] = []
         while i < len(tokens):
@@ -500,6 +505,8 @@ class PhraseParser:
                         'one' if one else '')
         if depth == 0 and not (tokens[start] == words[0] and words[0] in NAME_VERBS):
             self.last = np   # not a verb tried as a noun ("bring me the blue one": one is not a bring)
+            if singular(head) != head:
+                self.last_plural = np
         return np
 
     def parse_list(self, tokens: Sequence[str], i: int, destination_stops: bool = False

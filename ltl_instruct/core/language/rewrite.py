@@ -688,8 +688,9 @@ def _numbered(head: str) -> bool:
 
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
-    if 'it' in new and 'one' in new:
-        # "the chair behind the desk, or rather the one in front of it": it is the desk
+    if 'it' in new and ('one' in new or new[:1] and new[0] in DETERMINERS):
+        # "the chair behind the desk, or rather the one in front of it": it is the desk (and so in
+        # "the bin next to the rack, no, I meant the bin behind it")
         spans = _np_spans(prev)
         if spans and spans[-1].descriptor.relations:
             ref = PhraseParser().parse(prev, spans[-1].start)
@@ -1709,7 +1710,25 @@ def _order_restated(prev: list[str], seg: list[str], notes: list[str]) -> Option
     return prev[:start] + sentence[:verb] + words + [t for t in sentence[-1:] if t in PUNCT]
 
 
+def _scope_corrected(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """'only after the kitchen - scratch that, only after the print room': the scope's place replaced."""
+    k = 1 if seg[:1] == [','] else 0
+    k += 1 if seg[k:k + 1] == ['only'] else 0
+    if k >= len(seg) or seg[k] not in ('before', 'after', 'until') or seg[k] not in prev:
+        return None
+    new_np = PhraseParser().parse(seg, k + 1)
+    p = max(j for j in range(len(prev)) if prev[j] == seg[k])
+    old = PhraseParser().parse(prev, p + 1)
+    if new_np is None or old is None or old.pronoun or [t for t in seg[new_np.end:] if t not in PUNCT]:
+        return None
+    notes.append(f'corrected to "{" ".join(seg[k:new_np.end])}"')
+    return prev[:p] + seg[k:new_np.end] + prev[old.end:]
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    scoped = _scope_corrected(prev, seg, notes)
+    if scoped is not None:
+        return scoped
     lead = 1 if seg[:1] == [','] else 0
     for said in (['the', 'opposite', ','], ['the', 'other', 'way', 'round', ','],
                  ['the', 'other', 'way', 'around', ',']):
@@ -1813,7 +1832,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             # "wait, no, not the freezer, I meant the cooler": what is corrected, named before the correction
             named = PhraseParser().parse(seg, 1)
             swapped = None if named is None else _replace_named(prev, seg, named) if not named.pronoun else \
-                _replace_one(prev, seg, named, notes)
+                _replace_one(prev, seg, named, notes) or (
+                    _replace_named(prev, seg, named) if named.descriptor.relations else None)
             if swapped is not None:
                 notes.append(f'corrected: {" ".join(seg)}')
                 return swapped
@@ -2153,6 +2173,19 @@ def _replace_named(prev: list[str], seg: list[str], named: NounPhrase) -> Option
         return None
     new = _strip_corr(seg[named.end + 1:])
     nnp = PhraseParser().parse(new, 0) if new else None
+    if nnp is not None and nnp.end == len(new) and nnp.pronoun == 'one' and new[:2] == ['the', 'one'] and \
+            match_relation(new, 2) is not None:
+        # "the lamp on the dresser. wait, not the dresser (not the one on the dresser), the one on the
+        # bedside table": the thing said before ("the one": the lamp), its place corrected
+        spans = _np_spans(prev)
+        hit = next((sp for sp in reversed(spans) if sp.descriptor.relations == named.descriptor.relations
+                    if named.pronoun == 'one' and named.descriptor.relations), None) or \
+            next((sp for sp in reversed(spans) if not named.pronoun and (sp.head == named.head or any(
+                prev[k] == named.head for k in range(sp.start, sp.end)))), None)
+        cut = _relation_start(prev, hit) if hit is not None else None
+        if hit is None or cut is None:
+            return None
+        return prev[:hit.start] + prev[hit.start:cut] + new[2:] + prev[hit.end:]
     if nnp is None or nnp.end != len(new) or nnp.pronoun:
         return None
     spans = _np_spans(prev)

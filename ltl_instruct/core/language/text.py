@@ -19,7 +19,7 @@ TYPOS: dict[str, str] = {
     'cant': 'cannot', 'wont': 'will not', 'im': 'i am', 'ive': 'i have', 'youve': 'you have',
     'thats': 'that is', 'theres': 'there is', 'somebodys': 'somebody is', 'someones': 'someone has',
     'dosent': 'does not', 'pleas': 'please', 'survery': 'survey', 'lol': '', 'rn': 'right now',
-    'nevermind': 'never mind', 'untl': 'until',
+    'nevermind': 'never mind', 'untl': 'until', 'adn': 'and',
     'glu': 'glue', 'ther': 'there', 'thers': 'there is', 'nvm': 'never mind',
     'its': 'it is', 'didnt': 'did not', 'isnt': 'is not',
     'goto': 'go to', 'infront': 'in front', 'nxt': 'next', 'frist': 'first', 'secnd': 'second',

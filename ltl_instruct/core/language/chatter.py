@@ -194,7 +194,13 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
-START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
+# A pause asked for before anything is said ("hang on, can you just go to ...") corrects nothing.
+START_LEADS: tuple[tuple[str, ...], ...] = (
+    ('never', 'mind'), ('nevermind',), ('forget', 'it'), ('hang', 'on'), ('hold', 'on'),
+    ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'),
+    ('hold', 'on', 'a', 'second'),
+    ('wait', 'a', 'sec'), ('wait', 'a', 'second'), ('one', 'sec'), ('one', 'second'), ('just', 'a', 'sec'),
+    ('just', 'a', 'second'))
 # Lead-ins before a comma that announce what follows and ask for nothing themselves.
 LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('before', 'the', 'end', 'of', 'lunch'), ('before', 'lunch'),

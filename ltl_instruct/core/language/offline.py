@@ -113,6 +113,7 @@ class _Scope:
     target: Optional[NounPhrase] = None
     event: str = 'near'    # for until: near / pick / release; for after: goal ("after going to X") / near
     then: tuple[NounPhrase, ...] = ()   # for until near: places reached after the target, in order
+    each: bool = False   # "until you've been to both X and Y": the places in any order, not as said
 
 
 class OfflineTranslator:
@@ -2103,7 +2104,15 @@ class _Reader:
         while k < len(tokens) and tokens[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS:
             if tokens[k] == 'there':
                 step = self.task.last_step(('visit', 'deliver'))
-                return _Scope('after', self.last_place if step else None), k + 1
+                place = self.last_place
+                if place is not None and step is not None and step.kind == 'visit' and \
+                        len(step.targets) == 1 and place.descriptor in self.mentions and \
+                        self.task.find_step(place.descriptor) is None:
+                    # "..., they're all over the floor, and once you're in there, ...": the goal, not
+                    # a place that a remark about the scene named
+                    d = step.targets[0]
+                    place = NounPhrase(d, 0, 0, d.name.split('_')[-1])
+                return _Scope('after', place if step else None), k + 1
             k += 1
         if k == j and tokens[i - 1] in ('after', 'once'):
             # "after the library, ...": a goal already given, no verb
@@ -2412,7 +2421,9 @@ class _Reader:
             if nps:
                 # "until you reach the hall and the attic": until both are reached, in the order said
                 more = tuple(nps[1:]) if event == 'near' and joiner in ('and', 'then') else ()
-                return _Scope('until', nps[0], event, more), rest[end:]
+                # "... until you've been to both the shed and the gate": each of them, in either order
+                each = bool(more) and joiner == 'and' and rest[j:j + 1] == ['both']
+                return _Scope('until', nps[0], event, more, each), rest[end:]
             if rest[0] in ('until', 'till') and j > 1 and (j == len(rest) or rest[j] in PUNCT) and \
                     rest[j - 1] in ('arrive', 'arrived', 'get', 'got', 'are', 'reach', 'reached', 'land',
                                     'landed') and self.last_place is not None:
@@ -2516,6 +2527,14 @@ class _Reader:
                     self.task.chain.insert(0, Step('pick', [d]))
             else:
                 places = [d] + [self._resolve(p, place=True).descriptor for p in scope.then]
+                if scope.each:
+                    # "until you've been to both X and Y": each of them first, in either order
+                    self.task.constraints.extend(_until_avoid(targets, _near(p)) for p in places)
+                    self.held_until = (targets, places[-1])
+                    new = [p for p in places if self.task.find_step(p) is None]
+                    if not self.task.chain and new:
+                        self.task.chain.append(Step('all', chains=[[Step('visit', [p])] for p in new]))
+                    return
                 goal: Formula = _near(places[-1])
                 for p in reversed(places[:-1]):
                     goal = _and(_near(p), _until_avoid(targets, goal))
@@ -2528,6 +2547,9 @@ class _Reader:
                     for p in places:   # so that "then ..." comes after them
                         if self.task.find_step(p) is None:
                             self.task.chain.append(Step('visit', [p]))
+                last = self._resolve(scope.then[-1], place=True) if scope.then else scope.target
+                if last.descriptor == places[-1] and self.task.find_step(places[-1]) is not None:
+                    self.last_place = last   # "..., and once you're in there, ...": the place reached
             return
         if kind == 'onway' and self.avoid_scope == 'goal' and scope is not None and scope.event == 'while' \
                 and scope.target is not None:

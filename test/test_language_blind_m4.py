@@ -41,6 +41,27 @@ BLIND_ROUND_M4 = [
     ("Keep away from the toys till you're in the laundry room, they're all over the floor, and once "
      "you're in there, stay away from the ironing board.",
      '(!near[toys] U near[laundry_room]) & F (near[laundry_room] & G !near[ironing_board])'),
+    # a warning after the request ("..., you'll get soaked", "... or you'll get wet") says why: the
+    # robot had to go to "soaked" and pick it up; after "or" it was a choice between avoiding and that
+    ("Go to the blue bucket between the sandpit and the slide, and don't go near the paddling pool, you'll "
+     'get soaked.',
+     'F near[blue_bucket::isbetween(sandpit, slide)] & G !near[paddling_pool]'),
+    ("Don't go near the pond or you'll get wet.",
+     'G !near[pond]'),
+    ("Stay off the rug. You'll trip over the edge.",
+     'G !near[rug]'),
+    # "..., or you could go to the den" is a choice, not a warning (it was left out)
+    ('Go to the kitchen, or you could go to the den.',
+     'F near[kitchen] | F near[den]'),
+    # "the cord's loose": how a thing is ("cords_loose" was avoided)
+    ("Bring the blanket on the sofa to the crib by the window, and avoid the night light, the cord's loose.",
+     'F (near[blanket::isabove(sofa)] & F (pick[blanket::isabove(sofa)] & F (near[crib::isnextto(window)] & '
+     'F release[blanket::isabove(sofa), crib::isnextto(window)]))) & G !near[night_light]'),
+    # "and I'll bring her over": what the person will do ("bring_her" was a goal)
+    ("either the changing table or the bathtub, just go to one of them and I'll bring her over",
+     'F near[changing_table] | F near[bathtub]'),
+    ("Go to the bathroom. I'll bring the towels.",
+     'F near[bathroom]'),
 ]
 
 

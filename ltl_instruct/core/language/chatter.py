@@ -652,6 +652,10 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     verb = tokens[k]
     if verb in PLACE_HEADS or '_' in verb:
         return False   # "the staff room", "the guest lounge": a place named for people
+    if k == 1 and verb in ('will', 'shall') and tokens[0] in ('i', 'we') and \
+            tokens[2] not in REQUEST_WORDS and \
+            tokens[2] not in ('need', 'want', 'have', 'ask', 'be', 'get', 'let', 'tell', 'show', 'send'):
+        return True   # "... and I'll bring her over": what the person will do
     return verb not in REQUEST_WORDS and verb not in ('need', 'needs', 'want', 'wants', 'would', 'd', 'like',
                                                       'will', 'must', 'should', 'have', 'has')
 

@@ -304,6 +304,33 @@ _NAMING_WORDS = frozenset({'the', 'my', 'your', 'our', 'this', 'that', 'next', '
 # "I don't want you tumbling down them": a mishap feared, no rule of where to go.
 _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
                       'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'toppling'})
+# What may befall the robot or the household, said as a warning after a request ("..., you'll wake him",
+# "... or you'll get soaked"): the warning says why, it asks for nothing.
+_CONSEQUENCES = frozenset({
+    'wake', 'trip', 'fall', 'slip', 'knock', 'spill', 'break', 'scare', 'startle', 'upset', 'disturb', 'burn',
+    'hurt', 'tumble', 'topple', 'crash', 'bump', 'squash', 'frighten', 'annoy', 'wreck', 'smash', 'trample',
+    'get', 'set', 'catch', 'soak', 'scratch', 'damage', 'ruin', 'tip'})
+_NOT_STATES = frozenset({'it', 'them', 'there', 'here', 'back', 'to', 'him', 'her', 'me', 'us', 'up', 'out',
+                         'in', 'into', 'on', 'onto', 'off', 'over', 'round', 'around', 'through', 'past'})
+
+
+def _is_consequence(tail: Sequence[str]) -> bool:
+    """Whether a part warns what will happen ("you'll wake him", "or you might get soaked")."""
+    k = 1 if tail[:1] in (['or'], ['otherwise']) else 0
+    if tail[k:k + 1] != ['you'] or \
+            tail[k + 1:k + 2] not in (['will'], ['would'], ['might'], ['could'], ['may']):
+        return False
+    k += 2
+    while tail[k:k + 1] in (['only'], ['just'], ['probably'], ['definitely'], ['totally'], ['surely']):
+        k += 1
+    if k >= len(tail) or tail[k] not in _CONSEQUENCES or _rule_in(tail[k:]) or \
+            chatter.carries_constraint(tail[k:]):
+        return False
+    # "you'll get soaked", not "you'll get the bottle"
+    return tail[k] != 'get' or k + 1 < len(tail) and tail[k + 1] not in DETS and \
+        tail[k + 1] not in _NOT_STATES
+
+
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 # Words of an order in a request: a reason after it may repeat the order ("..., chef wants a word first").
 _ORDER_WORDS = frozenset({'until', 'till', 'before', 'first', 'then', 'after'})
@@ -551,6 +578,10 @@ class _Reader:
         "throw away the pizza box it is so gross", "go to the fridge i am starving": a comma
         is read before "it is", "i am"... when what precedes cannot lead into it.
         """
+        k = next((k for k in range(2, len(sentence) - 3) if sentence[k] == 'or' and
+                  sentence[k - 1] not in PUNCT and _is_consequence(sentence[k:])), -1)
+        if k > 0:
+            sentence = sentence[:k] + [','] + sentence[k:]   # "stay off it or you'll get soaked": a warning
         out = self._drop_reason_after_comma(sentence)
         if out is not sentence or len(sentence) < 6:
             return out
@@ -624,7 +655,11 @@ class _Reader:
         if len(tail) >= 4 and tail[0] in ('that', 'this') and tail[2] in ('is', 'are', 'was') and \
                 tail[3] not in DETS and tail[3] not in _PLACE_PREPS and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., that glass is older than both of us"
-        if tail[:2] in (['or', 'you'], ['or', 'else']) and len(tail) > 3 and not _rule_in(tail[2:]):
+        if _is_consequence(tail):
+            return self._noted_cut(sentence, cut)   # "..., you'll get soaked", "..., you'll wake him"
+        if tail[:2] in (['or', 'you'], ['or', 'else']) and len(tail) > 3 and not _rule_in(tail[2:]) and \
+                not (tail[1] == 'you' and tail[3:4] and tail[3] in GOAL_VERBS | DELIVER_VERBS):
+            # (not "..., or you could go to the den": a choice)
             return self._noted_cut(sentence, cut)   # "..., or you'll scare the finches off"
         if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
             return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
@@ -711,6 +746,10 @@ class _Reader:
             if (self.task.chain or self.task.constraints) and chatter.is_story(sentence, _COMMANDS):
                 # "... . Harold bought it the year we married.": the person's story, after the request
                 self.notes.append(f'left out "{" ".join(sentence)}" (tells a story, asks for nothing)')
+                continue
+            if (self.task.chain or self.task.constraints) and _is_consequence(sentence):
+                # "Don't go near the pool. You'll get soaked.": a warning after the request
+                self.notes.append(f'left out "{" ".join(sentence)}" (says why, asks for nothing)')
                 continue
             if len(sentences) > 1 and chatter.is_summons(sentence):
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
@@ -1349,6 +1388,13 @@ class _Reader:
                 isinstance(c.right, Atom) and c.right.args[0] in self.task.chain[0].targets for c in new)
 
     def _read_clause_body(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
+        said = [t for t in clause.tokens if t not in PUNCT]
+        if said[1:2] in (['will'], ['shall']) and (self.task.chain or self.task.constraints) and \
+                chatter.is_person_statement(said):
+            # "go to the bathtub and I'll bring her over": what the person will do (before "I will" is
+            # left out as the frame of a request)
+            self.notes.append(f'left out "{" ".join(said)}" (said about people, asks for nothing)')
+            return scope
         tokens = self._strip_fillers(clause.tokens)
         if not tokens:
             return scope

@@ -62,6 +62,18 @@ BLIND_ROUND_M4 = [
      'F near[changing_table] | F near[bathtub]'),
     ("Go to the bathroom. I'll bring the towels.",
      'F near[bathroom]'),
+    # "scratch the middle one" after a list of three drops the middle one (it was kept: "no goal there")
+    ('Go to the pantry, the fridge, then the high chair. Actually scratch the middle one.',
+     'F (near[pantry] & F near[high_chair])'),
+    # a correction followed by the step said again in full ("..., I meant the dog, avoid the dog while
+    # ..."): the step replaces the one corrected (both the puddle and the dog were avoided always)
+    ("Take the nappy bag to the car and avoid the puddle, sorry, I meant the dog, avoid the dog while "
+     "you've got the bag.",
+     'F (near[nappy_bag] & F (pick[nappy_bag] & (!near[dog] U (near[car] & F release[nappy_bag, car]))))'),
+    # ... and followed by a new step: the correction ends where the step starts
+    ('Take the nappy bag to the car and avoid the puddle, sorry, I meant the dog, go to the den after.',
+     'F (near[nappy_bag] & F (pick[nappy_bag] & F (near[car] & F (release[nappy_bag, car] & F near[den])))) '
+     '& G !near[dog]'),
 ]
 
 

@@ -74,6 +74,25 @@ BLIND_ROUND_M4 = [
     ('Take the nappy bag to the car and avoid the puddle, sorry, I meant the dog, go to the den after.',
      'F (near[nappy_bag] & F (pick[nappy_bag] & F (near[car] & F (release[nappy_bag, car] & F near[den])))) '
      '& G !near[dog]'),
+    # "No, not that one, the one behind X": what it corrects, then what it is (refused)
+    ('Go to the bag next to the front door. No, not that one, the one behind the front door.',
+     'F near[bag::isbehind(front_door)]'),
+    ('Go to the teddy on the bed. No, not that one, the one under the bed.',
+     'F near[teddy::isbelow(bed)]'),
+    # what the person is busy with, said as the time of the request: nothing the robot can wait for
+    # (refused; "until I am done" was a place "am_done" to wait for)
+    ("go and stand by the stair gate till I've finished changing him",
+     'F near[stair_gate]'),
+    ("Check the playroom three times while I'm on this call, ok?",
+     'F (near[playroom] & F (!near[playroom] & F (near[playroom] & F (!near[playroom] & F '
+     'near[playroom]))))'),
+    ('Wait at the front door until I am done.',
+     'F near[front_door]'),
+    # "put the book on the stairs back on the shelf": "back" ends the thing put, described where it is
+    # (refused; "stairs_back" was the destination)
+    ('Put the book on the stairs back on the bookshelf before someone trips.',
+     'F (near[book::isabove(stairs)] & F (pick[book::isabove(stairs)] & F (near[bookshelf] & F '
+     'release[book::isabove(stairs), bookshelf])))'),
 ]
 
 

@@ -44,8 +44,8 @@ from ltl_instruct.core.language.lexicon import (
 )
 from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word, location_phrase,
-    match_relation,
+    DESTINATION_PREPS, DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
+    location_phrase, match_relation,
 )
 from ltl_instruct.core.language.reactions import RuleReader
 from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
@@ -3315,6 +3315,13 @@ class _Reader:
         while k < len(tokens) and tokens[k] in ('me', 'up', 'back', 'off', 'down', 'us'):
             k += 1
         objs, joiner, end = self._np_list(tokens, k, place=False, destination_stops=verb in PUT_VERBS)
+        back = next((b for b in range(end + 2, len(tokens) - 1) if tokens[b] == 'back' and
+                     tokens[b + 1] in DESTINATION_PREPS), -1) if verb in PUT_VERBS and len(objs) == 1 else -1
+        if back > 0 and match_relation(tokens, end) is not None:
+            # "put the book on the stairs back on the shelf": "back" ends the thing, where it is said
+            again, j2, e2 = self._np_list(tokens[:back], k, place=False)
+            if len(again) == 1 and e2 == back:
+                objs, joiner, end = again, j2, back + 1
         if tokens[k:k + 1] == ['them'] and tokens[end:end + 1] in (['both'], ['all']):
             end += 1   # "bring them both to the door"
         if not objs or objs[0].descriptor.name in ('yourself', 'itself', 'over'):

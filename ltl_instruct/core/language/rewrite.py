@@ -949,7 +949,16 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
     tokens = _uncleft(tokens)
     said: list[str] = []
+    skip = 0
     for k, t in enumerate(tokens):
+        if skip:
+            skip -= 1
+            continue
+        if t == 'not' and tokens[k + 1:k + 3] in (['that', 'one'], ['this', 'one']) and \
+                tokens[k + 3:k + 5] in ([',', 'the'], [',', 'it']) and k > 1 and tokens[k - 1] == ',' and \
+                tokens[k - 2] in ('no', 'sorry', 'wait', 'oops', 'actually'):
+            skip = 3   # "no, not that one, the one behind the door": what it corrects, then what it is
+            continue
         said.append(t)
         if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and tokens[k - 1] in PUNCT:
             said.append(',')   # ", no not the couch, the armchair": "no" then what it corrects

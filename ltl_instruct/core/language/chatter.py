@@ -199,7 +199,13 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
-START_LEADS: tuple[tuple[str, ...], ...] = (('never', 'mind'), ('nevermind',), ('forget', 'it'))
+# A pause asked for before anything is said ("hang on, can you just go to ...") corrects nothing.
+START_LEADS: tuple[tuple[str, ...], ...] = (
+    ('never', 'mind'), ('nevermind',), ('forget', 'it'), ('hang', 'on'), ('hold', 'on'),
+    ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'),
+    ('hold', 'on', 'a', 'second'),
+    ('wait', 'a', 'sec'), ('wait', 'a', 'second'), ('one', 'sec'), ('one', 'second'), ('just', 'a', 'sec'),
+    ('just', 'a', 'second'))
 # Lead-ins before a comma that announce what follows and ask for nothing themselves.
 LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('before', 'the', 'end', 'of', 'lunch'), ('before', 'lunch'),
@@ -663,6 +669,10 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     verb = tokens[k]
     if verb in PLACE_HEADS or '_' in verb:
         return False   # "the staff room", "the guest lounge": a place named for people
+    if k == 1 and verb in ('will', 'shall') and tokens[0] in ('i', 'we') and \
+            tokens[2] not in REQUEST_WORDS and \
+            tokens[2] not in ('need', 'want', 'have', 'ask', 'be', 'get', 'let', 'tell', 'show', 'send'):
+        return True   # "... and I'll bring her over": what the person will do
     return verb not in REQUEST_WORDS and verb not in ('need', 'needs', 'want', 'wants', 'would', 'd', 'like',
                                                       'will', 'must', 'should', 'have', 'has')
 
@@ -911,12 +921,40 @@ def _wait_for(tokens: list[str], i: int) -> int:
     return 0
 
 
+# What the person is busy with, said as the time of the request ("till I've finished changing him",
+# "while I'm on this call", "before someone trips"): no event the robot can see, so no place and no order.
+_PERSON_BUSY_RE = re.compile(
+    r'(?: ,)? (?:(?:until|till) (?:i|we) (?:have |am |are )?(?:finished|done|through)'
+    r'(?: (?:with )?[a-z]+ing)?(?: (?:him|her|them|it|this|that|up|(?:the|my|our) [a-z_]+))?|'
+    r'while (?:i|we) (?:am|are) (?:on (?:the|this|a|my) (?:call|phone)|in (?:a|this|the|my) meeting|'
+    r'(?!going|coming|heading|getting|walking|carrying)[a-z]+ing'
+    r'(?: (?:him|her|them|it|dinner|lunch|breakfast|(?:the|my|our) [a-z_]+))?)|'
+    r'before (?:someone|somebody|anyone|anybody|he|she|they) '
+    r'(?:trips|falls|slips|steps on it|treads on it|breaks it|sees it|notices|wakes up|gets hurt))'
+    r'(?= [,.;!?] | and | then | ?$)')
+
+
+def strip_person_busy(tokens: list[str], notes: list[str]) -> list[str]:
+    """Leave out what the person is busy with, said as the time of the request ("till I've finished")."""
+    if not {'i', 'we', 'someone', 'somebody', 'anyone', 'anybody', 'he', 'she', 'they'} & set(tokens) or \
+            not {'until', 'till', 'while', 'before'} & set(tokens):
+        return tokens
+    text = ' ' + ' '.join(tokens) + ' '
+    found = [m.group(0).strip(' ,') for m in _PERSON_BUSY_RE.finditer(text)]
+    if not found:
+        return tokens
+    for said in found:
+        notes.append(f'left out "{said}" (what the person is busy with: nothing the robot can wait for)')
+    return _PERSON_BUSY_RE.sub('', text).split()
+
+
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
     """Remove courtesy and time-of-day phrases that end a clause ("go to the shed for me, then...").
 
     With ``timing``, phrases that time an event ("right away") are kept for the rules to read.
     Phrases said one after another ("twice tonight please") are all removed.
     """
+    tokens = strip_person_busy(tokens, notes)
     for _ in range(3):
         before = len(tokens)
         tokens = _strip_courtesy_once(tokens, notes, timing)

@@ -44,8 +44,8 @@ from ltl_instruct.core.language.lexicon import (
 )
 from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word, location_phrase,
-    match_relation,
+    DESTINATION_PREPS, DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
+    location_phrase, match_relation,
 )
 from ltl_instruct.core.language.reactions import RuleReader
 from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
@@ -113,6 +113,7 @@ class _Scope:
     target: Optional[NounPhrase] = None
     event: str = 'near'    # for until: near / pick / release; for after: goal ("after going to X") / near
     then: tuple[NounPhrase, ...] = ()   # for until near: places reached after the target, in order
+    each: bool = False   # "until you've been to both X and Y": the places in any order, not as said
 
 
 class OfflineTranslator:
@@ -303,6 +304,33 @@ _NAMING_WORDS = frozenset({'the', 'my', 'your', 'our', 'this', 'that', 'next', '
 # "I don't want you tumbling down them": a mishap feared, no rule of where to go.
 _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
                       'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'toppling'})
+# What may befall the robot or the household, said as a warning after a request ("..., you'll wake him",
+# "... or you'll get soaked"): the warning says why, it asks for nothing.
+_CONSEQUENCES = frozenset({
+    'wake', 'trip', 'fall', 'slip', 'knock', 'spill', 'break', 'scare', 'startle', 'upset', 'disturb', 'burn',
+    'hurt', 'tumble', 'topple', 'crash', 'bump', 'squash', 'frighten', 'annoy', 'wreck', 'smash', 'trample',
+    'get', 'set', 'catch', 'soak', 'scratch', 'damage', 'ruin', 'tip'})
+_NOT_STATES = frozenset({'it', 'them', 'there', 'here', 'back', 'to', 'him', 'her', 'me', 'us', 'up', 'out',
+                         'in', 'into', 'on', 'onto', 'off', 'over', 'round', 'around', 'through', 'past'})
+
+
+def _is_consequence(tail: Sequence[str]) -> bool:
+    """Whether a part warns what will happen ("you'll wake him", "or you might get soaked")."""
+    k = 1 if tail[:1] in (['or'], ['otherwise']) else 0
+    if tail[k:k + 1] != ['you'] or \
+            tail[k + 1:k + 2] not in (['will'], ['would'], ['might'], ['could'], ['may']):
+        return False
+    k += 2
+    while tail[k:k + 1] in (['only'], ['just'], ['probably'], ['definitely'], ['totally'], ['surely']):
+        k += 1
+    if k >= len(tail) or tail[k] not in _CONSEQUENCES or _rule_in(tail[k:]) or \
+            chatter.carries_constraint(tail[k:]):
+        return False
+    # "you'll get soaked", not "you'll get the bottle"
+    return tail[k] != 'get' or k + 1 < len(tail) and tail[k + 1] not in DETS and \
+        tail[k + 1] not in _NOT_STATES
+
+
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 # Words of an order in a request: a reason after it may repeat the order ("..., chef wants a word first").
 _ORDER_WORDS = frozenset({'until', 'till', 'before', 'first', 'then', 'after'})
@@ -576,6 +604,10 @@ class _Reader:
         "throw away the pizza box it is so gross", "go to the fridge i am starving": a comma
         is read before "it is", "i am"... when what precedes cannot lead into it.
         """
+        k = next((k for k in range(2, len(sentence) - 3) if sentence[k] == 'or' and
+                  sentence[k - 1] not in PUNCT and _is_consequence(sentence[k:])), -1)
+        if k > 0:
+            sentence = sentence[:k] + [','] + sentence[k:]   # "stay off it or you'll get soaked": a warning
         out = self._drop_reason_after_comma(sentence)
         if out is not sentence or len(sentence) < 6:
             return out
@@ -651,7 +683,11 @@ class _Reader:
         if len(tail) >= 4 and tail[0] in ('that', 'this') and tail[2] in ('is', 'are', 'was') and \
                 tail[3] not in DETS and tail[3] not in _PLACE_PREPS and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., that glass is older than both of us"
-        if tail[:2] in (['or', 'you'], ['or', 'else']) and len(tail) > 3 and not _rule_in(tail[2:]):
+        if _is_consequence(tail):
+            return self._noted_cut(sentence, cut)   # "..., you'll get soaked", "..., you'll wake him"
+        if tail[:2] in (['or', 'you'], ['or', 'else']) and len(tail) > 3 and not _rule_in(tail[2:]) and \
+                not (tail[1] == 'you' and tail[3:4] and tail[3] in GOAL_VERBS | DELIVER_VERBS):
+            # (not "..., or you could go to the den": a choice)
             return self._noted_cut(sentence, cut)   # "..., or you'll scare the finches off"
         if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
             return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
@@ -768,6 +804,10 @@ class _Reader:
             if (self.task.chain or self.task.constraints) and chatter.is_story(sentence, _COMMANDS):
                 # "... . Harold bought it the year we married.": the person's story, after the request
                 self.notes.append(f'left out "{" ".join(sentence)}" (tells a story, asks for nothing)')
+                continue
+            if (self.task.chain or self.task.constraints) and _is_consequence(sentence):
+                # "Don't go near the pool. You'll get soaked.": a warning after the request
+                self.notes.append(f'left out "{" ".join(sentence)}" (says why, asks for nothing)')
                 continue
             if len(sentences) > 1 and chatter.is_summons(sentence):
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
@@ -1473,6 +1513,13 @@ class _Reader:
                 isinstance(c.right, Atom) and c.right.args[0] in self.task.chain[0].targets for c in new)
 
     def _read_clause_body(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
+        said = [t for t in clause.tokens if t not in PUNCT]
+        if said[1:2] in (['will'], ['shall']) and (self.task.chain or self.task.constraints) and \
+                chatter.is_person_statement(said):
+            # "go to the bathtub and I'll bring her over": what the person will do (before "I will" is
+            # left out as the frame of a request)
+            self.notes.append(f'left out "{" ".join(said)}" (said about people, asks for nothing)')
+            return scope
         tokens = self._strip_fillers(clause.tokens)
         if not tokens:
             return scope
@@ -2228,7 +2275,15 @@ class _Reader:
         while k < len(tokens) and tokens[k] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS:
             if tokens[k] == 'there':
                 step = self.task.last_step(('visit', 'deliver'))
-                return _Scope('after', self.last_place if step else None), k + 1
+                place = self.last_place
+                if place is not None and step is not None and step.kind == 'visit' and \
+                        len(step.targets) == 1 and place.descriptor in self.mentions and \
+                        self.task.find_step(place.descriptor) is None:
+                    # "..., they're all over the floor, and once you're in there, ...": the goal, not
+                    # a place that a remark about the scene named
+                    d = step.targets[0]
+                    place = NounPhrase(d, 0, 0, d.name.split('_')[-1])
+                return _Scope('after', place if step else None), k + 1
             k += 1
         if k == j and tokens[i - 1] in ('after', 'once'):
             # "after the library, ...": a goal already given, no verb
@@ -2543,7 +2598,9 @@ class _Reader:
             if nps:
                 # "until you reach the hall and the attic": until both are reached, in the order said
                 more = tuple(nps[1:]) if event == 'near' and joiner in ('and', 'then') else ()
-                return _Scope('until', nps[0], event, more), rest[end:]
+                # "... until you've been to both the shed and the gate": each of them, in either order
+                each = bool(more) and joiner == 'and' and rest[j:j + 1] == ['both']
+                return _Scope('until', nps[0], event, more, each), rest[end:]
             if rest[0] in ('until', 'till') and j > 1 and (j == len(rest) or rest[j] in PUNCT) and \
                     rest[j - 1] in ('arrive', 'arrived', 'get', 'got', 'are', 'reach', 'reached', 'land',
                                     'landed') and self.last_place is not None:
@@ -2647,6 +2704,14 @@ class _Reader:
                     self.task.chain.insert(0, Step('pick', [d]))
             else:
                 places = [d] + [self._resolve(p, place=True).descriptor for p in scope.then]
+                if scope.each:
+                    # "until you've been to both X and Y": each of them first, in either order
+                    self.task.constraints.extend(_until_avoid(targets, _near(p)) for p in places)
+                    self.held_until = (targets, places[-1])
+                    new = [p for p in places if self.task.find_step(p) is None]
+                    if not self.task.chain and new:
+                        self.task.chain.append(Step('all', chains=[[Step('visit', [p])] for p in new]))
+                    return
                 goal: Formula = _near(places[-1])
                 for p in reversed(places[:-1]):
                     goal = _and(_near(p), _until_avoid(targets, goal))
@@ -2659,6 +2724,9 @@ class _Reader:
                     for p in places:   # so that "then ..." comes after them
                         if self.task.find_step(p) is None:
                             self.task.chain.append(Step('visit', [p]))
+                last = self._resolve(scope.then[-1], place=True) if scope.then else scope.target
+                if last.descriptor == places[-1] and self.task.find_step(places[-1]) is not None:
+                    self.last_place = last   # "..., and once you're in there, ...": the place reached
             return
         if kind == 'onway' and self.avoid_scope == 'goal' and scope is not None and scope.event == 'while' \
                 and scope.target is not None:
@@ -3396,6 +3464,13 @@ class _Reader:
         while k < len(tokens) and tokens[k] in ('me', 'up', 'back', 'off', 'down', 'us'):
             k += 1
         objs, joiner, end = self._np_list(tokens, k, place=False, destination_stops=verb in PUT_VERBS)
+        back = next((b for b in range(end + 2, len(tokens) - 1) if tokens[b] == 'back' and
+                     tokens[b + 1] in DESTINATION_PREPS), -1) if verb in PUT_VERBS and len(objs) == 1 else -1
+        if back > 0 and match_relation(tokens, end) is not None:
+            # "put the book on the stairs back on the shelf": "back" ends the thing, where it is said
+            again, j2, e2 = self._np_list(tokens[:back], k, place=False)
+            if len(again) == 1 and e2 == back:
+                objs, joiner, end = again, j2, back + 1
         if tokens[k:k + 1] == ['them'] and tokens[end:end + 1] in (['both'], ['all']):
             end += 1   # "bring them both to the door"
         if not objs or objs[0].descriptor.name in ('yourself', 'itself', 'over'):

@@ -33,6 +33,9 @@ _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |
 # a name of a few words, none of them a connective
 _NAME = r'(?:(?!(?:and|or|then|followed|the)\b)[a-z0-9_]+)(?: (?!(?:and|or|then|followed)\b)[a-z0-9_]+){0,4}'
 
+# a word of a name, none of the words of a clause's frame
+_NOUN = r'(?!(?:is|are|was|were|has|have|had|then|to|go|and|or|not|too|as|it|they|will|can|so)\b)[a-z0-9_]+'
+
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
     # "the orchard first and then the vineyard, or the other way round": either order
     (r' (?:, )?or (?:the other way (?:round|around)|vice versa|the reverse|the opposite way|the other order)'
@@ -253,6 +256,23 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'(?: today| tonight| now| this morning| this afternoon| this evening| here)? (?:is|will be|:) '
      r'(?:to (?:go to |reach |get to |visit )?)?',
      r'\1 go to '),
+    # "just do the last two. In that order.": the order said as a sentence of its own is the order of the
+    # sentence before (alone it was read as nothing)
+    (r' [.;!] (?:and |but |just )?(?P<o>(?:strictly )?in '
+     r'(?:that|this|the same|the given|exactly that|exactly this) (?:exact |strict |specific )?order|'
+     r'in (?:strict )?order|one after the other)(?: ,)?(?: please)?(?= [.;!?] |$)',
+     r' , \g<o>'),
+    # "And avoid the dog bed. And the fish tank.": a thing added in a sentence of its own after an
+    # avoidance is avoided too (it was read as a goal)
+    (r'(?P<a>(?:^| [.;!?] )(?:and |but |also )?'
+     r'(?:avoid|(?:stay|keep|steer) (?:well )?(?:away|clear) (?:from|of)|'
+     r'(?:do not|never) (?:go )?(?:anywhere )?near) [^.;!?]+?) [.;!] and (?:also )?'
+     rf'(?P<x>(?:the|my|your|our) {_NOUN}(?: {_NOUN}){{0,3}}?)(?: too| as well)?(?= [.;!?] |$)',
+     r'\g<a> , and \g<x>'),
+    # "Do not go anywhere near the crib. She's asleep. Anywhere near it.": the avoidance said again
+    (r'(?P<a>\b(?:not|never) (?:go |come |get )?anywhere near [^.;!?]*? [.;!?] (?:[^.;!?]* [.;!?] )?)'
+     r'(?:anywhere|nowhere) near (?P<x>it|them|that|there)(?= [.;!?] |$)',
+     r'\g<a>not anywhere near \g<x>'),
 ))
 
 # "exactly two times. No more, no less.": the count said exact again (no prohibition of its own)

@@ -977,7 +977,16 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
     tokens = _actually_first(_uncleft(tokens))
     said: list[str] = []
+    skip = 0
     for k, t in enumerate(tokens):
+        if skip:
+            skip -= 1
+            continue
+        if t == 'not' and tokens[k + 1:k + 3] in (['that', 'one'], ['this', 'one']) and \
+                tokens[k + 3:k + 5] in ([',', 'the'], [',', 'it']) and k > 1 and tokens[k - 1] == ',' and \
+                tokens[k - 2] in ('no', 'sorry', 'wait', 'oops', 'actually'):
+            skip = 3   # "no, not that one, the one behind the door": what it corrects, then what it is
+            continue
         said.append(t)
         if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and tokens[k - 1] in PUNCT:
             said.append(',')   # ", no not the couch, the armchair": "no" then what it corrects
@@ -1075,6 +1084,18 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             result = _correct(prev, marker, seg[:cut], notes)
             if result is not None:
                 result = result + seg[cut:]
+        cut = next((k for k in range(lead + 2, len(seg) - 2) if seg[k] == ',' and seg[k + 1] in _VERBS), -1)
+        if result is None and cut > 0 and seg[lead] in DETERMINERS:
+            named = seg[lead:cut]
+            if any(seg[k:k + len(named)] == named for k in range(cut + 2, len(seg) - len(named) + 1)):
+                # "avoid the puddle, sorry, I meant the dog, avoid the dog while you've got the bag": the
+                # step said again in full replaces the one corrected
+                result = _correct(prev, marker, [','] + seg[cut + 1:], notes)
+            else:
+                # "avoid the puddle, sorry, the dog, go to the den": the correction ends where a step starts
+                result = _correct(prev, marker, seg[:cut], notes)
+                if result is not None:
+                    result = result + seg[cut:]
         if result is None:
             # not a correction we understand: drop the marker word and read on
             comma = [','] if prev and prev[-1] not in PUNCT else []
@@ -1968,6 +1989,14 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         spans = _np_spans(prev)
         parser = PhraseParser()
         nth = _ordinal_target(target)
+        w = [t for t in target if t not in ('the', 'that')]
+        if nth is None and not new and w[:1] == ['middle'] and w[1:] in ([], ['one'], ['stop'], ['place']):
+            # "go to a, b, then c. scratch the middle one": the middle one of the list said last
+            start = max((p for p in range(len(prev)) if prev[p] in '.;!?' and any(
+                sp.start > p for sp in spans)), default=-1)
+            listed = [sp for sp in spans if sp.start > start]
+            if len(listed) >= 3 and len(listed) % 2 == 1:
+                nth = spans.index(listed[len(listed) // 2]) + 1
         if nth is not None and not new:
             # "visit a, b and c. wait, forget the second one": the goal at that place of the list
             if not 0 < nth <= len(spans):

@@ -84,7 +84,8 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
     (r"'s(?= (?:fine|ok|okay|alright|safe|locked|closed|shut|open|broken|blocked|up|out|off|empty|full|wet|"
      r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
      r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp|almost|nearly|dead|"
-     r"low|flat)\b)", ' is'),
+     r"low|flat|loose|wobbly|unstable|frayed|exposed|leaking|leaky|sticky|cracked|jammed|stuck|faulty|"
+     r"unplugged|noisy|loud|messy)\b)", ' is'),
     (r"\b(one|two|three|four|five|six|once|twice)'s\b", r'\1 is'),   # "no, three's plenty"
     # "grandma's sleeping": "is", before a verb in -ing (not "dad's walking stick")
     (r"'s(?= [a-z]+ing\b(?! (?:stick|sticks|machine|glasses|bag|board|table|room|chair|rod|frame|shoes|mat|"

@@ -47,6 +47,13 @@ RIGHT: list[tuple[str, str]] = [
      'left for you there, and subsequently drop it at the rooftop pad on the biology building.',
      'F (near[field_station] & F (near[sample_vial] & F (pick[sample_vial] & F (near[rooftop_pad::isabove('
      'biology_building)] & F release[sample_vial, rooftop_pad::isabove(biology_building)]))))'),
+    ('go to the kitchen, Marco gets chatty so avoid the lounge', 'F near[kitchen] & G !near[lounge]'),
+    ('go to the kitchen, Marco gets chatty, so avoid the lounge', 'F near[kitchen] & G !near[lounge]'),
+    ('go to the bar, VIPs in at eight so avoid the lobby', 'F near[bar] & G !near[lobby]'),
+    ('go to the kitchen, marketing wants footage', 'F near[kitchen]'),
+    ("go to the kitchen, I don't want the baby woken up", 'F near[kitchen]'),
+    # "for the visitor" at the start says who it is for (the visitor was a goal)
+    ('for the visitor, avoid the lobby', 'G !near[lobby]'),
 ]
 
 # Refused: the part said as a reason or remark holds a rule, a command or a pronoun for a thing it named.
@@ -68,6 +75,15 @@ REFUSED: list[str] = [
     'go to the kitchen, I want to know if you avoided the hall',
     'go to the kitchen, I want to know if the window is shut before you go to the garage',
     'go to the kitchen, they want to settle up before you visit the bar',
+    "go to the kitchen, we're keeping out of the hall today",
+    'go to the kitchen, she gets anxious if it comes near the nursery',
+    'go to the kitchen, the neighbours complain when it goes on the lawn',
+    'go to the kitchen, the guests want the library to themselves',
+    'go to the kitchen, Marco wants nobody in the lab',   # (a goal "marco_wants_nobody")
+    'go to the kitchen, the boss wants no robots in the lobby',   # (a goal "boss_wants")
+    'go to the kitchen, Marco gets chatty so stay away from him',   # (G !near[him])
+    "go to the kitchen, I'd prefer the hall be avoided",   # (the hall was a goal, "be avoided" left out)
+    "go to the kitchen, I don't want the hall visited",   # (left out as a reason)
 ]
 
 

@@ -313,7 +313,12 @@ _REASON_TO_COMMAND = frozenset({'so', 'and', 'then', 'but', 'just', 'please', 't
 # study"): a part with one is about where the robot may go.
 _COMMANDS_AFTER_REASON = _REASON_ENDS | frozenset({'skip', 'keep', 'stay', 'steer', 'leave', 'use', 'wait',
                                                    'pass', 'enter', 'touch', 'check', 'let', 'make'})
-_ROBOT_WORDS = frozenset({'robot', 'robots', 'drone', 'drones', 'bot', 'bots'})
+_ROBOT_WORDS = frozenset({'robot', 'robots', 'drone', 'drones', 'bot', 'bots',
+                          # what a place is to be left ("the vet needs the surgery empty")
+                          'empty', 'alone', 'undisturbed', 'privacy', 'themselves'})
+# "..., she gets anxious if it comes near the nursery": "it" going somewhere is the robot.
+_ROBOT_MOTION = frozenset({'comes', 'goes', 'gets', 'flies', 'passes', 'enters', 'drives', 'rolls', 'wanders',
+                           'moves', 'buzzes', 'lands', 'hovers', 'near', 'into', 'through', 'over', 'on'})
 # Words that point back at a thing said before.
 _PRONOUNS = frozenset({'it', 'them', 'there', 'that', 'this', 'those', 'these', 'him', 'her', 'one'})
 
@@ -336,8 +341,11 @@ def _reason_holds_rule(tail: Sequence[str]) -> bool:
     """
     return any(w in chatter.PLACE_RULE_WORDS and (w != 'not' or _NOT_GOING & set(tail[k + 1:]))
                for k, w in enumerate(tail)) or any(w.startswith('avoid') for w in tail) or \
-        bool(_ROBOT_WORDS & set(tail)) or any(t in ('keep', 'stay') for t in tail) and \
-        chatter.carries_constraint(tail) or _command_after_reason(tail) >= 0
+        bool(_ROBOT_WORDS & set(tail)) or _command_after_reason(tail) >= 0 or any(
+            t in ('keep', 'stay', 'keeping', 'staying') for t in tail) and chatter.carries_constraint(
+            [{'keeping': 'keep', 'staying': 'stay'}.get(t, t) for t in tail]) or any(
+            t in ('if', 'when', 'whenever', 'once') and 'it' in tail[k + 1:k + 3] and
+            _ROBOT_MOTION & set(tail[k + 2:k + 5]) for k, t in enumerate(tail))
 
 
 def _command_after_reason(tail: Sequence[str]) -> int:
@@ -1532,9 +1540,13 @@ class _Reader:
         if s.startswith(('because ', 'since ')) and _rule_in(tokens):
             # "because you must never go there": a reason holding a rule is never dropped
             raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
-        if s.endswith(fine) or s in IGNORED_CLAUSES or \
-                s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
-                              'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
+        why = s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
+                            'as '))
+        if why and _reason_holds_rule(tokens):
+            # "..., I don't want the hall visited": never left out as a reason
+            raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
+        if s.endswith(fine) or s in IGNORED_CLAUSES or why or \
+                s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind')):
             return scope
         if tokens == ['visit', 'each', 'place', 'only', 'once']:
             self.no_revisits = True   # the canonical wording of "no revisiting" (see idioms)
@@ -2252,6 +2264,10 @@ class _Reader:
         return None
 
     def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:
+        if np.descriptor.name in ('him', 'her', 'them') and not np.descriptor.relations:
+            # "..., Marco gets chatty so stay away from him": a person, never a place named "him"
+            raise TranslationError(f'could not tell where "{np.descriptor.name}" is',
+                                   details={'part': np.head})
         out = self._resolve_once(np, place)
         if np.pronoun in ('it', 'them', 'that', 'there', 'here') and self._named_left_out(
                 self._place_mark if out is self.last_place else self._object_mark if out is self.last_object
@@ -3175,6 +3191,8 @@ class _Reader:
 
     def _leave_out(self, rest: Sequence[str]) -> bool:
         """Leave out words that ask for nothing (no place, skill verb or constraint word), noted."""
+        if any(t.startswith('avoid') for t in rest):
+            return False   # "I'd prefer the hall be avoided": never "left out" as asking for nothing
         if not chatter.is_filler(rest, SKILL_VERBS) or not all(
                 _is_word(t, listed=True) for t in rest if t not in PUNCT) or \
                 self.phrases.landmarks and any(

@@ -54,6 +54,21 @@ RIGHT: list[tuple[str, str]] = [
     ("go to the kitchen, I don't want the baby woken up", 'F near[kitchen]'),
     # "for the visitor" at the start says who it is for (the visitor was a goal)
     ('for the visitor, avoid the lobby', 'G !near[lobby]'),
+    ('go to the little drone pad, then the shed', 'F (near[little_drone_pad] & F near[shed])'),
+    ('go to the kitchen, sorry, never the hall', 'F near[kitchen] & G !near[hall]'),
+    ('go to the kitchen, the cat is fine, just don\'t go near the fish tank',
+     'F near[kitchen] & G !near[fish_tank]'),
+    # "no, never ..." is a rule, not "never mind" (it was "go to the hall": the robot went where forbidden)
+    ('go to the kitchen, no, never go to the hall', 'F near[kitchen] & G !near[hall]'),
+    ('go to the kitchen, no wait, never go to the hall', 'F near[kitchen] & G !near[hall]'),
+    ('go to the kitchen, no, never mind, go to the hall', 'F near[hall]'),
+    # a verb of leaving out that corrects nothing said before stays ("forget" had been dropped: a goal)
+    ('go to the garage, forget the kitchen', 'F near[garage]'),
+    ('go to the garage, ignore the kitchen', 'F near[garage]'),
+    ('go to the garage and forget the kitchen', 'F near[garage]'),
+    ('go to the garage, skip the kitchen', 'F near[garage]'),
+    ('go to the kitchen twice, Marco gets chatty',
+     'F (near[kitchen] & F (!near[kitchen] & F near[kitchen]))'),
 ]
 
 # Refused: the part said as a reason or remark holds a rule, a command or a pronoun for a thing it named.

@@ -108,6 +108,10 @@ FOUND_ROUND_A3 = [
     # "X first, then Y" said bare is a route, not "X before every other goal"
     ('Kitchen, then laundry room. Hang on, swap those. Laundry room first, then kitchen.',
      'F (near[laundry_room] & F near[kitchen])'),
+    # "only just" is "lately" in a reason: no rule word, the reason is left out (not a goal "tulips")
+    ("Go to the bird feeder and then the garden bench, but please stay off my flower beds the whole time, "
+     "I've only just planted the tullips.",
+     'F (near[bird_feeder] & F near[garden_bench]) & G !near[flower_beds]'),
 ]
 
 

@@ -684,6 +684,12 @@ _OTHERS_GET = frozenset({'gets', 'get'})
 _ARRIVING = frozenset({'in', 'due', 'arriving', 'here', 'back', 'coming'})
 
 
+# Words that point at a thing or a place, and of a place to be left alone, in what somebody wants.
+_POINTING = frozenset({'the', 'this', 'that', 'these', 'those', 'my', 'our', 'his', 'her', 'their', 'its'})
+_NOBODY_THERE = frozenset({'nobody', 'noone', 'empty', 'alone', 'themselves', 'himself', 'herself', 'privacy',
+                           'clear', 'quiet', 'free', 'peace'})
+
+
 def is_others_remark(tail: Sequence[str], commands: frozenset[str]) -> bool:
     """Whether a part after the request says what somebody else wants or is like, asking the robot nothing.
 
@@ -716,7 +722,9 @@ def is_others_remark(tail: Sequence[str], commands: frozenset[str]) -> bool:
         return False
     if rest[0] == 'to':
         return len(rest) > 1 and rest[1] not in commands and rest[1] not in ('be', 'have', 'see', 'get')
-    return not any(w in PLACE_HEADS for w in rest)
+    # not a place or thing pointed at, nor who may be there ("the guests want the library to themselves",
+    # "Marco wants nobody in the lab", "the vet needs the surgery empty")
+    return not any(w in PLACE_HEADS or w in _POINTING or w in _NOBODY_THERE for w in rest)
 
 
 # Subjects that point at things said before ("the other one", "one of them"): no count, no place.
@@ -863,7 +871,8 @@ _FOR_VERBS = frozenset({'go', 'look', 'looking', 'wait', 'waiting', 'search', 's
 
 def _for_whom(tokens: Sequence[str], i: int) -> bool:
     """Whether ``tokens[i]`` is a "for" that can start a phrase naming who something is for."""
-    return tokens[i] == 'for' and i > 1 and tokens[i - 1] not in _FOR_VERBS
+    return tokens[i] == 'for' and (i > 1 and tokens[i - 1] not in _FOR_VERBS or i == 0 and len(tokens) > 3 and
+                                   ',' in tokens[2:5])   # "for the visitor, avoid the lobby"
 
 
 def _beneficiary(tokens: Sequence[str], i: int) -> int:

@@ -295,12 +295,67 @@ def _rule_in(words: Sequence[str]) -> bool:
         w == 'not' and words[k + 1:k + 2] and words[k + 1] in states) for k, w in enumerate(words))
 
 
+# Verbs whose subject a thing said before them is ("the baby is sleeping", "the cat will scratch").
+_STATEMENT_VERBS = chatter.FINITE_VERBS | frozenset({
+    'will', 'would', 'can', 'could', 'might', 'may', 'wants', 'want', 'needs', 'need', 'gets', 'get', 'd',
+    's',
+    'hates', 'loves', 'likes', 'says', 'thinks', 'worries'})
+
+
 # Words after "and", "but", "so" that end a reason and start a command ("because it's wet and avoid X").
 _REASON_ENDS = frozenset({'go', 'avoid', 'stay', 'keep', 'never', 'do', 'then', 'visit', 'head', 'bring',
                           'take', 'put', 'only', 'after', 'once', 'come', 'fly', 'land', 'get', 'grab',
                           'drop'})
 # Words that point at a thing or a step ("I'd like to do the kitchen next"): a plan with one may be the task.
 _NAMING_WORDS = frozenset({'the', 'my', 'your', 'our', 'this', 'that', 'next', 'there', 'it', 'them'})
+# Words that go on from a reason to a command ("..., the baby is asleep so keep out of the nursery").
+_REASON_TO_COMMAND = frozenset({'so', 'and', 'then', 'but', 'just', 'please', 'therefore', 'hence'})
+# Commands that may follow a reason, and words of the robot itself ("my husband hates the robot in the
+# study"): a part with one is about where the robot may go.
+_COMMANDS_AFTER_REASON = _REASON_ENDS | frozenset({'skip', 'keep', 'stay', 'steer', 'leave', 'use', 'wait',
+                                                   'pass', 'enter', 'touch', 'check', 'let', 'make'})
+_ROBOT_WORDS = frozenset({'robot', 'robots', 'drone', 'drones', 'bot', 'bots',
+                          # what a place is to be left ("the vet needs the surgery empty")
+                          'empty', 'alone', 'undisturbed', 'privacy', 'themselves'})
+# "..., she gets anxious if it comes near the nursery": "it" going somewhere is the robot.
+_ROBOT_MOTION = frozenset({'comes', 'goes', 'gets', 'flies', 'passes', 'enters', 'drives', 'rolls', 'wanders',
+                           'moves', 'buzzes', 'lands', 'hovers', 'near', 'into', 'through', 'over', 'on'})
+# Words that point back at a thing said before.
+_PRONOUNS = frozenset({'it', 'them', 'there', 'that', 'this', 'those', 'these', 'him', 'her', 'one'})
+
+
+# After "not": words of going somewhere ("I don't want the hall visited"); "I'm not fussy", "we don't
+# have clearance for that", "I don't want the baby woken up" say no rule of where to go.
+_NOT_GOING = frozenset({'go', 'going', 'gone', 'went', 'enter', 'entering', 'entered', 'visit', 'visited',
+                        'visiting', 'use', 'used', 'using', 'come', 'coming', 'fly', 'flying', 'flown',
+                        'pass',
+                        'passing', 'passed', 'let', 'near', 'in', 'into', 'inside', 'through', 'over', 'past',
+                        'disturbed', 'crossed', 'cross', 'crossing', 'touched', 'touch', 'allowed'})
+
+
+def _reason_holds_rule(tail: Sequence[str]) -> bool:
+    """Whether words said as a reason hold a rule, a command or a word about the robot: never left out.
+
+    "..., my wife is asleep so stay out of the bedroom", "..., I don't want the hall visited",
+    "..., we are avoiding the hall today", "..., it could never go through the garage", "..., my
+    husband hates the robot in the study".
+    """
+    return any(w in chatter.PLACE_RULE_WORDS and (w != 'not' or _NOT_GOING & set(tail[k + 1:])) and
+               tail[k:k + 2] != ['only', 'just']   # "I've only just planted them": lately, no rule
+               for k, w in enumerate(tail)) or any(w.startswith('avoid') for w in tail) or \
+        bool(_ROBOT_WORDS & set(tail)) or _command_after_reason(tail) >= 0 or any(
+            t in ('keep', 'stay', 'keeping', 'staying') for t in tail) and chatter.carries_constraint(
+            [{'keeping': 'keep', 'staying': 'stay'}.get(t, t) for t in tail]) or any(
+            t in ('if', 'when', 'whenever', 'once') and 'it' in tail[k + 1:k + 3] and
+            _ROBOT_MOTION & set(tail[k + 2:k + 5]) for k, t in enumerate(tail))
+
+
+def _command_after_reason(tail: Sequence[str]) -> int:
+    """Where "so" / "and" ... and a command start in words said as a reason ("... so skip it"), else -1."""
+    return next((k - 1 for k, t in enumerate(tail) if k > 0 and tail[k - 1] in _REASON_TO_COMMAND and
+                 t in _COMMANDS_AFTER_REASON), -1)
+
+
 # "I don't want you tumbling down them": a mishap feared, no rule of where to go.
 _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 'slipping', 'spilling',
                       'breaking', 'scaring', 'waking', 'disturbing', 'startling', 'tripping', 'toppling'})
@@ -597,6 +652,45 @@ class _Reader:
         # the places of the last "don't go to X until Y" (X, Y): "..., then go to it" is X
         self.held_until: Optional[tuple[list[Descriptor], Descriptor]] = None
 
+    # What "it" / "there" point at, and how many notes there were when each was set: a part left out
+    # after that which named a thing may be what a later pronoun means ("go to the kitchen, the crew
+    # waxed the hall so avoid it"), so the pronoun is not resolved past it (see _resolve).
+    @property
+    def last_place(self) -> Optional[NounPhrase]:
+        return self._last_place
+
+    @last_place.setter
+    def last_place(self, value: Optional[NounPhrase]) -> None:
+        self._last_place, self._place_mark = value, len(self.notes)
+
+    @property
+    def last_object(self) -> Optional[NounPhrase]:
+        return self._last_object
+
+    @last_object.setter
+    def last_object(self, value: Optional[NounPhrase]) -> None:
+        self._last_object, self._object_mark = value, len(self.notes)
+
+    def _named_left_out(self, mark: int, name: str) -> bool:
+        """Whether a part left out since note ``mark`` named a thing other than ``name``.
+
+        ("left out "the crew waxed the hall"" before "avoid it" read as the kitchen.)
+        """
+        for note in self.notes[mark:]:
+            if note.startswith(('left out "', 'could not read "')):
+                words = note.split('"')[1].split()
+                rel = next((k for k, w in enumerate(words) if k > 0 and w in ('that', 'which', 'who')),
+                           len(words))
+                words = words[:rel]   # (a relative clause says more about the thing before it)
+                # (a thing named there other than what "it" was read as; not a relative clause's people)
+                if words[0] not in ('that', 'which', 'who', 'where') and any(
+                        w in DETS and k + 1 < len(words) and words[k + 1] not in STOPWORDS and
+                        words[k + 1] not in chatter.PERSON_NOUNS and
+                        name.split('_')[-1] not in words[k + 1:k + 4]
+                        for k, w in enumerate(words)):
+                    return True
+        return False
+
     # ----------------------------------------------------------------- structure
     def _drop_trailing_reason(self, sentence: list[str]) -> list[str]:
         """Leave out a last part that says why, after a comma or, unmarked, a subject and its verb.
@@ -640,6 +734,17 @@ class _Reader:
         tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
         if tail[:1] and tail[0] in DETS and ('or' in tail or 'and' in tail) and self._names_only(tail):
             return sentence   # "without going near the dog, the cat or the bird": the list goes on
+        so = _command_after_reason(sentence[cut + 1:])
+        if so > 0 and not chatter.is_remark(tail):
+            # "..., my wife is asleep so stay out of the bedroom": the reason goes, the command stays
+            # (but not where the command points back into the reason: "..., the crew waxed the hall so
+            # avoid it")
+            at = cut + 1 + so
+            command = sentence[at + 1:]
+            if _PRONOUNS & set(command):
+                return sentence
+            out = self._drop_one_reason(sentence[:at])
+            return out + [','] + sentence[at:] if len(out) < at else sentence
         if tail[:1] == ['and'] and tail[1:2] and tail[1] in ('she', 'he', 'they', 'i', 'we'):
             tail = tail[1:]   # "..., and she has claws like fish hooks": a second reason
         if tail[:2] in (['i', 'would'], ['we', 'would'], ['i', 'want'], ['we', 'want']) and \
@@ -790,6 +895,9 @@ class _Reader:
 
     def _noted_cut(self, sentence: list[str], cut: int) -> list[str]:
         head = sentence[:cut]
+        tail = [t for t in sentence[cut + 1:] if t not in PUNCT]
+        if _reason_holds_rule(tail) and not chatter.is_remark(tail):
+            return sentence   # "..., I don't want the hall visited": a rule is never left out as a reason
         if not [t for t in head if t not in PUNCT and t not in FILLERS] or chatter.is_statement(
                 [t for t in head if t not in PUNCT]):
             return sentence   # "also, the beehive is off limits": nothing before it to say why for
@@ -1586,9 +1694,13 @@ class _Reader:
         if s.startswith(('because ', 'since ')) and _rule_in(tokens):
             # "because you must never go there": a reason holding a rule is never dropped
             raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
-        if s.endswith(fine) or s in IGNORED_CLAUSES or \
-                s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
-                              'i do not care', 'as ', 'do not care', 'do not mind', 'i do not mind')):
+        why = s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
+                            'as '))
+        if why and _reason_holds_rule(tokens):
+            # "..., I don't want the hall visited": never left out as a reason
+            raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
+        if s.endswith(fine) or s in IGNORED_CLAUSES or why or \
+                s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind')):
             return scope
         if tokens == ['visit', 'each', 'place', 'only', 'once']:
             self.no_revisits = True   # the canonical wording of "no revisiting" (see idioms)
@@ -2314,6 +2426,20 @@ class _Reader:
         return None
 
     def _resolve(self, np: NounPhrase, place: bool = False) -> NounPhrase:
+        if np.descriptor.name in ('him', 'her', 'them') and not np.descriptor.relations:
+            # "..., Marco gets chatty so stay away from him": a person, never a place named "him"
+            raise TranslationError(f'could not tell where "{np.descriptor.name}" is',
+                                   details={'part': np.head})
+        out = self._resolve_once(np, place)
+        if np.pronoun in ('it', 'them', 'that', 'there', 'here') and self._named_left_out(
+                self._place_mark if out is self.last_place else self._object_mark if out is self.last_object
+                else 0, out.descriptor.name):
+            # "go to the kitchen, the crew waxed the hall so avoid it": "it" may be the hall left out
+            raise TranslationError(f'could not tell what "{np.pronoun}" is after a part left out',
+                                   details={'part': np.pronoun})
+        return out
+
+    def _resolve_once(self, np: NounPhrase, place: bool) -> NounPhrase:
         held_there = self.held_until is not None and (self.last_place or np).descriptor == self.held_until[1]
         if np.pronoun == 'there' and self.held_until is not None and held_there and \
                 len(self.held_until[0]) == 1 and self.task.find_step(self.held_until[0][0]) is None:
@@ -3246,6 +3372,8 @@ class _Reader:
 
     def _leave_out(self, rest: Sequence[str]) -> bool:
         """Leave out words that ask for nothing (no place, skill verb or constraint word), noted."""
+        if any(t.startswith('avoid') for t in rest):
+            return False   # "I'd prefer the hall be avoided": never "left out" as asking for nothing
         if not chatter.is_filler(rest, SKILL_VERBS) or not all(
                 _is_word(t, listed=True) for t in rest if t not in PUNCT) or \
                 self.phrases.landmarks and any(
@@ -4004,6 +4132,12 @@ class _Reader:
         else:
             self.task.chain.append(Step('all', chains=[[Step('visit', [t])] for t in targets]))
 
+    def _subject_after_comma(self, whole: Sequence[str], verb: str) -> bool:
+        """Whether the part after the last comma of ``whole`` is a noun phrase and then ``verb``."""
+        tail = list(whole[max(k for k, t in enumerate(whole) if t == ',') + 1:])
+        np = self.phrases.parse(tail, 0) if tail else None
+        return np is not None and np.start == 0 and tail[np.end:np.end + 1] == [verb]
+
     def _goal_trailer(self, rest: list[str], whole: list[str], targets: list[Descriptor]) -> None:
         """Read what may follow a goal: "before Y", "after Y", "through Y", an avoidance."""
         drop = (',', 'please', 'first', 'too', 'again', 'then', 'instead')
@@ -4141,6 +4275,11 @@ class _Reader:
                 # "the study, or the library if the study is locked": either will do
                 self.notes.append(f'"{" ".join(rest)}": either place will do')
                 return
+        if ',' in whole and rest[0] in _STATEMENT_VERBS and self._subject_after_comma(whole, rest[0]):
+            # "go to the kitchen, the baby is sleeping (so ...)": the thing after the comma is the
+            # subject of a statement, not a place to go; never a goal with the verb left out
+            raise TranslationError(f'could not place "{" ".join(rest)}" in "{" ".join(whole)}"',
+                                   details={'part': ' '.join(rest)})
         if self._leave_out(rest):
             return
         if self._tail_clause(rest):

@@ -225,6 +225,10 @@ _VERBS_AFTER_NUMBER = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'ne
                                  'complained', 'just'})
 
 
+_VERBS_AFTER_PERSON = frozenset({'wants', 'needs', 'gets', 'hates', 'says', 'thinks', 'worries', 'wanted',
+                                 'needed', 'said'})
+
+
 CAN_DETERMINERS = frozenset({'the', 'a', 'an', 'that', 'this', 'each', 'every', 'my', 'your', 'our',
                              'empty', 'old', 'open', 'tin', 'paint', 'trash', 'garbage', 'watering'})
 
@@ -261,6 +265,8 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     if w in ('need', 'needs') and have_name and (nxt.endswith('ing') or nxt in (
             'to', 'a', 'an', 'some', 'inspection', 'attention', 'help', 'work', 'repair', 'repairs')):
         return False   # "carousels 3, 5 and 9 need inspection", "the dock needs cleaning": the name ends
+    if have_name and w in _VERBS_AFTER_PERSON and (i == 1 or i > 1 and tokens[i - 2] in DETERMINERS | {','}):
+        return False   # "the boss wants no robots in the lobby", "Marco gets chatty": a verb, not a name
     if w in NUMBER_WORDS or w.isdigit():
         return have_name and nxt not in ('times', 'more', 'separate')
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \

@@ -1099,8 +1099,11 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         if result is None:
             # not a correction we understand: drop the marker word and read on
             comma = [','] if prev and prev[-1] not in PUNCT else []
-            out = prev + comma + seg + after
-            i = len(prev) + len(comma)   # (a marker right after it is read: "ah no, ...")
+            # (but a verb of leaving out stays: "go to the garage, forget the kitchen" never makes
+            # the kitchen a goal)
+            kept = [marker] if marker in _CANCEL and marker != 'never' and seg[:1] != [','] else []
+            out = prev + comma + kept + seg + after
+            i = len(prev) + len(comma) + len(kept)   # (a marker right after it is read: "ah no, ...")
             continue
         out = result + after
         i = len(result)
@@ -1915,7 +1918,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         restated = _restate(prev, seg, notes)
         if restated is not None:
             return restated
-    if seg and seg[0] in _CANCEL and marker not in _CANCEL and marker != 'never':
+    if seg and seg[0] in _CANCEL and marker not in _CANCEL and marker != 'never' and (
+            seg[0] != 'never' or seg[1:2] == ['mind']):   # "no, never go to the hall" is a rule, kept
         marker, seg = seg[0], seg[1:]
     s = ' '.join(seg)
     if marker in _CANCEL or marker == 'never':

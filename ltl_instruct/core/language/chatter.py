@@ -140,6 +140,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('in', 'a', 'minute'), ('straight', 'away'), ('under', 'any', 'circumstances'), ('whatever', 'happens'),
     ('first', 'thing'), ('first', 'thing', 'tomorrow'), ('first', 'thing', 'in', 'the', 'morning'),
     ('tomorrow',), ('tomorrow', 'morning'), ('tomorrow', 'evening'), ('already',), ('anyway',), ('pronto',),
+    ('sharpish',), ('smartish',), ('quick', 'smart'), ('double', 'quick'), ('chop', 'chop'),
+    ('on', 'the', 'double'),
     ('and', 'stuff'), ('or', 'something'), ('or', 'whatever'), ('if', 'that', 'is', 'ok'),
     ('if', 'that', 'is', 'okay'), ('if', 'that', 'is', 'alright'), ('if', 'that', 'is', 'fine'),
     ('if', 'you', 'would', 'be', 'so', 'kind'), ('if', 'it', 'is', 'not', 'too', 'much', 'trouble'),
@@ -377,6 +379,15 @@ def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
     while rest and rest[0] in PUNCT:
         rest = rest[1:]
     k = next((k for k in range(len(rest) - 1) if rest[k] in _BRING_ME and rest[k + 1] == 'me'), -1)
+    if k < 0:
+        # "bring the big hammer to me, I'm at the bull pen": "to me" is the place said
+        v = next((v for v in range(len(rest)) if rest[v] in _BRING_ME), -1)
+        m = next((m for m in range(v + 2, len(rest) - 1) if rest[m:m + 2] == ['to', 'me'] and (
+            m + 2 == len(rest) or rest[m + 2] in PUNCT)), -1) if v >= 0 else -1
+        if m < 0 or any(t in '.;!?' for t in rest[v:m]):
+            return tokens
+        notes.append(f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are')
+        return rest[:m + 1] + place + rest[m + 2:]
     end = next((e for e in range(k + 2, len(rest)) if rest[e] in '.;!?' or rest[e] == ',' and (
         e + 1 >= len(rest) or rest[e + 1] in ('then', 'and', 'but', 'after'))), len(rest))
     if k < 0 or any(t in ('to', 'into', 'onto') for t in rest[k + 2:end]):
@@ -985,6 +996,14 @@ _REMARK_RE = re.compile(
     r'|i (?:will|ll|shall) be (?:there|right there|with you|along|over|back|down|up)'
     r'(?: (?:in a (?:minute|moment|second|sec|bit|few minutes|jiffy)|shortly|soon|in five|in ten|later))?'
     r'(?: with (?:the|my|your|some) [a-z ]+)?'
+    # "I'll meet you there with the quad": the speaker comes to where the robot goes (no place of its own)
+    r'|(?:and )?i (?:will|ll|shall) (?:meet|see|join|find|catch up with) you '
+    r'(?:there|here|in a bit|shortly|soon)'
+    r'(?: (?:in a (?:minute|moment|second|sec|bit|few minutes|jiffy)|shortly|soon|later))?'
+    r'(?: with (?:the|my|your|some) [a-z ]+)?'
+    # "..., I want you on hand": be there, ready (where the request sends the robot)
+    r'|(?:i|we) (?:want|need|would like|will want|will need) you (?:to be )?(?:on hand|handy|nearby|close by|'
+    r'around|about|on standby|standing by|ready)(?: (?:just )?in case| for (?:it|her|him|them|that))?'
     r'|i (?:only |just )?need (?:one|one of them|either|either of them|one of the two) '
     r'(?:looked at|checked|done|visited|seen)'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
@@ -996,6 +1015,7 @@ _REMARK_RE = re.compile(
 
 
 _REMARK_STARTS = frozenset({'either', 'whichever', 'i', 'any', 'both', 'no', 'it', 'does', 'do', 'your',
+                            'and',
                             'up', 'what', 'whatever', 'which', 'you', 'not', 'that', 'for'})
 
 

@@ -403,6 +403,8 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<y>(?:the|my|our) {_NP})', r'go to \g<x> \g<r> \g<y>'),
     Rule('stay out of the way of the stairwell door',
          r'\b(?P<v>stay|keep) out of the way of\b', r'\g<v> away from'),
+    Rule('keep out of the calf shed until you have been to the wash bay, then go on in',
+         r'\b(?:go|head|come|get|walk|move) (?:on )?(?:in|inside|in there)(?= [,.;!?]|$)', 'go to it'),
     Rule('go stand right next to it',
          r'\bright (?=next to|behind|in front of|beside|by|under|outside|inside)', ''),
     Rule('only head to the garage once the dock is done',
@@ -949,6 +951,10 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<r>does not matter which(?: one)?) (?=but |and |so )', r'\g<r> , '),
     Rule('go to the shed but whatever you do keep away from the fence',
          r'(?<=[a-z])(?: ,)? (?:but|and|so) whatever (?:else )?you do(?: ,)? ', ' , whatever you do , '),
+    Rule('only go to the top field once you have done the drill',
+         r'\b(?P<w>once|when|after|until|till) you have (?:done|finished|checked|sorted) '
+         r'(?=(?:the|my|our|your) )',
+         r'\g<w> you have visited '),
     Rule('then when you are done there, the greenhouse',
          r'\b(?:and )?(?:then )?(?:when|once) (?:you are|you have been|you have) (?:done|finished)'
          r'(?: there| with that| with it| here)?\b', 'then'),

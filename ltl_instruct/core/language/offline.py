@@ -203,7 +203,7 @@ class OfflineTranslator:
         tokens = join_compounds(expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes))))
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
-        tokens = _correct_spelling(tokens, notes, self.landmarks)
+        tokens = _correct_spelling(tokens, notes, self.landmarks, _proper_names(instruction))
         tokens = chatter.strip_addresses(tokens, notes)   # before lists and corrections ("no, sorry, dear")
         tokens = chatter.strip_headings(tokens, notes) if ':' in tokens else tokens
         tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
@@ -292,6 +292,29 @@ def _rule_in(words: Sequence[str]) -> bool:
     states = chatter.STATES | {'sure', 'safe'}
     return any(w in chatter.PLACE_RULE_WORDS and not (
         w == 'not' and words[k + 1:k + 2] and words[k + 1] in states) for k, w in enumerate(words))
+
+
+# Verbs after "you'll" that say what the robot would do, not what may happen to it ("you'll find it there").
+_NOT_CONSEQUENCES = frozenset({'need', 'have', 'want', 'find', 'see', 'meet', 'pass', 'reach', 'come', 'go',
+                               'visit', 'arrive', 'then', 'also', 'just', 'only', 'do', 'start', 'finish'})
+# What may happen, after "you'll be" / "you'll get": "mucky", "your wheels stuck", "stuck in it".
+_CONSEQUENCE_MODALS = frozenset({'will', 'would', 'could', 'might', 'may'})
+
+
+def _consequence(tail: Sequence[str]) -> bool:
+    """Whether a part after a rule warns what would happen to the robot ("..., you'll sink").
+
+    Only "you will / would / could / might ..." with no rule, order or count word, no place to go
+    ("you'll find it by the door") and, after "be" or "get", no thing named with an article.
+    """
+    if len(tail) < 3 or tail[0] != 'you' or tail[1] not in _CONSEQUENCE_MODALS or _rule_in(tail) or \
+            chatter.has_constraint_word(tail) or tail[2] in _NOT_CONSEQUENCES:
+        return False
+    verb, rest = tail[2], tail[3:]
+    if verb in ('be', 'get'):
+        return bool(rest) and rest[0] not in _PLACE_PREPS and not any(
+            t in DETS and t != 'your' for t in rest)
+    return verb not in _COMMANDS or verb in ('sink', 'slip', 'fall', 'crash', 'tip', 'trip')
 
 
 # Words after "and", "but", "so" that end a reason and start a command ("because it's wet and avoid X").
@@ -402,10 +425,21 @@ def _is_word(w: str, listed: bool = False) -> bool:
     return sp.known(w) or w.isdigit()
 
 
-def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str]) -> list[str]:
+_PROPER_RE = re.compile(r'(?<=[a-z,;:] )[A-Z][a-z]{3,}\b')
+
+
+def _proper_names(instruction: str) -> frozenset[str]:
+    """Words written with a capital inside a sentence ("the Monet room"): names, never typos of words."""
+    if instruction.islower():
+        return frozenset()
+    return frozenset(m.group(0).lower() for m in _PROPER_RE.finditer(instruction))
+
+
+def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str],
+                      names: frozenset[str] = frozenset()) -> list[str]:
     """Correct typing slips in words the rules do not know; each correction is noted."""
     speller = _speller()
-    known = {w for name in landmarks for w in name.replace('_', ' ').split()}
+    known = {w for name in landmarks for w in name.replace('_', ' ').split()} | names
     out = list(tokens)
     # names said in the instruction: a listed word anywhere, an unlisted one only before (the first
     # spelling of a name is taken as meant: "the jetty ... the jety")
@@ -593,7 +627,10 @@ class _Reader:
         if wish and tail[0] in ('i', 'we') and (tail[wish:wish + 2] in (
                 ['know', 'if'], ['know', 'whether'], ['see', 'if'], ['see', 'whether'], ['find', 'out'],
                 ['be', 'sure'], ['be', 'certain']) or tail[wish:wish + 1] == ['know'] and
-                tail[wish + 1:wish + 2] and tail[wish + 1] in ('that', 'how')) and not _rule_in(tail) and \
+                tail[wish + 1:wish + 2] and tail[wish + 1] in ('that', 'how') or
+                # "..., I want to see if the end gun's working" ("see if" was made "check")
+                tail[wish:wish + 1] == ['check'] and {'is', 'are'} & set(tail[wish + 2:])) and \
+                not _rule_in(tail) and \
                 not chatter.carries_constraint(tail[wish + 2:]):   # (the "if" of "know if" is no rule)
             return self._noted_cut(sentence, cut)   # "..., I want to know if the gardener has trimmed it"
         if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when']) and \
@@ -610,6 +647,8 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., I'm not fussy", "we are in a hurry"
         if chatter.is_reason(tail):
             return self._noted_cut(sentence, cut)   # "..., because the floor was just waxed"
+        if _consequence(tail) and (_rule_in(sentence[:cut]) or chatter.carries_constraint(sentence[:cut])):
+            return self._noted_cut(sentence, cut)   # "keep off the muck heap, you'll sink"
         if len(tail) >= 3 and tail[1] in ('is', 'are') and tail[-1] in _BUSY:
             return self._noted_cut(sentence, cut)   # "..., dad's on a call", "..., she is in a meeting"
         if len(tail) >= 3 and tail[0] not in DETS and (tail[0] in chatter.FAMILY_NAMES or tail[0] in
@@ -627,8 +666,12 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., or you'll scare the finches off"
         if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
             return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
-        if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in ('it', 'them', 'today', 'now') \
-                and not _rule_in(tail):
+        if tail[:2] in (['there', 'is'], ['there', 'are']) and (
+                tail[-1] in ('it', 'them', 'today', 'now') or (
+                    # "..., there's loads of it lying about": how much of the thing there is, no place
+                    tail[-1] in ('about', 'around', 'everywhere') and 'the' not in tail)) and \
+                not _rule_in(tail) and \
+                not chatter.has_constraint_word(tail):
             return self._noted_cut(sentence, cut)   # "..., there's traffic on it today"
         if len(tail) >= 3 and tail[0] in ('he', 'she', 'they') and tail[1] in (
                 'gets', 'get', 'worries', 'worry', 'hates', 'hate', 'panics') and not _rule_in(tail):

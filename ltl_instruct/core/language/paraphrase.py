@@ -307,6 +307,9 @@ _TO_CHECK_RE = re.compile(r'(?<=[a-z]) to check(?= (?:it |(?:the|my|your|our|its
 _SCOPING = frozenset({'until', 'till', 'after', 'before', 'once', 'when', 'if', 'unless', 'only', 'while',
                       'whenever', 'not', 'never'})
 
+# "I want to check ...", "we'd like to check ...": a wish, never "and check".
+_WISHING = frozenset({'want', 'wanted', 'need', 'needed', 'like', 'love', 'hoping', 'trying'})
+
 
 def _check_there(text: str) -> str:
     """'go to the door to check it is locked' -> 'go to the door and check it is locked' (a main clause)."""
@@ -314,7 +317,10 @@ def _check_there(text: str) -> str:
     last = 0
     for m in _TO_CHECK_RE.finditer(text):
         start = max(text.rfind(p, 0, m.start()) for p in (' , ', ' . ', ' ; ', ' ! ', ' ? ', ' : '))
-        if not _SCOPING & set(text[max(start, 0):m.start()].split()):
+        said = text[max(start, 0):m.start()].split()
+        if said[-1:] and said[-1] in _WISHING:
+            continue   # "..., I want to check the gun is working": why, not a step of its own
+        if not _SCOPING & set(said):
             out.append(text[last:m.start()] + ' and check')
             last = m.end()
     return ''.join(out) + text[last:]

@@ -559,6 +559,9 @@ def _marker_at(tokens: list[str], i: int) -> int:
         return len(bare) if len(bare) > 1 or bare != ('no', 'no') else 2
     for m in _MARKERS:
         if tuple(tokens[i:i + len(m)]) == m:
+            if m == ('i', 'mean') and tokens[i + 2:i + 3] in (['it'], ['that'], ['this'], ['business']) and (
+                    i + 3 == len(tokens) or tokens[i + 3] in PUNCT):
+                return 0   # "Never go near the pit. I mean it.": emphasis, nothing corrected
             if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',', ':') and not (
                     i > 0 and tokens[i - 1] in '.;!?' and tokens[i + 1] == 'the' and i + 2 < len(tokens) and
                     tokens[i + 2] in ('one', 'other', 'ones')):

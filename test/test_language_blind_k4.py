@@ -1,0 +1,91 @@
+"""Readings found on the blind sets K4 (a farmer and his farm drone) and L4 (a museum's night staff).
+
+Every case is an instruction of the blind sets, with the formula its writer gave, or a sentence
+of our own for the same construction; the translator must give a formula equivalent to it on
+automata (names included). The sets themselves stay outside the repository.
+"""
+from __future__ import annotations
+
+import pytest
+
+from ltl_instruct.core.errors import TranslationError
+from translation_cases import T, check_translation
+
+BLIND_ROUND_K4 = [
+    # "I mean it" after a rule is emphasis, never a correction to "it" (the thing avoided became a goal)
+    ('Never go near the slurry pit. Ever. I mean it.',
+     'G !near[slurry_pit]'),
+    ('Stay away from the pond, I mean it!',
+     'G !near[pond]'),
+    # "..., you'll sink" / "you'll be mucky" / "you'll get your wheels stuck" after a rule: what would
+    # happen to the robot, no place (the consequence had become a goal)
+    ('Go to the grain dryer then the weighbridge. Stay off the cattle grid at all times, you\'ll get your '
+     'wheels stuck.',
+     'F (near[grain_dryer] & F near[weighbridge]) & G !near[cattle_grid]'),
+    ("Go check the slurry pit, and after that keep out of the parlour, you'll be mucky.",
+     'F (near[slurry_pit] & G !near[parlour])'),
+    ("Go to the barn and keep off the muck heap, you'll sink.",
+     'F near[barn] & G !near[muck_heap]'),
+    # "I'll meet you there (with the quad)": the speaker comes to where the robot goes
+    ("Go wait at the diesel tank, I'll meet you there with the quad.",
+     'F near[diesel_tank]'),
+    # "..., I want to see if the end gun's working": why (it had become "and check", a goal)
+    ("Hover over the far pivot for a bit, I want to see if the end gun's working.",
+     'F near[far_pivot]'),
+    ('Go to the gate, I want to check the latch is working.',
+     'F near[gate]'),
+    # "bring X to me, I'm at Y": "to me" is where the person says they are (the delivery ended at the pick)
+    ("Bring the big hammer to me, I'm at the bull pen.",
+     'F (near[big_hammer] & F (pick[big_hammer] & F (near[bull_pen] & F release[big_hammer, bull_pen])))'),
+    # "then go on in" / "then go inside" after "keep out of X until Y": into X (it was dropped, silently)
+    ("Keep out of the calf shed until you've been to the wash bay, then go on in.",
+     'F near[calf_shed] & (!near[calf_shed] U near[wash_bay])'),
+    ("Don't go in the barn until you have been to the wash bay, then go inside.",
+     'F near[barn] & (!near[barn] U near[wash_bay])'),
+    # "only go to X once you've done Y": Y visited first (it had become "X then Y", the order reversed)
+    ("Visit the sprayer before the seed drill, and only go to the top field once you've done the drill.",
+     'F near[seed_drill] & (!near[seed_drill] U near[sprayer]) & F near[top_field] & '
+     '(!near[top_field] U near[seed_drill])'),
+    # "Sharpish.", "quick smart": how fast, no place
+    ('Feed bins, then the parluor, then the collecting yard. Sharpish.',
+     'F (near[feed_bins] & F (near[parlour] & F near[collecting_yard]))'),
+    ('Go to the hen house, quick smart.',
+     'F near[hen_house]'),
+    # "..., the lorry's due at ten": "'s due" is "is due", a statement about the scene
+    ("Robot. Hay barn. Now please, the lorry's due at ten.",
+     'F near[hay_barn]'),
+    # "..., and I want you on hand": be there, ready; no place "hand"
+    ("Find the calvign pen, there's a heifer due tonight and I want you on hand.",
+     'F near[calving_pen]'),
+    # "..., there's loads of it lying about": how much of it there is
+    ("Chuck the baler twien in the skip, there's loads of it lying about.",
+     'F (near[baler_twine] & F (pick[baler_twine] & F (near[skip] & F release[baler_twine, skip])))'),
+    # names: accents dropped, not the letters ("café": cafe); a capitalised name is no typo ("Monet");
+    # a doubled letter typed once ("galery"); a plural in -ies before labels ("galleries 14, 15 and 16")
+    ('Go to the café, and do not go anywhere near the Fabergé eggs.',
+     'F near[cafe] & G !near[faberge_eggs]'),
+    ('When you get a moment, please make your way to the Monet room.',
+     'F near[monet_room]'),
+    ('Robot, proceed to galery 12.',
+     'F near[gallery_12]'),
+    ('Galleries 14, 15 and 16 - visit them in reverse order.',
+     'F (near[gallery_16] & F (near[gallery_15] & F near[gallery_14]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', BLIND_ROUND_K4)
+def test_readings_found_on_blind_set_k4(instruction: str, gold: str) -> None:
+    check_translation(instruction, gold)
+
+
+# A consequence or a wish that could name a place or a rule is still refused, never left out.
+REFUSED_K4 = [
+    "Keep off the grass, you'll not like it.",
+    "Stay off the lawn, you'll be near the pond after.",
+]
+
+
+@pytest.mark.parametrize('instruction', REFUSED_K4)
+def test_refused_on_blind_set_k4(instruction: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(instruction)

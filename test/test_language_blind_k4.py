@@ -70,6 +70,32 @@ BLIND_ROUND_K4 = [
      'F near[gallery_12]'),
     ('Galleries 14, 15 and 16 - visit them in reverse order.',
      'F (near[gallery_16] & F (near[gallery_15] & F near[gallery_14]))'),
+    # "..., your rotor wash could damage them", "the cows might spook": what may happen, said of a thing
+    ('Fly over the great hall but keep well away from the hanging tapestries, your rotor wash could damage '
+     'them.',
+     'F near[great_hall] & G !near[hanging_tapestries]'),
+    # "okay little drone, ...": a form of address after a lead word
+    ('Okay little drone, time to come in - go set down on your docking station.',
+     'F near[docking_station]'),
+    # "the armor stand next to the fireplace": "stand" ends a name after an article, no "go to"
+    ("Go to the tapestry behind the throne, but not before you've been to the armor stand next to the "
+     'fireplace.',
+     'F near[tapestry::isbehind(throne)] & (!near[tapestry::isbehind(throne)] U '
+     'near[armor_stand::isnextto(fireplace)])'),
+    # "A or B, then C. Actually forget the choice, just B": the alternatives become B
+    ('Go to the sculpture garden or the courtyard, then the lobby. Actually forget the choice, just the '
+     'courtyard.',
+     'F (near[courtyard] & F near[lobby])'),
+    ('Go to either the shed or the barn. Forget the options, just go to the barn.',
+     'F near[barn]'),
+    # "do the usual round - A, B, then C": the round is the list; "A, B, then C" one after the other
+    ('Do the usual round - gallery 3, gallery 4, then the print room - and stay well clear of the porcelain '
+     'vases the whole time, they were only reinstalled today.',
+     'F (near[gallery_3] & F (near[gallery_4] & F near[print_room])) & G !near[porcelain_vases]'),
+    ('Go to the foyer, the shop, the bar, then the cafe.',
+     'F (near[foyer] & F (near[shop] & F (near[bar] & F near[cafe])))'),
+    ('Avoid the hall, the den, then go to the attic.',
+     'F near[attic] & G !near[hall] & G !near[den]'),
 ]
 
 
@@ -82,6 +108,11 @@ def test_readings_found_on_blind_set_k4(instruction: str, gold: str) -> None:
 REFUSED_K4 = [
     "Keep off the grass, you'll not like it.",
     "Stay off the lawn, you'll be near the pond after.",
+    # "until ... one of them / either of them": the places before, never the place avoided (it was
+    # read as "avoid X until X", silently)
+    "Go to the gift shop or the café, whichever, and don't get near the stained glass panel until you've got "
+    'to one of them.',
+    "Go to the shop and the cafe, and don't get near the panel until you've been to either of them.",
 ]
 
 

@@ -438,6 +438,9 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
 
 # Words before a form of address that make it one phrase ("little drone", "my dear", "good robot").
 _ADDRESS_ADJECTIVES = frozenset({'little', 'my', 'good', 'clever', 'dear', 'old', 'silly', 'sweet', 'young'})
+# Words that may lead into a form of address at the start of a sentence ("okay little drone, ...").
+_ADDRESS_LEADS = frozenset({'okay', 'ok', 'alright', 'right', 'now', 'so', 'well', 'hey', 'hi', 'hello',
+                            'oi'})
 # Exclamations about oneself, set off by commas ("oh, no, silly me, I meant ..."): they ask for nothing.
 _SELF_EXCLAIMS: tuple[tuple[str, ...], ...] = (
     ('dear', 'oh', 'dear'), ('oh', 'my', 'goodness'), ('silly', 'me'), ('dear', 'me'), ('oh', 'dear'),
@@ -460,7 +463,7 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
     n = len(tokens)
     while k < n:
         before = out[-1] if out else '.'
-        if before in PUNCT:
+        if before in PUNCT or before in _ADDRESS_LEADS and (len(out) == 1 or out[-2] in PUNCT):
             m = next((len(p) for p in _SELF_EXCLAIMS if tuple(tokens[k:k + len(p)]) == p), 0)
             if not m and tokens[k] in VOCATIVES:
                 m = 1

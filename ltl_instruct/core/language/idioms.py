@@ -48,6 +48,11 @@ _GO = (r'(?:visit|go to|reach|enter|pass through|go through|move to|travel to|na
        r'make your way to|head to|find|come to|walk to|fly to|drive to)')
 # a thing named by up to four words, and the words that place one thing by another
 _THING = r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
+# a word of a rule before a list ("avoid the hall, the den, then ..."): the list is no route
+_RULE_BEFORE = re.compile(r'\b(?:avoid|away|clear|never|not|off|out|except|skip|without|until|before|after|'
+                          r'either|or)\b')
+# a name with a number and no article ("gallery 3")
+_LABELLED = r'[a-z]+ \d+'
 _WHERE = (r'(?:on top of|on|under|underneath|beneath|behind|in front of|next to|beside|by|near|left of|'
           r'right of|to the left of|to the right of|above|below|inside|between)')
 # words that tell two things of one kind apart ("the east or the west stairs")
@@ -404,7 +409,8 @@ RULES: tuple[Rule, ...] = (
     Rule('stay out of the way of the stairwell door',
          r'\b(?P<v>stay|keep) out of the way of\b', r'\g<v> away from'),
     Rule('keep out of the calf shed until you have been to the wash bay, then go on in',
-         r'\b(?:go|head|come|get|walk|move) (?:on )?(?:in|inside|in there)(?= [,.;!?]|$)', 'go to it'),
+         r'(?:(?<=\bthen )|(?<=\band ))(?:go|head|walk|move) (?:on )?(?:in|inside|in there)(?= [,.;!?]|$)',
+         'go to it'),
     Rule('go stand right next to it',
          r'\bright (?=next to|behind|in front of|beside|by|under|outside|inside)', ''),
     Rule('only head to the garage once the dock is done',
@@ -1343,6 +1349,11 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<a>(?:the|my|your|our) {_THING}) , (?P<b>(?:the|my|your|our) {_THING})(?: ,)? and then '
          rf'(?=(?:the|my|your|our|go|come|head|back|return|visit|check|finally)\b)',
          r'\g<a> , then \g<b> , and then '),
+    Rule('gallery 3, gallery 4, then the print room: one after the other',
+         rf'(?P<a>(?:(?:(?:the|my|your|our) {_THING}|{_LABELLED}) , )+)'
+         rf'(?=(?:(?:the|my|your|our) {_THING}|{_LABELLED}) , then (?:(?:the|my|your|our) |{_LABELLED}\b))',
+         lambda m: m.group('a') if _RULE_BEFORE.search(m.string, 0, m.start()) else
+         m.group('a').replace(' , ', ' , then ')),
     Rule('throw it out: away', r'\b(?P<v>throw|toss|chuck) (?P<o>it|them) (?:out|away)\b',
          r'\g<v> away \g<o>'),
     Rule('i need the tape measure and the hammer in the garage: bring them there',

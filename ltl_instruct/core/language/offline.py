@@ -680,7 +680,9 @@ class _Reader:
                 tail[2] in chatter.STATES or tail[2] in ('off', 'away', 'out')) and \
                 'limits' not in tail and 'bounds' not in tail and is_name_word(tail, 0, False):
             return self._noted_cut(sentence, cut)   # "..., lifeguard's off today"
-        w = next((k for k in range(2, min(5, len(tail) - 1)) if tail[k] == 'will'), -1)
+        # ("..., your rotor wash could damage them": what may happen, said of a thing)
+        w = next((k for k in range(2, min(5, len(tail) - 1))
+                  if tail[k] in ('will', 'could', 'might', 'would')), -1)
         if w > 0 and tail[0] in DETS and not chatter.has_constraint_word(tail) and tail[w + 1] != 'you' and (
                 tail[w + 1] != 'be' or tail[w + 2] in ('here', 'back', 'home', 'in', 'there')):
             # "..., the carer will be here any minute", "..., the kids will grab it"
@@ -2439,6 +2441,11 @@ class _Reader:
                         rest[j + 1] in DETS or rest[j + 1] in GOAL_PARTICLES))):
                 j += 1
             nps, joiner, end = self._np_list(rest, j, place=False)
+            if j < len(rest) and (rest[j] in ('one', 'either', 'any', 'whichever') or rest[j] in (
+                    'both', 'each', 'all') and rest[j + 1:j + 2] == ['of']):
+                # "don't go near X until you've got to one of them": "them" are the places before, never X
+                raise TranslationError('cannot read a constraint that holds until one of several places',
+                                       details={'part': ' '.join(rest[:max(end, j + 1)])})
             if joiner == 'or' and len(nps) > 1:
                 # "avoid the lobby until you reach the east gate or the west gate": a scope that ends at
                 # either of two places has no reading here; said, not read as the first of them

@@ -33,6 +33,19 @@ _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |
 # a name of a few words, none of them a connective
 _NAME = r'(?:(?!(?:and|or|then|followed|the)\b)[a-z0-9_]+)(?: (?!(?:and|or|then|followed)\b)[a-z0-9_]+){0,4}'
 
+_NOUN_LEADS = frozenset({'the', 'a', 'an', 'my', 'your', 'our', 'this', 'that', 'his', 'her', 'their'})
+_VERB_LEADS = frozenset({'and', 'then', 'to', 'must', 'please', 'just', 'go', 'should', 'will', 'can', 'you',
+                         'come', 'now', 'first', 'or', 'but', 'not', 'never'})
+
+
+def _named_stand(m: 're.Match[str]') -> bool:
+    """Whether "stand" / "sit" ... ends a name ("the armor stand next to the fireplace"), not a verb."""
+    before = m.string[:m.start()].split()[-3:]
+    return len(before) >= 2 and before[-1] not in _VERB_LEADS and (
+        before[-2] in _NOUN_LEADS or len(before) == 3 and before[-3] in _NOUN_LEADS and
+        before[-2] not in _VERB_LEADS)
+
+
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
     # "the orchard first and then the vineyard, or the other way round": either order
     (r' (?:, )?or (?:the other way (?:round|around)|vice versa|the reverse|the opposite way|the other order)'
@@ -40,6 +53,10 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'|$)',
      ' , in any order '),
     (r' do a (?:quick )?(?:round|tour|circuit) of ', ' visit '),
+    # "do the usual round - gallery 3, gallery 4, then the print room": the round is the list after it
+    (r' do (?:the|your|my|our) (?:usual |normal |regular |standard |nightly |night |evening |morning |'
+     r'daily )?(?:round|rounds|route|circuit|loop|tour|patrol|walk) (?:, |: )'
+     r'(?=[^,.;!?]*(?: , | then | and ))', ' visit '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),
     # the order left to the robot, said as a remark (before list positions: "which one first" is none)
     (r' (?:it )?(?:does not|do not|will not) (?:matter|care)(?: to me)? which(?: one| of them| order)?'
@@ -220,7 +237,7 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
     (r'(?<! the)(?<! a)(?<! my)(?<! your)(?<! our)(?<! car) (?:wait|stand|sit|park) '
      r'(?:by|near|next to|beside) '
-     r'(?=(?:the|a|my|your|our) )', ' go to '),
+     r'(?=(?:the|a|my|your|our) )', lambda m: m.group(0) if _named_stand(m) else ' go to '),
     # "go and put yourself by the kettle", "position yourself next to the gate": go there
     (r'(?: (?:come|go) and)? (?:put|place|plant|park|position|station|get) yourself '
      r'(?:by|next to|near|beside|at|in|on) (?=(?:the|a|my|your|our) )', ' go to '),

@@ -948,6 +948,45 @@ def _uncleft(tokens: list[str]) -> list[str]:
     return new.split() if new != text else tokens
 
 
+_CHOICE_WORDS = frozenset({'choice', 'choices', 'option', 'options', 'alternatives', 'alternative', 'either'})
+
+
+def _forget_choice(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Replace the alternatives said before by the one named ("A or B ... forget the choice, just B")."""
+    k = 1 if seg[:1] == [','] else 0
+    if seg[k:k + 1] and seg[k] in _CANCEL:
+        k += 1 + (seg[k:k + 2] == ['never', 'mind'])
+    if seg[k:k + 1] not in (['the'], ['that']) or seg[k + 1:k + 2] == [] or seg[k + 1] not in _CHOICE_WORDS:
+        return None
+    k += 2 + (seg[k + 2:k + 3] == ['or'])   # "the either or"
+    if seg[k:k + 1] != [',']:
+        return None
+    k += 1
+    while seg[k:k + 1] and seg[k] in ('just', 'only', 'go', 'to', 'do', 'visit'):
+        k += 1
+    new = seg[k:]
+    while new and new[-1] in ('then', 'instead', 'please', ','):
+        new = new[:-1]
+    np = PhraseParser().parse(new, 0) if new else None
+    if np is None or np.end != len(new) or np.pronoun:
+        return None
+    spans = _np_spans(prev)
+    for n, sp in enumerate(spans):
+        if sp.head != np.head:
+            continue
+        a = b = n   # the spans joined to it by "or"
+        while a > 0 and spans[a - 1].end + 1 == spans[a].start and prev[spans[a].start - 1] == 'or':
+            a -= 1
+        while b + 1 < len(spans) and spans[b].end + 1 == spans[b + 1].start and prev[spans[b].end] == 'or':
+            b += 1
+        if a == b:
+            continue
+        start = spans[a].start - (prev[spans[a].start - 1:spans[a].start] == ['either'])
+        notes.append(f'correction: "{" ".join(prev[start:spans[b].end])}" is now "{" ".join(new)}"')
+        return prev[:start] + new + prev[spans[b].end:]
+    return None
+
+
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
     tokens = _uncleft(tokens)
@@ -1006,6 +1045,12 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         c = seg.index(',', lead) if ',' in seg[lead:] else -1
         said = seg[lead:c] if c <= lead or seg[lead] in DETERMINERS | chatter.STATEMENT_SUBJECTS else \
             ['the'] + seg[lead:c]   # "milk is already in there": a name said without its article
+        chosen = _forget_choice(prev, seg, notes)
+        if chosen is not None:
+            # "A or B, then C. Actually forget the choice, just B": the alternatives become B
+            out = chosen + after
+            i = len(chosen)
+            continue
         moved = _moved(prev, seg, notes)   # "no wait, it's in front of the shed, my mistake"
         if moved is not None:
             out = moved + after

@@ -96,6 +96,28 @@ BLIND_ROUND_K4 = [
      'F (near[foyer] & F (near[shop] & F (near[bar] & F near[cafe])))'),
     ('Avoid the hall, the den, then go to the attic.',
      'F near[attic] & G !near[hall] & G !near[den]'),
+    # "from X down / up / over to Y" is from X to Y; "then do that same walk again": the route twice
+    # (the walk was lost, silently)
+    ('Walk from the north gallery down to the south gallery, then do that same walk again.',
+     'F (near[north_gallery] & F (near[south_gallery] & F (near[north_gallery] & F near[south_gallery])))'),
+    ('Do the run from the yard gate up to the top gate, twice in a row.',
+     'F (near[yard_gate] & F (near[top_gate] & F (near[yard_gate] & F near[top_gate])))'),
+    # "and hoverthere": a verb and "there" run together
+    ('fly to the 4th floor skylight and hoverthere',
+     'F near[fourth_floor_skylight]'),
+    # "go and stand by X so I can find you when I'm done with the ewes": the purpose holds only the
+    # person's own time
+    ("Go and stand by the old Fergie so I can find you when I'm done with the ewes.",
+     'F near[old_fergie]'),
+    # dialect: "get yerself over there"
+    ('the sheep handlin pens, get yerself over there',
+     'F near[sheep_handling_pens]'),
+    # "I want you up at X, but stop in at Y on the way": Y first
+    ('I want you up at the grain store, but stop in at the workshop on the way.',
+     'F (near[workshop] & F near[grain_store])'),
+    # "there's X ..., go have a look": go to X
+    ("There's a drum under the trailer behind the shed, go have a look.",
+     'F near[drum::isbelow(trailer::isbehind(shed))]'),
 ]
 
 

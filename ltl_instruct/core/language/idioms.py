@@ -345,11 +345,15 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?P<p>(?:behind|under|beside|next to|near|by|in front of|underneath) (?:the|my|our) {_W}(?:'
          rf' {_W}){{0,3}}?) '
          r'somewhere\b', r'\g<p>'),
+    Rule('I want you up at the grain store, but ...: go there',
+         r'^(?:i|we) (?:want|need|would like) you (?:up |down |over |out |back )?(?:at|in|by) '
+         r'(?=(?:the|my|our) [^,.;!?]* , (?:but |and )?(?:stop|call|pop|drop|swing|visit|check|look) )',
+         'go to '),
     Rule('go to the front gate, but call in at reception on the way',
          rf'^(?P<a>(?:go|head|drive|fly|walk|get) (?:over |down |up )?to (?:the |my |our )?{_NP}) , (?:but '
          rf'|and )?'
-         r'(?:visit|stop by|stop at|call in at|call at|pop into|pop in at|drop by|drop in at|swing by|check'
-         r'|look in at) '
+         r'(?:visit|stop by|stop at|stop in at|stop off at|call in at|call at|call by|pop into|pop in at|'
+         r'pop by|drop by|drop in at|swing by|check|look in at) '
          rf'(?P<y>(?:the |my |our )?{_NP}) (?:on the way|on your way|en route|along the way)(?: there)?$',
          r'visit \g<y> , then \g<a>'),
     Rule('bring its charger over there as well',

@@ -405,6 +405,16 @@ _LEFT_DETS = frozenset({'my', 'our', 'your', 'a', 'the'})
 _LEAD_WORDS = frozenset({'okay', 'so', 'right', 'alright', 'well', 'now', 'um', 'uh', 'er', 'erm'})
 
 
+_MY_TIME_VERBS = frozenset({'am', 'are', 'get', 'have', 'finish', 'come'})
+
+
+def _without_my_time(tokens: list[str]) -> list[str]:
+    """Return a purpose without the person's own time ("so I can find you | when I'm done with the ewes")."""
+    k = next((k for k in range(1, len(tokens) - 2) if tokens[k] in ('when', 'once', 'after') and
+              tokens[k + 1] in ('i', 'we') and tokens[k + 2] in _MY_TIME_VERBS), -1)
+    return tokens if k < 0 or _rule_in(tokens[k:]) or tokens[0] not in ('i', 'we', 'that') else tokens[:k]
+
+
 def _without_leads(sentence: list[str]) -> list[str]:
     """Return the sentence without the words that lead into it ("okay so bread aisle first")."""
     k = 0
@@ -425,6 +435,9 @@ def _is_word(w: str, listed: bool = False) -> bool:
     return sp.known(w) or w.isdigit()
 
 
+# Verbs said with "there" / "here", sometimes without the space ("hoverthere", "waithere").
+_STAY_VERBS = frozenset({'wait', 'stay', 'stop', 'park', 'land', 'hover', 'sit', 'stand', 'go', 'come', 'fly',
+                         'head', 'drive', 'walk', 'move', 'get', 'remain', 'hang', 'circle'})
 _PROPER_RE = re.compile(r'(?<=[a-z,;:] )[A-Z][a-z]{3,}\b')
 
 
@@ -464,11 +477,20 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
             continue
         if w in known or len(w) < 4:
             continue
+        if w.endswith('here') and w not in speller.words and w not in speller.lexicon:
+            # "and hoverthere", "waithere": a verb the rules know and "there" / "here", the space left out
+            heads = sorted((w[:-len(s)] for s in ('there', 'here') if w.endswith(s) and
+                            w[:-len(s)] in _STAY_VERBS), key=len, reverse=True)
+            if heads:
+                out[k] = f'{heads[0]} {w[len(heads[0]):]}'
+                notes.append(f'read "{w}" as "{out[k]}"')
+                continue
         fixed = speller.correct(w)
         if fixed is not None:
             out[k] = fixed
             notes.append(f'read "{w}" as "{fixed}"')
-    return out
+    return [t for w in out for t in w.split(' ')] if len(out) == len(tokens) and any(' ' in w for w in out) \
+        else out
 
 
 def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
@@ -1110,7 +1132,8 @@ class _Reader:
             if skip:
                 skip = False
                 continue
-            if clause.connector == 'purpose' and not chatter.carries_constraint(clause.tokens):
+            if clause.connector == 'purpose' and not chatter.carries_constraint(
+                    _without_my_time(clause.tokens)):
                 self.notes.append(f'left out "so {" ".join(clause.tokens)}" (says why, asks for nothing)')
                 continue
             later = [t for c in clauses[n:] for t in c.tokens]

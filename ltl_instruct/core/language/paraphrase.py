@@ -85,6 +85,12 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' on the (?:return leg|return trip|return journey|return flight|trip back|flight back|way back)'
      r'(?= [,.;!?] |$)', ' on the way back '),
     (r' from there (?:out|over|down|up|across|on) to ', ' from there to '),
+    # "walk from the north gallery down to the south gallery": from X to Y
+    (r' (from (?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:out|over|down|up|across|along|round|'
+     r'around|back) to (?=(?:the|my|your|our) )', r' \1 to '),
+    # "then do that same walk again", "do the same run again": the route said, again
+    (r' do (?:that|the|this) (?:same |very same |exact same )?(?:walk|run|route|trip|loop|circuit|lap|round|'
+     r'journey|flight|sweep|pass|drive) (?=again )', ' do that '),
     (r'(?<= [a-z_]) if (?:that is|it is) (?:easier|closer|quicker|better|simpler)(?= [,.;!?] |$)', ''),
     # "on the way back down to the lawn", "on the way down": the way back, the way
     (r' on the way (?P<b>back )?(?:down|up|over|out) (?=to |towards |keep |stay |avoid |do |never |, )',
@@ -163,6 +169,9 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'(?:but |and )?no more(?: than that| and no less| , no less)?(?= [,.;!?]|$| $)', r' exactly \1'),
     (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
      r'(?:at|in|inside|around|over) ', ' visit '),
+    # "there's a drum under the trailer, go have a look": go to the thing just named
+    (r' go (?:and )?(?:have|take) a (?:quick |good |close )?(?:look|peek|peep|glance|gander)(?: at it)?'
+     r'(?= [,.;!?] |$)', ' go to it '),
     (r' (?:pay|make) a (?:quick )?(?:visit|trip) to ', ' visit '),
     (r' (?:check|see|find out|look|make sure|verify|confirm) (?:whether|if) ', ' check '),
     (r' (?:check|see|look) that ', ' check '),
@@ -235,6 +244,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:with|at) '
      r'(?=(?:the|a|an|my|your|our) )', r'\1 finally go to '),
     (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
+    (r' (?:go|come) and (?:wait|stand|sit|park) (?:by|near|next to|beside) (?=(?:the|a|my|your|our) )',
+     ' go to '),   # "go and stand by the old Fergie"
     (r'(?<! the)(?<! a)(?<! my)(?<! your)(?<! our)(?<! car) (?:wait|stand|sit|park) '
      r'(?:by|near|next to|beside) '
      r'(?=(?:the|a|my|your|our) )', lambda m: m.group(0) if _named_stand(m) else ' go to '),

@@ -14,7 +14,8 @@ import unicodedata
 # Chat spellings and typos seen in instructions to robots; whole-word replacements.
 TYPOS: dict[str, str] = {
     'teh': 'the', 'hte': 'the', 'u': 'you', 'ur': 'you are', 'n': 'and', 'atleast': 'at least',
-    'dont': 'do not', 'youre': 'you are', 'actualy': 'actually', 'acutally': 'actually',
+    'dont': 'do not', 'yerself': 'yourself', 'youre': 'you are', 'actualy': 'actually',
+    'acutally': 'actually',
     'thrid': 'third', 'undr': 'under', 'vist': 'visit', 'pls': 'please', 'plz': 'please',
     'kitchn': 'kitchen', 'dishwsher': 'dishwasher', 'litterbox': 'litter box', 'doesnt': 'does not',
     'cant': 'cannot', 'wont': 'will not', 'im': 'i am', 'ive': 'i have', 'youve': 'you have',

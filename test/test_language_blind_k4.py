@@ -118,6 +118,26 @@ BLIND_ROUND_K4 = [
     # "there's X ..., go have a look": go to X
     ("There's a drum under the trailer behind the shed, go have a look.",
      'F near[drum::isbelow(trailer::isbehind(shed))]'),
+    # counts said again: "twice, and only twice" is exactly twice; "the once" is once
+    ('I need you at the silage clamp behind the cubicle shed twice, and only twice.',
+     '!near[silage_clamp::isbehind(cubicle_shed)] U (near[silage_clamp::isbehind(cubicle_shed)] & '
+     '(near[silage_clamp::isbehind(cubicle_shed)] U (!near[silage_clamp::isbehind(cubicle_shed)] & '
+     '(!near[silage_clamp::isbehind(cubicle_shed)] U (near[silage_clamp::isbehind(cubicle_shed)] & '
+     '(near[silage_clamp::isbehind(cubicle_shed)] W G !near[silage_clamp::isbehind(cubicle_shed)]))))))'),
+    ('Take the hay net to the pony paddock, and only go in the pony paddock the once, she kicks.',
+     'F (near[hay_net] & F (pick[hay_net] & F (near[pony_paddock] & F release[hay_net, pony_paddock]))) & '
+     '(!near[pony_paddock] W (near[pony_paddock] & (near[pony_paddock] W G !near[pony_paddock])))'),
+    # "land either at X or Y": at either X or Y
+    ('Drone, land either at the second floor landing or the third floor landing.',
+     'F near[second_floor_landing] | F near[third_floor_landing]'),
+    # "..., mind, that's how we lost the last one": a story of the person's ("the last one" is no order);
+    # "for the agronomist" says who it is for
+    ("Drone, there's a sample bag sat on the post by the gate - pick it up and drop it in the yard for the "
+     "agronomist. Don't fly anywhere near the pylons while you've got it, mind, that's how we lost the last "
+     'one.',
+     'F (near[sample_bag::isabove(post::isnextto(gate))] & '
+     'F (pick[sample_bag::isabove(post::isnextto(gate))] & '
+     '(!near[pylons] U (near[yard] & F release[sample_bag::isabove(post::isnextto(gate)), yard]))))'),
 ]
 
 
@@ -135,6 +155,8 @@ REFUSED_K4 = [
     "Go to the gift shop or the café, whichever, and don't get near the stained glass panel until you've got "
     'to one of them.',
     "Go to the shop and the cafe, and don't get near the panel until you've been to either of them.",
+    # "last" that is an order, not "the last one" of a story
+    'Go to the shed, that is why we visit it last.',
 ]
 
 

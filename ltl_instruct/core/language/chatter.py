@@ -606,6 +606,7 @@ gardener chef waiter owner tenant landlord friend friends people someone somebod
 guard caretaker porter receptionist volunteers animals pigeon pigeons cat dog dogs birds lifeguard trainer
 carer guest customer technician electrician plumber vet housekeeper contractor contractors crew
 grandchildren grandchild grandkids grandkid grandson granddaughter grandsons granddaughters nephew niece
+agronomist farmer farmhand shepherd stockman herdsman conservator attendant docent
 '''.split())
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
@@ -939,8 +940,9 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
             notes.append(f'left out "{" ".join(tokens[i:i + hit])}" (asks for nothing)')
             i += hit
             if out and out[-1] == ',' and i < n and tokens[i] == ',':
-                if not aside or i + 1 < n and tokens[i + 1] not in DETERMINERS and not is_name_word(
-                        tokens, i + 1, False):
+                if not aside or i + 1 < n and tokens[i + 1] not in DETERMINERS and \
+                        tokens[i + 1] not in STATEMENT_SUBJECTS and not is_name_word(tokens, i + 1, False):
+                    # (", mind, that's how we lost the last one": the comma stays before a new clause)
                     out.pop()   # "don't, under any circumstances, enter": no commas are left
                 i += 1   # (but "the bureau, definitely, Lily has been ...": one stays between two parts)
             continue

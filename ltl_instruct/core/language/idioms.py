@@ -345,6 +345,11 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?P<p>(?:behind|under|beside|next to|near|by|in front of|underneath) (?:the|my|our) {_W}(?:'
          rf' {_W}){{0,3}}?) '
          r'somewhere\b', r'\g<p>'),
+    Rule('land either at the second floor landing or the third floor landing: at either',
+         r'\b(?P<v>go|land|fly|head|drive|walk|wait|park|stop|hover|set down) either '
+         r'(?P<p>at|to|in|on|by|over) '
+         r'(?=(?:the|my|our|your) [^,.;!?]* or (?:at |to |in |on |by |over )?(?:the|my|our|your) )',
+         r'\g<v> \g<p> either '),
     Rule('I want you up at the grain store, but ...: go there',
          r'^(?:i|we) (?:want|need|would like) you (?:up |down |over |out |back )?(?:at|in|by) '
          r'(?=(?:the|my|our) [^,.;!?]* , (?:but |and )?(?:stop|call|pop|drop|swing|visit|check|look) )',

@@ -405,6 +405,13 @@ _LEFT_DETS = frozenset({'my', 'our', 'your', 'a', 'the'})
 _LEAD_WORDS = frozenset({'okay', 'so', 'right', 'alright', 'well', 'now', 'um', 'uh', 'er', 'erm'})
 
 
+def _without_last_one(tokens: list[str]) -> list[str]:
+    """Words without "the last one" / "last time" of a story ("that's how we lost the last one")."""
+    return [t for k, t in enumerate(tokens) if not (t == 'last' and tokens[k + 1:k + 2] in (
+        ['one'], ['time'], ['week'], ['year'], ['month'], ['night'], ['summer'], ['winter']) and (
+            k > 0 and tokens[k - 1] == 'the' or tokens[k + 1] != 'one'))]
+
+
 _MY_TIME_VERBS = frozenset({'am', 'are', 'get', 'have', 'finish', 'come'})
 
 
@@ -655,9 +662,11 @@ class _Reader:
                 not _rule_in(tail) and \
                 not chatter.carries_constraint(tail[wish + 2:]):   # (the "if" of "know if" is no rule)
             return self._noted_cut(sentence, cut)   # "..., I want to know if the gardener has trimmed it"
-        if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when']) and \
+        if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when'],
+                        ['that', 'is', 'how'], ['that', 'is', 'why']) and \
                 tail[3:4] and tail[3] in ('i', 'we', 'she', 'he', 'they') and not _rule_in(tail) and \
-                not chatter.carries_constraint(tail):
+                not chatter.carries_constraint(_without_last_one(tail)):
+            # "..., that's how we lost the last one": "the last one" before is no order
             return self._noted_cut(sentence, cut)   # "..., that's where I keep the old photo albums"
         if tail == ['you', 'know', 'why'] or len(tail) > 3 and chatter.is_remark(tail):
             return self._noted_cut(sentence, cut)   # "..., I'll be there in a minute with the shirts"

@@ -167,6 +167,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r'(?<!exactly) ((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|thrice) '
      r'(?:, )?'
      r'(?:but |and )?no more(?: than that| and no less| , no less)?(?= [,.;!?]|$| $)', r' exactly \1'),
+    # "twice, and only twice", "once and once only": exactly that many
+    (r'(?<!exactly) ((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|thrice) '
+     r'(?:, )?(?:and |but )?(?:only \1|\1 only)(?= [,.;!?]|$| $)', r' exactly \1'),
+    # "only go in the paddock the once": once
+    (r' the once(?= [,.;!?] |$| $)', ' once'),
     (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
      r'(?:at|in|inside|around|over) ', ' visit '),
     # "there's a drum under the trailer, go have a look": go to the thing just named

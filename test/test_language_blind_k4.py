@@ -138,6 +138,24 @@ BLIND_ROUND_K4 = [
      'F (near[sample_bag::isabove(post::isnextto(gate))] & '
      'F (pick[sample_bag::isabove(post::isnextto(gate))] & '
      '(!near[pylons] U (near[yard] & F release[sample_bag::isabove(post::isnextto(gate)), yard]))))'),
+    # "No hang on, it's the trough behind the gate I want": the correction said as a cleft (the trough
+    # left of the gate was kept, silently)
+    ("Go to the trough left of the gate. No hang on, it's the trough behind the gate I want.",
+     'F near[trough::isbehind(gate)]'),
+    ("Go to the shed. Actually it's the barn we need.",
+     'F near[barn]'),
+    # "anywhere" after the thing avoided is no part of its name
+    ("Check gallery 7, then gallery 8, and don't go near the glass harp anywhere along the way.",
+     'F (near[gallery_7] & F near[gallery_8]) & G !near[glass_harp]'),
+    # "X has to come last; the other two in any order": said already of goals given in any order
+    ('Visit the map room, the globe gallery and the observatory deck. The observatory deck has to come last; '
+     'the other two in any order.',
+     'F near[map_room] & F near[globe_gallery] & F near[observatory_deck] & '
+     '(!near[observatory_deck] U near[map_room]) & (!near[observatory_deck] U near[globe_gallery])'),
+    # "before you go anywhere near X you need Y": not near X until Y is picked up
+    ('Before you go anywhere near the vault you need the spare keycard - pick it up, then go to the vault.',
+     'F (near[spare_keycard] & F (pick[spare_keycard] & F near[vault])) & '
+     '(!near[vault] U pick[spare_keycard])'),
 ]
 
 
@@ -157,6 +175,9 @@ REFUSED_K4 = [
     "Go to the shop and the cafe, and don't get near the panel until you've been to either of them.",
     # "last" that is an order, not "the last one" of a story
     'Go to the shed, that is why we visit it last.',
+    # the others in any order where the goals were given in an order: not said already
+    'Visit the map room, then the globe gallery, then the observatory deck. The observatory deck has to come '
+    'last; the other two in any order.',
 ]
 
 

@@ -345,6 +345,13 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?P<p>(?:behind|under|beside|next to|near|by|in front of|underneath) (?:the|my|our) {_W}(?:'
          rf' {_W}){{0,3}}?) '
          r'somewhere\b', r'\g<p>'),
+    Rule('before you go anywhere near the vault you need the spare keycard: not until it is picked up',
+         r'^(?:but |and |so )?before you (?:go|get|head) (?:anywhere )?(?:near|into|in|to) '
+         r'(?P<x>(?:the|my|our) [^,.;!?]+?) (?:,? )?you (?:need|will need|must have|need to have|'
+         r'have to have|'
+         r'need to get|must get|have to get|should get) (?P<y>(?:the|my|our|a|an) [^,.;!?]+?)'
+         r'(?: , (?:so )?(?:pick|grab|get|collect|fetch) (?:it|them) up)?(?= [,.;!?]|$)',
+         r'do not go near \g<x> until you have picked up \g<y>'),
     Rule('land either at the second floor landing or the third floor landing: at either',
          r'\b(?P<v>go|land|fly|head|drive|walk|wait|park|stop|hover|set down) either '
          r'(?P<p>at|to|in|on|by|over) '

@@ -412,11 +412,15 @@ def _without_last_one(tokens: list[str]) -> list[str]:
             k > 0 and tokens[k - 1] == 'the' or tokens[k + 1] != 'one'))]
 
 
+_OTHERS_ANY_ORDER = re.compile(
+    r'^(?:and |but )?(?:the other (?:two|three|four|ones)|the others|the rest|'
+    r'the remaining (?:two|three|ones))'
+    r'(?: (?:can|may) (?:be|go|come)(?: visited| done)?)? in any order$')
 _MY_TIME_VERBS = frozenset({'am', 'are', 'get', 'have', 'finish', 'come'})
 
 
 def _without_my_time(tokens: list[str]) -> list[str]:
-    """Return a purpose without the person's own time ("so I can find you | when I'm done with the ewes")."""
+    """Return a purpose without the person's time ("so I can find you | when I'm done with the ewes")."""
     k = next((k for k in range(1, len(tokens) - 2) if tokens[k] in ('when', 'once', 'after') and
               tokens[k + 1] in ('i', 'we') and tokens[k + 2] in _MY_TIME_VERBS), -1)
     return tokens if k < 0 or _rule_in(tokens[k:]) or tokens[0] not in ('i', 'we', 'that') else tokens[:k]
@@ -605,6 +609,9 @@ class _Reader:
         self.last_until: Optional[tuple[Formula, list[Descriptor], list[Descriptor]]] = None
         # the places of the last "don't go to X until Y" (X, Y): "..., then go to it" is X
         self.held_until: Optional[tuple[list[Descriptor], Descriptor]] = None
+        # "X has to come last" read over goals given as one unordered step: "the other two in any order"
+        # after it says that again
+        self.others_unordered = False
 
     # ----------------------------------------------------------------- structure
     def _drop_trailing_reason(self, sentence: list[str]) -> list[str]:
@@ -791,6 +798,12 @@ class _Reader:
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
                 self.notes.append(f'left out "{" ".join(sentence)}" (says who wants you, asks for nothing)')
                 continue
+            if self.others_unordered and _OTHERS_ANY_ORDER.match(' '.join(
+                    t for t in sentence if t not in PUNCT)):
+                # "The deck has to come last; the other two in any order.": said already
+                self.notes.append(f'"{" ".join(sentence)}": the other goals are in any order already')
+                continue
+            self.others_unordered = False
             self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
@@ -2393,7 +2406,7 @@ class _Reader:
                 scope = _Scope('after', NounPhrase((last.dests or last.targets)[0], 0, 0, ''))
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
-                    'anymore', 'costs', 'instant', 'moment')
+                    'anymore', 'costs', 'instant', 'moment', 'anywhere')
         g0, g1 = orders.find_phrase(rest, GLOBAL_MARKERS)
         while g0 >= 0:   # "no matter which", "either way", "in any case"
             rest = rest[:g0] + rest[g1:]
@@ -2749,6 +2762,10 @@ class _Reader:
             else:
                 self.task.constraints.append(Until(Not(_near(d)), _near(x)))
         self.notes.append(f'{x}: {rest[0]} of the goals')
+        together = [{d for st in self.task._all_steps()
+                     if st in (step, *(c for ch in top.chains for c in ch)) for d in st.targets}
+                    for top in self.task.chain if top.kind == 'all'] + [set(step.targets)]
+        self.others_unordered = any(x in ds and all(d in ds for d in others) for ds in together)
         return True
 
     def _read_passive_avoid(self, tokens: list[str]) -> bool:

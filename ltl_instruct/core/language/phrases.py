@@ -246,8 +246,8 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return (have_name or after_det) and nxt not in ('you', 'i', 'we', 'go', 'be', 'not', 'wait', 'come',
                                                         'stay', 'do', 'have', 'get', 'see', 'hold', 'only',
                                                         'also', 'still', 'always', 'never', 'just')
-    if w in ('once', 'twice', 'thrice'):
-        return False
+    if w in ('once', 'twice', 'thrice') or have_name and w in ('anywhere', 'everywhere', 'nowhere'):
+        return False   # ("the glass harp anywhere along the way": "anywhere" ends the name)
     if w in ('comes', 'goes') and have_name and nxt in ('first', 'last', 'next', 'second', 'third', 'before',
                                                         'after', 'later', 'earlier', 'at', 'in', 'into',
                                                         'only'):

@@ -911,6 +911,10 @@ _THING_PART = re.compile(r'\b(?P<v>forget|ignore|scratch|scrap|drop|skip)(?: abo
 # "forget what I said about the roses": forget the roses
 _SAID_ABOUT = re.compile(r'\b(forget|ignore|scratch|disregard) (?:what i said|what i told you|'
                          r'everything i said|the bit|the part|the stuff) about\b')
+# "it's the trough behind the gate I want": the trough behind the gate (the goal, said at length)
+_CLEFT_GOAL = re.compile(
+    r'\b(?:it is|it s|its) (?P<x>(?:the|my|your|our) [a-z0-9_ ]*?[a-z0-9_]+) (?:that |which )?(?:i|we) '
+    r'(?:want|need|meant|mean|wanted|needed|am after|was after|were after|are after)(?= [,.;!?]|$)')
 _MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
 _NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
 # "better you start from the printer and finish with the copier": the route, said plainly
@@ -937,6 +941,7 @@ def _uncleft(tokens: list[str]) -> list[str]:
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
+    new = _CLEFT_GOAL.sub(lambda m: m.group('x'), new)
     new = _START_FINISH.sub(lambda m: f'go to {m.group("a")} then {m.group("b")}', new)
     # "swap the shed for the patio": the patio instead of the shed
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)

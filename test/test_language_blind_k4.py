@@ -156,6 +156,14 @@ BLIND_ROUND_K4 = [
     ('Before you go anywhere near the vault you need the spare keycard - pick it up, then go to the vault.',
      'F (near[spare_keycard] & F (pick[spare_keycard] & F near[vault])) & '
      '(!near[vault] U pick[spare_keycard])'),
+    # "the Hall of Kings", "the hall of mirrors": a name said with "of" and a bare plural stays as said
+    # (it was kings_hall); "the office of supervisor" is still supervisor_office
+    ('Bring the first aid kit or the defibrillator to the Hall of Kings, whichever you reach first.',
+     'F (near[first_aid_kit] & F (pick[first_aid_kit] & F (near[hall_of_kings] & F release[first_aid_kit, '
+     'hall_of_kings]))) | F (near[defibrillator] & F (pick[defibrillator] & F (near[hall_of_kings] & F '
+     'release[defibrillator, hall_of_kings])))'),
+    ('Go to the hall of mirrors, then the office of supervisor.',
+     'F (near[hall_of_mirrors] & F near[supervisor_office])'),
 ]
 
 

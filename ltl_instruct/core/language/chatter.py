@@ -144,6 +144,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('in', 'a', 'minute'), ('straight', 'away'), ('under', 'any', 'circumstances'), ('whatever', 'happens'),
     ('first', 'thing'), ('first', 'thing', 'tomorrow'), ('first', 'thing', 'in', 'the', 'morning'),
     ('tomorrow',), ('tomorrow', 'morning'), ('tomorrow', 'evening'), ('already',), ('anyway',), ('pronto',),
+    ('sharpish',), ('smartish',), ('quick', 'smart'), ('double', 'quick'), ('chop', 'chop'),
+    ('on', 'the', 'double'),
     ('and', 'stuff'), ('or', 'something'), ('or', 'whatever'), ('if', 'that', 'is', 'ok'),
     ('if', 'that', 'is', 'okay'), ('if', 'that', 'is', 'alright'), ('if', 'that', 'is', 'fine'),
     ('if', 'you', 'would', 'be', 'so', 'kind'), ('if', 'it', 'is', 'not', 'too', 'much', 'trouble'),
@@ -388,6 +390,15 @@ def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
     while rest and rest[0] in PUNCT:
         rest = rest[1:]
     k = next((k for k in range(len(rest) - 1) if rest[k] in _BRING_ME and rest[k + 1] == 'me'), -1)
+    if k < 0:
+        # "bring the big hammer to me, I'm at the bull pen": "to me" is the place said
+        v = next((v for v in range(len(rest)) if rest[v] in _BRING_ME), -1)
+        m = next((m for m in range(v + 2, len(rest) - 1) if rest[m:m + 2] == ['to', 'me'] and (
+            m + 2 == len(rest) or rest[m + 2] in PUNCT)), -1) if v >= 0 else -1
+        if m < 0 or any(t in '.;!?' for t in rest[v:m]):
+            return tokens
+        notes.append(f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are')
+        return rest[:m + 1] + place + rest[m + 2:]
     end = next((e for e in range(k + 2, len(rest)) if rest[e] in '.;!?' or rest[e] == ',' and (
         e + 1 >= len(rest) or rest[e + 1] in ('then', 'and', 'but', 'after'))), len(rest))
     if k < 0 or any(t in ('to', 'into', 'onto') for t in rest[k + 2:end]):
@@ -438,6 +449,9 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
 
 # Words before a form of address that make it one phrase ("little drone", "my dear", "good robot").
 _ADDRESS_ADJECTIVES = frozenset({'little', 'my', 'good', 'clever', 'dear', 'old', 'silly', 'sweet', 'young'})
+# Words that may lead into a form of address at the start of a sentence ("okay little drone, ...").
+_ADDRESS_LEADS = frozenset({'okay', 'ok', 'alright', 'right', 'now', 'so', 'well', 'hey', 'hi', 'hello',
+                            'oi'})
 # Exclamations about oneself, set off by commas ("oh, no, silly me, I meant ..."): they ask for nothing.
 _SELF_EXCLAIMS: tuple[tuple[str, ...], ...] = (
     ('dear', 'oh', 'dear'), ('oh', 'my', 'goodness'), ('silly', 'me'), ('dear', 'me'), ('oh', 'dear'),
@@ -460,7 +474,7 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
     n = len(tokens)
     while k < n:
         before = out[-1] if out else '.'
-        if before in PUNCT:
+        if before in PUNCT or before in _ADDRESS_LEADS and (len(out) == 1 or out[-2] in PUNCT):
             m = next((len(p) for p in _SELF_EXCLAIMS if tuple(tokens[k:k + len(p)]) == p), 0)
             if not m and tokens[k] in VOCATIVES:
                 m = 1
@@ -615,6 +629,7 @@ gardener chef waiter owner tenant landlord friend friends people someone somebod
 guard caretaker porter receptionist volunteers animals pigeon pigeons cat dog dogs birds lifeguard trainer
 carer guest customer technician electrician plumber vet housekeeper contractor contractors crew
 grandchildren grandchild grandkids grandkid grandson granddaughter grandsons granddaughters nephew niece
+agronomist farmer farmhand shepherd stockman herdsman conservator attendant docent
 '''.split())
 # People named without an article at the start of a statement ("customers keep asking ...").
 _BARE_PEOPLE = frozenset({'customers', 'people', 'visitors', 'kids', 'children', 'staff', 'guests',
@@ -1014,8 +1029,9 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
             notes.append(f'left out "{" ".join(tokens[i:i + hit])}" (asks for nothing)')
             i += hit
             if out and out[-1] == ',' and i < n and tokens[i] == ',':
-                if not aside or i + 1 < n and tokens[i + 1] not in DETERMINERS and not is_name_word(
-                        tokens, i + 1, False):
+                if not aside or i + 1 < n and tokens[i + 1] not in DETERMINERS and \
+                        tokens[i + 1] not in STATEMENT_SUBJECTS and not is_name_word(tokens, i + 1, False):
+                    # (", mind, that's how we lost the last one": the comma stays before a new clause)
                     out.pop()   # "don't, under any circumstances, enter": no commas are left
                 i += 1   # (but "the bureau, definitely, Lily has been ...": one stays between two parts)
             continue
@@ -1075,6 +1091,14 @@ _REMARK_RE = re.compile(
     r'(?: (?:in a (?:minute|moment|second|sec|bit|few minutes|jiffy)|shortly|soon|in five|in ten|later|'
     r'in (?:a couple of|two|three|five|ten|fifteen|twenty|thirty|\d+) (?:minutes|mins|seconds|secs)))?'
     r'(?: with (?:the|my|your|some) [a-z ]+)?'
+    # "I'll meet you there with the quad": the speaker comes to where the robot goes (no place of its own)
+    r'|(?:and )?i (?:will|ll|shall) (?:meet|see|join|find|catch up with) you '
+    r'(?:there|here|in a bit|shortly|soon)'
+    r'(?: (?:in a (?:minute|moment|second|sec|bit|few minutes|jiffy)|shortly|soon|later))?'
+    r'(?: with (?:the|my|your|some) [a-z ]+)?'
+    # "..., I want you on hand": be there, ready (where the request sends the robot)
+    r'|(?:i|we) (?:want|need|would like|will want|will need) you (?:to be )?(?:on hand|handy|nearby|close by|'
+    r'around|about|on standby|standing by|ready)(?: (?:just )?in case| for (?:it|her|him|them|that))?'
     r'|i (?:only |just )?need (?:one|one of them|either|either of them|one of the two) '
     r'(?:looked at|checked|done|visited|seen)'
     r'|(?:be )?careful(?: (?:now|please|with it|with them|though))?'
@@ -1086,6 +1110,7 @@ _REMARK_RE = re.compile(
 
 
 _REMARK_STARTS = frozenset({'either', 'whichever', 'i', 'any', 'both', 'no', 'it', 'does', 'do', 'your',
+                            'and',
                             'up', 'what', 'whatever', 'which', 'you', 'not', 'that', 'for'})
 
 

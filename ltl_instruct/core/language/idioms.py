@@ -49,6 +49,11 @@ _GO = (r'(?:visit|go to|reach|enter|pass through|go through|move to|travel to|na
        r'make your way to|head to|find|come to|walk to|fly to|drive to)')
 # a thing named by up to four words, and the words that place one thing by another
 _THING = r'(?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
+# a word of a rule before a list ("avoid the hall, the den, then ..."): the list is no route
+_RULE_BEFORE = re.compile(r'\b(?:avoid|away|clear|never|not|off|out|except|skip|without|until|before|after|'
+                          r'either|or)\b')
+# a name with a number and no article ("gallery 3")
+_LABELLED = r'[a-z]+ \d+'
 _WHERE = (r'(?:on top of|on|under|underneath|beneath|behind|in front of|next to|beside|by|near|left of|'
           r'right of|to the left of|to the right of|above|below|inside|between)')
 # words that tell two things of one kind apart ("the east or the west stairs")
@@ -342,11 +347,27 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?P<p>(?:behind|under|beside|next to|near|by|in front of|underneath) (?:the|my|our) {_W}(?:'
          rf' {_W}){{0,3}}?) '
          r'somewhere\b', r'\g<p>'),
+    Rule('before you go anywhere near the vault you need the spare keycard: not until it is picked up',
+         r'^(?:but |and |so )?before you (?:go|get|head) (?:anywhere )?(?:near|into|in|to) '
+         r'(?P<x>(?:the|my|our) [^,.;!?]+?) (?:,? )?you (?:need|will need|must have|need to have|'
+         r'have to have|'
+         r'need to get|must get|have to get|should get) (?P<y>(?:the|my|our|a|an) [^,.;!?]+?)'
+         r'(?: , (?:so )?(?:pick|grab|get|collect|fetch) (?:it|them) up)?(?= [,.;!?]|$)',
+         r'do not go near \g<x> until you have picked up \g<y>'),
+    Rule('land either at the second floor landing or the third floor landing: at either',
+         r'\b(?P<v>go|land|fly|head|drive|walk|wait|park|stop|hover|set down) either '
+         r'(?P<p>at|to|in|on|by|over) '
+         r'(?=(?:the|my|our|your) [^,.;!?]* or (?:at |to |in |on |by |over )?(?:the|my|our|your) )',
+         r'\g<v> \g<p> either '),
+    Rule('I want you up at the grain store, but ...: go there',
+         r'^(?:i|we) (?:want|need|would like) you (?:up |down |over |out |back )?(?:at|in|by) '
+         r'(?=(?:the|my|our) [^,.;!?]* , (?:but |and )?(?:stop|call|pop|drop|swing|visit|check|look) )',
+         'go to '),
     Rule('go to the front gate, but call in at reception on the way',
          rf'^(?P<a>(?:go|head|drive|fly|walk|get) (?:over |down |up )?to (?:the |my |our )?{_NP}) , (?:but '
          rf'|and )?'
-         r'(?:visit|stop by|stop at|call in at|call at|pop into|pop in at|drop by|drop in at|swing by|check'
-         r'|look in at) '
+         r'(?:visit|stop by|stop at|stop in at|stop off at|call in at|call at|call by|pop into|pop in at|'
+         r'pop by|drop by|drop in at|swing by|check|look in at) '
          rf'(?P<y>(?:the |my |our )?{_NP}) (?:on the way|on your way|en route|along the way)(?: there)?$',
          r'visit \g<y> , then \g<a>'),
     Rule('bring its charger over there as well',
@@ -408,6 +429,9 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<y>(?:the|my|our) {_NP})', r'go to \g<x> \g<r> \g<y>'),
     Rule('stay out of the way of the stairwell door',
          r'\b(?P<v>stay|keep) out of the way of\b', r'\g<v> away from'),
+    Rule('keep out of the calf shed until you have been to the wash bay, then go on in',
+         r'(?:(?<=\bthen )|(?<=\band ))(?:go|head|walk|move) (?:on )?(?:in|inside|in there)(?= [,.;!?]|$)',
+         'go to it'),
     Rule('go stand right next to it',
          r'\bright (?=next to|behind|in front of|beside|by|under|outside|inside)', ''),
     Rule('only head to the garage once the dock is done',
@@ -980,6 +1004,10 @@ RULES: tuple[Rule, ...] = (
          r'\b(?P<r>does not matter which(?: one)?) (?=but |and |so )', r'\g<r> , '),
     Rule('go to the shed but whatever you do keep away from the fence',
          r'(?<=[a-z])(?: ,)? (?:but|and|so) whatever (?:else )?you do(?: ,)? ', ' , whatever you do , '),
+    Rule('only go to the top field once you have done the drill',
+         r'\b(?P<w>once|when|after|until|till) you have (?:done|finished|checked|sorted) '
+         r'(?=(?:the|my|our|your) )',
+         r'\g<w> you have visited '),
     Rule('then when you are done there, the greenhouse',
          r'\b(?:and )?(?:then )?(?:when|once) (?:you are|you have been|you have) (?:done|finished)'
          r'(?: there| with that| with it| here)?\b', 'then'),
@@ -1392,6 +1420,11 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<a>(?:the|my|your|our) {_THING}) , (?P<b>(?:the|my|your|our) {_THING})(?: ,)? and then '
          rf'(?=(?:the|my|your|our|go|come|head|back|return|visit|check|finally)\b)',
          r'\g<a> , then \g<b> , and then '),
+    Rule('gallery 3, gallery 4, then the print room: one after the other',
+         rf'(?P<a>(?:(?:(?:the|my|your|our) {_THING}|{_LABELLED}) , )+)'
+         rf'(?=(?:(?:the|my|your|our) {_THING}|{_LABELLED}) , then (?:(?:the|my|your|our) |{_LABELLED}\b))',
+         lambda m: m.group('a') if _RULE_BEFORE.search(m.string, 0, m.start()) else
+         m.group('a').replace(' , ', ' , then ')),
     Rule('throw it out: away', r'\b(?P<v>throw|toss|chuck) (?P<o>it|them) (?:out|away)\b',
          r'\g<v> away \g<o>'),
     Rule('i need the tape measure and the hammer in the garage: bring them there',

@@ -204,7 +204,7 @@ class OfflineTranslator:
         tokens = join_compounds(expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes))))
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
-        tokens = _correct_spelling(tokens, notes, self.landmarks)
+        tokens = _correct_spelling(tokens, notes, self.landmarks, _proper_names(instruction))
         tokens = chatter.strip_addresses(tokens, notes)   # before lists and corrections ("no, sorry, dear")
         tokens = chatter.strip_headings(tokens, notes) if ':' in tokens else tokens
         tokens = paraphrase(chatter.strip_frames(chatter.strip_courtesy(tokens, notes, bool(self.landmarks)),
@@ -302,6 +302,13 @@ _STATEMENT_VERBS = chatter.FINITE_VERBS | frozenset({
     'hates', 'loves', 'likes', 'says', 'thinks', 'worries'})
 
 
+# Verbs after "you'll" that say what the robot would do, not what may happen to it ("you'll find it there").
+_NOT_CONSEQUENCES = frozenset({'need', 'have', 'want', 'find', 'see', 'meet', 'pass', 'reach', 'come', 'go',
+                               'visit', 'arrive', 'then', 'also', 'just', 'only', 'do', 'start', 'finish'})
+# What may happen, after "you'll be" / "you'll get": "mucky", "your wheels stuck", "stuck in it".
+_CONSEQUENCE_MODALS = frozenset({'will', 'would', 'could', 'might', 'may'})
+
+
 # Words after "and", "but", "so" that end a reason and start a command ("because it's wet and avoid X").
 _REASON_ENDS = frozenset({'go', 'avoid', 'stay', 'keep', 'never', 'do', 'then', 'visit', 'head', 'bring',
                           'take', 'put', 'only', 'after', 'once', 'come', 'fly', 'land', 'get', 'grab',
@@ -333,6 +340,10 @@ _NOT_GOING = frozenset({'go', 'going', 'gone', 'went', 'enter', 'entering', 'ent
                         'disturbed', 'crossed', 'cross', 'crossing', 'touched', 'touch', 'allowed'})
 
 
+# "I've only just planted them", "they were only reinstalled": "only" after an auxiliary says lately
+_AUXILIARIES = frozenset({'is', 'are', 'was', 'were', 'has', 'have', 'had', 'been', 've', 's', 'd'})
+
+
 def _reason_holds_rule(tail: Sequence[str]) -> bool:
     """Whether words said as a reason hold a rule, a command or a word about the robot: never left out.
 
@@ -341,7 +352,7 @@ def _reason_holds_rule(tail: Sequence[str]) -> bool:
     husband hates the robot in the study".
     """
     return any(w in chatter.PLACE_RULE_WORDS and (w != 'not' or _NOT_GOING & set(tail[k + 1:])) and
-               tail[k:k + 2] != ['only', 'just']   # "I've only just planted them": lately, no rule
+               not (w == 'only' and (tail[k + 1:k + 2] == ['just'] or k > 0 and tail[k - 1] in _AUXILIARIES))
                for k, w in enumerate(tail)) or any(w.startswith('avoid') for w in tail) or \
         bool(_ROBOT_WORDS & set(tail)) or _command_after_reason(tail) >= 0 or any(
             t in ('keep', 'stay', 'keeping', 'staying') for t in tail) and chatter.carries_constraint(
@@ -370,20 +381,26 @@ _NOT_STATES = frozenset({'it', 'them', 'there', 'here', 'back', 'to', 'him', 'he
 
 
 def _is_consequence(tail: Sequence[str]) -> bool:
-    """Whether a part warns what will happen ("you'll wake him", "or you might get soaked")."""
+    """Whether a part warns what would happen ("you'll wake him", "or you might get soaked", "you'll sink").
+
+    Only "(or) you will / would / could / might ..." with no rule, order or count word and no place to
+    go ("you'll find it by the door", "you'll get the bottle"); after "be" or "get", no thing named
+    with an article ("you'll be mucky", "you'll get your wheels stuck").
+    """
     k = 1 if tail[:1] in (['or'], ['otherwise']) else 0
-    if tail[k:k + 1] != ['you'] or \
-            tail[k + 1:k + 2] not in (['will'], ['would'], ['might'], ['could'], ['may']):
+    if tail[k:k + 1] != ['you'] or tail[k + 1:k + 2] == [] or tail[k + 1] not in _CONSEQUENCE_MODALS:
         return False
     k += 2
     while tail[k:k + 1] in (['only'], ['just'], ['probably'], ['definitely'], ['totally'], ['surely']):
         k += 1
-    if k >= len(tail) or tail[k] not in _CONSEQUENCES or _rule_in(tail[k:]) or \
-            chatter.carries_constraint(tail[k:]):
+    if k >= len(tail) or tail[k] in _NOT_CONSEQUENCES or _rule_in(tail[k:]) or \
+            chatter.carries_constraint(tail[k:]) or chatter.has_constraint_word(tail[k:]):
         return False
-    # "you'll get soaked", not "you'll get the bottle"
-    return tail[k] != 'get' or k + 1 < len(tail) and tail[k + 1] not in DETS and \
-        tail[k + 1] not in _NOT_STATES
+    verb, rest = tail[k], tail[k + 1:]
+    if verb in ('be', 'get'):
+        return bool(rest) and rest[0] not in _PLACE_PREPS and rest[0] not in _NOT_STATES and not any(
+            t in DETS and t != 'your' for t in rest)
+    return verb in _CONSEQUENCES or verb not in _COMMANDS
 
 
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
@@ -470,6 +487,27 @@ _LEFT_DETS = frozenset({'my', 'our', 'your', 'a', 'the'})
 _LEAD_WORDS = frozenset({'okay', 'so', 'right', 'alright', 'well', 'now', 'um', 'uh', 'er', 'erm'})
 
 
+def _without_last_one(tokens: list[str]) -> list[str]:
+    """Words without "the last one" / "last time" of a story ("that's how we lost the last one")."""
+    return [t for k, t in enumerate(tokens) if not (t == 'last' and tokens[k + 1:k + 2] in (
+        ['one'], ['time'], ['week'], ['year'], ['month'], ['night'], ['summer'], ['winter']) and (
+            k > 0 and tokens[k - 1] == 'the' or tokens[k + 1] != 'one'))]
+
+
+_OTHERS_ANY_ORDER = re.compile(
+    r'^(?:and |but )?(?:the other (?:two|three|four|ones)|the others|the rest|'
+    r'the remaining (?:two|three|ones))'
+    r'(?: (?:can|may) (?:be|go|come)(?: visited| done)?)? in any order$')
+_MY_TIME_VERBS = frozenset({'am', 'are', 'get', 'have', 'finish', 'come'})
+
+
+def _without_my_time(tokens: list[str]) -> list[str]:
+    """Return a purpose without the person's time ("so I can find you | when I'm done with the ewes")."""
+    k = next((k for k in range(1, len(tokens) - 2) if tokens[k] in ('when', 'once', 'after') and
+              tokens[k + 1] in ('i', 'we') and tokens[k + 2] in _MY_TIME_VERBS), -1)
+    return tokens if k < 0 or _rule_in(tokens[k:]) or tokens[0] not in ('i', 'we', 'that') else tokens[:k]
+
+
 def _without_leads(sentence: list[str]) -> list[str]:
     """Return the sentence without the words that lead into it ("okay so bread aisle first")."""
     k = 0
@@ -490,10 +528,24 @@ def _is_word(w: str, listed: bool = False) -> bool:
     return sp.known(w) or w.isdigit()
 
 
-def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str]) -> list[str]:
+# Verbs said with "there" / "here", sometimes without the space ("hoverthere", "waithere").
+_STAY_VERBS = frozenset({'wait', 'stay', 'stop', 'park', 'land', 'hover', 'sit', 'stand', 'go', 'come', 'fly',
+                         'head', 'drive', 'walk', 'move', 'get', 'remain', 'hang', 'circle'})
+_PROPER_RE = re.compile(r'(?<=[a-z,;:] )[A-Z][a-z]{3,}\b')
+
+
+def _proper_names(instruction: str) -> frozenset[str]:
+    """Words written with a capital inside a sentence ("the Monet room"): names, never typos of words."""
+    if instruction.islower():
+        return frozenset()
+    return frozenset(m.group(0).lower() for m in _PROPER_RE.finditer(instruction))
+
+
+def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str],
+                      names: frozenset[str] = frozenset()) -> list[str]:
     """Correct typing slips in words the rules do not know; each correction is noted."""
     speller = _speller()
-    known = {w for name in landmarks for w in name.replace('_', ' ').split()}
+    known = {w for name in landmarks for w in name.replace('_', ' ').split()} | names
     out = list(tokens)
     # names said in the instruction: a listed word anywhere, an unlisted one only before (the first
     # spelling of a name is taken as meant: "the jetty ... the jety")
@@ -518,11 +570,20 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
             continue
         if w in known or len(w) < 4:
             continue
+        if w.endswith('here') and w not in speller.words and w not in speller.lexicon:
+            # "and hoverthere", "waithere": a verb the rules know and "there" / "here", the space left out
+            heads = sorted((w[:-len(s)] for s in ('there', 'here') if w.endswith(s) and
+                            w[:-len(s)] in _STAY_VERBS), key=len, reverse=True)
+            if heads:
+                out[k] = f'{heads[0]} {w[len(heads[0]):]}'
+                notes.append(f'read "{w}" as "{out[k]}"')
+                continue
         fixed = speller.correct(w)
         if fixed is not None:
             out[k] = fixed
             notes.append(f'read "{w}" as "{fixed}"')
-    return out
+    return [t for w in out for t in w.split(' ')] if len(out) == len(tokens) and any(' ' in w for w in out) \
+        else out
 
 
 def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
@@ -651,6 +712,9 @@ class _Reader:
         self.last_until: Optional[tuple[Formula, list[Descriptor], list[Descriptor]]] = None
         # the places of the last "don't go to X until Y" (X, Y): "..., then go to it" is X
         self.held_until: Optional[tuple[list[Descriptor], Descriptor]] = None
+        # "X has to come last" read over goals given as one unordered step: "the other two in any order"
+        # after it says that again
+        self.others_unordered = False
 
     # What "it" / "there" point at, and how many notes there were when each was set: a part left out
     # after that which named a thing may be what a later pronoun means ("go to the kitchen, the crew
@@ -758,12 +822,17 @@ class _Reader:
         if wish and tail[0] in ('i', 'we') and (tail[wish:wish + 2] in (
                 ['know', 'if'], ['know', 'whether'], ['see', 'if'], ['see', 'whether'], ['find', 'out'],
                 ['be', 'sure'], ['be', 'certain']) or tail[wish:wish + 1] == ['know'] and
-                tail[wish + 1:wish + 2] and tail[wish + 1] in ('that', 'how')) and not _rule_in(tail) and \
+                tail[wish + 1:wish + 2] and tail[wish + 1] in ('that', 'how') or
+                # "..., I want to see if the end gun's working" ("see if" was made "check")
+                tail[wish:wish + 1] == ['check'] and {'is', 'are'} & set(tail[wish + 2:])) and \
+                not _rule_in(tail) and \
                 not chatter.carries_constraint(tail[wish + 2:]):   # (the "if" of "know if" is no rule)
             return self._noted_cut(sentence, cut)   # "..., I want to know if the gardener has trimmed it"
-        if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when']) and \
+        if tail[:3] in (['that', 'is', 'where'], ['this', 'is', 'where'], ['that', 'is', 'when'],
+                        ['that', 'is', 'how'], ['that', 'is', 'why']) and \
                 tail[3:4] and tail[3] in ('i', 'we', 'she', 'he', 'they') and not _rule_in(tail) and \
-                not chatter.carries_constraint(tail):
+                not chatter.carries_constraint(_without_last_one(tail)):
+            # "..., that's how we lost the last one": "the last one" before is no order
             return self._noted_cut(sentence, cut)   # "..., that's where I keep the old photo albums"
         if tail == ['you', 'know', 'why'] or len(tail) > 3 and chatter.is_remark(tail):
             return self._noted_cut(sentence, cut)   # "..., I'll be there in a minute with the shirts"
@@ -789,15 +858,19 @@ class _Reader:
                 tail[3] not in DETS and tail[3] not in _PLACE_PREPS and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., that glass is older than both of us"
         if _is_consequence(tail):
-            return self._noted_cut(sentence, cut)   # "..., you'll get soaked", "..., you'll wake him"
+            return self._noted_cut(sentence, cut)   # "..., you'll get soaked", "keep off it, you'll sink"
         if tail[:2] in (['or', 'you'], ['or', 'else']) and len(tail) > 3 and not _rule_in(tail[2:]) and \
                 not (tail[1] == 'you' and tail[3:4] and tail[3] in GOAL_VERBS | DELIVER_VERBS):
             # (not "..., or you could go to the den": a choice)
             return self._noted_cut(sentence, cut)   # "..., or you'll scare the finches off"
         if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
             return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
-        if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in ('it', 'them', 'today', 'now') \
-                and not _rule_in(tail):
+        if tail[:2] in (['there', 'is'], ['there', 'are']) and (
+                tail[-1] in ('it', 'them', 'today', 'now') or (
+                    # "..., there's loads of it lying about": how much of the thing there is, no place
+                    tail[-1] in ('about', 'around', 'everywhere') and 'the' not in tail)) and \
+                not _rule_in(tail) and \
+                not chatter.has_constraint_word(tail):
             return self._noted_cut(sentence, cut)   # "..., there's traffic on it today"
         if len(tail) >= 3 and tail[0] in ('he', 'she', 'they') and tail[1] in (
                 'gets', 'get', 'worries', 'worry', 'hates', 'hate', 'panics') and not _rule_in(tail):
@@ -806,7 +879,9 @@ class _Reader:
                 tail[2] in chatter.STATES or tail[2] in ('off', 'away', 'out')) and \
                 'limits' not in tail and 'bounds' not in tail and is_name_word(tail, 0, False):
             return self._noted_cut(sentence, cut)   # "..., lifeguard's off today"
-        w = next((k for k in range(2, min(5, len(tail) - 1)) if tail[k] == 'will'), -1)
+        # ("..., your rotor wash could damage them": what may happen, said of a thing)
+        w = next((k for k in range(2, min(5, len(tail) - 1))
+                  if tail[k] in ('will', 'could', 'might', 'would')), -1)
         if w > 0 and tail[0] in DETS and not chatter.has_constraint_word(tail) and tail[w + 1] != 'you' and (
                 tail[w + 1] != 'be' or tail[w + 2] in ('here', 'back', 'home', 'in', 'there')):
             # "..., the carer will be here any minute", "..., the kids will grab it"
@@ -921,6 +996,12 @@ class _Reader:
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
                 self.notes.append(f'left out "{" ".join(sentence)}" (says who wants you, asks for nothing)')
                 continue
+            if self.others_unordered and _OTHERS_ANY_ORDER.match(' '.join(
+                    t for t in sentence if t not in PUNCT)):
+                # "The deck has to come last; the other two in any order.": said already
+                self.notes.append(f'"{" ".join(sentence)}": the other goals are in any order already')
+                continue
+            self.others_unordered = False
             self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
@@ -1299,7 +1380,8 @@ class _Reader:
             if skip:
                 skip = False
                 continue
-            if clause.connector == 'purpose' and not chatter.carries_constraint(clause.tokens):
+            if clause.connector == 'purpose' and not chatter.carries_constraint(
+                    _without_my_time(clause.tokens)):
                 self.notes.append(f'left out "so {" ".join(clause.tokens)}" (says why, asks for nothing)')
                 continue
             later = [t for c in clauses[n:] for t in c.tokens]
@@ -2628,7 +2710,7 @@ class _Reader:
                 scope = _Scope('after', NounPhrase((last.dests or last.targets)[0], 0, 0, ''))
         harmless = ('at', 'all', 'times', 'the', 'whole', 'time', 'entire', 'ever', 'please', 'way', 'along',
                     'throughout', 'any', 'point', 'either', 'too', 'as', 'well', 'again', 'forever',
-                    'anymore', 'costs', 'instant', 'moment')
+                    'anymore', 'costs', 'instant', 'moment', 'anywhere')
         g0, g1 = orders.find_phrase(rest, GLOBAL_MARKERS)
         while g0 >= 0:   # "no matter which", "either way", "in any case"
             rest = rest[:g0] + rest[g1:]
@@ -2708,6 +2790,11 @@ class _Reader:
                         rest[j + 1] in DETS or rest[j + 1] in GOAL_PARTICLES))):
                 j += 1
             nps, joiner, end = self._np_list(rest, j, place=False)
+            if j < len(rest) and (rest[j] in ('one', 'either', 'any', 'whichever') or rest[j] in (
+                    'both', 'each', 'all') and rest[j + 1:j + 2] == ['of']):
+                # "don't go near X until you've got to one of them": "them" are the places before, never X
+                raise TranslationError('cannot read a constraint that holds until one of several places',
+                                       details={'part': ' '.join(rest[:max(end, j + 1)])})
             if joiner == 'or' and len(nps) > 1:
                 # "avoid the lobby until you reach the east gate or the west gate": a scope that ends at
                 # either of two places has no reading here; said, not read as the first of them
@@ -3003,6 +3090,10 @@ class _Reader:
             else:
                 self.task.constraints.append(Until(Not(_near(d)), _near(x)))
         self.notes.append(f'{x}: {rest[0]} of the goals')
+        together = [{d for st in self.task._all_steps()
+                     if st in (step, *(c for ch in top.chains for c in ch)) for d in st.targets}
+                    for top in self.task.chain if top.kind == 'all'] + ([set(step.targets)] if step else [])
+        self.others_unordered = any(x in ds and all(d in ds for d in others) for ds in together)
         return True
 
     def _read_passive_avoid(self, tokens: list[str]) -> bool:

@@ -36,6 +36,20 @@ _NAME = r'(?:(?!(?:and|or|then|followed|the)\b)[a-z0-9_]+)(?: (?!(?:and|or|then|
 # a word of a name, none of the words of a clause's frame
 _NOUN = r'(?!(?:is|are|was|were|has|have|had|then|to|go|and|or|not|too|as|it|they|will|can|so)\b)[a-z0-9_]+'
 
+
+_NOUN_LEADS = frozenset({'the', 'a', 'an', 'my', 'your', 'our', 'this', 'that', 'his', 'her', 'their'})
+_VERB_LEADS = frozenset({'and', 'then', 'to', 'must', 'please', 'just', 'go', 'should', 'will', 'can', 'you',
+                         'come', 'now', 'first', 'or', 'but', 'not', 'never'})
+
+
+def _named_stand(m: 're.Match[str]') -> bool:
+    """Whether "stand" / "sit" ... ends a name ("the armor stand next to the fireplace"), not a verb."""
+    before = m.string[:m.start()].split()[-3:]
+    return len(before) >= 2 and before[-1] not in _VERB_LEADS and (
+        before[-2] in _NOUN_LEADS or len(before) == 3 and before[-3] in _NOUN_LEADS and
+        before[-2] not in _VERB_LEADS)
+
+
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
     # "the orchard first and then the vineyard, or the other way round": either order
     (r' (?:, )?or (?:the other way (?:round|around)|vice versa|the reverse|the opposite way|the other order)'
@@ -43,6 +57,10 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'|$)',
      ' , in any order '),
     (r' do a (?:quick )?(?:round|tour|circuit) of ', ' visit '),
+    # "do the usual round - gallery 3, gallery 4, then the print room": the round is the list after it
+    (r' do (?:the|your|my|our) (?:usual |normal |regular |standard |nightly |night |evening |morning |'
+     r'daily )?(?:round|rounds|route|circuit|loop|tour|patrol|walk) (?:, |: )'
+     r'(?=[^,.;!?]*(?: , | then | and ))', ' visit '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),
     # the order left to the robot, said as a remark (before list positions: "which one first" is none)
     (r' (?:it )?(?:does not|do not|will not) (?:matter|care)(?: to me)? which(?: one| of them| order)?'
@@ -71,6 +89,12 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' on the (?:return leg|return trip|return journey|return flight|trip back|flight back|way back)'
      r'(?= [,.;!?] |$)', ' on the way back '),
     (r' from there (?:out|over|down|up|across|on) to ', ' from there to '),
+    # "walk from the north gallery down to the south gallery": from X to Y
+    (r' (from (?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) (?:out|over|down|up|across|along|round|'
+     r'around|back) to (?=(?:the|my|your|our) )', r' \1 to '),
+    # "then do that same walk again", "do the same run again": the route said, again
+    (r' do (?:that|the|this) (?:same |very same |exact same )?(?:walk|run|route|trip|loop|circuit|lap|round|'
+     r'journey|flight|sweep|pass|drive) (?=again )', ' do that '),
     (r'(?<= [a-z_]) if (?:that is|it is) (?:easier|closer|quicker|better|simpler)(?= [,.;!?] |$)', ''),
     # "on the way back down to the lawn", "on the way down": the way back, the way
     (r' on the way (?P<b>back )?(?:down|up|over|out) (?=to |towards |keep |stay |avoid |do |never |, )',
@@ -147,8 +171,16 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r'(?<!exactly) ((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|thrice) '
      r'(?:, )?'
      r'(?:but |and )?no more(?: than that| and no less| , no less)?(?= [,.;!?]|$| $)', r' exactly \1'),
+    # "twice, and only twice", "once and once only": exactly that many
+    (r'(?<!exactly) ((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|thrice) '
+     r'(?:, )?(?:and |but )?(?:only \1|\1 only)(?= [,.;!?]|$| $)', r' exactly \1'),
+    # "only go in the paddock the once": once
+    (r' the once(?= [,.;!?] |$| $)', ' once'),
     (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
      r'(?:at|in|inside|around|over) ', ' visit '),
+    # "there's a drum under the trailer, go have a look": go to the thing just named
+    (r' go (?:and )?(?:have|take) a (?:quick |good |close )?(?:look|peek|peep|glance|gander)(?: at it)?'
+     r'(?= [,.;!?] |$)', ' go to it '),
     (r' (?:pay|make) a (?:quick )?(?:visit|trip) to ', ' visit '),
     (r' (?:check|see|find out|look|make sure|verify|confirm) (?:whether|if) ', ' check '),
     (r' (?:check|see|look) that ', ' check '),
@@ -221,9 +253,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:with|at) '
      r'(?=(?:the|a|an|my|your|our) )', r'\1 finally go to '),
     (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
+    (r' (?:go|come) and (?:wait|stand|sit|park) (?:by|near|next to|beside) (?=(?:the|a|my|your|our) )',
+     ' go to '),   # "go and stand by the old Fergie"
     (r'(?<! the)(?<! a)(?<! my)(?<! your)(?<! our)(?<! car) (?:wait|stand|sit|park) '
      r'(?:by|near|next to|beside) '
-     r'(?=(?:the|a|my|your|our) )', ' go to '),
+     r'(?=(?:the|a|my|your|our) )', lambda m: m.group(0) if _named_stand(m) else ' go to '),
     # "go and put yourself by the kettle", "position yourself next to the gate": go there
     (r'(?: (?:come|go) and)? (?:put|place|plant|park|position|station|get) yourself '
      r'(?:by|next to|near|beside|at|in|on) (?=(?:the|a|my|your|our) )', ' go to '),
@@ -331,6 +365,9 @@ _TO_CHECK_RE = re.compile(r'(?<=[a-z]) to check(?= (?:it |(?:the|my|your|our|its
 _SCOPING = frozenset({'until', 'till', 'after', 'before', 'once', 'when', 'if', 'unless', 'only', 'while',
                       'whenever', 'not', 'never'})
 
+# "I want to check ...", "we'd like to check ...": a wish, never "and check".
+_WISHING = frozenset({'want', 'wanted', 'need', 'needed', 'like', 'love', 'hoping', 'trying'})
+
 
 def _check_there(text: str) -> str:
     """'go to the door to check it is locked' -> 'go to the door and check it is locked' (a main clause)."""
@@ -338,7 +375,10 @@ def _check_there(text: str) -> str:
     last = 0
     for m in _TO_CHECK_RE.finditer(text):
         start = max(text.rfind(p, 0, m.start()) for p in (' , ', ' . ', ' ; ', ' ! ', ' ? ', ' : '))
-        if not _SCOPING & set(text[max(start, 0):m.start()].split()):
+        said = text[max(start, 0):m.start()].split()
+        if said[-1:] and said[-1] in _WISHING:
+            continue   # "..., I want to check the gun is working": why, not a step of its own
+        if not _SCOPING & set(said):
             out.append(text[last:m.start()] + ' and check')
             last = m.end()
     return ''.join(out) + text[last:]

@@ -163,6 +163,14 @@ def _of_name(words: Sequence[str], tokens: Sequence[str], j: int) -> bool:
         tokens[j] not in NUMBER_WORDS and not tokens[j].isdigit()
 
 
+def _of_plural(tokens: Sequence[str], j: int) -> bool:
+    """Whether ``tokens[j]`` is a bare plural ending a name after "of" ("the hall of mirrors")."""
+    w = tokens[j]
+    nxt = tokens[j + 1] if j + 1 < len(tokens) else ''
+    return len(w) > 4 and w.endswith('s') and not w.endswith(('ss', 'us', 'is')) and w.isalpha() and \
+        w not in STOPWORDS and w not in NUMBER_WORDS and (nxt in PUNCT or nxt in STOPWORDS or nxt == '')
+
+
 def with_article(name: str) -> str:
     """Return ``name`` with "the" before it, unless it has a determiner or is a number ("204")."""
     return name if name.split()[0] in DETERMINERS or name[0].isdigit() else 'the ' + name
@@ -250,8 +258,8 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return (have_name or after_det) and nxt not in ('you', 'i', 'we', 'go', 'be', 'not', 'wait', 'come',
                                                         'stay', 'do', 'have', 'get', 'see', 'hold', 'only',
                                                         'also', 'still', 'always', 'never', 'just')
-    if w in ('once', 'twice', 'thrice'):
-        return False
+    if w in ('once', 'twice', 'thrice') or have_name and w in ('anywhere', 'everywhere', 'nowhere'):
+        return False   # ("the glass harp anywhere along the way": "anywhere" ends the name)
     if w in ('comes', 'goes') and have_name and nxt in ('first', 'last', 'next', 'second', 'third', 'before',
                                                         'after', 'later', 'earlier', 'at', 'in', 'into',
                                                         'only'):
@@ -418,8 +426,9 @@ class PhraseParser:
                     and i + 1 < len(tokens) and tokens[i + 1] in DESTINATION_PREPS):
                 words.append(tokens[i])
                 i += 1
-                if i + 1 < len(tokens) and tokens[i] == 'of' and words[-1] in CONTAINER_WORDS:
-                    words.append('of')
+                if i + 1 < len(tokens) and tokens[i] == 'of' and (words[-1] in CONTAINER_WORDS or _of_plural(
+                        tokens, i + 1)):
+                    words.append('of')   # "the hall of mirrors", "the Hall of Kings": one name, said so
                     i += 1
             sides = (('on', 'the'), ('to', 'the'), ('on', 'your'), ('to', 'your'))
             if words and tuple(tokens[i:i + 2]) in sides \

@@ -586,6 +586,9 @@ def _marker_at(tokens: list[str], i: int) -> int:
         return len(bare) if len(bare) > 1 or bare != ('no', 'no') else 2
     for m in _MARKERS:
         if tuple(tokens[i:i + len(m)]) == m:
+            if m == ('i', 'mean') and tokens[i + 2:i + 3] in (['it'], ['that'], ['this'], ['business']) and (
+                    i + 3 == len(tokens) or tokens[i + 3] in PUNCT):
+                return 0   # "Never go near the pit. I mean it.": emphasis, nothing corrected
             if m == ('no',) and i + 1 < len(tokens) and tokens[i + 1] not in (',', ':') and not (
                     i > 0 and tokens[i - 1] in '.;!?' and tokens[i + 1] == 'the' and i + 2 < len(tokens) and
                     tokens[i + 2] in ('one', 'other', 'ones')):
@@ -936,6 +939,10 @@ _THING_PART = re.compile(r'\b(?P<v>forget|ignore|scratch|scrap|drop|skip)(?: abo
 # "forget what I said about the roses": forget the roses
 _SAID_ABOUT = re.compile(r'\b(forget|ignore|scratch|disregard) (?:what i said|what i told you|'
                          r'everything i said|the bit|the part|the stuff) about\b')
+# "it's the trough behind the gate I want": the trough behind the gate (the goal, said at length)
+_CLEFT_GOAL = re.compile(
+    r'\b(?:it is|it s|its) (?P<x>(?:the|my|your|our) [a-z0-9_ ]*?[a-z0-9_]+) (?:that |which )?(?:i|we) '
+    r'(?:want|need|meant|mean|wanted|needed|am after|was after|were after|are after)(?= [,.;!?]|$)')
 _MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
 _NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
 # "better you start from the printer and finish with the copier": the route, said plainly
@@ -962,6 +969,7 @@ def _uncleft(tokens: list[str]) -> list[str]:
         return tokens
     text = ' '.join(tokens)
     new = _MEANT.sub('i meant', _CLEFT.sub(lambda m: f'avoid {m.group("x")}', text))
+    new = _CLEFT_GOAL.sub(lambda m: m.group('x'), new)
     new = _START_FINISH.sub(lambda m: f'go to {m.group("a")} then {m.group("b")}', new)
     # "swap the shed for the patio": the patio instead of the shed
     new = _SWAP.sub(lambda m: f'{m.group("y")} instead of {m.group("x")}', new)
@@ -971,6 +979,45 @@ def _uncleft(tokens: list[str]) -> list[str]:
     new = _THING_PART.sub(lambda m: f'{m.group("v")} {m.group("x")}', new)
     new = _SAID_ABOUT.sub(r'\1', new)
     return new.split() if new != text else tokens
+
+
+_CHOICE_WORDS = frozenset({'choice', 'choices', 'option', 'options', 'alternatives', 'alternative', 'either'})
+
+
+def _forget_choice(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Replace the alternatives said before by the one named ("A or B ... forget the choice, just B")."""
+    k = 1 if seg[:1] == [','] else 0
+    if seg[k:k + 1] and seg[k] in _CANCEL:
+        k += 1 + (seg[k:k + 2] == ['never', 'mind'])
+    if seg[k:k + 1] not in (['the'], ['that']) or seg[k + 1:k + 2] == [] or seg[k + 1] not in _CHOICE_WORDS:
+        return None
+    k += 2 + (seg[k + 2:k + 3] == ['or'])   # "the either or"
+    if seg[k:k + 1] != [',']:
+        return None
+    k += 1
+    while seg[k:k + 1] and seg[k] in ('just', 'only', 'go', 'to', 'do', 'visit'):
+        k += 1
+    new = seg[k:]
+    while new and new[-1] in ('then', 'instead', 'please', ','):
+        new = new[:-1]
+    np = PhraseParser().parse(new, 0) if new else None
+    if np is None or np.end != len(new) or np.pronoun:
+        return None
+    spans = _np_spans(prev)
+    for n, sp in enumerate(spans):
+        if sp.head != np.head:
+            continue
+        a = b = n   # the spans joined to it by "or"
+        while a > 0 and spans[a - 1].end + 1 == spans[a].start and prev[spans[a].start - 1] == 'or':
+            a -= 1
+        while b + 1 < len(spans) and spans[b].end + 1 == spans[b + 1].start and prev[spans[b].end] == 'or':
+            b += 1
+        if a == b:
+            continue
+        start = spans[a].start - (prev[spans[a].start - 1:spans[a].start] == ['either'])
+        notes.append(f'correction: "{" ".join(prev[start:spans[b].end])}" is now "{" ".join(new)}"')
+        return prev[:start] + new + prev[spans[b].end:]
+    return None
 
 
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
@@ -1058,6 +1105,12 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         c = seg.index(',', lead) if ',' in seg[lead:] else -1
         said = seg[lead:c] if c <= lead or seg[lead] in DETERMINERS | chatter.STATEMENT_SUBJECTS else \
             ['the'] + seg[lead:c]   # "milk is already in there": a name said without its article
+        chosen = _forget_choice(prev, seg, notes)
+        if chosen is not None:
+            # "A or B, then C. Actually forget the choice, just B": the alternatives become B
+            out = chosen + after
+            i = len(chosen)
+            continue
         moved = _moved(prev, seg, notes)   # "no wait, it's in front of the shed, my mistake"
         if moved is not None:
             out = moved + after

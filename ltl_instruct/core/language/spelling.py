@@ -81,6 +81,7 @@ wrapper compactor glassware sterilizer steriliser pipette pipettes beaker beaker
 forklift forklifts workstation kennel trampoline scooter scooters cattle slurry ketchup colostrum
 hammock casserole headset headsets mantelpiece bedsheet bedsheets stockroom scaffold scaffolding screed
 shredding
+parlour calving twine silage trough
 '''.split())
 
 
@@ -248,6 +249,15 @@ class Speller:
             if len(common) == 1:
                 self._cache[word] = common[0][1]
                 return common[0][1]
+        if len(word) >= 6 and word.isascii() and word.isalpha() and word not in self.words and \
+                word not in self.lexicon and self.known(word):
+            # known only as made up ("galery": gal + ery), yet a common word with one of its doubled
+            # letters typed once ("gallery", "address"): the common word
+            fits = {c for c in _undoubled(word)
+                    if self.words.get(c, _COMMON) < 5000 and not _inflection(word, c)}
+            if len(fits) == 1:
+                self._cache[word] = out = fits.pop()
+                return out
         if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word):
             best: Optional[tuple[int, bool, int, str]] = None
             for cand, kind in _slips(word):
@@ -310,6 +320,13 @@ class Speller:
                     break
         self._cache[word] = out
         return out
+
+
+def _undoubled(word: str) -> Iterable[str]:
+    """Every word ``word`` may be with a doubled letter typed once ("galery": gallery), first letter kept."""
+    for i in range(1, len(word)):
+        if word[i] not in _VOWELS or word[i] in 'eo':
+            yield word[:i + 1] + word[i:]
 
 
 def _inflection(a: str, b: str) -> bool:

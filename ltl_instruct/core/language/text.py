@@ -9,11 +9,13 @@ a letter or digit is dropped.
 from __future__ import annotations
 
 import re
+import unicodedata
 
 # Chat spellings and typos seen in instructions to robots; whole-word replacements.
 TYPOS: dict[str, str] = {
     'teh': 'the', 'hte': 'the', 'u': 'you', 'ur': 'you are', 'n': 'and', 'atleast': 'at least',
-    'dont': 'do not', 'youre': 'you are', 'actualy': 'actually', 'acutally': 'actually',
+    'dont': 'do not', 'yerself': 'yourself', 'youre': 'you are', 'actualy': 'actually',
+    'acutally': 'actually',
     'thrid': 'third', 'undr': 'under', 'vist': 'visit', 'pls': 'please', 'plz': 'please',
     'kitchn': 'kitchen', 'dishwsher': 'dishwasher', 'litterbox': 'litter box', 'doesnt': 'does not',
     'cant': 'cannot', 'wont': 'will not', 'im': 'i am', 'ive': 'i have', 'youve': 'you have',
@@ -85,7 +87,7 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
      r"dirty|clean|busy|free|taken|packed|gone|not|too|very|really|still|already|been|being|actually|"
      r"no longer|now|dangerous|slippery|hot|cold|occupied|off limits|fragile|heavy|sharp|almost|nearly|dead|"
      r"low|flat|loose|wobbly|unstable|frayed|exposed|leaking|leaky|sticky|cracked|jammed|stuck|faulty|"
-     r"unplugged|noisy|loud|messy)\b)", ' is'),
+     r"unplugged|noisy|loud|messy|due|late|ready|done|finished)\b)", ' is'),
     (r"\b(one|two|three|four|five|six|once|twice)'s\b", r'\1 is'),   # "no, three's plenty"
     # "grandma's sleeping": "is", before a verb in -ing (not "dad's walking stick")
     (r"'s(?= [a-z]+ing\b(?! (?:stick|sticks|machine|glasses|bag|board|table|room|chair|rod|frame|shoes|mat|"
@@ -230,6 +232,8 @@ def tokenize(text: str) -> list[str]:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))
     s = text.lower().replace('\u2019', "'").replace('\u2018', "'").replace('`', "'")
+    if not s.isascii():   # "the café", "the Fabergé eggs": the letters without their accents
+        s = ''.join(c for c in unicodedata.normalize('NFKD', s) if not unicodedata.combining(c))
     # a list written as lines or bullets: each line, "1)", "(2)", "3." or bullet opens a clause
     # (a numbered list is an order: each number after the first reads as "then")
     s = re.sub(r'(^|[\s:;,])\(?(\d{1,2})\)(?=\s+([a-z]*))',
@@ -331,7 +335,8 @@ def expand_labels(tokens: list[str]) -> list[str]:
                 else:
                     break
         if len(labels) >= 2 and any(tokens[m - 1] in ('and', 'or') for m in labels[1:]):
-            noun = t[:-2] if t.endswith(('ches', 'shes', 'xes', 'sses')) else t[:-1]
+            noun = t[:-2] if t.endswith(('ches', 'shes', 'xes', 'sses')) else \
+                t[:-3] + 'y' if t.endswith('ies') and len(t) > 4 else t[:-1]   # "galleries 14 and 15"
             end = labels[-1] + 1
             for k in range(i + 1, end):
                 out.extend([noun, tokens[k]] if k in labels else [tokens[k]])

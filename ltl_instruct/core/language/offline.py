@@ -3833,7 +3833,7 @@ class _Reader:
             if anchor is self.insert_before:
                 self.insert_before = None
         else:
-            before = self.task.last_step(('visit', 'deliver'))
+            before = self.task.last_step(('visit', 'deliver', 'all'))
             self._add_targets(targets, joiner, ordered)
             if strict:
                 self._strict_order(before, targets, joiner)
@@ -3989,7 +3989,17 @@ class _Reader:
         chain.append(moved)
 
     def _strict_order(self, before: Optional[Step], targets: list[Descriptor], joiner: str) -> None:
-        """'go to a, and only then go to b': this clause's goals not before the goal before them."""
+        """'go to a, and only then go to b': this clause's goals not before the goal before them.
+
+        After goals in any order ("a and b, in any order, and only then c") each of them comes first.
+        """
+        if before is not None and before.kind == 'all':
+            lasts = [ch[-1] for ch in before.chains if ch]
+            if all(st.kind == 'visit' for st in lasts) and len(lasts) == len(before.chains):
+                for d in targets if joiner == 'or' else targets[:1]:
+                    self.task.constraints.extend(Until(Not(_near(d)), _or([_near(p) for p in st.targets]))
+                                                 for st in lasts)
+            return
         prev = before.targets if before is not None and before.kind == 'visit' else (
             before.dests if before is not None else [])
         if prev:

@@ -31,6 +31,35 @@ BLIND_ROUND_T4 = [
      'F (near[church_spire] & G !near[bell_tower])'),
     ("Don't fly over the campsite till you've done the dunes.",
      '(!near[campsite] U near[dunes]) & F near[dunes]'),
+    # a remark after "once you're there" ("the ferry's fine") leaves the scope to the command after it
+    ("Don't go near the ferry until you're at the harbour mouth. Once you're there the ferry's fine, "
+     'but stay off the shipping lane.',
+     '(!near[ferry] U near[harbour_mouth]) & F (near[harbour_mouth] & G !near[shipping_lane])'),
+    # "on the way out" inside an avoidance is the way there, never left out as courtesy (it was: global)
+    ("Fly out to the sandbank - don't go over the seal colony on the way out - then RTH.",
+     '(!near[seal_colony] U near[sandbank]) & F (near[sandbank] & F near[home_point])'),
+    ('Go to the pier, and avoid the reef on your way out.',
+     '!near[reef] U near[pier]'),
+    ('Swing by the mailroom on your way out.',
+     'F near[mailroom]'),
+    # "RTH" (a drone's return to home) goes to the home point (it was a place "rth")
+    ('Do a flyover of the campsite and then RTH.',
+     'F (near[campsite] & F near[home_point])'),
+    # "drop it over X" releases it at X (the release was lost: only a visit of X)
+    ('Pick up the bait rig and drop it over the sandbank, the bass are biting out there.',
+     'F (near[bait_rig] & F (pick[bait_rig] & F (near[sandbank] & F release[bait_rig, sandbank])))'),
+    ('Bring the cup over to the sink.',
+     'F (near[cup] & F (pick[cup] & F (near[sink] & F release[cup, sink])))'),
+    # the light or the weather as a deadline is a time, no place ("light_goes" was a place to visit first)
+    ('Go to the pier, quick, before the light goes!',
+     'F near[pier]'),
+    ('Survey the field before it gets dark, then land at the pad.',
+     'F (near[field] & F near[pad])'),
+    # "after the X," with no verb opens a scope at X, a goal (refused); seaside names are spelt right
+    ('After the lighthose, stay off the cliffs and do two passes over the bay.',
+     'F (near[lighthouse] & G !near[cliffs] & F (near[bay] & F (!near[bay] & F near[bay])))'),
+    ('After the garage, keep away from the pond.',
+     'F (near[garage] & G !near[pond])'),
 ]
 
 

@@ -407,6 +407,13 @@ def _speller() -> Speller:
     return _SPELLER
 
 
+# Things that happen, not places ("after the meeting, ..."): never a goal said with "after the".
+_EVENT_NOUNS = frozenset('''
+meeting party lunch dinner breakfast break storm rain show game match class lesson call shift service
+ceremony talk presentation delivery inspection rush event wedding funeral concert movie film news tide
+sunset sunrise flight landing takeoff first second third last next other rest one pass visit trip run lap
+round loop
+'''.split())
 # Words that make a rule hold the whole run ("don't walk through X at all").
 _ANY_TIME = (' at all ', ' ever ', ' at any time ', ' at any point ', ' whole time ', ' entire time ')
 # Verbs of a thing the person left somewhere ("I left my charger in the hall, go find it").
@@ -1208,7 +1215,13 @@ class _Reader:
             if n + 1 < len(clauses) and self._read_guarded_route(clause, clauses[n + 1]):
                 skip = True
                 continue
+            size = (len(self.task.chain), len(self.task.constraints))
             scope = self._read_part(clause, scope)
+            if clause.connector == 'there' and n + 1 < len(clauses) and clauses[n + 1].connector == 'and' \
+                    and size == (len(self.task.chain), len(self.task.constraints)):
+                # "once you're there the ferry's fine, but stay off the lane": the remark asked for
+                # nothing; what follows it is said of the time from there on
+                clauses[n + 1].connector = 'there'
 
     def _read_guarded_route(self, clause: _Clause, nxt: _Clause) -> bool:
         """Read 'X, but not before you've been to A and, after that, B': X waits for the route A then B.
@@ -2290,6 +2303,11 @@ class _Reader:
             np = self.phrases.parse(tokens, i)
             if np is not None and not np.pronoun and self.task.find_step(np.descriptor) is not None:
                 return _Scope('after', np), np.end
+            if np is not None and not np.pronoun and tokens[i - 1] == 'after' and tokens[i:i + 1] == ['the'] \
+                    and tokens[np.end:np.end + 1] in ([','], []) and not np.descriptor.relations and \
+                    np.head not in _EVENT_NOUNS and np.head not in chatter.TIME_NOUNS:
+                # "after the lighthouse, stay off the cliffs": the lighthouse first, then the rest
+                return _Scope('after', self._resolve(np, place=True), 'goal'), np.end
         if k == j:
             return None, i
         np = self.phrases.parse(tokens, k)
@@ -3505,6 +3523,8 @@ class _Reader:
         for o in objs:
             self.last_object = o
         while rest and rest[0] in ('up', 'back', 'over', 'away', 'out', 'down', 'off', 'along'):
+            if rest[0] == 'over' and rest[1:2] and rest[1] in DETS and not {'to', 'into', 'onto'} & set(rest):
+                break   # "drop it over the sandbank": where it is released
             if rest[0] == 'away' and verb in ('throw', 'toss', 'put'):
                 implicit_dest = TRASH
             rest = rest[1:]

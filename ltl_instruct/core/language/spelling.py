@@ -81,6 +81,8 @@ wrapper compactor glassware sterilizer steriliser pipette pipettes beaker beaker
 forklift forklifts workstation kennel trampoline scooter scooters cattle slurry ketchup colostrum
 hammock casserole headset headsets mantelpiece bedsheet bedsheets stockroom scaffold scaffolding screed
 shredding
+lighthouse jetty slipway breakwater harbour harbor quay marina boathouse campsite seawall promenade
+boardwalk lifeguard windbreak clifftop sandbank
 '''.split())
 
 

@@ -60,6 +60,27 @@ BLIND_ROUND_T4 = [
      'F (near[lighthouse] & G !near[cliffs] & F (near[bay] & F (!near[bay] & F near[bay])))'),
     ('After the garage, keep away from the pond.',
      'F (near[garage] & G !near[pond])'),
+    # a story of an earlier pass after the request says why ("pass the sun" was a goal: silently wrong)
+    ('hover over the church spire twise, first pass the sun was right behind it',
+     'F (near[church_spire] & F (!near[church_spire] & F near[church_spire]))'),
+    ('go to the shed, last time the cat was in there',
+     'F near[shed]'),
+    # "there's kids everywhere" run on after an avoidance says why (refused)
+    ('go over to the beach huts n then the rock pools, dont go near the paddling pool theres kids everywhere',
+     'F (near[beach_huts] & F near[rock_pools]) & G !near[paddling_pool]'),
+    # "X is a (strict) no-fly zone": X kept away from (refused)
+    ('The naval base is a strict no-fly zone, keep right away from it. Head to the quarry.',
+     'F near[quarry] & G !near[naval_base]'),
+    ('The airfield is a no-fly zone. Survey the farm.',
+     'F near[farm] & G !near[airfield]'),
+    # "Not both though." makes the choice exclusive (refused)
+    ('Do the north beach or the south beach. Not both though.',
+     '(F near[north_beach] & G !near[south_beach]) | (F near[south_beach] & G !near[north_beach])'),
+    # places alone with "in any order" / "in that order" (refused: no action)
+    ('Lighthouse then harbour, or harbour then lighthouse - your call.',
+     'F (near[lighthouse] & F near[harbour]) | F (near[harbour] & F near[lighthouse])'),
+    ('Pier, beach, harbour in that order.',
+     'F (near[pier] & F (near[beach] & F near[harbour]))'),
 ]
 
 

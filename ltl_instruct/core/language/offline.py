@@ -407,6 +407,13 @@ def _speller() -> Speller:
     return _SPELLER
 
 
+# Last words of a remark about the scene ("..., there's traffic on it today", "there's kids everywhere").
+_SCENE_ENDS = frozenset({'it', 'them', 'today', 'now', 'everywhere', 'around', 'about'})
+# When something happened before ("..., first pass the sun was right behind it"): a story follows.
+_PAST_LEADS: tuple[tuple[str, ...], ...] = (
+    ('on', 'the', 'first', 'pass'), ('on', 'the', 'last', 'pass'), ('the', 'first', 'pass'),
+    ('the', 'last', 'pass'), ('first', 'pass'), ('last', 'pass'), ('last', 'time'), ('the', 'last', 'time'),
+    ('first', 'time'), ('the', 'first', 'time'), ('earlier',), ('yesterday',), ('this', 'morning'))
 # Things that happen, not places ("after the meeting, ..."): never a goal said with "after the".
 _EVENT_NOUNS = frozenset('''
 meeting party lunch dinner breakfast break storm rain show game match class lesson call shift service
@@ -619,7 +626,7 @@ class _Reader:
         if out is not sentence or len(sentence) < 6:
             return out
         for k in range(len(sentence) - 3, 2, -1):
-            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she') and sentence[k + 1] in (
+            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she', 'there') and sentence[k + 1] in (
                     'am', 'is', 'are', 'was', 'were') and sentence[k - 1] not in PUNCT and \
                     sentence[k - 1] not in _NO_CUT_BEFORE and sentence[k - 1] not in DETS:
                 cut = self._drop_reason_after_comma(sentence[:k] + [','] + sentence[k:])
@@ -649,6 +656,11 @@ class _Reader:
             return sentence   # "without going near the dog, the cat or the bird": the list goes on
         if tail[:1] == ['and'] and tail[1:2] and tail[1] in ('she', 'he', 'they', 'i', 'we'):
             tail = tail[1:]   # "..., and she has claws like fish hooks": a second reason
+        lead = next((len(p) for p in _PAST_LEADS if tail[:len(p)] == list(p)), 0)
+        if lead and tail[lead:lead + 1] and (tail[lead] in DETS or tail[lead] in ('it', 'they', 'he')) \
+                and {'was', 'were'} & set(tail[lead + 1:lead + 5]) and 'you' not in tail and \
+                not _rule_in(tail[lead:]) and not chatter.carries_constraint(tail[lead:]):
+            return self._noted_cut(sentence, cut)   # "..., first pass the sun was right behind it"
         if tail[:2] in (['i', 'would'], ['we', 'would'], ['i', 'want'], ['we', 'want']) and \
                 tail[2:4] in (['like', 'to'], ['love', 'to'], ['to', 'do'], ['to', 'get'], ['to', 'have']) \
                 and 'you' not in tail and not chatter.carries_constraint(tail) and not _rule_in(tail) and \
@@ -698,8 +710,7 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., or you'll scare the finches off"
         if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
             return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
-        if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in ('it', 'them', 'today', 'now') \
-                and not _rule_in(tail):
+        if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in _SCENE_ENDS and not _rule_in(tail):
             return self._noted_cut(sentence, cut)   # "..., there's traffic on it today"
         if len(tail) >= 3 and tail[0] in ('he', 'she', 'they') and tail[1] in (
                 'gets', 'get', 'worries', 'worry', 'hates', 'hate', 'panics') and not _rule_in(tail):
@@ -980,6 +991,11 @@ class _Reader:
             if not chatter.is_remark(sentence[c + 1:n]):
                 break
             n = c
+        for order in (['in', 'any', 'order'], ['in', 'that', 'order'], ['in', 'this', 'order'],
+                      ['in', 'either', 'order']):
+            if n > len(order) + 1 and sentence[n - len(order):n] == order:
+                n -= len(order)   # "the lighthouse and the harbour in any order": read with the goals
+                break
         seen = 0
         while i < n:
             k = i
@@ -2909,10 +2925,11 @@ class _Reader:
                 rest = rest[:-len(tail)]   # "the paint cans are off limits the whole time"
                 break
         hedges = ('strictly', 'totally', 'completely', 'absolutely', 'always', 'to', 'you', 'for', 'now',
-                  'today', 'a', 'zone', 'area')
+                  'today', 'a', 'zone', 'area', 'strict', 'an', 'total')
         if rest[:1] in (['is'], ['are']) and [t for t in rest[1:] if t not in hedges] in (
                 ['off', 'limits'], ['out', 'of', 'bounds'], ['forbidden'], ['prohibited'], ['banned'],
                 ['restricted'], ['dangerous'], ['unsafe'], ['hazardous'], ['not', 'allowed'], ['no', 'go'],
+                ['no', 'fly'], ['no', 'flying'], ['no', 'drone'], ['no', 'entry'], ['exclusion'],
                 ['not', 'safe'], ['closed'], ['not', 'permitted'], ['a', 'hazard'], ['hazard']):
             self.task.constraints.extend(_never([np.descriptor for np in nps]))   # "the pond is off limits"
             names = ', '.join(str(n.descriptor) for n in nps)

@@ -81,6 +81,23 @@ BLIND_ROUND_T4 = [
      'F (near[lighthouse] & F near[harbour]) | F (near[harbour] & F near[lighthouse])'),
     ('Pier, beach, harbour in that order.',
      'F (near[pier] & F (near[beach] & F near[harbour]))'),
+    # "do that lot backwards" is the list said before, reversed; ", starting from X" where X already comes
+    # first says it again (refused; then a last visit of X was guessed)
+    ('Beach huts, pier, harbour wall... do that lot backwards, starting from the wall.',
+     'F (near[harbour_wall] & F (near[pier] & F near[beach_huts]))'),
+    ('Go to the den, then the hall, starting with the den.',
+     'F (near[den] & F near[hall])'),
+    # "X to Y" with no verb opening a sentence is the route (refused: no action)
+    ('Lighthouse to harbour wall, then do that same run again straight after.',
+     'F (near[lighthouse] & F (near[harbour_wall] & F (near[lighthouse] & F near[harbour_wall])))'),
+    ('The pier to the lighthouse, then land at the pad.',
+     'F (near[pier] & F (near[lighthouse] & F near[pad]))'),
+    # "send it up to X" first thing (no "it" named before) flies the drone there (refused)
+    ('Send it up to the clifftop!!',
+     'F near[clifftop]'),
+    # a heading "... time!" before the request asks for nothing (refused)
+    ('Reveal shot time! Start low at the harbour wall and then climb up to the lighthouse lamp room.',
+     'F (near[harbour_wall] & F near[lighthouse_lamp_room])'),
 ]
 
 

@@ -827,6 +827,12 @@ class _Reader:
                 # "Don't go near the pool. You'll get soaked.": a warning after the request
                 self.notes.append(f'left out "{" ".join(sentence)}" (says why, asks for nothing)')
                 continue
+            words = [t for t in sentence if t not in PUNCT]
+            if len(sentences) > 1 and 1 < len(words) <= 4 and words[-1] == 'time' and \
+                    not _rule_in(words) and not set(words) & (SKILL_VERBS | DELIVER_VERBS):
+                # "Reveal shot time! Start low at ...": a heading that names what comes, asks for nothing
+                self.notes.append(f'left out "{" ".join(words)}" (a heading, asks for nothing)')
+                continue
             if len(sentences) > 1 and chatter.is_summons(sentence):
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
                 self.notes.append(f'left out "{" ".join(sentence)}" (says who wants you, asks for nothing)')
@@ -845,6 +851,10 @@ class _Reader:
                     ['the', t] if t in SKILL_VERBS and (k == 0 or sentence[k - 1] in listed) and (
                         k + 1 == len(sentence) or sentence[k + 1] in listed or sentence[k + 1] in PUNCT)
                     else [t])]
+            elif self._bare_route(sentence):
+                # "lighthouse to harbour wall, then do it again": the route from the one to the other
+                self.notes.append(f'read "{" ".join(sentence[:self._bare_route(sentence)])}" as a route')
+                sentence = ['go', 'from'] + sentence
             elif self._bare_goal_start(sentence):
                 self._read_bare_goal(sentence)
                 continue
@@ -975,6 +985,22 @@ class _Reader:
         if self.first_error is not error or len(self.unread) > unread:
             first.restore()   # no better read so: as said first
             self.first_error = first_error
+
+    def _bare_route(self, sentence: list[str]) -> int:
+        """Length of "X to Y" opening a sentence with no verb ("lighthouse to harbour wall, ..."), or 0."""
+        if self.phrases.landmarks or not sentence or sentence[0] in SKILL_VERBS or sentence[0] in STOPWORDS \
+                and sentence[0] not in DETS:
+            return 0
+        a = self.phrases.parse(sentence, 0)
+        if a is None or a.pronoun or a.end >= len(sentence) or sentence[a.end] != 'to' or \
+                not all(_is_word(w) for w in sentence[:a.end]):
+            return 0
+        b = self.phrases.parse(sentence, a.end + 1)
+        if b is None or b.pronoun or not all(_is_word(w) for w in sentence[a.end + 1:b.end]) or \
+                b.end < len(sentence) and sentence[b.end] not in PUNCT or \
+                (sentence[0] in DETS) != (sentence[a.end + 1] in DETS):
+            return 0   # (both named alike: "scramble to the landing" is a verb before a place)
+        return b.end
 
     def _places_only(self, sentence: list[str]) -> bool:
         """Whether a sentence is nothing but places ("the den, then the attic", "garage, please")."""
@@ -1588,6 +1614,9 @@ class _Reader:
                 orders.find_phrase(tokens, GLOBAL_MARKERS)[0] >= 0:
             # "after X, go to Y, and keep away from Z throughout": the whole run, not only after X
             scope = None
+        if tokens[0] in ('starting', 'beginning') and tokens[1:2] and \
+                tokens[1] in ('from', 'with', 'at') and self._read_starting_with(tokens[2:]):
+            return scope
         s = ' '.join(tokens)
         if 'order' in tokens and (s.startswith(('any order', 'in any order', 'the order does not matter',
                                                 'order does not matter', 'the order is up to you',
@@ -1797,6 +1826,24 @@ class _Reader:
                 return scope
         self._read_goal(tokens, clause, scope)
         return scope
+
+    def _read_starting_with(self, tokens: list[str]) -> bool:
+        """'..., starting from the wall': the goal named comes first (said again when it already does)."""
+        np = self.phrases.parse(tokens, 0)
+        if np is None or np.pronoun or np.end != len(tokens):
+            return False
+        d = self._named_before(self._resolve(np, place=True)).descriptor
+        visits = [st for st in self.task.chain[self.sentence_start:] if st.kind == 'visit']
+        same = next((st for st in visits if st.targets == [d]), None)
+        if same is None or sum(st.targets == [d] for st in visits) > 1:
+            return False
+        if same is not visits[0]:
+            # "visit the A, the B and the C, starting with the B": the B moves first
+            k = self.task.chain.index(visits[0])
+            self.task.chain.remove(same)
+            self.task.chain.insert(k, same)
+        self.notes.append(f'{d} first (said as where to start)')
+        return True
 
     _OFF_LIMITS = frozenset({'limits', 'bounds', 'forbidden', 'prohibited', 'banned', 'restricted',
                              'dangerous', 'unsafe', 'hazardous', 'hazard'})

@@ -45,6 +45,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'|$)',
      ' , in any order '),
     (r' do a (?:quick )?(?:round|tour|circuit) of ', ' visit '),
+    # "send it up to the clifftop" first thing, nothing named before "it": the drone itself, flown there
+    (r'^ send it (?:(?:up|over|out|down|across) )?(?:to|towards) (?=(?:the|my|your|our) )', ' fly to '),
+    # "beach huts, pier, harbour wall... do that lot backwards": the goals listed ("the lot" alone may
+    # be a parking lot)
+    (r' (?P<v>do|visit|hit|cover|check) (?:all )?(?:that|this) lot ', r' \g<v> them '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),
     # the order left to the robot, said as a remark (before list positions: "which one first" is none)
     (r' (?:it )?(?:does not|do not|will not) (?:matter|care|mind)(?: to me)? which(?: one| of them| order)?'
@@ -379,7 +384,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
                                    ' supposed', ' sooner', ' earlier', ' or ', ' times', ' back ', ' matter',
                                    ' care ', ' order', ' do ', ' shot', ' photo', ' picture', ' pic',
-                                   ' footage', ' video', ' clip', ' image', ' snaps')):
+                                   ' footage', ' video', ' clip', ' image', ' snaps', ' lot ', ' send ')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:

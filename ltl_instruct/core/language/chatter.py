@@ -958,8 +958,32 @@ _PERSON_BUSY_RE = re.compile(
     r'(?= [,.;!?] | and | then | ?$)')
 
 
+# The light or the weather said as a deadline ("before the light goes", "before it gets dark", "before the
+# rain comes in"): a time, no event at a place that the robot could wait for or order a visit by.
+_DEADLINE_RE = re.compile(
+    r'(?: ,)? before (?:(?:the )?(?:light|sun|daylight|rain|tide|wind|weather|storm|fog|mist|'
+    r'cloud|clouds|battery|batteries) (?:goes|fades|sets|dies|turns|changes|comes in|comes|starts|picks up|'
+    r'rolls in|closes in|runs out|runs low|gets (?:worse|too low|too strong|low|bad))|it (?:gets|is|goes) '
+    r'(?:dark|too dark|light|windy|too windy|dusk)|(?:dark|dusk|sunset|nightfall|sundown))'
+    r'(?= [,.;!?] | and | then | ?$)')
+_DEADLINE_WORDS = frozenset('''
+light sun daylight rain tide wind weather storm fog mist cloud clouds battery batteries dark windy dusk sunset
+nightfall sundown
+'''.split())
+
+
 def strip_person_busy(tokens: list[str], notes: list[str]) -> list[str]:
-    """Leave out what the person is busy with, said as the time of the request ("till I've finished")."""
+    """Leave out what the person is busy with, said as the time of the request ("till I've finished").
+
+    So too the light or the weather said as a deadline ("before the light goes").
+    """
+    if _DEADLINE_WORDS & set(tokens) and 'before' in tokens:
+        text = ' ' + ' '.join(tokens) + ' '
+        found = [m.group(0).strip(' ,') for m in _DEADLINE_RE.finditer(text)]
+        if found and not PLACE_RULE_WORDS & set(tokens):   # never in a rule ("don't go there before dark")
+            for said in found:
+                notes.append(f'left out "{said}" (a time, no event the robot can wait for: check this)')
+            tokens = _DEADLINE_RE.sub('', text).split()
     if not {'i', 'we', 'someone', 'somebody', 'anyone', 'anybody', 'he', 'she', 'they'} & set(tokens) or \
             not {'until', 'till', 'while', 'before'} & set(tokens):
         return tokens
@@ -985,6 +1009,14 @@ def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) ->
         if len(tokens) == before:
             break
     return tokens
+
+
+def _in_rule_clause(tokens: list[str], i: int) -> bool:
+    """Whether the clause that ``tokens[i]`` ends holds a word of a rule about where to go."""
+    k = i
+    while k > 0 and tokens[k - 1] not in PUNCT:
+        k -= 1
+    return bool(PLACE_RULE_WORDS & set(tokens[k:i]))
 
 
 def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> list[str]:
@@ -1025,6 +1057,11 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
                 if tuple(tokens[i:i + m]) == phrase and i + m < n and tokens[i + m] == ',':
                     hit, aside = m, True
                     break
+        if hit and tokens[i + hit - 2:i + hit] == ['way', 'out'] and _in_rule_clause(tokens, i):
+            # "don't go over the seal colony on the way out": the way to the goal, a scope (kept)
+            out.extend(tokens[i:i + hit - 1] + ['there'])
+            i += hit
+            continue
         if hit and (hit > 1 or tokens[i] not in ('please', 'okay', 'ok', 'now')):
             notes.append(f'left out "{" ".join(tokens[i:i + hit])}" (asks for nothing)')
             i += hit

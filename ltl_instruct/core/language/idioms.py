@@ -1546,6 +1546,9 @@ RULES: tuple[Rule, ...] = (
          r'for the remainder(?: of the task)?)'
          r'(?= [,.;]|$)', ''),
     Rule('but not to both: not both', r'\bnot (?:to|at|into) both\b', 'not both'),
+    Rule('Not both though. / but not both, mind: not both',
+         r'\bnot both(?P<o> of them| of those| of the two)? (?:though|mind|obviously|please)(?= [,.;!?]|$)',
+         r'not both\g<o>'),
     Rule('you can stop at the snack cabinet (if you want), but never more than once: at most once',
          rf'\b(?:you can|you may|feel free to) (?P<v>stop at|visit|go to|pass by|swing by|check) '
          rf'(?P<x>(?:the|my|your|our) {_THING})(?: if you (?:want|like|wish))?(?: ,)? (?:but )?'

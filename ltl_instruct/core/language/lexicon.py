@@ -45,7 +45,7 @@ landed surveyed at there enter entering entered navigating navigated moving move
 travelling travelled heading headed arriving touching touched stepping stepped walking walked flying
 flew driving drove getting coming came returning returned finding found observing observe observed
 hitting hit after pass cross crossed crossing visit go enter reach get arrive passing going travelling
-traveling moving
+traveling moving done covered photographed filmed
 '''.split())
 
 GOAL_VERBS_SEED = frozenset({'go', 'do', 'make', 'let', 'come', 'get', 'stop'})

@@ -479,6 +479,20 @@ def _speller() -> Speller:
     return _SPELLER
 
 
+# Last words of a remark about the scene ("..., there's traffic on it today", "there's kids everywhere").
+_SCENE_ENDS = frozenset({'it', 'them', 'today', 'now', 'everywhere', 'around', 'about'})
+# When something happened before ("..., first pass the sun was right behind it"): a story follows.
+_PAST_LEADS: tuple[tuple[str, ...], ...] = (
+    ('on', 'the', 'first', 'pass'), ('on', 'the', 'last', 'pass'), ('the', 'first', 'pass'),
+    ('the', 'last', 'pass'), ('first', 'pass'), ('last', 'pass'), ('last', 'time'), ('the', 'last', 'time'),
+    ('first', 'time'), ('the', 'first', 'time'), ('earlier',), ('yesterday',), ('this', 'morning'))
+# Things that happen, not places ("after the meeting, ..."): never a goal said with "after the".
+_EVENT_NOUNS = frozenset('''
+meeting party lunch dinner breakfast break storm rain show game match class lesson call shift service
+ceremony talk presentation delivery inspection rush event wedding funeral concert movie film news tide
+sunset sunrise flight landing takeoff first second third last next other rest one pass visit trip run lap
+round loop
+'''.split())
 # Words that make a rule hold the whole run ("don't walk through X at all").
 _ANY_TIME = (' at all ', ' ever ', ' at any time ', ' at any point ', ' whole time ', ' entire time ')
 # Verbs of a thing the person left somewhere ("I left my charger in the hall, go find it").
@@ -770,7 +784,7 @@ class _Reader:
         if out is not sentence or len(sentence) < 6:
             return out
         for k in range(len(sentence) - 3, 2, -1):
-            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she') and sentence[k + 1] in (
+            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she', 'there') and sentence[k + 1] in (
                     'am', 'is', 'are', 'was', 'were') and sentence[k - 1] not in PUNCT and \
                     sentence[k - 1] not in _NO_CUT_BEFORE and sentence[k - 1] not in DETS:
                 cut = self._drop_reason_after_comma(sentence[:k] + [','] + sentence[k:])
@@ -811,6 +825,11 @@ class _Reader:
             return out + [','] + sentence[at:] if len(out) < at else sentence
         if tail[:1] == ['and'] and tail[1:2] and tail[1] in ('she', 'he', 'they', 'i', 'we'):
             tail = tail[1:]   # "..., and she has claws like fish hooks": a second reason
+        lead = next((len(p) for p in _PAST_LEADS if tail[:len(p)] == list(p)), 0)
+        if lead and tail[lead:lead + 1] and (tail[lead] in DETS or tail[lead] in ('it', 'they', 'he')) \
+                and {'was', 'were'} & set(tail[lead + 1:lead + 5]) and 'you' not in tail and \
+                not _rule_in(tail[lead:]) and not chatter.carries_constraint(tail[lead:]):
+            return self._noted_cut(sentence, cut)   # "..., first pass the sun was right behind it"
         if tail[:2] in (['i', 'would'], ['we', 'would'], ['i', 'want'], ['we', 'want']) and \
                 tail[2:4] in (['like', 'to'], ['love', 'to'], ['to', 'do'], ['to', 'get'], ['to', 'have']) \
                 and 'you' not in tail and not chatter.carries_constraint(tail) and not _rule_in(tail) and \
@@ -865,12 +884,10 @@ class _Reader:
             return self._noted_cut(sentence, cut)   # "..., or you'll scare the finches off"
         if tail[:5] == ['i', 'do', 'not', 'want', 'you'] and tail[5:6] and tail[5] in _MISHAPS:
             return self._noted_cut(sentence, cut)   # "..., I don't want you tumbling down them"
-        if tail[:2] in (['there', 'is'], ['there', 'are']) and (
-                tail[-1] in ('it', 'them', 'today', 'now') or (
-                    # "..., there's loads of it lying about": how much of the thing there is, no place
-                    tail[-1] in ('about', 'around', 'everywhere') and 'the' not in tail)) and \
-                not _rule_in(tail) and \
-                not chatter.has_constraint_word(tail):
+        if tail[:2] in (['there', 'is'], ['there', 'are']) and tail[-1] in _SCENE_ENDS and (
+                # "..., there's loads of it lying about": how much of the thing there is, no place
+                tail[-1] not in ('about', 'around', 'everywhere') or 'the' not in tail) and \
+                not _rule_in(tail) and not chatter.has_constraint_word(tail):
             return self._noted_cut(sentence, cut)   # "..., there's traffic on it today"
         if len(tail) >= 3 and tail[0] in ('he', 'she', 'they') and tail[1] in (
                 'gets', 'get', 'worries', 'worry', 'hates', 'hate', 'panics') and not _rule_in(tail):
@@ -992,6 +1009,12 @@ class _Reader:
                 # "Don't go near the pool. You'll get soaked.": a warning after the request
                 self.notes.append(f'left out "{" ".join(sentence)}" (says why, asks for nothing)')
                 continue
+            words = [t for t in sentence if t not in PUNCT]
+            if len(sentences) > 1 and 1 < len(words) <= 4 and words[-1] == 'time' and \
+                    not _rule_in(words) and not set(words) & (SKILL_VERBS | DELIVER_VERBS):
+                # "Reveal shot time! Start low at ...": a heading that names what comes, asks for nothing
+                self.notes.append(f'left out "{" ".join(words)}" (a heading, asks for nothing)')
+                continue
             if len(sentences) > 1 and chatter.is_summons(sentence):
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
                 self.notes.append(f'left out "{" ".join(sentence)}" (says who wants you, asks for nothing)')
@@ -1016,6 +1039,10 @@ class _Reader:
                     ['the', t] if t in SKILL_VERBS and (k == 0 or sentence[k - 1] in listed) and (
                         k + 1 == len(sentence) or sentence[k + 1] in listed or sentence[k + 1] in PUNCT)
                     else [t])]
+            elif self._bare_route(sentence):
+                # "lighthouse to harbour wall, then do it again": the route from the one to the other
+                self.notes.append(f'read "{" ".join(sentence[:self._bare_route(sentence)])}" as a route')
+                sentence = ['go', 'from'] + sentence
             elif self._bare_goal_start(sentence):
                 self._read_bare_goal(sentence)
                 continue
@@ -1147,6 +1174,22 @@ class _Reader:
             first.restore()   # no better read so: as said first
             self.first_error = first_error
 
+    def _bare_route(self, sentence: list[str]) -> int:
+        """Length of "X to Y" opening a sentence with no verb ("lighthouse to harbour wall, ..."), or 0."""
+        if self.phrases.landmarks or not sentence or sentence[0] in SKILL_VERBS or sentence[0] in STOPWORDS \
+                and sentence[0] not in DETS:
+            return 0
+        a = self.phrases.parse(sentence, 0)
+        if a is None or a.pronoun or a.end >= len(sentence) or sentence[a.end] != 'to' or \
+                not all(_is_word(w) for w in sentence[:a.end]):
+            return 0
+        b = self.phrases.parse(sentence, a.end + 1)
+        if b is None or b.pronoun or not all(_is_word(w) for w in sentence[a.end + 1:b.end]) or \
+                b.end < len(sentence) and sentence[b.end] not in PUNCT or \
+                (sentence[0] in DETS) != (sentence[a.end + 1] in DETS):
+            return 0   # (both named alike: "scramble to the landing" is a verb before a place)
+        return b.end
+
     def _places_only(self, sentence: list[str]) -> bool:
         """Whether a sentence is nothing but places ("the den, then the attic", "garage, please")."""
         if self.phrases.landmarks or not sentence or ' '.join(sentence) in IGNORED_CLAUSES:
@@ -1162,6 +1205,11 @@ class _Reader:
             if not chatter.is_remark(sentence[c + 1:n]):
                 break
             n = c
+        for order in (['in', 'any', 'order'], ['in', 'that', 'order'], ['in', 'this', 'order'],
+                      ['in', 'either', 'order']):
+            if n > len(order) + 1 and sentence[n - len(order):n] == order:
+                n -= len(order)   # "the lighthouse and the harbour in any order": read with the goals
+                break
         seen = 0
         while i < n:
             k = i
@@ -1398,7 +1446,13 @@ class _Reader:
             if n + 1 < len(clauses) and self._read_guarded_route(clause, clauses[n + 1]):
                 skip = True
                 continue
+            size = (len(self.task.chain), len(self.task.constraints))
             scope = self._read_part(clause, scope)
+            if clause.connector == 'there' and n + 1 < len(clauses) and clauses[n + 1].connector == 'and' \
+                    and size == (len(self.task.chain), len(self.task.constraints)):
+                # "once you're there the ferry's fine, but stay off the lane": the remark asked for
+                # nothing; what follows it is said of the time from there on
+                clauses[n + 1].connector = 'there'
 
     def _read_guarded_route(self, clause: _Clause, nxt: _Clause) -> bool:
         """Read 'X, but not before you've been to A and, after that, B': X waits for the route A then B.
@@ -1749,6 +1803,9 @@ class _Reader:
                 orders.find_phrase(tokens, GLOBAL_MARKERS)[0] >= 0:
             # "after X, go to Y, and keep away from Z throughout": the whole run, not only after X
             scope = None
+        if tokens[0] in ('starting', 'beginning') and tokens[1:2] and \
+                tokens[1] in ('from', 'with', 'at') and self._read_starting_with(tokens[2:]):
+            return scope
         s = ' '.join(tokens)
         if 'order' in tokens and (s.startswith(('any order', 'in any order', 'the order does not matter',
                                                 'order does not matter', 'the order is up to you',
@@ -1962,6 +2019,24 @@ class _Reader:
                 return scope
         self._read_goal(tokens, clause, scope)
         return scope
+
+    def _read_starting_with(self, tokens: list[str]) -> bool:
+        """'..., starting from the wall': the goal named comes first (said again when it already does)."""
+        np = self.phrases.parse(tokens, 0)
+        if np is None or np.pronoun or np.end != len(tokens):
+            return False
+        d = self._named_before(self._resolve(np, place=True)).descriptor
+        visits = [st for st in self.task.chain[self.sentence_start:] if st.kind == 'visit']
+        same = next((st for st in visits if st.targets == [d]), None)
+        if same is None or sum(st.targets == [d] for st in visits) > 1:
+            return False
+        if same is not visits[0]:
+            # "visit the A, the B and the C, starting with the B": the B moves first
+            k = self.task.chain.index(visits[0])
+            self.task.chain.remove(same)
+            self.task.chain.insert(k, same)
+        self.notes.append(f'{d} first (said as where to start)')
+        return True
 
     _OFF_LIMITS = frozenset({'limits', 'bounds', 'forbidden', 'prohibited', 'banned', 'restricted',
                              'dangerous', 'unsafe', 'hazardous', 'hazard'})
@@ -2484,6 +2559,11 @@ class _Reader:
             np = self.phrases.parse(tokens, i)
             if np is not None and not np.pronoun and self.task.find_step(np.descriptor) is not None:
                 return _Scope('after', np), np.end
+            if np is not None and not np.pronoun and tokens[i - 1] == 'after' and tokens[i:i + 1] == ['the'] \
+                    and tokens[np.end:np.end + 1] in ([','], []) and not np.descriptor.relations and \
+                    np.head not in _EVENT_NOUNS and np.head not in chatter.TIME_NOUNS:
+                # "after the lighthouse, stay off the cliffs": the lighthouse first, then the rest
+                return _Scope('after', self._resolve(np, place=True), 'goal'), np.end
         if k == j:
             return None, i
         np = self.phrases.parse(tokens, k)
@@ -3108,10 +3188,11 @@ class _Reader:
                 rest = rest[:-len(tail)]   # "the paint cans are off limits the whole time"
                 break
         hedges = ('strictly', 'totally', 'completely', 'absolutely', 'always', 'to', 'you', 'for', 'now',
-                  'today', 'a', 'zone', 'area')
+                  'today', 'a', 'zone', 'area', 'strict', 'an', 'total')
         if rest[:1] in (['is'], ['are']) and [t for t in rest[1:] if t not in hedges] in (
                 ['off', 'limits'], ['out', 'of', 'bounds'], ['forbidden'], ['prohibited'], ['banned'],
                 ['restricted'], ['dangerous'], ['unsafe'], ['hazardous'], ['not', 'allowed'], ['no', 'go'],
+                ['no', 'fly'], ['no', 'flying'], ['no', 'drone'], ['no', 'entry'], ['exclusion'],
                 ['not', 'safe'], ['closed'], ['not', 'permitted'], ['a', 'hazard'], ['hazard']):
             self.task.constraints.extend(_never([np.descriptor for np in nps]))   # "the pond is off limits"
             names = ', '.join(str(n.descriptor) for n in nps)
@@ -3724,6 +3805,8 @@ class _Reader:
         for o in objs:
             self.last_object = o
         while rest and rest[0] in ('up', 'back', 'over', 'away', 'out', 'down', 'off', 'along'):
+            if rest[0] == 'over' and rest[1:2] and rest[1] in DETS and not {'to', 'into', 'onto'} & set(rest):
+                break   # "drop it over the sandbank": where it is released
             if rest[0] == 'away' and verb in ('throw', 'toss', 'put'):
                 implicit_dest = TRASH
             rest = rest[1:]
@@ -4052,7 +4135,7 @@ class _Reader:
             if anchor is self.insert_before:
                 self.insert_before = None
         else:
-            before = self.task.last_step(('visit', 'deliver'))
+            before = self.task.last_step(('visit', 'deliver', 'all'))
             self._add_targets(targets, joiner, ordered)
             if strict:
                 self._strict_order(before, targets, joiner)
@@ -4208,7 +4291,17 @@ class _Reader:
         chain.append(moved)
 
     def _strict_order(self, before: Optional[Step], targets: list[Descriptor], joiner: str) -> None:
-        """'go to a, and only then go to b': this clause's goals not before the goal before them."""
+        """'go to a, and only then go to b': this clause's goals not before the goal before them.
+
+        After goals in any order ("a and b, in any order, and only then c") each of them comes first.
+        """
+        if before is not None and before.kind == 'all':
+            lasts = [ch[-1] for ch in before.chains if ch]
+            if all(st.kind == 'visit' for st in lasts) and len(lasts) == len(before.chains):
+                for d in targets if joiner == 'or' else targets[:1]:
+                    self.task.constraints.extend(Until(Not(_near(d)), _or([_near(p) for p in st.targets]))
+                                                 for st in lasts)
+            return
         prev = before.targets if before is not None and before.kind == 'visit' else (
             before.dests if before is not None else [])
         if prev:

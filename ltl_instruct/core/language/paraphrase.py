@@ -27,7 +27,9 @@ from ltl_instruct.core.language.phrases import PhraseParser, singular, with_arti
 
 _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |it is |that is |'
          r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
-         r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)')
+         r'(?: (?:there|here|with (?:that|it|this|them)|in there|over there))?)'
+         # "after you've done the church spire": done a place, visited it (not "when finished")
+         r'(?! (?:the|my|your|our|a|an|both|each)\b)')
 
 
 # a name of a few words, none of them a connective
@@ -61,9 +63,14 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' do (?:the|your|my|our) (?:usual |normal |regular |standard |nightly |night |evening |morning |'
      r'daily )?(?:round|rounds|route|circuit|loop|tour|patrol|walk) (?:, |: )'
      r'(?=[^,.;!?]*(?: , | then | and ))', ' visit '),
+    # "send it up to the clifftop" first thing, nothing named before "it": the drone itself, flown there
+    (r'^ send it (?:(?:up|over|out|down|across) )?(?:to|towards) (?=(?:the|my|your|our) )', ' fly to '),
+    # "beach huts, pier, harbour wall... do that lot backwards": the goals listed ("the lot" alone may
+    # be a parking lot)
+    (r' (?P<v>do|visit|hit|cover|check) (?:all )?(?:that|this) lot ', r' \g<v> them '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),
     # the order left to the robot, said as a remark (before list positions: "which one first" is none)
-    (r' (?:it )?(?:does not|do not|will not) (?:matter|care)(?: to me)? which(?: one| of them| order)?'
+    (r' (?:it )?(?:does not|do not|will not) (?:matter|care|mind)(?: to me)? which(?: one| of them| order)?'
      r'(?: (?:comes|goes|you do|you visit|is done|gets done|you hit))? first ', ' in any order '),
     (r' (?:in )?(?:whichever|whatever|either) order(?: (?:suits you|you like|you want|you prefer|is easier|'
      r'works(?: for you| best)?|you choose|is fine))? ', ' in any order '),
@@ -182,6 +189,12 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' go (?:and )?(?:have|take) a (?:quick |good |close )?(?:look|peek|peep|glance|gander)(?: at it)?'
      r'(?= [,.;!?] |$)', ' go to it '),
     (r' (?:pay|make) a (?:quick )?(?:visit|trip) to ', ' visit '),
+    # pictures asked of a place ("get me a shot of the old mill", "I need shots of the spire"): the
+    # drone goes there; the picture is nothing to pick up
+    (r' (?:(?:get|grab|take|snap|bag|film|shoot) (?:me |us )?|(?:i|we) (?:need|want|would like) )'
+     r'(?:a |an |some |a few |a couple of )?(?:(?:quick|nice|good|decent|wide|close|aerial|clean|more) )?'
+     r'(?:shot|shots|photo|photos|picture|pictures|pic|pics|snaps|footage|video|videos|clip|clips|image|'
+     r'images) of (?=(?:the|my|your|our|that|this|those|these) )', ' go to '),
     (r' (?:check|see|find out|look|make sure|verify|confirm) (?:whether|if) ', ' check '),
     (r' (?:check|see|look) that ', ' check '),
     # "make sure the door is shut": a state to check there (not "make sure you never...")
@@ -410,7 +423,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
                                    ' will want', ' should', ' need to', ' have to', ' must', ' free',
                                    ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
                                    ' supposed', ' sooner', ' earlier', ' or ', ' times', ' back ', ' matter',
-                                   ' care ', ' order', ' do ')):
+                                   ' care ', ' order', ' do ', ' shot', ' photo', ' picture', ' pic',
+                                   ' footage', ' video', ' clip', ' image', ' snaps', ' lot ', ' send ')):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:

@@ -82,6 +82,8 @@ forklift forklifts workstation kennel trampoline scooter scooters cattle slurry 
 hammock casserole headset headsets mantelpiece bedsheet bedsheets stockroom scaffold scaffolding screed
 shredding
 parlour calving twine silage trough
+lighthouse jetty slipway breakwater harbour harbor quay marina boathouse campsite seawall promenade
+boardwalk lifeguard windbreak clifftop sandbank
 '''.split())
 
 

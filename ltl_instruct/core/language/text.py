@@ -36,6 +36,7 @@ TYPOS: dict[str, str] = {
     'visti': 'visit', 'vsit': 'visit', 'vist1': 'visit', 'gp': 'go', 'og': 'go',
     'util': 'until', 'onest': 'first', 'threerd': 'third', 'landark': 'landmark', 'occations': 'occasions',
     'occation': 'occasion', 'endlessy': 'endlessly', 'whichevers': 'whichever is', 'rtb': 'return to base',
+    'rth': 'return to the home point',
     'kitchin': 'kitchen', 'livingroom': 'living room', 'diningroom': 'dining room', 'frontdoor': 'front door',
     'backdoor': 'back door', 'laundryroom': 'laundry room', 'guestroom': 'guest room',
     'frontyard': 'front yard',

@@ -1580,6 +1580,10 @@ class _Reader:
                     tokens[1:]) and len(tokens) > 2:
             self.notes.append(f'left out "{" ".join(clause.tokens)}" (says why, asks for nothing)')
             return scope
+        if clause.connector == 'seq' and self.task.constraints and chatter.is_free_again(tokens):
+            # "avoid the crib until the table; after that it's ok": free again, as the rule says
+            self.notes.append(f'left out "{s}" (the rule before ends there; asks for nothing)')
+            return scope
         if chatter.is_remark(tokens) and not (tokens[:1] == ['either'] and 'or' in tokens):
             self.notes.append(f'left out "{s}" (asks for nothing)')
             return scope
@@ -2055,6 +2059,8 @@ class _Reader:
                 continue
             if out[-1] == 'well':
                 break   # "go to the well"
+            if out[-1] in ('ok', 'okay') and len(out) > 1 and out[-2] in ('is', 'are', 'be'):
+                break   # "it is okay": how a thing is, not a word to end on
             if out[-1] == 'again' and {'never', 'not'} & set(out):
                 break   # "never go there again": no visit after the one said (see _read_avoid)
             out = out[:-1]
@@ -3682,6 +3688,17 @@ class _Reader:
             self.notes.append(f'"{" ".join(tokens)}": going to the place named before')
             return
         last = self.task.chain[-1] if self.task.chain else None
+        them = next((m for m in (['both', 'of', 'them'], ['them', 'both'], ['all', 'of', 'them'],
+                                 ['them', 'all'], ['each', 'of', 'them'], ['them'], ['both'], ['those'],
+                                 ['these'])
+                     if _starts(tokens, k, m)), None)
+        if k > 0 and them is not None and tokens[k + len(them):] in (
+                ['in', 'any', 'order'], ['in', 'either', 'order'], ['in', 'whatever', 'order'],
+                ['in', 'no', 'particular', 'order']) and len(self._goals_named()) > 1:
+            # "go to the sink and the bathtub, do them in any order": the goals already given, any order
+            self.saw_action = True
+            self._any_order()
+            return
         if tokens[k:] in (['both'], ['both', 'of', 'them'], ['them', 'both'], ['all', 'of', 'them'],
                           ['them', 'all'], ['each', 'of', 'them'], ['all', 'three'], ['all', 'four'],
                           ['each'], ['them']) and \

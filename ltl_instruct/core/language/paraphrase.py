@@ -48,7 +48,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' (?:it )?(?:does not|do not|will not) (?:matter|care)(?: to me)? which(?: one| of them| order)?'
      r'(?: (?:comes|goes|you do|you visit|is done|gets done|you hit))? first ', ' in any order '),
     (r' (?:in )?(?:whichever|whatever|either) order(?: (?:suits you|you like|you want|you prefer|is easier|'
-     r'works(?: for you| best)?|you choose|is fine))? ', ' in any order '),
+     r'works(?: for you| best)?|you choose|is fine|is (?:quicker|quickest|faster|fastest|shorter|shortest|'
+     r'best|closer|simpler|more efficient|most efficient)|makes (?:more )?sense))? ', ' in any order '),
     # "laundry room and then 204, or 204 and then the laundry room": both, in any order
     (rf' (?:the )?(?P<a>{_NAME}) (?:and )?(?:then|followed by) (?:the )?(?P<b>{_NAME}) , or (?:the )?(?P=b) '
      r'(?:and )?(?:then|followed by) (?:the )?(?P=a) ',

@@ -45,6 +45,24 @@ BLIND_ROUND_Q4 = [
     ('Visit the mailbox three times. No, twice is enough, and no more.',
      '!near[mailbox] U (near[mailbox] & (near[mailbox] U (!near[mailbox] & (!near[mailbox] U '
      '(near[mailbox] & (near[mailbox] W G !near[mailbox]))))))'),
+    # a comparator corrected with "them" for the landmark ("the bike in front of them"): both were goals
+    ('Go to the bike behind the treadmills... no sorry, the bike in front of them.',
+     'F near[bike::isinfrontof(treadmills)]'),
+    ('Go to the chair next to the desks, no, the chair behind them.',
+     'F near[chair::isbehind(desks)]'),
+    # the avoided thing corrected inside a carrying scope said before it ("while you're carrying it avoid
+    # the cat - I mean avoid the dog, the cat's fine"): the scope kept (the dog was avoided always), and
+    # "Bring it over" after "I need the laptop on my desk" is that delivery (a second pick was added)
+    ("I need the laptop on my desk. Bring it over, and while you're carrying it avoid the cat - sorry, I "
+     "mean avoid the dog, the cat's fine, it's the dog that jumps up.",
+     'F (near[laptop] & F (pick[laptop] & (!near[dog] U (near[desk] & F release[laptop, desk]))))'),
+    ('I need the mug in the sink. Take it over.',
+     'F (near[mug] & F (pick[mug] & F (near[sink] & F release[mug, sink])))'),
+    # "Don't go to Y before that": Y waits for the goal said before (the negation was lost: Y first)
+    ("Go to the kitchen. Don't go to the den before that.",
+     'F near[kitchen] & (!near[den] U near[kitchen])'),
+    ("Go to the stepladder. Help desk first though, don't go to the stepladder before that.",
+     'F near[stepladder] & (!near[stepladder] U near[help_desk])'),
 ]
 
 

@@ -3229,6 +3229,23 @@ class _Reader:
             return True
         if s[-2:] == ['before', 'that'] or s[-3:] == ['before', 'doing', 'that']:
             prev = self.task.last_step(('visit', 'deliver'))
+            neg = 2 if s[:2] == ['do', 'not'] else 1 if s[:1] == ['never'] else 0
+            if neg:
+                # "help desk first, don't go to the ladder before that": the ladder waits for the goal
+                # said before (the negation was lost: the ladder had to come first, silently)
+                prev = self.last_goal if self.last_goal is not None and self.last_goal.kind in (
+                    'visit', 'deliver') else prev
+                k = self._skip_event_verbs(s, neg)
+                nps, joiner, end = self._np_list(s, k)
+                if prev is None or not nps or joiner == 'or' or s[end:] not in (
+                        ['before', 'that'], ['before', 'doing', 'that']):
+                    return False
+                held = [self._named_before(np).descriptor for np in nps]
+                for d in held:
+                    for x in prev.dests or prev.targets:
+                        if d != x:
+                            self.task.constraints.append(Until(Not(_near(d)), _near(x)))
+                return True
             k = self._skip_event_verbs(s, 2)
             nps, _, end = self._np_list(s, k)
             if prev is None or not nps:
@@ -3563,8 +3580,10 @@ class _Reader:
         last = self.task.chain[-1] if self.task.chain else None
         if len(objs) == 1 and tokens[k:k + 1] in (['it'], ['them']) and last is not None and \
                 last.kind == 'deliver' and last.targets == [objs[0].descriptor] and \
-                last.dests == dest_ds and not [t for t in rest if t not in PUNCT] and \
+                (last.dests == dest_ds or not dest_ds and verb in ('bring', 'take', 'carry')) and not [
+                    t for t in rest if t not in PUNCT and t not in ('over', 'along', 'round', 'across')] and \
                 len(self.task.chain) - 1 < self.sentence_start:   # said in a sentence before
+            # ("I need the laptop on my desk. Bring it over.": the destination said before)
             # "get rid of the wrapper? just throw it out": the same delivery said again
             self.notes.append(f'"{" ".join(tokens)}": the delivery of {objs[0].descriptor} said again')
             return True

@@ -691,7 +691,8 @@ def _numbered(head: str) -> bool:
 
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
-    if 'it' in new and ('one' in new or new[:1] and new[0] in DETERMINERS):
+    pron = 'it' if 'it' in new else 'them' if 'them' in new else ''
+    if pron and ('one' in new or new[:1] and new[0] in DETERMINERS):
         # "the chair behind the desk, or rather the one in front of it": it is the desk (and so in
         # "the bin next to the rack, no, I meant the bin behind it")
         spans = _np_spans(prev)
@@ -704,7 +705,7 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
             if ref is not None and rel_at > 0:
                 inner = PhraseParser().parse(prev, rel_at)
                 if inner is not None:
-                    k = new.index('it')
+                    k = new.index(pron)
                     new = new[:k] + prev[rel_at:inner.end] + new[k + 1:]
     relabelled = _relabel(prev, new)
     if relabelled is not None:
@@ -1191,13 +1192,20 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and (
                 c[0] in _COMMAND_START or chatter.carries_constraint(c))]
             a, b = p + spans[0].start, p + spans[0].end
-            if len(kept) == 1 and b < len(prev) and prev[b] in _SCOPE_WORDS:
+            opens = max((q for q in range(p) if prev[q] in PUNCT or prev[q] in ('and', 'then', 'but')),
+                        default=-1)
+            if len(kept) == 1 and (b < len(prev) and prev[b] in _SCOPE_WORDS or any(
+                    prev[q] in _SCOPE_WORDS for q in range(opens + 1, p))):
                 # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place
-                lead = next((k for k in range(len(kept[0])) if kept[0][k] not in _REPLACED_VERB_WORDS), 0)
-                np = PhraseParser().parse(kept[0], lead) if lead else None
-                if np is not None and np.end == len(kept[0]) and not np.pronoun and \
-                        _clause_kind(kept[0][:lead]) == 'avoid':
-                    return prev[:a] + kept[0][lead:] + prev[b:]
+                # (and "while you carry it avoid the cat - I mean avoid the dog, the cat's fine")
+                said = _strip_corr(kept[0]) if kept[0][:1] in (['i'], ['sorry'], ['no']) else kept[0]
+                lead = next((k for k in range(len(said)) if said[k] not in _REPLACED_VERB_WORDS), 0)
+                np = PhraseParser().parse(said, lead) if lead else None
+                if np is not None and np.end == len(said) and not np.pronoun and \
+                        _clause_kind(said[:lead]) == 'avoid':
+                    notes[-1] = f'"{" ".join(prev[a:b])}" replaced by "{" ".join(said[lead:])}" ' \
+                        '(its scope kept)'
+                    return prev[:a] + said[lead:] + prev[b:]
             return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
                 t for c in kept for t in [','] + c]
     return None

@@ -63,6 +63,17 @@ BLIND_ROUND_Q4 = [
      'F near[kitchen] & (!near[den] U near[kitchen])'),
     ("Go to the stepladder. Help desk first though, don't go to the stepladder before that.",
      'F near[stepladder] & (!near[stepladder] U near[help_desk])'),
+    # "in the order I just said": the order of the list (refused); "stop whatever you're doing and ...":
+    # the request follows (refused); "during your rounds": when, not where (refused)
+    ('Hit the stove, the toaster oven and the coffee grinder, in the order I just said.',
+     'F (near[stove] & F (near[toaster_oven] & F near[coffee_grinder]))'),
+    ('Visit the den and the attic in the order I listed them.',
+     'F (near[den] & F near[attic])'),
+    ("Stop whatever you're doing and come to the patio table.",
+     'F near[patio_table]'),
+    ('go by the front window three times durring your rounds',
+     'F (near[front_window] & F (!near[front_window] & F (near[front_window] & F (!near[front_window] & F '
+     'near[front_window]))))'),
 ]
 
 

@@ -43,6 +43,15 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'|$)',
      ' , in any order '),
     (r' do a (?:quick )?(?:round|tour|circuit) of ', ' visit '),
+    # "in the order I just said", "in the order I listed them": the order said
+    (r' (?:, )?in the (?:same )?order (?:i |that i )?(?:just )?(?:said|gave|listed|named|mentioned|read out|'
+     r'called out)(?: (?:them|it|those|these))?(?: (?:in|to you))?(?= [,.;!?] | ?$)', ' in that order '),
+    (r' (?:, )?in the order (?:given|listed|stated)(?= [,.;!?] | ?$)', ' in that order '),
+    # "stop whatever you're doing and come to X": the request is what follows
+    (r'(^ | [.;!?] )(?:stop|drop|leave) (?:whatever|what) you are doing(?: right now| now)?(?: and| ,)? ',
+     r'\1 '),
+    # "go by the window three times during your rounds": when, not where
+    (r' (?:during|on|in the course of) your (?:rounds|round|patrol|shift)(?= [,.;!?] | ?$)', ' '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),
     # the order left to the robot, said as a remark (before list positions: "which one first" is none)
     (r' (?:it )?(?:does not|do not|will not) (?:matter|care)(?: to me)? which(?: one| of them| order)?'

@@ -1019,6 +1019,9 @@ def _in_rule_clause(tokens: list[str], i: int) -> bool:
     return bool(PLACE_RULE_WORDS & set(tokens[k:i]))
 
 
+_COPULAS = frozenset({'is', 'are', 'was', 'were', 'be', 'been'})
+
+
 def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> list[str]:
     out: list[str] = []
     i = 0
@@ -1035,7 +1038,8 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
             if hit:
                 i += hit
                 continue
-        if i > 0 and tokens[i - 1] not in DETERMINERS:
+        # (not after a copula: "it is okay" says how a thing is, "okay" is no courtesy there)
+        if i > 0 and tokens[i - 1] not in DETERMINERS and tokens[i - 1] not in _COPULAS:
             for phrase in _COURTESY_BY_FIRST.get(tokens[i], ()):
                 m = len(phrase)
                 ends = i + m >= n or tokens[i + m] in _CLAUSE_END or (   # (or "..., please")
@@ -1144,6 +1148,22 @@ _REMARK_RE = re.compile(
     r'(?: (?:for )?(?:today|now|'
     r'tonight|this time))?'
     r')$')
+
+
+# "(avoid X until Y;) after that it's ok", "then it should be empty": the place held back is free
+# again once the rule ends, which the rule says already. Read only after "after that" / "then" ("it's
+# fine" alone may retract a rule: "avoid the hall. actually it's fine").
+_FREE_AGAIN_RE = re.compile(
+    r'^(?:after that |afterwards |from then on |from there on )?(?:, )?'
+    r'(?:it|that|they|this|the rest) (?:is|are|s|should be|will be|would be|ought to be|becomes|gets) '
+    r'(?:all |totally |completely |perfectly |probably |then )?'
+    r'(?:ok|okay|fine|alright|allowed|free|clear|empty|quiet|safe)(?: (?:again|to go|by me))?'
+    r'(?: (?:after that|afterwards|from then on))?$')
+
+
+def is_free_again(tokens: Sequence[str]) -> bool:
+    """Whether words say a place is free again ("it's ok", "it should be empty"), no rule of their own."""
+    return bool(tokens) and _FREE_AGAIN_RE.match(' '.join(tokens)) is not None
 
 
 _REMARK_STARTS = frozenset({'either', 'whichever', 'i', 'any', 'both', 'no', 'it', 'does', 'do', 'your',

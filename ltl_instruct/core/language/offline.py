@@ -1827,6 +1827,10 @@ class _Reader:
                     tokens[1:]) and len(tokens) > 2:
             self.notes.append(f'left out "{" ".join(clause.tokens)}" (says why, asks for nothing)')
             return scope
+        if clause.connector == 'seq' and self.task.constraints and chatter.is_free_again(tokens):
+            # "avoid the crib until the table; after that it's ok": free again, as the rule says
+            self.notes.append(f'left out "{s}" (the rule before ends there; asks for nothing)')
+            return scope
         if chatter.is_remark(tokens) and not (tokens[:1] == ['either'] and 'or' in tokens):
             self.notes.append(f'left out "{s}" (asks for nothing)')
             return scope
@@ -2324,6 +2328,8 @@ class _Reader:
                 continue
             if out[-1] == 'well':
                 break   # "go to the well"
+            if out[-1] in ('ok', 'okay') and len(out) > 1 and out[-2] in ('is', 'are', 'be'):
+                break   # "it is okay": how a thing is, not a word to end on
             if out[-1] == 'again' and {'never', 'not'} & set(out):
                 break   # "never go there again": no visit after the one said (see _read_avoid)
             out = out[:-1]
@@ -3521,6 +3527,23 @@ class _Reader:
             return True
         if s[-2:] == ['before', 'that'] or s[-3:] == ['before', 'doing', 'that']:
             prev = self.task.last_step(('visit', 'deliver'))
+            neg = 2 if s[:2] == ['do', 'not'] else 1 if s[:1] == ['never'] else 0
+            if neg:
+                # "help desk first, don't go to the ladder before that": the ladder waits for the goal
+                # said before (the negation was lost: the ladder had to come first, silently)
+                prev = self.last_goal if self.last_goal is not None and self.last_goal.kind in (
+                    'visit', 'deliver') else prev
+                k = self._skip_event_verbs(s, neg)
+                nps, joiner, end = self._np_list(s, k)
+                if prev is None or not nps or joiner == 'or' or s[end:] not in (
+                        ['before', 'that'], ['before', 'doing', 'that']):
+                    return False
+                held = [self._named_before(np).descriptor for np in nps]
+                for d in held:
+                    for x in prev.dests or prev.targets:
+                        if d != x:
+                            self.task.constraints.append(Until(Not(_near(d)), _near(x)))
+                return True
             k = self._skip_event_verbs(s, 2)
             nps, _, end = self._np_list(s, k)
             if prev is None or not nps:
@@ -3859,8 +3882,10 @@ class _Reader:
         last = self.task.chain[-1] if self.task.chain else None
         if len(objs) == 1 and tokens[k:k + 1] in (['it'], ['them']) and last is not None and \
                 last.kind == 'deliver' and last.targets == [objs[0].descriptor] and \
-                last.dests == dest_ds and not [t for t in rest if t not in PUNCT] and \
+                (last.dests == dest_ds or not dest_ds and verb in ('bring', 'take', 'carry')) and not [
+                    t for t in rest if t not in PUNCT and t not in ('over', 'along', 'round', 'across')] and \
                 len(self.task.chain) - 1 < self.sentence_start:   # said in a sentence before
+            # ("I need the laptop on my desk. Bring it over.": the destination said before)
             # "get rid of the wrapper? just throw it out": the same delivery said again
             self.notes.append(f'"{" ".join(tokens)}": the delivery of {objs[0].descriptor} said again')
             return True
@@ -3984,6 +4009,17 @@ class _Reader:
             self.notes.append(f'"{" ".join(tokens)}": going to the place named before')
             return
         last = self.task.chain[-1] if self.task.chain else None
+        them = next((m for m in (['both', 'of', 'them'], ['them', 'both'], ['all', 'of', 'them'],
+                                 ['them', 'all'], ['each', 'of', 'them'], ['them'], ['both'], ['those'],
+                                 ['these'])
+                     if _starts(tokens, k, m)), None)
+        if k > 0 and them is not None and tokens[k + len(them):] in (
+                ['in', 'any', 'order'], ['in', 'either', 'order'], ['in', 'whatever', 'order'],
+                ['in', 'no', 'particular', 'order']) and len(self._goals_named()) > 1:
+            # "go to the sink and the bathtub, do them in any order": the goals already given, any order
+            self.saw_action = True
+            self._any_order()
+            return
         if tokens[k:] in (['both'], ['both', 'of', 'them'], ['them', 'both'], ['all', 'of', 'them'],
                           ['them', 'all'], ['each', 'of', 'them'], ['all', 'three'], ['all', 'four'],
                           ['each'], ['them']) and \

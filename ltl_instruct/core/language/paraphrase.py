@@ -68,12 +68,22 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "beach huts, pier, harbour wall... do that lot backwards": the goals listed ("the lot" alone may
     # be a parking lot)
     (r' (?P<v>do|visit|hit|cover|check) (?:all )?(?:that|this) lot ', r' \g<v> them '),
+    # "in the order I just said", "in the order I listed them": the order said
+    (r' (?:, )?in the (?:same )?order (?:i |that i )?(?:just )?(?:said|gave|listed|named|mentioned|read out|'
+     r'called out)(?: (?:them|it|those|these))?(?: (?:in|to you))?(?= [,.;!?] | ?$)', ' in that order '),
+    (r' (?:, )?in the order (?:given|listed|stated)(?= [,.;!?] | ?$)', ' in that order '),
+    # "stop whatever you're doing and come to X": the request is what follows
+    (r'(^ | [.;!?] )(?:stop|drop|leave) (?:whatever|what) you are doing(?: right now| now)?(?: and| ,)? ',
+     r'\1 '),
+    # "go by the window three times during your rounds": when, not where
+    (r' (?:during|on|in the course of) your (?:rounds|round|patrol|shift)(?= [,.;!?] | ?$)', ' '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),
     # the order left to the robot, said as a remark (before list positions: "which one first" is none)
     (r' (?:it )?(?:does not|do not|will not) (?:matter|care|mind)(?: to me)? which(?: one| of them| order)?'
      r'(?: (?:comes|goes|you do|you visit|is done|gets done|you hit))? first ', ' in any order '),
     (r' (?:in )?(?:whichever|whatever|either) order(?: (?:suits you|you like|you want|you prefer|is easier|'
-     r'works(?: for you| best)?|you choose|is fine))? ', ' in any order '),
+     r'works(?: for you| best)?|you choose|is fine|is (?:quicker|quickest|faster|fastest|shorter|shortest|'
+     r'best|closer|simpler|more efficient|most efficient)|makes (?:more )?sense))? ', ' in any order '),
     # "laundry room and then 204, or 204 and then the laundry room": both, in any order
     (rf' (?:the )?(?P<a>{_NAME}) (?:and )?(?:then|followed by) (?:the )?(?P<b>{_NAME}) , or (?:the )?(?P=b) '
      r'(?:and )?(?:then|followed by) (?:the )?(?P=a) ',

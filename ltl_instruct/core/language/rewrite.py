@@ -578,7 +578,10 @@ def _marker_at(tokens: list[str], i: int) -> int:
     if i > 0 and tokens[i - 1] not in PUNCT and tokens[i - 1] not in ('hmm', 'oh', 'wait', 'actually', 'er',
                                                                       'um', 'sorry', 'no') and not (
             # "..., she's gone out, so forget about the cat": the reason, then the correction
-            tokens[i - 1] == 'so' and i > 1 and tokens[i - 2] == ','):
+            tokens[i - 1] == 'so' and i > 1 and tokens[i - 2] == ',') and not (
+            # "Oh, and ignore what I said about the lift": "and" opens the sentence, the retraction follows
+            tokens[i - 1] in ('and', 'also') and (i == 1 or tokens[i - 2] in PUNCT) and
+            tokens[i] in ('forget', 'ignore', 'scratch', 'scrap', 'never')):
         bare = next((m for m in _BARE_MARKERS if tuple(tokens[i:i + len(m)]) == m), None)
         if bare is None or tokens[i - 1] in DETERMINERS or tokens[i - 1] in _NOT_A_NAME_END or \
                 i + len(bare) >= len(tokens) or tokens[i + len(bare)] in PUNCT:
@@ -691,7 +694,8 @@ def _numbered(head: str) -> bool:
 
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
-    if 'it' in new and ('one' in new or new[:1] and new[0] in DETERMINERS):
+    pron = 'it' if 'it' in new else 'them' if 'them' in new else ''
+    if pron and ('one' in new or new[:1] and new[0] in DETERMINERS):
         # "the chair behind the desk, or rather the one in front of it": it is the desk (and so in
         # "the bin next to the rack, no, I meant the bin behind it")
         spans = _np_spans(prev)
@@ -704,7 +708,7 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
             if ref is not None and rel_at > 0:
                 inner = PhraseParser().parse(prev, rel_at)
                 if inner is not None:
-                    k = new.index('it')
+                    k = new.index(pron)
                     new = new[:k] + prev[rel_at:inner.end] + new[k + 1:]
     relabelled = _relabel(prev, new)
     if relabelled is not None:
@@ -1244,13 +1248,20 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and (
                 c[0] in _COMMAND_START or chatter.carries_constraint(c))]
             a, b = p + spans[0].start, p + spans[0].end
-            if len(kept) == 1 and b < len(prev) and prev[b] in _SCOPE_WORDS:
+            opens = max((q for q in range(p) if prev[q] in PUNCT or prev[q] in ('and', 'then', 'but')),
+                        default=-1)
+            if len(kept) == 1 and (b < len(prev) and prev[b] in _SCOPE_WORDS or any(
+                    prev[q] in _SCOPE_WORDS for q in range(opens + 1, p))):
                 # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place
-                lead = next((k for k in range(len(kept[0])) if kept[0][k] not in _REPLACED_VERB_WORDS), 0)
-                np = PhraseParser().parse(kept[0], lead) if lead else None
-                if np is not None and np.end == len(kept[0]) and not np.pronoun and \
-                        _clause_kind(kept[0][:lead]) == 'avoid':
-                    return prev[:a] + kept[0][lead:] + prev[b:]
+                # (and "while you carry it avoid the cat - I mean avoid the dog, the cat's fine")
+                said = _strip_corr(kept[0]) if kept[0][:1] in (['i'], ['sorry'], ['no']) else kept[0]
+                lead = next((k for k in range(len(said)) if said[k] not in _REPLACED_VERB_WORDS), 0)
+                np = PhraseParser().parse(said, lead) if lead else None
+                if np is not None and np.end == len(said) and not np.pronoun and \
+                        _clause_kind(said[:lead]) == 'avoid':
+                    notes[-1] = f'"{" ".join(prev[a:b])}" replaced by "{" ".join(said[lead:])}" ' \
+                        '(its scope kept)'
+                    return prev[:a] + said[lead:] + prev[b:]
             return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
                 t for c in kept for t in [','] + c]
     return None
@@ -2004,6 +2015,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 return None
             notes.append('the avoidance was retracted')
             return _remove_clause(prev, pos) + rest
+        if rest[:1] and rest[0] in ('it', 'they', 'that', 'those') and ',' in rest and \
+                chatter.is_statement(rest[:rest.index(',')]) and not chatter.has_constraint_word(
+                    rest[:rest.index(',')]):
+            # "ignore what I said about the lift, it's fine, avoid the stairs": why, then the replacement
+            rest = rest[rest.index(',') + 1:]
         new = _strip_corr(rest)
         if new and new[0] not in DETERMINERS and new[0] not in _VERBS and len(new) <= 4 and all(
                 w.isalpha() and w not in chatter.CONSTRAINT_WORDS and w not in PUNCT for w in new):
@@ -2408,6 +2424,14 @@ _COUNT_MODS: tuple[tuple[str, ...], ...] = (
 _BOUNDS = (('more', 'than'), ('no', 'more', 'than'), ('not', 'more', 'than'))
 
 
+# Verbs between a bare number and "enough" ("three's plenty", "two will do").
+_ENOUGH_VERBS = frozenset({'is', 's', 'will', 'would', 'should', 'are'})
+# A bound said after the corrected count ("once is enough, but no more than that"): exactly that many.
+_NO_MORE: tuple[tuple[str, ...], ...] = (('no', 'more', 'than', 'that'), ('not', 'more', 'than', 'that'),
+                                         ('but', 'no', 'more'), ('and', 'no', 'more'), ('not', 'more'),
+                                         ('never', 'more'), ('no', 'more', 'than', 'once'))
+
+
 def _number(word: str) -> bool:
     """Whether a word is a number ("three", "4": "lobby 3 times. no, make it 4")."""
     return word in NUMBER_WORDS or word.isdigit() and len(word) <= 2
@@ -2419,6 +2443,11 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     if seg[:1] == ['not'] and ',' in seg[1:5]:
         seg = seg[seg.index(',') + 1:]   # "no wait, not twice, once": the count after the comma
     words = [t for t in seg if t not in PUNCT]
+    if len(words) > 2 and _number(words[0]) and words[0] not in counts and words[1] in _ENOUGH_VERBS and \
+            {'enough', 'plenty', 'fine', 'sufficient', 'do', 'ok', 'okay'} & set(words[2:4]) and (
+            'times' in prev or any(t in counts for t in prev)):
+        seg = [seg[0], 'times'] + seg[1:]   # "four times. no, three's plenty": three times
+        words = [t for t in seg if t not in PUNCT]
     if len(words) == 1 and _number(words[0]) and words[0] not in counts and (
             'times' in prev or any(t in counts for t in prev)):
         seg = words = [words[0], 'times']   # "two times, no, make it three": three times
@@ -2429,6 +2458,8 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     if new < 0 or not (said or bare):
         return None
     mod = next((m for m in _COUNT_MODS if tuple(seg[new - len(m):new]) == m), ())
+    if not mod and any(tuple(seg[k:k + len(m)]) == m for k in range(new + 1, len(seg)) for m in _NO_MORE):
+        mod = ('exactly',)   # "actually once is enough, but no more than that": exactly once
     new_words = list(mod) + seg[new:new + (1 if seg[new] in counts else 2)]
     tail = seg[new + (1 if seg[new] in counts else 2):]
     if not (tail[:1] == [','] and tail[1:2] and tail[1] in ('then', 'and', 'after', 'but', 'and', 'before') or

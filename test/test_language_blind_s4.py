@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import check_translation
+from ltl_instruct.core.errors import TranslationError
+from translation_cases import T, check_translation
 
 BLIND_ROUND_S4 = [
     # an avoidance taken back, then "it's Y that's wet" / "it's Y I'm worried about" names what
@@ -37,7 +38,61 @@ BLIND_ROUND_S4 = [
      'F near[conservatory]'),
     ('Go to the garden, then the shed. Actually, just go to the conservatory.',
      'F near[conservatory]'),
+    # "round the back", "out the back": roughly where a thing is, no place of its own (the whole
+    # drone leg was left out)
+    ('Drone, survey the car park first, then hover over the bins round the back, and after that come down at '
+     'the staff entrance.',
+     'F (near[car_park] & F (near[bins] & F near[staff_entrance]))'),
+    ('go to the shed out the back then the gate',
+     'F (near[shed] & F near[gate])'),
+    # what somebody wants, said as a sentence before the request, is no place ("arthur_wants_his_wellies"
+    # was the place every other one waited for)
+    ("Arthur wants his wellies. You can head out to the garden, but not till you've been to the boot room "
+     'and the front porch - both, any order.',
+     'F near[garden] & (!near[garden] U near[boot_room]) & (!near[garden] U near[front_porch])'),
+    ('Marco wants a coffee. Go to the kitchen.',
+     'F near[kitchen]'),
+    # a warning of a mess ("you'll trail mud everywhere!") says why (it was a goal)
+    ("Once you've been out in the garden, don't go back near the kitchen - you'll trail mud everywhere! Then "
+     'head to the boot room.',
+     'F (near[garden] & G !near[kitchen] & F near[boot_room])'),
+    # a pet or a person named without an article, with a verb of what it does ("Tiddles scratches"), says
+    # why (it was avoided as a place)
+    ('Put the flower vase on the table in front of the big window, and don\'t go anywhere near the cat '
+     'basket, Tiddles scratches.',
+     'F (near[flower_vase] & F (pick[flower_vase] & F (near[table::isinfrontof(big_window)] & '
+     'F release[flower_vase, table::isinfrontof(big_window)]))) & G !near[cat_basket]'),
+    ('avoid the cat basket, Rex bites strangers', 'G !near[cat_basket]'),
+    # "Arthur's waiting" between commas is a clause of its own (Arthur was a second destination)
+    ("Take the teapot to the conservatory, Arthur's waiting, and keep away from the stairs while you've got "
+     "it - it's hot.",
+     'F (near[teapot] & F (pick[teapot] & (!near[stairs] U (near[conservatory] & '
+     'F release[teapot, conservatory]))))'),
+    # "'s" before a past participle is "has" ("Stan's finished with it" was a place stans_finished)
+    ("Could you throw away the old newspaper, love? Stan's finished with it.",
+     'F (near[old_newspaper] & F (pick[old_newspaper] & F (near[trash_can] & '
+     'F release[old_newspaper, trash_can])))'),
+    # ", wherever Joan's sat" after a choice says which one, no place (it was a third alternative)
+    ("Take the blanket and put it on the sofa or the recliner, wherever Joan's sat.",
+     'F (near[blanket] & F (pick[blanket] & (F (near[sofa] & F release[blanket, sofa]) | '
+     'F (near[recliner] & F release[blanket, recliner]))))'),
+    ('Go to the lounge or the garden, wherever she is sitting.',
+     'F near[lounge] | F near[garden]'),
 ]
+
+# A condition on what happens to a thing ("if it gets dropped") is no place to wait for: refused (it
+# was read as a weak until on a place "gets_dropped")
+REFUSED_S4 = [
+    "Take the teapot to the conservatory and keep away from the stairs while you've got it, if it gets "
+    "dropped we'll never find it.",
+]
+
+
+@pytest.mark.parametrize('instruction', REFUSED_S4)
+def test_refused_on_blind_set_s4(instruction: str) -> None:
+    """What cannot be placed is refused, never guessed."""
+    with pytest.raises(TranslationError):
+        T.translate(instruction)
 
 
 @pytest.mark.parametrize('instruction,gold', BLIND_ROUND_S4)

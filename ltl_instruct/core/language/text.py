@@ -87,6 +87,9 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
      r"low|flat|loose|wobbly|unstable|frayed|exposed|leaking|leaky|sticky|cracked|jammed|stuck|faulty|"
      r"unplugged|noisy|loud|messy)\b)", ' is'),
     (r"\b(one|two|three|four|five|six|once|twice)'s\b", r'\1 is'),   # "no, three's plenty"
+    # "Stan's finished with it", "wherever Joan's sat": "has" before a past participle
+    (r"'s(?= (?:finished|sat|gone|done|got|asked|said|told|come|arrived|fallen|moved|lost|forgotten|had|"
+     r"eaten|started|stopped|seen|promised|decided|dropped|spilt|spilled)\b)", ' has'),
     # "grandma's sleeping": "is", before a verb in -ing (not "dad's walking stick")
     (r"'s(?= [a-z]+ing\b(?! (?:stick|sticks|machine|glasses|bag|board|table|room|chair|rod|frame|shoes|mat|"
      r"pole|line|basket|boots|gloves|kit|pad|area|station|cane|aid|lamp|desk|tray|can)\b))", ' is'),

@@ -78,6 +78,21 @@ BLIND_ROUND_S4 = [
      'F (near[recliner] & F release[blanket, recliner]))))'),
     ('Go to the lounge or the garden, wherever she is sitting.',
      'F near[lounge] | F near[garden]'),
+    # "backwards, gate first": the start of the reversed list said again (it was glued to the first thing
+    # listed, "ground_floor_bathroom_gate", as the first goal)
+    ('Three places need checking before lunch: the ground floor bathroom, the lift and the garden gate. Do '
+     'them backwards, gate first.',
+     'F (near[garden_gate] & F (near[lift] & F near[ground_floor_bathroom]))'),
+    ('Three places need checking: the bathroom, the lift and the garden gate. Do them backwards, starting '
+     'with the gate.',
+     'F (near[garden_gate] & F (near[lift] & F near[bathroom]))'),
+    # "either lounge, the big one or the little one": the kind, then which (the plain lounge was a
+    # third alternative)
+    ('Go to either lounge, the big one or the little one, just keep clear of the hoist whichever you pick.',
+     '(F near[big_lounge] | F near[little_lounge]) & G !near[hoist]'),
+    # "on your wat to": a slip in "on your way to" (a goal "wat" was added and the scope lost)
+    ("On your wat to the dinning room keep clear of the mop bucket, there's water everywhere.",
+     '!near[mop_bucket] U near[dining_room]'),
 ]
 
 # A condition on what happens to a thing ("if it gets dropped") is no place to wait for: refused (it

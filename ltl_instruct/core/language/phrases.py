@@ -576,6 +576,10 @@ class PhraseParser:
             i = nxt.end
         if choice and len(phrases) > 1:
             joiner = 'or'
+        kind = phrases[0].descriptor
+        if joiner == 'or' and len(phrases) > 2 and not kind.relations and not phrases[0].pronoun and all(
+                p.pronoun == 'one' and p.descriptor.name.endswith('_' + kind.name) for p in phrases[1:]):
+            phrases = phrases[1:]   # "either lounge, the big one or the little one": the kind, then which
         return phrases, joiner, i
 
 

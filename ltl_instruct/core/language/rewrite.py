@@ -241,6 +241,13 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
     (r'\bthe one in between\b', 'the middle one'),
+    # "do them backwards, gate first": the last thing listed said again as the start (it was merged
+    # with the first thing, "bathroom_gate")
+    (r'\bin reverse order (?:, |- )(?:(?:so |i e )?(?:the )?(?P<x>[a-z]+(?: [a-z]+){0,2}) first|'
+     r'(?:starting|beginning|start|begin) (?:with|at|from) (?:the )?(?P<y>[a-z]+(?: [a-z]+){0,2}))'
+     r'(?= [.;!?]|$)',
+     lambda m: 'in reverse order' if _last_listed(m.string[:m.start()], m.group('x') or m.group('y'))
+     else m.group(0)),
     # "start from the last one and finish on the first one" after a list: the list in reverse order
     (r'(?:^|(?<=[.;!?] ))(?:and |so |now )?(?:start|begin)(?:ing)? (?:from|with|at|on) the last(?: one)?'
      r'(?: ,)?(?: (?:and |then )?(?:finish|end)(?:ing)? (?:on|with|at|in) the first(?: one)?)?(?= [.;!?]|$)',
@@ -253,6 +260,12 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     # "the outer two": the first and the last
     (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
 ))
+
+
+def _last_listed(before: str, said: str) -> bool:
+    """Whether ``said`` ends the last thing of the last list in ``before`` ("..., the lift and the gate")."""
+    found = re.findall(r'\band (?:the |a |an |my |our )?([a-z ]+?) [.;:!?] ', before + ' ')
+    return bool(found) and found[-1].split()[-1] == said.split()[-1]
 
 
 # Words that end no listed thing ("go to the first one and avoid the other two").

@@ -62,6 +62,9 @@ TYPOS: dict[str, str] = {
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
+# "on your wat to the dining room": a slip in "on your way to" (one letter, a word of its own)
+_WAY_RE = re.compile(r'\b(on (?:your|the|my|its) )(?:wat|wau|wy|wya|waay|wey)'
+                     r'(?= (?:to|back|in|out|there|over)\b)')
 
 # Family members named like names, with no article ("Mum's bedroom", "Dad always worries").
 FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
@@ -286,6 +289,8 @@ def tokenize(text: str) -> list[str]:
         s = re.sub(r'\b(stay|keep|get) of (?=the )', r'\1 off ', s)
     if ' form ' in s:
         s = _FORM_RE.sub(r'\1 from', s)
+    if ' w' in s:
+        s = _WAY_RE.sub(r'\1way', s)
     if 'forth ' in s:   # "the forth floor": the fourth
         s = re.sub(r'\bforth (?=floor|time|stop|room|door|one|place|aisle|bay|shelf|level|row)', 'fourth ', s)
     out: list[str] = []

@@ -93,6 +93,15 @@ BLIND_ROUND_S4 = [
     # "on your wat to": a slip in "on your way to" (a goal "wat" was added and the scope lost)
     ("On your wat to the dinning room keep clear of the mop bucket, there's water everywhere.",
      '!near[mop_bucket] U near[dining_room]'),
+    # "wait, do Y instead of X" after a reason that names X ("they're mopping the kitchen - ..."): the
+    # reason asks for nothing, Y replaces X (refused)
+    ("Go to the laundry, then the kitchen, and keep off the wet floor. Wait, they're mopping the kitchen - "
+     'do the dining room instead of the kitchen.',
+     'F (near[laundry] & F near[dining_room]) & G !near[wet_floor]'),
+    # "the whole way round": the whole way (refused)
+    ('Stop at the quiet lounge, then the activity room, and lastly the garden door. And please keep well '
+     'away from the stairs the whole way round.',
+     'F (near[quiet_lounge] & F (near[activity_room] & F near[garden_door])) & G !near[stairs]'),
 ]
 
 # A condition on what happens to a thing ("if it gets dropped") is no place to wait for: refused (it

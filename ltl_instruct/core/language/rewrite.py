@@ -1194,6 +1194,11 @@ _WORRIED = (('i', 'am', 'worried', 'about'), ('we', 'are', 'worried', 'about'),
             ('you', 'should', 'avoid'), ('to', 'avoid'), ('that', 'needs', 'avoiding'))
 
 
+def _said_replaced(seg: list[str]) -> bool:
+    """Whether a correction names what it replaces ("do the dining room instead of the kitchen")."""
+    return any(seg[k:k + 2] in (['instead', 'of'], ['rather', 'than']) for k in range(len(seg) - 2))
+
+
 def _cleft_avoidance(part: list[str]) -> list[str]:
     """After an avoidance taken back, "it's the stairs I'm worried about" / "it's Y that's wet" avoid Y."""
     if part[:2] != ['it', 'is'] or len(part) < 5:
@@ -1878,10 +1883,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 seg, stripped = (['just'] if lead[0] == 'just' else []) + seg[len(lead):], True
         cut = seg.index(',') if ',' in seg else -1
         go = cut + 1 + (seg[cut + 1:cut + 2] == ['so'])
-        if cut > 2 and seg[go:go + 1] and (seg[go] == 'just' or seg[go] in _VERBS) and \
+        if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do') or seg[go] in _VERBS) and \
                 chatter.is_statement(seg[:cut], _np_end(seg[:cut])) and \
                 not chatter.carries_constraint(seg[:cut]) and \
-                not {sp.head for sp in _np_spans(seg[:cut])} & {sp.head for sp in _np_spans(prev)}:
+                (not {sp.head for sp in _np_spans(seg[:cut])} & {sp.head for sp in _np_spans(prev)} or
+                 _said_replaced(seg[go:])):
             # "actually it's chucking it down, just go to the conservatory": the reason asks for nothing
             notes.append(f'left out "{" ".join(seg[:cut])}" (asks for nothing)')
             seg, stripped = seg[go:], True

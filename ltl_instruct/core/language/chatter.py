@@ -150,7 +150,11 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'that', 'is', 'okay'), ('if', 'that', 'is', 'alright'), ('if', 'that', 'is', 'fine'),
     ('if', 'you', 'would', 'be', 'so', 'kind'), ('if', 'it', 'is', 'not', 'too', 'much', 'trouble'),
     ('on', 'your', 'way', 'out'), ('on', 'the', 'way', 'out'), ('and', 'back'), ('and', 'back', 'again'),
-    ('there', 'and', 'back'), ('right', 'away'), ('at', 'once'), ('as', 'fast', 'as', 'you', 'can'),
+    ('there', 'and', 'back'),
+    # where a thing roughly is ("the bins round the back"): no place of its own
+    ('round', 'the', 'back'), ('around', 'the', 'back'), ('round', 'the', 'front'),
+    ('around', 'the', 'front'), ('out', 'the', 'back'), ('out', 'back'), ('out', 'front'),
+    ('round', 'the', 'side'), ('right', 'away'), ('at', 'once'), ('as', 'fast', 'as', 'you', 'can'),
     ('as', 'quickly', 'as', 'you', 'can'), ('as', 'soon', 'as', 'you', 'can'),
     ('as', 'quickly', 'as', 'possible'), ('as', 'fast', 'as', 'possible'),
     ('when', 'you', 'get', 'a', 'sec'), ('when', 'you', 'get', 'a', 'second'),
@@ -700,7 +704,8 @@ _ARRIVING = frozenset({'in', 'due', 'arriving', 'here', 'back', 'coming'})
 
 
 # Words that point at a thing or a place, and of a place to be left alone, in what somebody wants.
-_POINTING = frozenset({'the', 'this', 'that', 'these', 'those', 'my', 'our', 'his', 'her', 'their', 'its'})
+# (not "his", "her", "their": "Arthur wants his wellies" names a belonging of the person, no place)
+_POINTING = frozenset({'the', 'this', 'that', 'these', 'those', 'my', 'our', 'its'})
 _NOBODY_THERE = frozenset({'nobody', 'noone', 'empty', 'alone', 'themselves', 'himself', 'herself', 'privacy',
                            'clear', 'quiet', 'free', 'peace'})
 
@@ -1111,6 +1116,9 @@ _REMARK_RE = re.compile(
     r'(?: of (?:them|those|these|the (?:two|three|four|five)(?: \w+)?))?(?: (?:will do|is fine|works))?'
     r'|whichever(?: one)? you (?:get to|reach|see|like|want|prefer|come to|find|spot)(?: first)?'
     r'|wherever(?: is| s)? (?:clearer|closer|nearer|quieter|easier|safer|less \w+)'
+    # "the sofa or the recliner, wherever Joan's sat": whichever the person is at
+    r'|wherever (?:he|she|they|it|[a-z]+) (?:is|are|has|have) (?:got to|gone|gone to|sat|sitting|settled|'
+    r'ended up|wandered off to|hiding|sat down|parked|put (?:himself|herself|themselves))'
     r'|(?:whichever|which)(?: one)? (?:is |s )?(?:more )?'
     r'(?:easier|easiest|closer|close|nearer|near|quicker|faster|nearest)'
     r'(?: (?:for you|to you|to get to))?'

@@ -375,7 +375,8 @@ _MISHAPS = frozenset({'tumbling', 'falling', 'knocking', 'bumping', 'crashing', 
 _CONSEQUENCES = frozenset({
     'wake', 'trip', 'fall', 'slip', 'knock', 'spill', 'break', 'scare', 'startle', 'upset', 'disturb', 'burn',
     'hurt', 'tumble', 'topple', 'crash', 'bump', 'squash', 'frighten', 'annoy', 'wreck', 'smash', 'trample',
-    'get', 'set', 'catch', 'soak', 'scratch', 'damage', 'ruin', 'tip'})
+    'get', 'set', 'catch', 'soak', 'scratch', 'damage', 'ruin', 'tip', 'trail', 'tread', 'track', 'drip',
+    'smear', 'splash', 'muddy', 'dirty'})
 _NOT_STATES = frozenset({'it', 'them', 'there', 'here', 'back', 'to', 'him', 'her', 'me', 'us', 'up', 'out',
                          'in', 'into', 'on', 'onto', 'off', 'over', 'round', 'around', 'through', 'past'})
 
@@ -936,6 +937,10 @@ class _Reader:
                                         tail[k + 1] not in DETS and tail[k + 1] not in _PLACE_PREPS)
                 for k, t in enumerate(tail) if k >= 2):
             return self._noted_cut(sentence, cut)   # "..., the neighbours complain"
+        if 2 <= len(tail) <= 4 and first not in DETS and tail[1] in _REASON_VERBS and \
+                tail[1].endswith('s') and tail[1] not in ('is', 'was') and is_name_word(tail, 0, False) and \
+                not chatter.has_constraint_word(tail) and not _rule_in(tail):
+            return self._noted_cut(sentence, cut)   # "..., Tiddles scratches", "..., Rex bites strangers"
         return sentence
 
     def _drop_middle_reason(self, sentence: list[str]) -> list[str]:
@@ -950,7 +955,9 @@ class _Reader:
         for a, b in zip(cuts, cuts[1:]):
             part = sentence[a + 1:b]
             after = sentence[b + 1:b + 3]
-            if a == 0 or len(part) < 3 or part[0] not in ('i', 'we', 'he', 'she', 'they') or \
+            named = len(part) > 2 and part[0] not in DETS and part[1] in ('is', 'has') and \
+                is_name_word(part, 0, False)
+            if a == 0 or len(part) < 3 or part[0] not in ('i', 'we', 'he', 'she', 'they') and not named or \
                     after[:1] not in (['and'], ['then'], ['but']) or _rule_in(part) or \
                     chatter.carries_constraint(part) or 'you' in part:
                 continue
@@ -1014,6 +1021,11 @@ class _Reader:
                     not _rule_in(words) and not set(words) & (SKILL_VERBS | DELIVER_VERBS):
                 # "Reveal shot time! Start low at ...": a heading that names what comes, asks for nothing
                 self.notes.append(f'left out "{" ".join(words)}" (a heading, asks for nothing)')
+                continue
+            if len(sentences) > 1 and words and words[0] not in ('they', 'he', 'she') and \
+                    chatter.is_others_remark(words, _COMMANDS):
+                # "Arthur wants his wellies. You can head out to ...": what somebody wants, said first
+                self.notes.append(f'left out "{" ".join(words)}" (said about people, asks for nothing)')
                 continue
             if len(sentences) > 1 and chatter.is_summons(sentence):
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
@@ -3420,6 +3432,12 @@ class _Reader:
     def _read_conditional(self, tokens: list[str]) -> None:
         """Read 'if you go into X at all, check Y first' as ``!near[x] W near[y]``."""
         j = 3 if tokens[1:3] in (['it', 'is'], ['that', 'is'], ['it', 'was']) else 1   # "if it's the shed"
+        if j == 1 and tokens[1:2] and tokens[1] in ('it', 'they', 'he', 'she', 'we', 'i', 'someone',
+                                                    'somebody', 'anyone', 'anybody') and tokens[2:3] and \
+                tokens[2] in ('gets', 'get', 'got', 'falls', 'fall', 'breaks', 'break', 'spills', 'spill'):
+            # "if it gets dropped we'll never find it": what may happen to a thing, no place to wait for
+            raise TranslationError(f'could not place the condition "{" ".join(tokens)}"',
+                                   details={'part': ' '.join(tokens)})
         while j < len(tokens) and tokens[j] in NAME_VERBS | GOAL_PARTICLES | EVENT_WORDS | {
                 'you', 'ever', 'want', 'do', 'choose', 'pick', 'decide', 'reach', 'are', 'have', 'already',
                 'end', 'opt', 'settle', 'with', 'take', 'use', 'select'}:

@@ -301,6 +301,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'(?:is |will be )?(?:, |: )?', r'\1 finally '),
     (r' what (?:i|we) (?:need|want|would like)(?: you to do)? is (?:for you )?(?:to )?', ' '),
     (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
+    # "keep away from the stairs the whole way round": the whole way
+    (r' the (whole|entire) way (?:round|around|through)(?= )', r' the \1 way'),
     (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
      r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
     # "your job today is to bring the cup to the sink": the request itself

@@ -578,6 +578,10 @@ class PhraseParser:
                     phrases[-1] = NounPhrase(merged, phrases[-1].start, nxt.end, phrases[-1].head)
                     i = nxt.end
                     continue
+            if tokens[i] == ',' and j == i + 1 and tokens[j] not in DETERMINERS and \
+                    nxt.end < len(tokens) and tokens[nxt.end] in ('is', 'are', 'was', 'has', 'have', 'wants',
+                                                                  'needs', 'will'):
+                break   # "to the conservatory, Arthur's waiting": a clause of its own, no item of the list
             if j < len(tokens) and tokens[j] in NAME_VERBS and not (
                     nxt.end < len(tokens) and tokens[nxt.end] == ':' and nxt.end - j > 1 and
                     tokens[j + 1] not in DETERMINERS):
@@ -587,6 +591,10 @@ class PhraseParser:
             i = nxt.end
         if choice and len(phrases) > 1:
             joiner = 'or'
+        kind = phrases[0].descriptor
+        if joiner == 'or' and len(phrases) > 2 and not kind.relations and not phrases[0].pronoun and all(
+                p.pronoun == 'one' and p.descriptor.name.endswith('_' + kind.name) for p in phrases[1:]):
+            phrases = phrases[1:]   # "either lounge, the big one or the little one": the kind, then which
         return phrases, joiner, i
 
 

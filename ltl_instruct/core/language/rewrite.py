@@ -241,6 +241,13 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
     (r'\bthe one in between\b', 'the middle one'),
+    # "do them backwards, gate first": the last thing listed said again as the start (it was merged
+    # with the first thing, "bathroom_gate")
+    (r'\bin reverse order (?:, |- )(?:(?:so |i e )?(?:the )?(?P<x>[a-z]+(?: [a-z]+){0,2}) first|'
+     r'(?:starting|beginning|start|begin) (?:with|at|from) (?:the )?(?P<y>[a-z]+(?: [a-z]+){0,2}))'
+     r'(?= [.;!?]|$)',
+     lambda m: 'in reverse order' if _last_listed(m.string[:m.start()], m.group('x') or m.group('y'))
+     else m.group(0)),
     # "start from the last one and finish on the first one" after a list: the list in reverse order
     (r'(?:^|(?<=[.;!?] ))(?:and |so |now )?(?:start|begin)(?:ing)? (?:from|with|at|on) the last(?: one)?'
      r'(?: ,)?(?: (?:and |then )?(?:finish|end)(?:ing)? (?:on|with|at|in) the first(?: one)?)?(?= [.;!?]|$)',
@@ -253,6 +260,12 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     # "the outer two": the first and the last
     (r'\bthe (?:outer|outside|two outer|end) (?:two|ones|two ones)\b', 'the first one and the last one'),
 ))
+
+
+def _last_listed(before: str, said: str) -> bool:
+    """Whether ``said`` ends the last thing of the last list in ``before`` ("..., the lift and the gate")."""
+    found = re.findall(r'\band (?:the |a |an |my |our )?([a-z ]+?) [.;:!?] ', before + ' ')
+    return bool(found) and found[-1].split()[-1] == said.split()[-1]
 
 
 # Words that end no listed thing ("go to the first one and avoid the other two").
@@ -1234,6 +1247,32 @@ def _remove_from_list(prev: list[str], p: int, sp: NounPhrase) -> Optional[list[
     return None
 
 
+_WORRIED = (('i', 'am', 'worried', 'about'), ('we', 'are', 'worried', 'about'),
+            ('i', 'am', 'bothered', 'about'),
+            ('i', 'am', 'thinking', 'of'), ('that', 'is', 'the', 'problem'), ('that', 'is', 'the', 'worry'),
+            ('that', 'is', 'the', 'danger'), ('that', 'is', 'dangerous'), ('you', 'need', 'to', 'avoid'),
+            ('you', 'should', 'avoid'), ('to', 'avoid'), ('that', 'needs', 'avoiding'))
+
+
+def _said_replaced(seg: list[str]) -> bool:
+    """Whether a correction names what it replaces ("do the dining room instead of the kitchen")."""
+    return any(seg[k:k + 2] in (['instead', 'of'], ['rather', 'than']) for k in range(len(seg) - 2))
+
+
+def _cleft_avoidance(part: list[str]) -> list[str]:
+    """After an avoidance taken back, "it's the stairs I'm worried about" / "it's Y that's wet" avoid Y."""
+    if part[:2] != ['it', 'is'] or len(part) < 5:
+        return part
+    named = PhraseParser().parse(part, 2)
+    if named is None or named.pronoun:
+        return part
+    rest = tuple(part[named.end:])
+    if rest in _WORRIED or rest[:1] == ('that',) and rest[1:2] in (('is',), ('are',)) and len(rest) <= 4 and (
+            rest[-1] in chatter.STATES and all(w in chatter.DEGREE_WORDS for w in rest[2:-1])):
+        return ['avoid'] + part[2:named.end]
+    return part
+
+
 def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: str, notes: list[str]
                     ) -> Optional[list[str]]:
     """Remove from ``prev`` the avoidance of the phrase with ``head`` (any, without); keep seg's orders."""
@@ -1242,7 +1281,8 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
         spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
-            parts = [c[1:] if c[:1] in (['just'], ['but'], ['and'], ['so'], ['only'], ['then']) else c
+            leads = (['just'], ['but'], ['and'], ['so'], ['only'], ['then'])
+            parts = [_cleft_avoidance(c[1:] if c[:1] in leads else c)
                      for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
             # what else is said is kept: a command, or any part holding a rule ("just don't go near X")
             kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and (
@@ -1908,6 +1948,16 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if seg[:len(lead)] == lead and seg[len(lead):len(lead) + 1] and seg[len(lead)] in DETERMINERS:
                 # "actually just make it the taxi rank": the phrase alone ("just" kept: only that)
                 seg, stripped = (['just'] if lead[0] == 'just' else []) + seg[len(lead):], True
+        cut = seg.index(',') if ',' in seg else -1
+        go = cut + 1 + (seg[cut + 1:cut + 2] == ['so'])
+        if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do') or seg[go] in _VERBS) and \
+                chatter.is_statement(seg[:cut], _np_end(seg[:cut])) and \
+                not chatter.carries_constraint(seg[:cut]) and \
+                (not {sp.head for sp in _np_spans(seg[:cut])} & {sp.head for sp in _np_spans(prev)} or
+                 _said_replaced(seg[go:])):
+            # "actually it's chucking it down, just go to the conservatory": the reason asks for nothing
+            notes.append(f'left out "{" ".join(seg[:cut])}" (asks for nothing)')
+            seg, stripped = seg[go:], True
         instead_of_all = 'instead' in seg and seg[-1] in ('either', 'both', 'them', 'those')
         if seg[:1] == ['not'] and len(seg) > 2 or instead_of_all:
             # "the workshop or the basement, actually not the basement, the attic", "make it the
@@ -1942,6 +1992,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{" ".join(tail)}" read as part of the correction')
             seg = seg[:k]
             break
+        if _cleft_avoidance(tail) is not tail:
+            continue   # "the kitchen's fine, it's the floor that's wet": says what to avoid instead
         if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or (chatter.is_statement(
                 tail, _np_end(tail)) or chatter.is_story(tail, _VERBS) and not (chatter.PLACE_RULE_WORDS | {
                     'before', 'after', 'first', 'last'}) & set(tail)) and not [
@@ -1972,8 +2024,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         return only   # "the north or south entrance ... just go to the north one"
     if seg[:1] in (['just'], ['simply']) and len(seg) > 1 and seg[1] in _VERBS and marker in _RESTATE:
         # "go to the kitchen, grab a snack... no, just go to the kitchen, then the hall": the sentence again
-        start = max((k for k in range(len(prev)) if prev[k] in '.;!?'), default=-1) + 1
-        notes.append(f'"{" ".join(prev[start:])}" replaced by "{" ".join(seg[1:])}"')
+        said = len(prev)
+        while said and prev[said - 1] in PUNCT:
+            said -= 1   # "go to the garden. actually, just go to X": the sentence before its full stop
+        start = max((k for k in range(said) if prev[k] in '.;!?'), default=-1) + 1
+        notes.append(f'"{" ".join(prev[start:said])}" replaced by "{" ".join(seg[1:])}"')
         return prev[:start] + seg[1:]
     reordered = _first_instead(prev, seg, notes)   # before a restatement: "actually, go to X first"
     if reordered is not None:
@@ -2458,6 +2513,9 @@ def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     if new < 0 or not (said or bare):
         return None
     mod = next((m for m in _COUNT_MODS if tuple(seg[new - len(m):new]) == m), ())
+    again = next((k for k in range(new + 1, len(seg)) if seg[k] == seg[new] and seg[new] in counts), -1)
+    if again > 0 and mod in ((), ('just',), ('only',)) and seg[again - 1] in ('exactly', 'precisely'):
+        new, mod = again, (seg[again - 1],)   # "make it just the once - exactly once": said again, exactly
     if not mod and any(tuple(seg[k:k + len(m)]) == m for k in range(new + 1, len(seg)) for m in _NO_MORE):
         mod = ('exactly',)   # "actually once is enough, but no more than that": exactly once
     new_words = list(mod) + seg[new:new + (1 if seg[new] in counts else 2)]

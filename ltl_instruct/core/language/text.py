@@ -65,6 +65,9 @@ TYPOS: dict[str, str] = {
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
+# "on your wat to the dining room": a slip in "on your way to" (one letter, a word of its own)
+_WAY_RE = re.compile(r'\b(on (?:your|the|my|its) )(?:wat|wau|wy|wya|waay|wey)'
+                     r'(?= (?:to|back|in|out|there|over)\b)')
 
 # Family members named like names, with no article ("Mum's bedroom", "Dad always worries").
 FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
@@ -90,6 +93,9 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
      r"low|flat|loose|wobbly|unstable|frayed|exposed|leaking|leaky|sticky|cracked|jammed|stuck|faulty|"
      r"unplugged|noisy|loud|messy|due|late|ready|done|finished)\b)", ' is'),
     (r"\b(one|two|three|four|five|six|once|twice)'s\b", r'\1 is'),   # "no, three's plenty"
+    # "Stan's finished with it", "wherever Joan's sat": "has" before a past participle
+    (r"'s(?= (?:finished|sat|gone|done|got|asked|said|told|come|arrived|fallen|moved|lost|forgotten|had|"
+     r"eaten|started|stopped|seen|promised|decided|dropped|spilt|spilled)\b)", ' has'),
     # "grandma's sleeping": "is", before a verb in -ing (not "dad's walking stick")
     (r"'s(?= [a-z]+ing\b(?! (?:stick|sticks|machine|glasses|bag|board|table|room|chair|rod|frame|shoes|mat|"
      r"pole|line|basket|boots|gloves|kit|pad|area|station|cane|aid|lamp|desk|tray|can)\b))", ' is'),
@@ -288,6 +294,8 @@ def tokenize(text: str) -> list[str]:
         s = re.sub(r'\b(stay|keep|get) of (?=the )', r'\1 off ', s)
     if ' form ' in s:
         s = _FORM_RE.sub(r'\1 from', s)
+    if ' w' in s:
+        s = _WAY_RE.sub(r'\1way', s)
     if 'forth ' in s:   # "the forth floor": the fourth
         s = re.sub(r'\bforth (?=floor|time|stop|room|door|one|place|aisle|bay|shelf|level|row)', 'fourth ', s)
     out: list[str] = []

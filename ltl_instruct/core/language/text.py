@@ -59,6 +59,10 @@ TYPOS: dict[str, str] = {
     'bc': 'because', 'bcuz': 'because', 'becuz': 'because', 'cuz': 'because', 'coz': 'because',
     'uve': 'you have', 'hes': 'he is', 'shes': 'she is', 'theyre': 'they are', 'tmrw': 'tomorrow',
     'lmao': '', 'jk': 'just kidding', 'beetwen': 'between', 'bewteen': 'between', 'betwean': 'between',
+    # well-known office and building abbreviations, spelled out in names ("conf rm B": conference_room_b)
+    'conf': 'conference', 'recep': 'reception', 'exec': 'executive', 'mtg': 'meeting', 'mtgs': 'meetings',
+    'fl': 'floor', 'flr': 'floor', 'bldg': 'building', 'dept': 'department', 'mgr': 'manager',
+    'rms': 'rooms', 'ppl': 'people',
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
@@ -173,6 +177,12 @@ _NOUN_COMPOUND_RE = re.compile(r'\b(the|my|our|this|that) '
 _ACRONYM_RE = re.compile(
     r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
 
+# ... and so is one in capitals opening a list item with a noun after it ("mail room / IT help desk").
+_ITEM_ACRONYM_RE = re.compile(
+    r"(?:^|[,:;/+&]\s*|\b(?:and|or|then|to|at|by|from|near|past|avoid)\s+)(IT|ER|OR|PE|HR)\b"
+    r"(?=\s+(?!(?:is|was|will|has|had|should|must|can|could|would|does|did|may|might|needs|seems|"
+    r"looks)\b)[a-z])")
+
 
 # A capital letter after a word names something ("field A", "Gate B"): not the article "a".
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
@@ -225,6 +235,7 @@ def tokenize(text: str) -> list[str]:
         between spaces becomes a comma, and typos in :data:`TYPOS` are fixed.
     """
     acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
+    acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
     acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
     if acronyms:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
@@ -242,6 +253,14 @@ def tokenize(text: str) -> list[str]:
     if '>' in s or '\u2192' in s:   # "the lobby > mail room > loading dock", "a -> b": an order
         s = re.sub(r'(?<=[a-z0-9)])\s*(?:-{1,2}>|={1,2}>|>|\u2192)\s*(?=[a-z0-9(])', ' then ', s)
     s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
+    if '/' in s or '&' in s or '+' in s:
+        # chat shorthand ("w/e you find first", "w/o"), a slash between spaces separates list items
+        # ("mail room / supply closet"), and "&" or "+" between words is "and" ("lost & found")
+        s = re.sub(r'\bw/e\b', 'whatever', s)
+        s = re.sub(r'\bw/o\b', 'without', s)
+        s = re.sub(r'\bb/c\b', 'because', s)
+        s = re.sub(r'(?<=[a-z0-9]) / (?=[a-z0-9])', ' , ', s)
+        s = re.sub(r'(?<=[a-z0-9]) [&+] (?=[a-z0-9])', ' and ', s)
     if '.' in s:   # "Mr. Alvarez": the title's full stop ends no sentence
         s = re.sub(r'\b(mr|mrs|ms|dr)\.(?= [a-z])', r'\1', s)
     s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import check_translation
+from ltl_instruct.core.errors import TranslationError
+from translation_cases import T, check_translation
 
 BLIND_ROUND_U4 = [
     # well-known office abbreviations are spelled out in names ("conf rm" was conf_room, "exec" exec_suite)
@@ -58,9 +59,36 @@ BLIND_ROUND_U4 = [
      'F near[main_entrance]'),
     ('go to the lobby for the new visitor',
      'F near[lobby]'),
+    # a task label before a colon ("restock:", "cleanup:") names the job, not a place (it was a goal)
+    ('restock: take the coffee pods to the kitchenette, dont go into the kitchenette more than once',
+     'F (near[coffee_pods] & F (pick[coffee_pods] & F (near[kitchenette] & '
+     'F release[coffee_pods, kitchenette]))) & '
+     '(!near[kitchenette] W (near[kitchenette] & (near[kitchenette] W G !near[kitchenette])))'),
+    ('cleanup: take the cups to the sink',
+     'F (near[cups] & F (pick[cups] & F (near[sink] & F release[cups, sink])))'),
+    # the places where something is ("painters are in A, B and C") are a list positions point into
+    # ("the first 2" was a place first_two, avoided: silently wrong)
+    ('painters are in the east hallway, the lobby and the north stairwell today. keep away from the first 2. '
+     'need you at the mail room',
+     'F near[mail_room] & G !near[east_hallway] & G !near[lobby]'),
+    ('the kids are in the den, the study and the attic. go to the last one',
+     'F near[attic]'),
 ]
 
 
 @pytest.mark.parametrize('instruction,gold', BLIND_ROUND_U4)
 def test_readings_found_on_blind_set_u4(instruction: str, gold: str) -> None:
     check_translation(instruction, gold)
+
+
+# Refused, never guessed: positions with no list to point into ("the first two" was a place first_two).
+REFUSED_U4 = [
+    'keep away from the first two. go to the lobby',
+    'go to the lobby and avoid the last two',
+]
+
+
+@pytest.mark.parametrize('instruction', REFUSED_U4)
+def test_refused_on_blind_set_u4(instruction: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(instruction)

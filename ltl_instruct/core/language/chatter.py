@@ -294,7 +294,7 @@ itinerary mission missions schedule steps step program programme todo list check
 orders assignment assignments duty duties workflow procedure protocol today tonight
 morning afternoon evening plan rules rule note notes reminder reminders request requests things favours
 favors jobs bits important warning caution attention heads ps nb careful update route path flightplan
-stops rounds
+stops rounds restock restocking cleanup setup refill refills resupply housekeeping maintenance
 '''.split())
 
 

@@ -76,6 +76,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in _LEAD_ADVERBS and (
             i == 1 or tokens[i - 2] in PUNCT) or tokens[i + 1:i + 2] in (
             ['keep'], ['have'], ['left'], ['stored'], ['parked'], ['own'], ['got']))]
+    # "painters are in the east hallway, the lobby and the stairwell": the places where something is
+    starts += [i + 1 for i, t in enumerate(tokens) if t in ('in', 'at') and i > 1 and tokens[i - 1] in (
+        'are', 'is', 'were', 'was')]
     lead = next((k for k, t in enumerate(tokens) if t not in _LEAD_ADVERBS and t != ','), 0)
     if lead:
         starts.append(lead)   # "ok so the fridge, the microwave, the toaster. go to the last one"
@@ -286,12 +289,14 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     found = _find_list(tokens)
     if found is None:
         for k in range(len(tokens) - 2):
-            if k > 0 and tokens[k - 1] in ('do', 'handle', 'finish', 'complete') and tokens[k] == 'the' and \
+            if k > 0 and tokens[k - 1] in ('do', 'handle', 'finish', 'complete', 'from', 'of', 'avoid',
+                                           'visit', 'to', 'near', 'check') and tokens[k] == 'the' and \
                     tokens[k + 1] in ('first', 'last') and tokens[k + 2] in NUMBER_WORDS and \
                     tokens[k + 2] not in ('one', 'once', 'twice', 'thrice') and (
                     k + 3 >= len(tokens) or tokens[k + 3] in PUNCT or tokens[k + 3] in (
                         'for', 'and', 'then', 'now', 'please', 'only', 'first')):
-                # "just do the first two for now": positions in a list that was not found
+                # "just do the first two for now", "keep away from the first two": positions in a list
+                # that was not found
                 said = ' '.join(tokens[k:k + 3])
                 raise TranslationError(f'"{said}": found no list they are part of', details={'part': said})
         return tokens

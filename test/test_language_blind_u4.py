@@ -73,6 +73,21 @@ BLIND_ROUND_U4 = [
      'F near[mail_room] & G !near[east_hallway] & G !near[lobby]'),
     ('the kids are in the den, the study and the attic. go to the last one',
      'F near[attic]'),
+    # a bare letter after a correction marker relabels the name said last ("B" was a place b)
+    ('go to conf rm A. sorry, B',
+     'F near[conference_room_b]'),
+    ('go to the kitchen then gate C, no wait, D',
+     'F (near[kitchen] & F near[gate_d])'),
+    # three labels or more listed with commas only name one kind each ("conf rms A, B, C": conference_rooms_a)
+    ('conf rms A, B, C - go to the first one, stay out of the other two',
+     'F near[conference_room_a] & G !near[conference_room_b] & G !near[conference_room_c]'),
+    # a count in digits before a list of "ones" names their kind ("3 printers on this floor: the color one":
+    # color_floor; "2 chairs in X, one by ..." was refused)
+    ('3 printers on this floor: the color one, the black and white one, the big plotter. '
+     'check the 1st one twice',
+     'F (near[color_printer] & F (!near[color_printer] & F near[color_printer]))'),
+    ('2 chairs in conf rm A, one by the window and one behind the door. go to the 2nd one',
+     'F near[chair::isbehind(door)]'),
 ]
 
 

@@ -349,7 +349,9 @@ def expand_labels(tokens: list[str]) -> list[str]:
                     j += 2 if tokens[j + 1] != ',' or tokens[j + 2:j + 3] not in (['and'], ['or']) else 3
                 else:
                     break
-        if len(labels) >= 2 and any(tokens[m - 1] in ('and', 'or') for m in labels[1:]):
+        # ... or three or more with commas only, the list ended by punctuation ("conf rms A, B, C - ...")
+        if len(labels) >= 2 and any(tokens[m - 1] in ('and', 'or') for m in labels[1:]) or \
+                len(labels) >= 3 and (labels[-1] + 1 == len(tokens) or tokens[labels[-1] + 1] in PUNCT):
             noun = t[:-2] if t.endswith(('ches', 'shes', 'xes', 'sses')) else t[:-1]
             end = labels[-1] + 1
             for k in range(i + 1, end):

@@ -88,6 +88,18 @@ BLIND_ROUND_U4 = [
      'F (near[color_printer] & F (!near[color_printer] & F near[color_printer]))'),
     ('2 chairs in conf rm A, one by the window and one behind the door. go to the 2nd one',
      'F near[chair::isbehind(door)]'),
+    # "behind that desk": the desk said before, with its description (it was left out as asking nothing:
+    # the cabinet was dropped, silently); "need the 2023 invoices pulled" says why (refused)
+    ('go to the desk by the window first, then to the filing cabinet behind that desk. '
+     'need the 2023 invoices pulled',
+     'F (near[desk::isnextto(window)] & F near[filing_cabinet::isbehind(desk::isnextto(window))])'),
+    ('go to the shelf by the door, then to the bin next to that shelf',
+     'F (near[shelf::isnextto(door)] & F near[bin::isnextto(shelf::isnextto(door))])'),
+    ('go to the front desk. need these forms signed today',
+     'F near[front_desk]'),
+    # "for a min", "for a sec": chat spellings of a short while (refused)
+    ('drone - hover by the 3rd fl skylight for a min',
+     'F near[third_floor_skylight]'),
 ]
 
 

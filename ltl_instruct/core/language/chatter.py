@@ -1296,6 +1296,33 @@ def is_schedule(words: Sequence[str]) -> bool:
     return subject[-1] in _EVENTS or timed and subject[-1] not in PLACE_HEADS and words[k] != 'by'
 
 
+# Participles of work a robot that goes, picks and places cannot do ("need the invoices pulled").
+_PEOPLES_WORK = frozenset('''
+pulled signed printed copied scanned filed shredded stamped reviewed approved faxed emailed laminated
+stapled notarized photocopied proofread typed translated invoiced processed sorted counted
+'''.split())
+
+
+def is_paperwork(words: Sequence[str]) -> bool:
+    """Whether words say what the person needs done to papers ("need the 2023 invoices pulled").
+
+    "(I/we) need (the/my/some) X <participle>" where the participle is work on papers no robot
+    does (signed, printed, filed...): why the robot is sent, asking it for nothing more. A year in
+    the name is no count.
+    """
+    words = [t for t in words if t not in PUNCT]
+    if words[:1] in (['i'], ['we']):
+        words = words[1:]
+    if words[-1:] and words[-1] in ('today', 'asap', 'now', 'tonight', 'tomorrow'):
+        words = words[:-1]
+    if len(words) < 3 or words[0] not in ('need', 'needs', 'want') or words[1] == 'you' or \
+            words[-1] not in _PEOPLES_WORK:
+        return False
+    thing = [t for t in words[1:-1] if t not in _PEOPLES_WORK and not (t.isdigit() and len(t) == 4)]
+    return bool(thing) and thing[0] in ('the', 'my', 'our', 'some', 'these', 'those', 'all') and \
+        not carries_constraint(thing) and 'you' not in thing
+
+
 # After "I am": words that say where the person is or what they ask ("I'm asking you to ...").
 _HERE_OR_ASKING = frozenset({'going', 'asking', 'telling', 'sending', 'to', 'here', 'there', 'sitting',
                              'waiting', 'standing', 'lying', 'back', 'off', 'out', 'coming', 'not',

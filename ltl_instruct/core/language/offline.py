@@ -814,6 +814,10 @@ class _Reader:
                 # "Conf rm B, asap. Mtg starts at 10.": when an event is, no place
                 self.notes.append(f'left out "{" ".join(sentence)}" (says when, asks for nothing)')
                 continue
+            if (self.task.chain or self.task.constraints) and chatter.is_paperwork(sentence):
+                # "... . need the 2023 invoices pulled": why the robot is sent there, no task of its own
+                self.notes.append(f'left out "{" ".join(sentence)}" (says why, asks for nothing)')
+                continue
             if len(sentences) > 1 and chatter.is_summons(sentence):
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
                 self.notes.append(f'left out "{" ".join(sentence)}" (says who wants you, asks for nothing)')

@@ -100,6 +100,10 @@ BLIND_ROUND_U4 = [
     # "for a min", "for a sec": chat spellings of a short while (refused)
     ('drone - hover by the 3rd fl skylight for a min',
      'F near[third_floor_skylight]'),
+    ('when you get a sec, head to the supply closet',
+     'F near[supply_closet]'),
+    ('when you get a min, head to the supply closet',
+     'F near[supply_closet]'),
     # "actually either X or Y is fine": the correction widens the goal to a choice (it was refused)
     ('go to the copier. actually either the copier or the printer is fine',
      'F near[copier] | F near[printer]'),

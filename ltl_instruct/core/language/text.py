@@ -264,10 +264,9 @@ def tokenize(text: str) -> list[str]:
     if '.' in s:   # "Mr. Alvarez": the title's full stop ends no sentence
         s = re.sub(r'\b(mr|mrs|ms|dr)\.(?= [a-z])', r'\1', s)
     s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"
-    if 'min' in s or 'sec' in s:   # "for a min", "for 5 mins": the time units spelled out
-        s = re.sub(r'\b(a|one|\d{1,2}|few|couple|couple of|two|three|five|ten) (min|sec)s?\b',
-                   lambda m: f'{m.group(1)} {"minute" if m.group(2) == "min" else "second"}' + (
-                       '' if m.group(1) in ('a', 'one', '1') else 's'), s)
+    if 'min' in s:   # "for a min", "in 5 mins": the time unit spelled out ("a sec" is read as it is)
+        s = re.sub(r'\b(a|one|\d{1,2}|few|couple|couple of|two|three|five|ten) mins?\b',
+                   lambda m: f'{m.group(1)} minute' + ('' if m.group(1) in ('a', 'one', '1') else 's'), s)
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
     if 'its ' in s:   # "bring its charger": after a verb or preposition "its" is no "it is"

@@ -300,6 +300,7 @@ itinerary mission missions schedule steps step program programme todo list check
 orders assignment assignments duty duties workflow procedure protocol today tonight
 morning afternoon evening plan rules rule note notes reminder reminders request requests things favours
 favors jobs bits important warning caution attention heads ps nb careful update route path flightplan
+stops rounds restock restocking cleanup setup refill refills resupply housekeeping maintenance
 '''.split())
 
 
@@ -526,6 +527,15 @@ DOUBLED = frozenset({'the', 'a', 'an', 'to', 'go', 'and', 'then', 'of', 'at', 'i
                      'from', 'avoid', 'never', 'is', 'it', 'that'})
 
 
+# Words before "in this order:" that only say to go to the list ("please visit these in order: ...").
+_ORDER_LEADS = frozenset({'please', 'go', 'to', 'visit', 'check', 'these', 'them', 'the', 'following',
+                          'places', ','})
+# Order phrases a heading may end with ("today's stops, in this order: ..."): kept, after the list.
+_HEADING_ORDERS: tuple[tuple[str, ...], ...] = (
+    ('in', 'this', 'order'), ('in', 'that', 'order'), ('in', 'the', 'following', 'order'), ('in', 'order'),
+    ('in', 'this', 'sequence'), ('in', 'sequence'))
+
+
 def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
     """Remove a heading before a colon that opens a sentence ("Morning routine for you, robot: ..."), noted.
 
@@ -539,11 +549,27 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
         if i == 0 or tokens[i - 1] in '.;!?':
             c = next((k for k in range(i, min(n, i + 9)) if tokens[k] in PUNCT and tokens[k] != ','), -1)
             head = tokens[i:c] if c > i and tokens[c] == ':' else []
+            order = next((t for t in _HEADING_ORDERS
+                          if len(head) >= len(t) and tuple(head[-len(t):]) == t), ())
+            if order and c + 1 < n:
+                # "stops for today, in this order: a / b / c": the heading goes, its order is said
+                # after the list (where the clause reader takes "a, b and c in this order")
+                head = head[:-len(order)]
+                while head and head[-1] == ',':
+                    head.pop()
             counted = [w for k, w in enumerate(head) if not (   # "three things to do:": no count of visits
                 w in NUMBER_WORDS and head[k + 1:k + 2] and head[k + 1] in TASK_NOUNS)]
             # "Just to check the cat has everything: ...": what the list is for
             aim = head[1:] if head[:1] == ['just'] else head
             purpose = aim[:2] in (['to', 'check'], ['to', 'make'], ['to', 'see'])
+            if order and all(w in _ORDER_LEADS for w in head):
+                # "in this order: a, b, c", "visit these in order: a, b, c": the list, then its order
+                end = next((k for k in range(c + 1, n) if tokens[k] in '.;!?'), n)
+                verb = [w for w in head if w in ('visit', 'check')][:1] or (
+                    ['go', 'to'] if 'go' in head else [])
+                out.extend(verb + tokens[c + 1:end] + [',', 'in', 'this', 'order'])
+                i = end
+                continue
             if head and c + 1 < n and (any(w in TASK_NOUNS for w in head) or purpose) and \
                     not carries_constraint(counted) \
                     and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
@@ -551,6 +577,10 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
                         for k, w in enumerate(head)):
                 notes.append(f'left out the heading "{" ".join(t for t in head if t != ",")}:"')
                 i = c + 1
+                if order:
+                    end = next((k for k in range(i, n) if tokens[k] in '.;!?'), n)
+                    out.extend(tokens[i:end] + [',', 'in', 'this', 'order'])
+                    i = end
                 continue
         out.append(tokens[i])
         i += 1
@@ -895,11 +925,25 @@ def _for_whom(tokens: Sequence[str], i: int) -> bool:
                                    ',' in tokens[2:5])   # "for the visitor, avoid the lobby"
 
 
+# A clock time said as one word ("2pm", "10am", "noon").
+_CLOCK_RE = re.compile(r'^(?:\d{1,2}(?:am|pm)|noon|midnight)$')
+# Words that say which person ("for the new visitor"), before a person noun.
+_PERSON_ADJECTIVES = frozenset({'new', 'next', 'old', 'young', 'little', 'morning', 'afternoon', 'evening',
+                                'vip', 'important', 'elderly'})
+
+
 def _beneficiary(tokens: Sequence[str], i: int) -> int:
     """Length of "for the visitor" / "for grandma" at ``i`` that ends its clause (who it is for), else 0."""
     j = i + 1
     if j < len(tokens) and tokens[j] in ('the', 'my', 'our', 'your', 'a', 'an', 'his', 'her', 'their'):
         j += 1
+        # "for the 2pm visitor", "for the 10 am visitor", "for the new guests": when or which one
+        if j + 1 < len(tokens) and _CLOCK_RE.match(tokens[j]):
+            j += 1
+        elif j + 2 < len(tokens) and tokens[j].isdigit() and tokens[j + 1] in ('am', 'pm'):
+            j += 2
+        elif j + 1 < len(tokens) and tokens[j] in _PERSON_ADJECTIVES:
+            j += 1
     if j >= len(tokens) or not (tokens[j] in PERSON_NOUNS or tokens[j] in FAMILY_NAMES) or \
             tokens[j] in ('dog', 'dogs', 'cat', 'animals', 'birds', 'pigeon', 'pigeons', 'delivery'):
         return 0
@@ -1114,7 +1158,7 @@ _REMARK_RE = re.compile(
     r'|(?:that|the) order (?:matters|is important)(?: to (?:me|us))?'
     r'|(?:any|any one|anyone|either one|whichever one|whichever)'
     r'(?: of (?:them|those|these|the (?:two|three|four|five)(?: \w+)?))?(?: (?:will do|is fine|works))?'
-    r'|whichever(?: one)? you (?:get to|reach|see|like|want|prefer|come to|find|spot)(?: first)?'
+    r'|(?:whichever|whatever)(?: one)? you (?:get to|reach|see|like|want|prefer|come to|find|spot)(?: first)?'
     r'|wherever(?: is| s)? (?:clearer|closer|nearer|quieter|easier|safer|less \w+)'
     # "the sofa or the recliner, wherever Joan's sat": whichever the person is at
     r'|wherever (?:he|she|they|it|[a-z]+) (?:is|are|has|have) (?:got to|gone|gone to|sat|sitting|settled|'
@@ -1303,6 +1347,79 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
     # a name said without an article ("Harold bought it", "Margaret's staying tonight")
     return first not in commands and first not in DETERMINERS and first not in STOPWORDS_STORY and \
         second in _STORY_VERBS and is_name_word(words, 0, False)
+
+
+# Events people time their day by ("mtg starts at 10", "big all-hands at 3"): never a place.
+_EVENTS = frozenset('''
+meeting meetings mtg call calls standup huddle sync lunch dinner breakfast interview interviews presentation
+demo review appointment party event session training class lecture briefing workshop webinar hands
+inspection pickup tour
+'''.split())
+# Verbs of an event's time ("the meeting starts at 10").
+_EVENT_VERBS = frozenset({'starts', 'begins', 'ends', 'finishes', 'kicks', 'wraps', 'is', 'was'})
+
+
+def is_schedule(words: Sequence[str]) -> bool:
+    """Whether words only say when an event is ("mtg starts at 10", "big all-hands at 3 today").
+
+    The subject ends in an event noun (a meeting, a call, an all-hands: never a place) or has a
+    verb of time ("the tour starts at noon"), then "at"/"around" and a clock time, and at most a
+    day word after it. Such a sentence asks the robot for nothing.
+    """
+    words = [t for t in words if t not in PUNCT]
+    k = next((k for k, t in enumerate(words) if t in ('at', 'around', 'by')), -1)
+    if k < 1 or k + 1 >= len(words):
+        return False
+    time = words[k + 1:]
+    if _CLOCK_RE.match(time[0]) or time[0].isdigit() and int(time[0]) <= 24 or time[0] in NUMBER_WORDS and \
+            NUMBER_WORDS[time[0]] <= 12:
+        time = time[1:]
+    else:
+        return False
+    while time and time[0] in ('am', 'pm', 'oclock', 'o', 'clock', 'sharp', '30', '15', '45', '00', ':'):
+        time = time[1:]
+    if time not in ([], ['today'], ['tonight'], ['tomorrow'], ['this', 'morning'], ['this', 'afternoon']):
+        return False
+    subject = words[:k]
+    if subject[-1:] and subject[-1] in ('off', 'up') and subject[-2:-1] in (['kicks'], ['wraps']):
+        subject = subject[:-1]
+    timed = subject[-1] in _EVENT_VERBS and len(subject) > 1
+    if timed:
+        timed = subject[-1] not in ('is', 'was')   # "the call is at 3": an event, said as one
+        subject = subject[:-1]
+    if subject[:1] and subject[0] in ('the', 'a', 'our', 'my', 'this', 'that', 'their', 'his', 'her'):
+        subject = subject[1:]
+    if not subject or len(subject) > 3 or has_constraint_word(subject) or any(
+            t in ('you', 'go', 'visit', 'avoid', 'stay', 'keep', 'be', 'come') for t in subject):
+        return False
+    return subject[-1] in _EVENTS or timed and subject[-1] not in PLACE_HEADS and words[k] != 'by'
+
+
+# Participles of work a robot that goes, picks and places cannot do ("need the invoices pulled").
+_PEOPLES_WORK = frozenset('''
+pulled signed printed copied scanned filed shredded stamped reviewed approved faxed emailed laminated
+stapled notarized photocopied proofread typed translated invoiced processed sorted counted
+'''.split())
+
+
+def is_paperwork(words: Sequence[str]) -> bool:
+    """Whether words say what the person needs done to papers ("need the 2023 invoices pulled").
+
+    "(I/we) need (the/my/some) X <participle>" where the participle is work on papers no robot
+    does (signed, printed, filed...): why the robot is sent, asking it for nothing more. A year in
+    the name is no count.
+    """
+    words = [t for t in words if t not in PUNCT]
+    if words[:1] in (['i'], ['we']):
+        words = words[1:]
+    if words[-1:] and words[-1] in ('today', 'asap', 'now', 'tonight', 'tomorrow'):
+        words = words[:-1]
+    if len(words) < 3 or words[0] not in ('need', 'needs', 'want') or words[1] == 'you' or \
+            words[-1] not in _PEOPLES_WORK:
+        return False
+    thing = [t for t in words[1:-1] if t not in _PEOPLES_WORK and not (t.isdigit() and len(t) == 4)]
+    return bool(thing) and thing[0] in ('the', 'my', 'our', 'some', 'these', 'those', 'all') and \
+        not carries_constraint(thing) and 'you' not in thing
 
 
 # After "I am": words that say where the person is or what they ask ("I'm asking you to ...").

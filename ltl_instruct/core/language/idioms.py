@@ -1629,7 +1629,8 @@ RULES: tuple[Rule, ...] = (
          r'big) berth\b',
          r'keep away from \g<x>'),
     Rule('keep away from that wheelbarrow: the wheelbarrow',
-         r'\b(?P<v>away from|clear of|near|avoid|to|visit) (?:that|those|this|'
+         # (not "the bin next to that shelf": the phrase reader takes that shelf as the one said before)
+         r'\b(?P<v>away from|clear of|near|avoid|(?<!next )to|visit) (?:that|those|this|'
          r'these) (?=[a-z])', r'\g<v> the '),
     Rule('exactly twice, once in the morning and once at night: the count said again, spread over the day',
          rf'\b(?P<c>(?:twice|thrice|{_NUM} times)) , (?P<s>once {_DAYTIME}(?: (?:, |and |, and )?once '

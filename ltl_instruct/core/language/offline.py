@@ -862,8 +862,9 @@ class _Reader:
         if len(tail) >= 3 and tail[0] in ('i', 'we') and tail[1] in ('am', 'are', 'm', 're') and \
                 tail[2] not in ('going', 'asking', 'telling', 'sending', 'to'):
             return self._noted_cut(sentence, cut)   # "..., I'm not fussy", "we are in a hurry"
-        if chatter.is_reason(tail):
-            return self._noted_cut(sentence, cut)   # "..., because the floor was just waxed"
+        if chatter.is_reason(tail) or chatter.is_schedule(tail):
+            # "..., because the floor was just waxed", "..., the meeting starts at 10"
+            return self._noted_cut(sentence, cut)
         if len(tail) >= 3 and tail[1] in ('is', 'are') and tail[-1] in _BUSY:
             return self._noted_cut(sentence, cut)   # "..., dad's on a call", "..., she is in a meeting"
         if len(tail) >= 3 and tail[0] not in DETS and (tail[0] in chatter.FAMILY_NAMES or tail[0] in
@@ -1026,6 +1027,14 @@ class _Reader:
                     chatter.is_others_remark(words, _COMMANDS):
                 # "Arthur wants his wellies. You can head out to ...": what somebody wants, said first
                 self.notes.append(f'left out "{" ".join(words)}" (said about people, asks for nothing)')
+                continue
+            if len(sentences) > 1 and chatter.is_schedule(sentence):
+                # "Conf rm B, asap. Mtg starts at 10.": when an event is, no place
+                self.notes.append(f'left out "{" ".join(sentence)}" (says when, asks for nothing)')
+                continue
+            if (self.task.chain or self.task.constraints) and chatter.is_paperwork(sentence):
+                # "... . need the 2023 invoices pulled": why the robot is sent there, no task of its own
+                self.notes.append(f'left out "{" ".join(sentence)}" (says why, asks for nothing)')
                 continue
             if len(sentences) > 1 and chatter.is_summons(sentence):
                 # "Lobby lounge, please. Mr. Alvarez would like a word.": who wants the robot, no place
@@ -1690,7 +1699,8 @@ class _Reader:
                 elif t in (',', 'so') and self._starts_statement(tokens, j):
                     boundary, skip = 'and', j - i   # "be careful, the floor is wet"
                 elif i < 4 and t in (',', ':') and all(is_name_word(tokens, m, m > 0) for m in range(i)) and \
-                        j < n and tokens[j] in STRONG_VERBS | GOAL_VERBS_SEED | {'fly', 'land', 'hover'} and \
+                        j == i + 1 and \
+                        tokens[j] in STRONG_VERBS | GOAL_VERBS_SEED | {'fly', 'land', 'hover'} and \
                         self._unknown_verb(tokens, 0) is None and any(tokens[m] in DETS for m in range(j, n)):
                     # "Rover: head to the creek": the robot addressed by name, not a place
                     self.notes.append(f'took "{" ".join(tokens[:i])}" as the name of the robot addressed')

@@ -77,6 +77,10 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'\1 '),
     # "go by the window three times during your rounds": when, not where
     (r' (?:during|on|in the course of) your (?:rounds|round|patrol|shift)(?= [,.;!?] | ?$)', ' '),
+    # "actually either the copier or the printer is fine": a choice of where to go, said as a permission
+    (rf'(^ | [.;!?] | actually (?:, )?| no (?:, )?)either (?P<x>(?:the )?{_NAME}) or (?P<y>(?:the )?{_NAME}) '
+     r'(?:is|are|would be|will be) (?:fine|ok|okay|good|alright)(?: too| as well)?(?= [.;!?] |\s*$)',
+     r'\1 go to either \g<x> or \g<y> '),
     (r' do (?=(?:them|those|these|all of them|all three|all four) )', ' visit '),
     # the order left to the robot, said as a remark (before list positions: "which one first" is none)
     (r' (?:it )?(?:does not|do not|will not) (?:matter|care|mind)(?: to me)? which(?: one| of them| order)?'

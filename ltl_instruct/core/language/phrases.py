@@ -415,6 +415,17 @@ class PhraseParser:
             i += 1
         words: list[str] = []
         pronoun = ''
+        if depth > 0 and i + 1 < len(tokens) and tokens[i] in ('that', 'this') and tokens[i + 1] not in (
+                'is', 'one', 'ones') and is_name_word(tokens, i + 1, False) and \
+                not match_relation(tokens, i + 1):
+            # "the filing cabinet behind that desk": the desk said before (with its own description)
+            inner = self.parse(tokens, i + 1, destination_stops, depth + 1)
+            last = self.last
+            if inner is not None and not inner.descriptor.relations and last is not None and \
+                    last.descriptor.relations and last.descriptor.name == inner.descriptor.name:
+                return NounPhrase(last.descriptor, start, inner.end, inner.head)
+            if inner is not None:
+                return NounPhrase(inner.descriptor, start, inner.end, inner.head, inner.pronoun)
         if i < len(tokens) and tokens[i] in ('it', 'them', 'there', 'that', 'here') and not (
                 tokens[i] == 'that' and i + 1 < len(tokens) and tokens[i + 1] == 'is'):
             pronoun = tokens[i]

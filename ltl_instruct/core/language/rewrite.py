@@ -76,6 +76,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         i == 0 or tokens[i - 1] in PUNCT or tokens[i - 1] in _LEAD_ADVERBS and (
             i == 1 or tokens[i - 2] in PUNCT) or tokens[i + 1:i + 2] in (
             ['keep'], ['have'], ['left'], ['stored'], ['parked'], ['own'], ['got']))]
+    # "painters are in the east hallway, the lobby and the stairwell": the places where something is
+    starts += [i + 1 for i, t in enumerate(tokens) if t in ('in', 'at') and i > 1 and tokens[i - 1] in (
+        'are', 'is', 'were', 'was')]
     lead = next((k for k, t in enumerate(tokens) if t not in _LEAD_ADVERBS and t != ','), 0)
     if lead:
         starts.append(lead)   # "ok so the fridge, the microwave, the toaster. go to the last one"
@@ -112,7 +115,9 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         if s >= 2 and tokens[s - 1] == ':' or s >= 3 and tokens[s - 1] == ',' and \
                 tokens[s - 3] in NUMBER_WORDS:
             category = singular(tokens[s - 2])   # "three chairs: a red one...", "two doors, a red one..."
-            q = next((q for q in range(s - 2, max(-1, s - 8), -1) if tokens[q] in NUMBER_WORDS), -1)
+            # ("3 printers on this floor: the color one, ...": the count said in digits)
+            q = next((q for q in range(s - 2, max(-1, s - 8), -1) if tokens[q] in NUMBER_WORDS or
+                      tokens[q].isdigit() and len(tokens[q]) == 1), -1)
             counted = parser.parse(tokens, q + 1) if q >= 0 else None
             if counted is not None and counted.end <= s - 1:
                 category = _kind_name(counted)   # "three bins by the gate: a green one, ..."
@@ -134,8 +139,8 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         elif s >= 2 and tokens[s - 1] == ',' and s != lead:
             # "two carts in the corridor, a housekeeping cart and a minibar cart": the count names them
             back = max((k for k in range(s - 1) if tokens[k] in PUNCT), default=-1)
-            q = next((q for q in range(s - 2, back, -1) if tokens[q] in NUMBER_WORDS and tokens[q] != 'one'),
-                     -1)
+            q = next((q for q in range(s - 2, back, -1) if tokens[q] in NUMBER_WORDS and tokens[q] != 'one' or
+                      tokens[q].isdigit() and len(tokens[q]) == 1 and tokens[q] != '1'), -1)
             counted = parser.parse(tokens, q + 1) if q >= 0 else None
             if counted is None or counted.end > s - 1 or _count_of(tokens[q]) != len(nps):
                 continue
@@ -299,12 +304,14 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     found = _find_list(tokens)
     if found is None:
         for k in range(len(tokens) - 2):
-            if k > 0 and tokens[k - 1] in ('do', 'handle', 'finish', 'complete') and tokens[k] == 'the' and \
+            if k > 0 and tokens[k - 1] in ('do', 'handle', 'finish', 'complete', 'from', 'of', 'avoid',
+                                           'visit', 'to', 'near', 'check') and tokens[k] == 'the' and \
                     tokens[k + 1] in ('first', 'last') and tokens[k + 2] in NUMBER_WORDS and \
                     tokens[k + 2] not in ('one', 'once', 'twice', 'thrice') and (
                     k + 3 >= len(tokens) or tokens[k + 3] in PUNCT or tokens[k + 3] in (
                         'for', 'and', 'then', 'now', 'please', 'only', 'first')):
-                # "just do the first two for now": positions in a list that was not found
+                # "just do the first two for now", "keep away from the first two": positions in a list
+                # that was not found
                 said = ' '.join(tokens[k:k + 3])
                 raise TranslationError(f'"{said}": found no list they are part of', details={'part': said})
         return tokens
@@ -1725,6 +1732,13 @@ _BOTH_FILLERS = frozenset({'just', 'actually', 'no', 'make', 'it', 'do', 'go', '
 def _renumber(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     """'dock four. no, five', 'room 204, sorry, 206': the number in the name said last is replaced."""
     words = [t for t in seg if t not in PUNCT and t not in ('make', 'it', 'that', 'just', 'no', 'sorry')]
+    if len(words) == 1 and len(words[0]) == 1 and words[0].isalpha() and words[0].lower() != 'i':
+        # "conf rm A. sorry, B": the letter of the name said last (a letter label is kept in capitals)
+        p = next((p for p in range(len(prev) - 1, -1, -1) if len(prev[p]) == 1 and prev[p].isupper()), -1)
+        if p <= 0 or prev[p - 1] in DETERMINERS or prev[p - 1] in PUNCT or not prev[p - 1].isalpha() or \
+                prev[p].lower() == words[0].lower():
+            return None
+        return prev[:p] + [words[0].upper()] + prev[p + 1:]
     if len(words) != 1 or not (words[0].isdigit() or words[0] in NUMBER_WORDS) or \
             words[0] in ('once', 'twice', 'thrice'):
         return None

@@ -62,6 +62,11 @@ TYPOS: dict[str, str] = {
     'bc': 'because', 'bcuz': 'because', 'becuz': 'because', 'cuz': 'because', 'coz': 'because',
     'uve': 'you have', 'hes': 'he is', 'shes': 'she is', 'theyre': 'they are', 'tmrw': 'tomorrow',
     'lmao': '', 'jk': 'just kidding', 'beetwen': 'between', 'bewteen': 'between', 'betwean': 'between',
+    # well-known office and building abbreviations, spelled out in names ("conf rm B": conference_room_b);
+    # not "exec", a word of its own ("the exec suite" is how people name it)
+    'conf': 'conference', 'recep': 'reception', 'mtg': 'meeting', 'mtgs': 'meetings',
+    'fl': 'floor', 'flr': 'floor', 'bldg': 'building', 'dept': 'department', 'mgr': 'manager',
+    'rms': 'rooms', 'ppl': 'people',
 }
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
@@ -182,6 +187,12 @@ _NOUN_COMPOUND_RE = re.compile(r'\b(the|my|our|this|that) '
 _ACRONYM_RE = re.compile(
     r"\b(the|a|an|our|my|your|this|that)\s+(IT|US|ER|OR|AM|PE|PA|UN|HR)\b(?=\s+[A-Za-z])", re.IGNORECASE)
 
+# ... and so is one in capitals opening a list item with a noun after it ("mail room / IT help desk").
+_ITEM_ACRONYM_RE = re.compile(
+    r"(?:^|[,:;/+&]\s*|\b(?:and|or|then|to|at|by|from|near|past|avoid)\s+)(IT|ER|OR|PE|HR)\b"
+    r"(?=\s+(?!(?:is|was|will|has|had|should|must|can|could|would|does|did|may|might|needs|seems|"
+    r"looks)\b)[a-z])")
+
 
 # A capital letter after a word names something ("field A", "Gate B"): not the article "a".
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
@@ -234,6 +245,7 @@ def tokenize(text: str) -> list[str]:
         between spaces becomes a comma, and typos in :data:`TYPOS` are fixed.
     """
     acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
+    acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
     acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
     if acronyms:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
@@ -253,9 +265,20 @@ def tokenize(text: str) -> list[str]:
     if '>' in s or '\u2192' in s:   # "the lobby > mail room > loading dock", "a -> b": an order
         s = re.sub(r'(?<=[a-z0-9)])\s*(?:-{1,2}>|={1,2}>|>|\u2192)\s*(?=[a-z0-9(])', ' then ', s)
     s = re.sub(r'\s[-\u2013\u2014]+\s|\.\.\.+|\u2026', ' , ', s)
+    if '/' in s or '&' in s or '+' in s:
+        # chat shorthand ("w/e you find first", "w/o"), a slash between spaces separates list items
+        # ("mail room / supply closet"), and "&" or "+" between words is "and" ("lost & found")
+        s = re.sub(r'\bw/e\b', 'whatever', s)
+        s = re.sub(r'\bw/o\b', 'without', s)
+        s = re.sub(r'\bb/c\b', 'because', s)
+        s = re.sub(r'(?<=[a-z0-9]) / (?=[a-z0-9])', ' , ', s)
+        s = re.sub(r'(?<=[a-z0-9]) [&+] (?=[a-z0-9])', ' and ', s)
     if '.' in s:   # "Mr. Alvarez": the title's full stop ends no sentence
         s = re.sub(r'\b(mr|mrs|ms|dr)\.(?= [a-z])', r'\1', s)
     s = re.sub(r'\b(\d{1,2}) ?x\b', r'\1 times', s)   # "swing by the desk 2x"
+    if 'min' in s:   # "for a min", "in 5 mins": the time unit spelled out ("a sec" is read as it is)
+        s = re.sub(r'\b(a|one|\d{1,2}|few|couple|couple of|two|three|five|ten) mins?\b',
+                   lambda m: f'{m.group(1)} minute' + ('' if m.group(1) in ('a', 'one', '1') else 's'), s)
     for pattern, repl in CONTRACTIONS:
         s = re.sub(pattern, repl, s)
     if 'its ' in s:   # "bring its charger": after a verb or preposition "its" is no "it is"
@@ -343,7 +366,9 @@ def expand_labels(tokens: list[str]) -> list[str]:
                     j += 2 if tokens[j + 1] != ',' or tokens[j + 2:j + 3] not in (['and'], ['or']) else 3
                 else:
                     break
-        if len(labels) >= 2 and any(tokens[m - 1] in ('and', 'or') for m in labels[1:]):
+        # ... or three or more with commas only, the list ended by punctuation ("conf rms A, B, C - ...")
+        if len(labels) >= 2 and any(tokens[m - 1] in ('and', 'or') for m in labels[1:]) or \
+                len(labels) >= 3 and (labels[-1] + 1 == len(tokens) or tokens[labels[-1] + 1] in PUNCT):
             noun = t[:-2] if t.endswith(('ches', 'shes', 'xes', 'sses')) else \
                 t[:-3] + 'y' if t.endswith('ies') and len(t) > 4 else t[:-1]   # "galleries 14 and 15"
             end = labels[-1] + 1

@@ -198,6 +198,15 @@ _ITEM_ACRONYM_RE = re.compile(
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
 
 
+# "shelf B4", "bay b4": a letter and a digit after a noun that takes labels is a label, not "before".
+_B4_RE = re.compile(r"(?<=[A-Za-z] )B4\b")
+_LABEL_NOUNS = frozenset('''
+shelf shelves aisle bay bin gate room locker seat row table dock box cell rack unit section slot cabinet
+drawer stall platform bed desk level door hangar pod cage pen tank zone area lab office ward wing suite
+booth counter station lane pallet pier berth bench
+'''.split())
+
+
 # After a list number, words that say themselves how the item stands to the others.
 _ITEM_OPENERS = frozenset({'then', 'never', 'do', 'don', 'dont', 'avoid', 'and', 'after', 'before', 'finally',
                            'but', 'not', 'always', 'only', 'if', 'when', 'whenever', 'once', 'while', 'keep',
@@ -247,6 +256,7 @@ def tokenize(text: str) -> list[str]:
     acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
     acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
     acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
+    acronyms |= {m.start() for m in _B4_RE.finditer(text)}
     if acronyms:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))
@@ -325,7 +335,10 @@ def tokenize(text: str) -> list[str]:
     found = _TOKEN_RE.findall(s)
     for k, tok in enumerate(found):
         if acronyms and tok.startswith('zq'):
-            out.append(tok[2:].upper())
+            out.append(tok[2:] if tok == 'zqb4' else tok[2:].upper())   # "shelf B4": shelf_b4
+            continue
+        if tok == 'b4' and out and out[-1] in _LABEL_NOUNS:
+            out.append(tok)   # "bay b4": a label
             continue
         tok = ORDINAL_DIGITS.get(tok, tok)
         if tok == 'till' and _till_is_counter(out, found[k + 1:k + 3]):

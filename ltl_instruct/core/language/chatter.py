@@ -716,8 +716,9 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     if not k or k >= len(tokens):
         return False
     verb = tokens[k]
-    if verb in PLACE_HEADS or '_' in verb:
-        return False   # "the staff room", "the guest lounge": a place named for people
+    if verb in PLACE_HEADS or '_' in verb or tokens[k - 1] in PERSON_NOUNS and \
+            k + 1 < len(tokens) and tokens[k + 1] in PLACE_HEADS and verb not in DETERMINERS:
+        return False   # "the staff room", "the guest lounge", "the customer service desk": a place
     if k == 1 and verb in ('will', 'shall') and tokens[0] in ('i', 'we') and \
             tokens[2] not in REQUEST_WORDS and \
             tokens[2] not in ('need', 'want', 'have', 'ask', 'be', 'get', 'let', 'tell', 'show', 'send'):
@@ -804,8 +805,9 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     if np_end and is_numbered_subject(tokens, np_end):
         # "table 4 wants ketchup", "table 12 are celebrating": a numbered place, said without its article
         return tokens[np_end + 1:np_end + 2] != ['to'] and not has_constraint_word(tokens[np_end:])
-    if not tokens or has_constraint_word([t for k, t in enumerate(tokens) if not (
-            # "it needs more shade": an amount of something, no count of visits
+    if not tokens or has_constraint_word([t for k, t in enumerate(tokens) if k >= np_end and not (
+            # "it needs more shade": an amount of something, no count of visits; and the number of a
+            # name is no count ("aisle 7 is closed")
             t in ('more', 'less') and k > 1 and tokens[k - 1] in FINITE_VERBS and k + 1 < len(tokens) and
             tokens[k + 1] not in NUMBER_WORDS and tokens[k + 1] not in ('than', 'times', 'time', 'often'))]):
         return False

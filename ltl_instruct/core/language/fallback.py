@@ -79,6 +79,8 @@ out outside beyond around toward towards careful risky blocked closed reverse ba
 def may_degrade(tokens: Sequence[str]) -> bool:
     """Whether a clause the rules could not read may be guessed at or left out (see the module docstring)."""
     words = [t for t in tokens if t not in PUNCT]
+    if any(words[k:k + 2] in (['i', 'meant'], ['i', 'mean']) for k in range(len(words) - 1)):
+        return False   # a correction the rules could not apply: what it replaces is unknown
     return bool(words) and not chatter.carries_constraint(words) and not _RISKY & set(words)
 
 

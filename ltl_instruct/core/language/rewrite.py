@@ -646,8 +646,8 @@ def _np_spans(tokens: list[str]) -> list[NounPhrase]:
                 # "Pool, then gym. Wait, reverse that": names said bare at the start of a sentence
                 (i == 0 or after in '.;!?') and tokens[i] not in _VERBS and tokens[i] not in _NOT_BARE and
                 is_name_word(tokens, i, False)) or (
-                i > 0 and tokens[i - 1] in ('then', 'and', 'or') and tokens[i] not in _VERBS and is_name_word(
-                    tokens, i, False)):
+                i > 0 and tokens[i - 1] in ('then', 'and', 'or', 'from', 'near') and
+                tokens[i] not in _VERBS and is_name_word(tokens, i, False)):
             np = parser.parse(tokens, i)
             if np is not None and np.end > i and not np.pronoun:
                 out.append(np)
@@ -712,6 +712,11 @@ def _numbered(head: str) -> bool:
     return head.isdigit() or head in NUMBER_WORDS
 
 
+# Words before the place a thing is put ("put the book on the desk"): a correction of a bare name
+# replaces that place.
+_PLACING_WORDS = frozenset({'on', 'in', 'into', 'onto', 'at', 'to'})
+
+
 def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """Replace in ``prev`` the phrase ``new`` corrects (same head noun, else the last phrase)."""
     pron = 'it' if 'it' in new else 'them' if 'them' in new else ''
@@ -772,6 +777,10 @@ def _replace_np(prev: list[str], new: list[str]) -> Optional[list[str]]:
             sub = PhraseParser().parse(prev, p) if p > 0 else None
             if sub is not None and not sub.pronoun and sub.end == target.end and (
                     singular(sub.head) != sub.head) == plural:
+                if prev[p - 1] not in _PLACING_WORDS or prev[p - 2:p] in (['next', 'to'], ['close', 'to']):
+                    # "the lamp left of the TV, sorry, I meant the front desk": the lamp left of the desk,
+                    # or the desk? Nothing says (only a thing put "on" or "in" a place is its destination)
+                    return None
                 return prev[:p] + new + prev[sub.end:]
     new_words = new
     if target.head == np.head and target.descriptor.relations and not np.descriptor.relations and \
@@ -1151,7 +1160,7 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
-            out = prev + [','] + seg[c + 1:] + after
+            out = prev + [','] + _forget_what_was_said(prev, said, seg[c + 1:]) + after
             i = len(prev) + 1
             continue
         result = _correct(prev, marker, seg, notes)
@@ -1179,12 +1188,38 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             # (but a verb of leaving out stays: "go to the garage, forget the kitchen" never makes
             # the kitchen a goal)
             kept = [marker] if marker in _CANCEL and marker != 'never' and seg[:1] != [','] else []
+            if out[i:j] in (['i', 'meant'], ['no', 'i', 'mean']) and seg[:1] != [','] or \
+                    out[i:j] == ['i', 'mean'] and seg[:1] in DETERMINERS:
+                # "..., I meant the desk" that corrects nothing we can find: never a goal of its own
+                kept = out[i:j]
             out = prev + comma + kept + seg + after
             i = len(prev) + len(comma) + len(kept)   # (a marker right after it is read: "ah no, ...")
             continue
         out = result + after
         i = len(result)
     return out
+
+
+def _forget_what_was_said(prev: list[str], said: list[str], rest: list[str]) -> list[str]:
+    """Read "forget that" after a remark ("the fireplace is off") as forgetting what the remark is about.
+
+    ``said`` is the remark ("the fireplace is off"), ``rest`` the correction after it; a bare
+    "forget that" ("scratch that", "never mind that", "ignore it") becomes "forget" the thing
+    the remark names, if a step said before names it too (else "that" is the last thing said).
+    """
+    m = _marker_at([','] + rest, 1)   # (read as after a comma: "forget" opens no request here)
+    if not m or rest[0] not in _CANCEL or [t for t in rest[m:] if t not in PUNCT] not in (
+            [], ['that'], ['it'], ['about', 'that'], ['about', 'it']):
+        return rest
+    if rest[:2] == ['never', 'mind'] and [t for t in rest[m:] if t not in PUNCT] == []:
+        return rest   # "never mind" alone may take the whole request back
+    end = _np_end(said)
+    # (or said with no article, as the task names it: "aisle 7 is off")
+    subject = next((w for w in (said[:end], said[1:end] if said[:1] == ['the'] else [])
+                    if w and any(prev[k:k + len(w)] == w for k in range(len(prev)))), None)
+    if subject is None:
+        return rest
+    return ['forget'] + subject + [t for t in rest[m:] if t in PUNCT]
 
 
 _RETRACT: tuple[tuple[str, ...], ...] = (

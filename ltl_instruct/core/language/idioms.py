@@ -698,6 +698,10 @@ RULES: tuple[Rule, ...] = (
     Rule('any more or any fewer than twice', r'\b(?:any )?(?:more|greater) or (?:any )?(?:fewer|less) than\b',
          'exactly'),
     Rule('at most and at least twice', r'\bat (?:most and at least|least and at most)\b', 'exactly'),
+    # "visit the den and the hall, each exactly once": the count of each, said after them
+    Rule('the den and the hall, each exactly once',
+         r' , each (?P<m>(?:exactly|at least|at most) )?(?P<c>once|twice|thrice|(?:two|three|four) times)'
+         r'(?= [.;!?]|$)', r' \g<m>\g<c> each'),
     Rule('but two times at most', rf'\b(?:but )?(?:only )?(?P<c>{_COUNT}) at (?P<m>most|least)\b',
          r'at \g<m> \g<c>'),
     Rule('on at least three separate occasions',

@@ -607,6 +607,13 @@ def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
     return is_name_word(tokens, i, False) and nxt not in GOAL_VERBS | NAME_VERBS | DELIVER_VERBS | PICK_VERBS
 
 
+def _labelled_name(tokens: Sequence[str], k: int) -> bool:
+    """Whether a name with a label starts at ``tokens[k]``, said with no article ("gate B", "aisle 3")."""
+    label = tokens[k + 1] if k + 1 < len(tokens) else ''
+    return tokens[k].isalpha() and tokens[k] not in GOAL_VERBS and tokens[k] not in STOPWORDS and (
+        label.isdigit() and len(label) < 4 or len(label) == 1 and label.isupper())
+
+
 def _numbered_name(tokens: Sequence[str], k: int) -> bool:
     """Whether a verb after "go to" is the name of a numbered place ("fly over stand 4", "survey stand 4")."""
     nxt = tokens[k + 2] if k + 2 < len(tokens) else '.'
@@ -1276,6 +1283,11 @@ class _Reader:
             for st in chain:
                 if st.kind == 'visit' and len(st.targets) == 1:
                     st.once = 'exactly'
+        # "visit the den exactly once and the hall twice": a goal counted in one part of an "all"
+        nested = [st for top in chain if top.kind == 'all' for part in top.chains for st in part]
+        for st in nested:
+            if st.kind == 'visit' and st.once == 'exactly' and len(st.targets) == 1:
+                self.task.constraints.append(exactly(_near(st.targets[0]), 1))
         for k, st in enumerate(chain):
             if st.kind != 'visit' or not st.once or len(st.targets) != 1:
                 continue
@@ -4159,8 +4171,9 @@ class _Reader:
         counted, rest = self._read_count(rest, targets)
         if counted:
             rest = [t for t in rest if t != ',']
-            if len(rest) > 1 and rest[0] in ('and', 'but') and rest[1] in DETS:
-                # "visit the fountain twice and the statue once": both, each its own count
+            if len(rest) > 1 and rest[0] in ('and', 'but') and (rest[1] in DETS or _labelled_name(rest, 1)):
+                # "visit the fountain twice and the statue once": both, each its own count (and "... and
+                # gate B twice")
                 head, steps = self.task.chain[:n0], self.task.chain[n0:]
                 self.task.chain = []
                 self._read_goal(['visit'] + rest[1:], _Clause('seq', rest[1:]), None)

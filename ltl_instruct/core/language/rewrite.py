@@ -294,6 +294,17 @@ def _say_positions(tokens: list[str]) -> list[str]:
     return new.split() if new != text else tokens
 
 
+def _names_label(words: list[str], k: int) -> bool:
+    """Whether the number ``words[k]`` labels the noun before it ("then aisle 3"), no list position."""
+    before = words[k - 1] if k > 0 else ''
+    return before.isalpha() and before not in _NOT_LISTED | _VERBS | _POSITION_WORDS
+
+
+# Words before a number that make it a position in a list ("number 2", "item 3").
+_POSITION_WORDS = frozenset({'number', 'item', 'stop', 'no', 'point', 'step', 'entry', 'line', 'option',
+                             'choice', 'thing', 'place'})
+
+
 def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     """Replace references by list position ("the second one") with the phrase they point to.
 
@@ -325,7 +336,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     refers = _refers_to_list(tail)
     # a number is a position, unless the things listed are labelled with it ("rows 4, 5 and 6 ... skip 5")
     labels = {np.descriptor.name.rpartition('_')[2] for np in nps}
-    if not refers and not any(t.isdigit() and t not in labels for t in tail) and not ahead:
+    if not refers and not any(t.isdigit() and t not in labels and not _names_label(tail, k)
+                              for k, t in enumerate(tail)) and not ahead:
         heads = {np.head for np in nps}
         if s == 0 and end < len(tokens) and tokens[end] == ':' and any(t in heads for t in tail) and \
                 not any(t in NAME_VERBS for t in tokens[:end]):
@@ -2355,12 +2367,16 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         last = spans[-1]
         for n in (3, 2, 1):
             if len(new) > n and last.start >= n and new[:n] == prev[last.start - n:last.start] and \
-                    new[n] in DETERMINERS:
+                    new[n] in DETERMINERS and not {'or', 'and', 'then', ','} & set(new[:n]):
                 new = new[n:]
                 break
     replaced = _replace_alternatives(prev, new)
     if replaced is not None:
         notes.append(f'corrected the choice to "{" ".join(new)}"')
+        return replaced
+    replaced = _replace_sequence(prev, new)
+    if replaced is not None:
+        notes.append(f'corrected the order of places to "{" ".join(new)}"')
         return replaced
     replaced = _replace_relation(prev, new)
     if replaced is not None:
@@ -2492,6 +2508,46 @@ def _replace_alternatives(prev: list[str], new: list[str]) -> Optional[list[str]
     if len(said) < 2 or stop != len(new):
         return None
     return prev[:start] + new + prev[end:]
+
+
+_THEN_JOINS = ([',', 'then'], ['then'], ['and', 'then'], [',', 'and', 'then'])
+
+
+def _sequence_of(words: list[str], start: int) -> tuple[list[NounPhrase], int]:
+    """Return the places said in order from ``words[start]`` ("the attic, then the cellar"), and their end."""
+    parser = PhraseParser()
+    out: list[NounPhrase] = []
+    k = start
+    while True:
+        np = parser.parse(words, k)
+        if np is None or np.pronoun:
+            break
+        out.append(np)
+        k = np.end
+        join = next((j for j in _THEN_JOINS if words[k:k + len(j)] == j), None)
+        if join is None or k + len(join) >= len(words):
+            break
+        k += len(join)
+    return out, (out[-1].end if out else start)
+
+
+def _replace_sequence(prev: list[str], new: list[str]) -> Optional[list[str]]:
+    """Correct a route: "go to A, then B. sorry, I meant C, then D": the places said last in order."""
+    said, end = _sequence_of(new, 0)
+    if len(said) < 2 or end != len(new) or not prev or prev[-1] not in '.;!?':
+        return None   # (within the sentence, "..., no, the garage, then the gate" goes on after it)
+    spans = _np_spans(prev)
+    for k in range(len(spans) - 1, 0, -1):
+        run, stop = _sequence_of(prev, spans[k - len(said) + 1].start) if k - len(said) + 1 >= 0 else ([], 0)
+        if len(run) == len(said) and stop == spans[k].end:
+            before = run[0].start
+            if any(prev[before - len(j):before] == j for j in _THEN_JOINS):
+                # "go to A, then B, then C. sorry, I meant D, then E": which two does it replace?
+                said_new = ' '.join(new)
+                raise TranslationError(f'"{said_new}" corrects a route of more places than it names',
+                                       details={'part': said_new})
+            return prev[:before] + new + prev[stop:]
+    return None
 
 
 def _replace_relation(prev: list[str], new: list[str]) -> Optional[list[str]]:

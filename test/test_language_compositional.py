@@ -239,9 +239,84 @@ def corrections(a, b, c, h, o) -> Iterator[tuple[str, str, Optional[str]]]:
     yield 'count-scratch', f'Go to {sa} three times, scratch that, twice is enough.', twice(na)
 
 
+def mixtures(a, b, c, h, o) -> Iterator[tuple[str, str, Optional[str]]]:
+    """Three kinds at a time: a choice, an order or a count with a sequence and avoidance."""
+    (sa, na), (sb, nb), (sc, nc), (sh, nh), (so, no) = a, b, c, h, o
+    choice = f'(near[{na}] | near[{nb}])'
+    yield 'or-then+never', f'Go to {sa} or {sb}, then {sc}, and never go near {sh}.', \
+        f'F ({choice} & F near[{nc}]) & {never(nh)}'
+    yield 'either-then+on-the-way', \
+        f'Go to either {sa} or {sb}, then to {sc}, and avoid {sh} on the way to {sc}.', \
+        f'F ({choice} & (!near[{nh}] U near[{nc}]))'
+    yield 'twice-then+never', f'Visit {sa} twice, then go to {sb}; stay away from {sh} the whole time.', \
+        f'{twice(na, go(nb))} & {never(nh)}'
+    # (the guard of "only after" is the delivery's first goal, the thing to pick up)
+    yield 'bring+only-after', f'Bring {so} to {sa}, but only after you have been to {sb}.', \
+        f'{deliver(no, na)} & {only_after(no, nb)}'
+    yield 'go-first+bring+never', f'Go to {sb} first, then bring {so} to {sa}, and never go near {sh}.', \
+        f'F (near[{nb}] & {deliver(no, na)}) & {never(nh)}'
+    yield 'carrying+then', f'Take {so} to {sa}, avoid {sh} while you carry it, and then go to {sb}.', \
+        deliver(no, na, tail=go(nb), carrying_avoid=nh)
+    yield 'then+only-after', f'Go to {sa} and then {sb}, but only go to {sa} after {sc}.', \
+        f'{seq(na, nb)} & {only_after(na, nc)}'
+    yield 'or+exactly-once', f'Go to {sa} or {sb}, and visit {sc} exactly once.', \
+        f'({go(na)} | {go(nb)}) & {exactly_once(nc)}'
+    yield 'three+at-most-once', f'Go to {sa}, then {sb}, then {sc}, and go to {sa} at most once.', \
+        f'{seq(na, nb, nc)} & {at_most_once(na)}'
+    yield 'then+never+meant', \
+        f'Go to {sa}, then {sb}, and never go near {sh}. Sorry, I meant {sc}, not {sb}.', \
+        f'{seq(na, nc)} & {never(nh)}'
+    yield 'then+bring', f'First go to {sa}, then {sb}. After that, bring {so} to {sc}.', \
+        f'F (near[{na}] & F (near[{nb}] & {deliver(no, nc)}))'
+    yield 'bring-or+never', f'Bring {so} to either {sa} or {sb}, and keep away from {sh}.', \
+        f'F (near[{no}] & F (pick[{no}] & (F (near[{na}] & F release[{no}, {na}]) | '\
+        f'F (near[{nb}] & F release[{no}, {nb}])))) & {never(nh)}'
+    yield 'until+then', f'Stay away from {sh} until you reach {sa}, then go to {sb}.', \
+        f'(!near[{nh}] U near[{na}]) & {seq(na, nb)}'
+    yield 'not-before-or', f'Go to {sa}, but not before you have been to {sb} or {sc}.', \
+        f'{go(na)} & (!near[{na}] U (near[{nb}] | near[{nc}]))'
+    yield 'any-order+then', f'Go to {sa} and {sb}, in any order, then {sc}.', \
+        f'F (near[{na}] & F (near[{nb}] & F near[{nc}])) | F (near[{nb}] & F (near[{na}] & F near[{nc}]))'
+    yield 'counts-each', f'Visit {sa} exactly once and {sb} twice.', f'{exactly_once(na)} & {twice(nb)}'
+    yield 'each-exactly-once', f'Visit {sa} and {sb}, each exactly once.', \
+        f'{exactly_once(na)} & {exactly_once(nb)}'
+
+
+def restatements(a, b, c, h, o) -> Iterator[tuple[str, str, Optional[str]]]:
+    """Corrections of a route, a choice, an order, a count and an avoidance inside other kinds."""
+    (sa, na), (sb, nb), (sc, nc), (sh, nh), (so, no) = a, b, c, h, o
+    yield 'go-first', f'Go to {sa}, then {sb}, then {sc}. Actually, go to {sc} first.', seq(nc, na, nb)
+    yield 'twice-no-exactly-once', f'Go to {sa} twice. No wait, exactly once.', exactly_once(na)
+    yield 'avoid-instead', f'Go to {sa} and avoid {sh}. Actually, avoid {sc} instead.', \
+        f'{go(na)} & {never(nc)}'
+    yield 'never-mind-instead', f'Go to {sa}. Never mind, go to {sb} instead.', go(nb)
+    yield 'bring-then-meant', f'Bring {so} to {sa} and then go to {sb}. Sorry, I meant {sc}, not {sb}.', \
+        deliver(no, na, tail=go(nc))
+    yield 'or-meant-or', f'Go to {sa} or {sb}. Sorry, I meant {sa} or {sc}.', f'{go(na)} | {go(nc)}'
+    yield 'route-meant-route', f'Go to {sa}, then {sb}. Sorry, I meant {sc}, then {sa}.', seq(nc, na)
+    # three places said, two in the correction: which two it replaces is not said (refused)
+    yield 'route-meant-shorter', f'Go to {sa}, then {sb}, then {sc}. Sorry, I meant {sh}, then {sa}.', None
+    yield 'in-order+on-the-way', \
+        f'Go to {sa}, {sb} and {sc} in that order, and avoid {sh} on the way to {sc}.', \
+        f'F (near[{na}] & F (near[{nb}] & (!near[{nh}] U near[{nc}])))'
+    yield 'but-first', f'Go to {sa}, but first go to {sb}.', seq(nb, na)
+    # ("and only then": in that strict order, the last not before the one before it)
+    yield 'only-then', f'Go to {sa}, then {sb}, and only then {sc}.', \
+        f'{seq(na, nb, nc)} & {only_after(nc, nb)}'
+    yield 'before-going', f'Before going to {sa}, stop by {sb}.', seq(nb, na)
+    yield 'or-but-not-both', f'Go to {sa} or {sb} but not both.', \
+        f'({go(na)} & {never(nb)}) | ({go(nb)} & {never(na)})'
+    yield 'bring+then-or', f'Bring {so} to {sa}, then go to {sb} or {sc}.', \
+        deliver(no, na, tail=f'(F near[{nb}] | F near[{nc}])')
+    yield 'until-picked', f'Pick up {so}, and stay away from {sh} until you have it. Then go to {sa}.', \
+        f'F (near[{no}] & F (pick[{no}] & F near[{na}])) & (!near[{nh}] U pick[{no}])'
+    yield 'never-two', f'Go to {sa}. Never go near {sh} or {sb}.', f'{go(na)} & {never(nh)} & {never(nb)}'
+
+
 FAMILIES: list[tuple[str, Family, int]] = [
     ('seq', sequences, 6), ('choice', choices, 6), ('order', orderings, 6), ('avoid', avoidance, 6),
     ('scope', scoped, 6), ('count', counts, 5), ('deliver', deliveries, 6), ('correct', corrections, 5),
+    ('mixed', mixtures, 3), ('restate', restatements, 3),
 ]
 
 

@@ -112,6 +112,11 @@ FOUND_ROUND_A3 = [
     ("Go to the bird feeder and then the garden bench, but please stay off my flower beds the whole time, "
      "I've only just planted the tullips.",
      'F (near[bird_feeder] & F near[garden_bench]) & G !near[flower_beds]'),
+    # a correction by list position after a list with no relation in it reads on ("I meant" is kept, and
+    # refused, only where a thing is placed by another: "the lamp left of the TV, I meant the desk")
+    ('Go to the third one: mixer, curing oven, cooler. Ah sorry, I mean the second.', 'F near[curing_oven]'),
+    ('Go to the first one of these: the plotter, the scanner, the laminator. Wait, I meant the last one.',
+     'F near[laminator]'),
 ]
 
 

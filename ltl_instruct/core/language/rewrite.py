@@ -1200,9 +1200,12 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             # (but a verb of leaving out stays: "go to the garage, forget the kitchen" never makes
             # the kitchen a goal)
             kept = [marker] if marker in _CANCEL and marker != 'never' and seg[:1] != [','] else []
-            if out[i:j] in (['i', 'meant'], ['no', 'i', 'mean']) and seg[:1] != [','] or \
-                    out[i:j] == ['i', 'mean'] and seg[:1] in DETERMINERS:
-                # "..., I meant the desk" that corrects nothing we can find: never a goal of its own
+            said = prev[max((k for k, t in enumerate(prev) if t in '.;!?'), default=-1) + 1:]
+            if (out[i:j] in (['i', 'meant'], ['no', 'i', 'mean']) and seg[:1] != [','] or
+                    out[i:j] == ['i', 'mean'] and seg[:1] and seg[0] in DETERMINERS) and \
+                    _RELATION_WORDS & set(said):
+                # "the lamp left of the TV, sorry, I meant the desk": the lamp or its landmark? never
+                # guessed (a goal of its own); "the plotter ... I meant the laminator" reads on
                 kept = out[i:j]
             out = prev + comma + kept + seg + after
             i = len(prev) + len(comma) + len(kept)   # (a marker right after it is read: "ah no, ...")
@@ -1210,6 +1213,11 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
         out = result + after
         i = len(result)
     return out
+
+
+# Words that place a thing by another ("the lamp left of the TV"): a correction after one may mean either.
+_RELATION_WORDS = frozenset({'left', 'right', 'behind', 'front', 'next', 'between', 'under', 'beside', 'by',
+                             'near', 'above', 'below', 'beneath', 'underneath'})
 
 
 def _forget_what_was_said(prev: list[str], said: list[str], rest: list[str]) -> list[str]:

@@ -253,7 +253,8 @@ def test_make_translator_backends() -> None:
 VOCAB = ['go', 'to', 'the', 'sofa', 'then', 'never', 'avoid', 'bring', 'cup', 'table', ',', '.', 'and', 'or',
          'between', 'left', 'of', 'once', 'twice', 'exactly', 'at', 'least', 'until', 'after', 'before', 'it',
          'there', 'sorry', 'no', 'wait', 'i', 'meant', 'first', 'second', 'one', 'a', 'put', 'on', 'in',
-         'if', 'you', 'can', 'stay', 'forget', 'instead', 'only', 'not', 'do', 'while', 'carrying', 'twice']
+         'if', 'you', 'can', 'stay', 'forget', 'instead', 'only', 'not', 'do', 'while', 'carrying', 'twice',
+         'mean', 'ah', ':', 'last', 'aisle', '3', 'that', 'fine']
 
 
 @settings(max_examples=300, derandomize=True, deadline=None)

@@ -718,6 +718,9 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     verb = tokens[k]
     if verb in PLACE_HEADS or '_' in verb:
         return False   # "the staff room", "the guest lounge": a place named for people
+    if tokens[-1] in PLACE_HEADS and len(tokens) - k <= 3 and not any(
+            w in DETERMINERS or w in PREPOSITIONS or w in PUNCT for w in tokens[k:]):
+        return False   # "the customer service desk", "the visitor parking lot": a place named for people
     if k == 1 and verb in ('will', 'shall') and tokens[0] in ('i', 'we') and \
             tokens[2] not in REQUEST_WORDS and \
             tokens[2] not in ('need', 'want', 'have', 'ask', 'be', 'get', 'let', 'tell', 'show', 'send'):

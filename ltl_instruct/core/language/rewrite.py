@@ -879,10 +879,11 @@ def _replace_step(prev: list[str], pos: int, rest: list[str], notes: list[str]) 
     return prev[:a] + prev[b:]
 
 
-def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]:
+def _remove_clause(prev: list[str], pos: int, narrow: bool = False, command: bool = False) -> list[str]:
     """Remove the clause around token ``pos`` (from the connective before it to the next stop).
 
     With ``narrow``, the next connective (``,``, ``then``, ``and``) also ends it: one goal of a list.
+    With ``command``, a connective that opens a new command ends it ("stay away from X and head to Y").
     """
     a = pos
     while a > 0 and prev[a - 1] not in PUNCT and prev[a - 1] not in ('and', 'but', 'then'):
@@ -891,8 +892,14 @@ def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]
         a -= 1
     b = pos
     while b < len(prev) and prev[b] not in '.;!?' and not (
-            narrow and b > pos and prev[b] in (',', 'then', 'and')):
+            narrow and b > pos and prev[b] in (',', 'then', 'and')) and not (
+            command and b > pos and prev[b] in (',', 'then', 'and') and _opens_command(prev, b + 1) and
+            prev[b + 1] not in _COMMAND_JOINERS):
         b += 1
+    if command and a == 0 and b < len(prev) and prev[b] not in '.;!?':
+        b += 1   # the clause opened the instruction: its joiner to the next goes with it
+        while b < len(prev) and prev[b] in ('and', 'then', ','):
+            b += 1
     return prev[:a] + prev[b:]
 
 
@@ -1148,6 +1155,14 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
             out = out[:j] + ([','] if out[j - 1] not in PUNCT else []) + seg[c + 1 + so:] + after
             continue   # ("no, the saw is broken, go to the drill press": not "no go to")
+        if c > lead and seg[c + 1:c + 2] and seg[c + 1] in _CANCEL and \
+                seg[c + 2:] in (['that'], ['it'], ['about', 'that'], ['about', 'it']):
+            # "actually the fireplace is off, forget that": "that" is the avoidance the remark takes back
+            fine = _fine_after_all(prev, seg[lead:c], notes)
+            if fine is not None:
+                out = fine + after
+                i = len(fine)
+                continue
         if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
@@ -1227,8 +1242,12 @@ def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Option
         if seg[e:e + 1] == ['been'] and seg[e + 1:e + 2] in (['fixed'], ['repaired'], ['cleared'],
                                                              ['cleaned']):
             e += 1   # "the elevator's been fixed"
-        if seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe'], ['fixed'], ['repaired'],
-                                ['cleared'], ['acceptable'], ['allowed'], ['permitted']) and \
+        if seg[e:e + 2] in (['turned', 'off'], ['switched', 'off']):
+            e += 1   # "the heater's switched off"
+        if seg[e:e + 1] == ['off'] and seg[e + 1:e + 2] not in (['limits'], ['-'], ['to'], ['from']):
+            pass   # "the fireplace is off": what made it a danger is gone (not "off limits")
+        elif seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe'], ['fixed'], ['repaired'],
+                                  ['cleared'], ['acceptable'], ['allowed'], ['permitted']) and \
                 seg[e:e + 2] not in (['no', 'problem'], ['not', 'a'], ['no', 'longer']):
             continue
         if seg[e:e + 2] == ['not', 'a'] and seg[e + 2:e + 3] not in (['problem'], ['hazard'], ['danger']):
@@ -1285,7 +1304,11 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
     """Remove from ``prev`` the avoidance of the phrase with ``head`` (any, without); keep seg's orders."""
     avoid_at = [p for p in range(len(prev)) if prev[p] in _AVOID_WORDS]
     for p in reversed(avoid_at):
-        spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
+        # only what the avoidance clause names ("keep away from the heater and go to the sofa": not the sofa)
+        q = next((q for q in range(p + 1, len(prev)) if prev[q] in '.;!?' or prev[q] in (
+            ',', 'and', 'then', 'but') and _opens_command(prev, q + 1) and
+            prev[q + 1] not in _COMMAND_JOINERS), len(prev))
+        spans = [sp for sp in _np_spans(prev[p:q]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
             leads = (['just'], ['but'], ['and'], ['so'], ['only'], ['then'])
@@ -1309,7 +1332,7 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
                     notes[-1] = f'"{" ".join(prev[a:b])}" replaced by "{" ".join(said[lead:])}" ' \
                         '(its scope kept)'
                     return prev[:a] + said[lead:] + prev[b:]
-            return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
+            return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p, command=True)) + [
                 t for c in kept for t in [','] + c]
     return None
 
@@ -1589,6 +1612,69 @@ def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
         return None
     notes.append(f'{obj.descriptor} goes to {dest.descriptor} instead')
     return prev[:hit.end + 1] + words[k + 1:dest.end] + prev[old.end:]
+
+
+def _reorder_pair(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Move one goal of the sequence said before next to another: the order of the two corrected.
+
+    "go to the fridge, then the oven, then the table. wait, no, do the oven before the fridge" (or "the
+    oven first, then the fridge", "the fridge after the oven"): the oven goes right before the fridge,
+    the rest of the sequence stays as said. Both must be goals of one sentence of ``prev``.
+    """
+    words = [t for t in seg if t not in PUNCT or t == ',']
+    while words and words[-1] in (',', 'instead', 'please'):
+        words = words[:-1]
+    k = 0
+    while k < len(words) and words[k] in _VERBS | {'do', 'to', 'at', 'by', 'over', 'up', 'just'}:
+        k += 1
+    parser = PhraseParser()
+    first = parser.parse(words, k)
+    if first is None or first.pronoun:
+        return None
+    e = first.end
+    if words[e:e + 1] in (['before'], ['after']):
+        rel, e = words[e], e + 1
+    elif words[e:e + 2] == ['ahead', 'of']:
+        rel, e = 'before', e + 2
+    elif words[e:e + 3] in (['first', ',', 'then'], ['first', 'and', 'then'], ['first', ',', 'and']):
+        rel, e = 'before', e + 3
+        e += words[e:e + 1] == ['then']   # "first, and then"
+    else:
+        return None
+    k2 = e
+    while k2 < len(words) and words[k2] in _VERBS | {'do', 'to', 'at', 'by', 'go', 'you'}:
+        k2 += 1   # "the oven before you do the fridge"
+    second = parser.parse(words, k2)
+    if second is None or second.pronoun or second.end != len(words):
+        return None
+    spans = _np_spans(prev)
+    hit = [next((sp for sp in reversed(spans) if sp.descriptor == np.descriptor), None)
+           for np in (first, second)]
+    if hit[0] is None or hit[1] is None or hit[0].start == hit[1].start:
+        return None
+    moved, anchor = hit
+    if any(prev[p] in '.;!?' for p in range(min(moved.start, anchor.start), max(moved.end, anchor.end))):
+        return None
+    if (rel == 'before') == (moved.start < anchor.start):
+        return None   # already in that order: not a reordering
+    if not all(prev[p - 1] in (',', 'then', 'and', 'to', 'visit') for p in (moved.start, anchor.start)):
+        return None   # goals of a sequence ("go to X, then Y"), not things of a delivery or a rule
+    said = prev[moved.start:moved.end]
+    a, b = moved.start, moved.end
+    joiners = (',', 'then', 'and')
+    if prev[a - 1] in joiners:
+        while prev[a - 1] in joiners:
+            a -= 1   # ", and then the oven": its joiner goes with it
+    else:
+        while b < len(prev) and prev[b] in joiners:
+            b += 1   # "go to the fridge, then ...": the first goal, the joiner after it goes
+    rest = prev[:a] + prev[b:]
+    # (before: the anchor comes first, so it has not moved; after: it comes later)
+    at = anchor.start if anchor.start < a else anchor.end - (b - a)
+    out = rest[:at] + said + [',', 'then'] + rest[at:] if rel == 'before' else \
+        rest[:at] + [',', 'then'] + said + rest[at:]
+    notes.append(f'{first.descriptor} moved {rel} {second.descriptor}')
+    return out
 
 
 def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
@@ -2044,7 +2130,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         start = max((k for k in range(said) if prev[k] in '.;!?'), default=-1) + 1
         notes.append(f'"{" ".join(prev[start:said])}" replaced by "{" ".join(seg[1:])}"')
         return prev[:start] + seg[1:]
-    reordered = _first_instead(prev, seg, notes)   # before a restatement: "actually, go to X first"
+    reordered = _reorder_pair(prev, seg, notes) or _first_instead(prev, seg, notes)
+    # (before a restatement: "actually, go to X first", "do X before Y")
     if reordered is not None:
         return reordered
     if marker in _RESTATE:
@@ -2102,6 +2189,12 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if tgt in ('', 'the last thing', 'the last one', 'the last part', 'that last part', 'that', 'it',
                    'the last bit', 'that last one', 'last thing', 'last part', 'that part', 'that last bit',
                    'last bit', 'the last step', 'that last step', 'the last instruction'):
+            stop = max((p for p in range(len(prev)) if prev[p] in '.;!?'), default=-1)
+            fine = _fine_after_all(prev[:stop + 1], prev[stop + 1:], notes) if tgt in ('', 'that', 'it') and \
+                stop >= 0 else None
+            if fine is not None:
+                # "... . oh, the heater is switched off, ignore that": the remark takes the avoidance back
+                return fine + ([','] + rest if rest else [])
             spans = _np_spans(prev)
             if not spans:
                 return None
@@ -2211,7 +2304,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         rest = seg[k + 2:]
         if tnp is not None:
             for sp in reversed(_np_spans(prev)):
-                if sp.head == tnp.head:
+                opens = max((p for p in range(sp.start)
+                             if prev[p] in PUNCT or prev[p] in ('and', 'then', 'but')), default=-1)
+                if sp.head == tnp.head and _clause_kind(prev[opens + 1:sp.start]) == 'avoid':
+                    # (only an avoidance: "go to the sofa. actually the sofa is fine" drops no goal)
                     notes.append(f'avoiding {tnp.descriptor} was retracted')
                     prev = _remove_clause(prev, sp.start)
                     break

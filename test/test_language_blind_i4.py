@@ -1,0 +1,42 @@
+"""Readings found on the blind sets I4 and J4 (dev-like): each was misread while its set was still blind.
+
+Every case is an instruction of the set with the formula its writer gave, or a sentence of our own for
+the same construction; the translator must give a formula equivalent to it on automata (names included).
+The whole sets stay outside the repository, so that later rounds are scored on language no rule was
+written for.
+"""
+from __future__ import annotations
+
+import pytest
+
+from translation_cases import check_translation
+
+BLIND_ROUND_I4 = [
+    # a place named for people ("the customer service desk") is a place, not a remark about people
+    ('go to aisel 3 or aisle 5 and then the customer service desk',
+     'F ((near[aisle_3] | near[aisle_5]) & F near[customer_service_desk])'),
+    ('Go to the kitchen, then the visitor parking lot.',
+     'F (near[kitchen] & F near[visitor_parking_lot])'),
+    # "the X is off(, forget that)": the avoidance of X is taken back, the goal of its sentence stays
+    ('Stay away from the fireplace and head to the front window. Hmm, actually the fireplace is off, '
+     'forget that. Just avoid the cords behind the TV.',
+     'F near[front_window] & G !near[cords::isbehind(tv)]'),
+    ('Avoid the hall and go to the den. Actually the hall is fine.',
+     'F near[den]'),
+    ('Keep away from the heater and go to the sofa. Oh, the heater is switched off, ignore that.',
+     'F near[sofa]'),
+    # a correction "do A before B" (or "A first, then B", "B after A") moves A in the sequence said before
+    ('Go to the fridge, then the oven, then the table. Wait, no, do the oven before the fridge.',
+     'F (near[oven] & F (near[fridge] & F near[table]))'),
+    ('Go to the fridge, then the oven, then the table. Actually, the oven first, then the fridge.',
+     'F (near[oven] & F (near[fridge] & F near[table]))'),
+    ('Go to the fridge, then the oven, then the table. Sorry, the fridge after the table.',
+     'F (near[oven] & F (near[table] & F near[fridge]))'),
+    ('Visit the garage, the shed and then the porch. No wait, visit the porch before the shed.',
+     'F (near[garage] & F (near[porch] & F near[shed]))'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', BLIND_ROUND_I4)
+def test_readings_found_on_blind_sets_i4_j4(instruction: str, gold: str) -> None:
+    check_translation(instruction, gold)

@@ -34,6 +34,25 @@ BLIND_ROUND_I4 = [
      'F (near[oven] & F (near[table] & F near[fridge]))'),
     ('Visit the garage, the shed and then the porch. No wait, visit the porch before the shed.',
      'F (near[garage] & F (near[porch] & F near[shed]))'),
+    # how to behave ("please behave", "be good") asks for nothing: never a place
+    ('Visitors are in today, so please behave. Go to the conference room, but only after you\'ve checked in '
+     'at reception. And until you get to the conference room, keep clear of the corner office, the director '
+     'is on a call.',
+     'F near[conference_room] & (!near[conference_room] U near[reception]) & (!near[corner_office] U '
+     'near[conference_room])'),
+    ('Please behave. Go to the library.',
+     'F near[library]'),
+    # "the loop (A, B, C)": the places of a route in parentheses, in their order; "twice" repeats the route
+    ('Walk the loop (front desk, elevator, mail room) two times in a row, please.',
+     'F (near[front_desk] & F (near[elevator] & F (near[mail_room] & F (near[front_desk] & F (near[elevator] '
+     '& F near[mail_room])))))'),
+    ('Fly the route (dock, tower, bridge).',
+     'F (near[dock] & F (near[tower] & F near[bridge]))'),
+    ('Do your rounds (kitchen, hall, den) twice.',
+     'F (near[kitchen] & F (near[hall] & F (near[den] & F (near[kitchen] & F (near[hall] & F near[den])))))'),
+    # a goal said after "twice in a row" comes after the repeated route, once
+    ('Go to the kitchen, then the hall twice in a row, then go to the bed.',
+     'F (near[kitchen] & F (near[hall] & F (near[kitchen] & F (near[hall] & F near[bed]))))'),
 ]
 
 

@@ -80,6 +80,9 @@ WISHES: tuple[tuple[str, ...], ...] = (
     ('hope',), ('i', 'hope'), ('hoping',), ('have', 'a', 'good'), ('have', 'a', 'nice'), ('good', 'luck'),
     ('be', 'careful'), ('be', 'quick'), ('be', 'gentle'), ('be', 'quiet'), ('be', 'safe'), ('take', 'care'),
     ('thanks', 'for'), ('thank', 'you', 'for'), ('sorry', 'to', 'bother'), ('sorry', 'for'),
+    # how to behave, no place ("visitors are in today, so please behave")
+    ('behave',), ('be', 'good'), ('be', 'polite'), ('be', 'nice'), ('be', 'on', 'your', 'best'),
+    ('mind', 'your', 'manners'),
 )
 
 # How long to stay ("hover there for a few minutes"): the formula has no clock.
@@ -588,6 +591,24 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
 
 
 _PAREN_RE = re.compile(r'\(([^()]{0,200})\)')
+# "walk the loop (front desk, elevator, mail room)": the places of a route, in its order
+_ROUTE_PAREN_RE = re.compile(r'\b(?:(?:the|that|this|my|your|our|usual|whole|same|regular|normal)\s+)+'
+                             r'(?:loop|route|circuit|round|rounds|tour|lap|course|run)\s*\(([^()]{0,200})\)'
+                             r'(?P<n>\s*,?\s*(?:twice|two times|three times|thrice|[2-5] times)'
+                             r'(?! in a row))?',
+                             re.IGNORECASE)
+_ROUTE_SEP_RE = re.compile(r'\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+|\s*->\s*|'
+                           r'\s+-+\s+|\s*>\s*)\s*', re.IGNORECASE)
+
+
+def _route_places(m: re.Match[str], notes: list[str]) -> str:
+    items = [i.strip() for i in _ROUTE_SEP_RE.split(m.group(1).strip()) if i.strip()]
+    if len(items) < 2 or any(not re.fullmatch(r"[a-z0-9' ]+", i, re.IGNORECASE) or len(i.split()) > 4 or
+                             carries_constraint(i.lower().split()) for i in items):
+        return m.group(0)
+    notes.append(f'read "{m.group(0)}" as the route of its places, in that order')
+    # "the loop (...) twice": the route done twice, as "twice in a row" says
+    return ' , then '.join(items) + (f' {m.group("n").strip(" ,")} in a row' if m.group('n') else ' ,')
 
 
 def strip_parentheticals(text: str, notes: list[str]) -> str:
@@ -603,6 +624,9 @@ def strip_parentheticals(text: str, notes: list[str]) -> str:
             return f', {m.group(1)} ,'
         notes.append(f'left out "({m.group(1).strip()})" (an aside)')
         return ' '
+    if '(' not in text:
+        return text
+    text = _ROUTE_PAREN_RE.sub(lambda m: _route_places(m, notes), text)
     return _PAREN_RE.sub(aside, text) if '(' in text else text
 
 

@@ -1221,6 +1221,9 @@ class _Reader:
         subject = self.phrases.parse(words, 0)
         if subject is not None and chatter.is_statement(words, subject.end):
             return False   # "the kids left stuff everywhere.": about the scene, not where to go
+        said = [t for t in words if t not in ('please', 'and', 'so', 'just')]
+        if said[:1] and said[0] in _WISH_FIRST and any(_starts(said, 0, w) for w in chatter.WISHES):
+            return False   # "please behave.": how to be, no place
         while ',' in sentence[i:n]:   # "..., your call": a remark at the end
             c = max(k for k in range(i, n) if sentence[k] == ',')
             if not chatter.is_remark(sentence[c + 1:n]):
@@ -1765,6 +1768,9 @@ class _Reader:
     def _read_clause(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
         """Read one clause; returns the scope that carries to the next clause of the sentence."""
         had_chain, n_constraints = bool(self.task.chain), len(self.task.constraints)
+        if self.task.repeat > 1 and self.task.repeat_end is None:
+            # "a, then b twice in a row, then go to c": c comes after the route done twice
+            self.task.repeat_end = len(self.task.chain)
         try:
             return self._read_clause_body(clause, scope)
         finally:

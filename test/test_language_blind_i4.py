@@ -53,6 +53,29 @@ BLIND_ROUND_I4 = [
     # a goal said after "twice in a row" comes after the repeated route, once
     ('Go to the kitchen, then the hall twice in a row, then go to the bed.',
      'F (near[kitchen] & F (near[hall] & F (near[kitchen] & F (near[hall] & F near[bed]))))'),
+    # "after that the X is off limits, so head to Y": Y is in the scope of the avoidance too
+    ('Check the shoe rack. After that the front door is off-limits, so head up to the stairs from there.',
+     'F (near[shoe_rack] & G !near[front_door] & F near[stairs])'),
+    ('Go to the den. From then on the hall is off limits, and go to the bed.',
+     'F (near[den] & G !near[hall] & F near[bed])'),
+    # ", wherever": the choice of place is the robot's, never a place
+    ('Put my keys on the hook by the door or in the bowl on the hallway table, wherever.',
+     'F (near[keys] & F (pick[keys] & (F (near[hook::isnextto(door)] & F release[keys, '
+     'hook::isnextto(door)]) | F (near[bowl::isabove(hallway_table)] & F release[keys, '
+     'bowl::isabove(hallway_table)]))))'),
+    ('Go to the den or the hall, wherever you like.',
+     'F (near[den] | near[hall])'),
+    # list positions: "the guest bath" is a place; "the last two, the study first, and don't ..."
+    ('Hallway closet, linen cupboard, guest bath: do the first one, then the last one.',
+     'F (near[hallway_closet] & F near[guest_bath])'),
+    ("We've got the den, the study and the sunroom. Visit the last two, the study first, and don't go into "
+     'the den at all.',
+     'F (near[study] & F near[sunroom]) & G !near[den]'),
+    ('Visit the study and the sunroom, the sunroom first, and never go into the den.',
+     'F (near[sunroom] & F near[study]) & G !near[den]'),
+    # "this time" says when, asks for nothing
+    ('Greenhouse 1, greenhouse 2, greenhouse 3 - do them backwards this time.',
+     'F (near[greenhouse_3] & F (near[greenhouse_2] & F near[greenhouse_1]))'),
 ]
 
 

@@ -125,6 +125,7 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'you', 'can'), ('if', 'you', 'could'), ('if', 'possible'), ('if', 'you', 'would'),
     ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'), ('when', 'you', 'have', 'a', 'moment'),
     ('this', 'evening'), ('this', 'morning'), ('this', 'afternoon'), ('tonight',), ('today',),
+    ('this', 'time'),
     ('right', 'now'), ('now',), ('thanks',), ('thank', 'you'), ('would', 'you'), ('could', 'you'),
     ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('nice', 'and', 'slow'),
     ('nice', 'and', 'easy'), ('nice', 'and', 'steady'), ('slow', 'and', 'steady'), ('nice', 'and', 'slowly'),
@@ -699,7 +700,7 @@ room rooms station desk office area lounge entrance center centre toilet toilets
 door car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen
 cafeteria changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
 bedroom bedrooms suite suites house cabin cottage closet wardrobe lobby reception book fridge washroom
-restroom restrooms shower showers exit cupboard apartment flat villa chalet tent ward garage
+restroom restrooms shower showers exit cupboard apartment flat villa chalet tent ward garage bath baths
 '''.split())
 # Words of a rule about where to go: a clause holding one is never said "about people".
 PLACE_RULE_WORDS = frozenset({

@@ -1231,7 +1231,8 @@ RULES: tuple[Rule, ...] = (
          ''),
     Rule('go to the seat and the chair, the chair first: the chair, then the seat',
          r'\b(?P<v>go to|visit|check|stop at|hit) (?:both )?(?P<a>(?:the|my|your|our) [a-z0-9_ ]+?) and '
-         r'(?P<b>(?:the|my|your|our) [a-z0-9_ ]+?) , (?:the |my |your |our )?(?P<c>[a-z0-9_ ]+?) first$',
+         r'(?P<b>(?:the|my|your|our) [a-z0-9_ ]+?) , (?:the |my |your |our )?(?P<c>[a-z0-9_ ]+?) first'
+         r'(?=$| , (?:and |but )?(?:do not|never|avoid|stay|keep|steer)\b)',   # (a rule may follow)
          _named_first),
     Rule('and after both of those come back to the bathroom: then',
          r'\b(?:and )?(?:after|once you have done|when you have done|once you are done with|'
@@ -1527,7 +1528,8 @@ RULES: tuple[Rule, ...] = (
          rf'from there on|from there onwards|'
          rf'afterwards|thereafter) (?:, )?(?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '
          rf'(?:off limits|out of bounds|'
-         rf'forbidden|not allowed|a no go)$', r'\g<w> , avoid \g<x>'),
+         rf'forbidden|not allowed|a no go)(?=$| (?:, )?(?:so|and) )', r'\g<w> , avoid \g<x>'),
+    # ("after that the front door is off limits, so head up to the stairs": the goal is in its scope too)
     Rule('once it is in your hands: once picked up',
          r'\b(?P<c>once|when|after) (?:it is|they are) '
          r'(?:in your (?:hands|hand|grip|gripper|possession|arms)|'

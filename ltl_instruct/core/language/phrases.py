@@ -99,7 +99,7 @@ me us he she they finally instead order every all way time times twice thrice ex
 backwards than no not never do does did go going gone went get got visit visited reach reached the a an my
 your our this these those some any each both either neither can could would will should must may might shall
 has have had make sure just now first lastly last next then around up down off out over through past via
-whichever whatever matter care which else other others until till avoid avoiding away stay keep clear
+whichever whatever wherever matter care which else other others until till avoid avoiding away stay keep clear
 while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside

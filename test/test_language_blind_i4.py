@@ -76,6 +76,18 @@ BLIND_ROUND_I4 = [
     # "this time" says when, asks for nothing
     ('Greenhouse 1, greenhouse 2, greenhouse 3 - do them backwards this time.',
      'F (near[greenhouse_3] & F (near[greenhouse_2] & F near[greenhouse_1]))'),
+    # "the front till", "the back till": a shop's counter, not "until"
+    ("Either the front till or the back till, whichever's closer. Go there.",
+     'F near[front_till] | F near[back_till]'),
+    # "shelf B4": a label, not "before" typed short
+    ('Go to the receiving area, then over to shelf B4.',
+     'F (near[receiving_area] & F near[shelf_b4])'),
+    # "a cup on X, another on Y and one under Z": each is a cup, told apart by where it is
+    ("There's a cup on the desk, another on the windowsill and one under the chair. Go to the last one.",
+     'F near[cup::isbelow(chair)]'),
+    ("There's a cart by the window, another one behind the counter, and a third under the stairs. Go to "
+     'the second cart.',
+     'F near[cart::isbehind(counter)]'),
 ]
 
 

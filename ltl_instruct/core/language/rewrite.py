@@ -294,13 +294,48 @@ def _say_positions(tokens: list[str]) -> list[str]:
     return new.split() if new != text else tokens
 
 
+_WHERE_WORDS = frozenset({'on', 'by', 'in', 'under', 'behind', 'next', 'near', 'beside', 'above', 'below',
+                          'inside', 'at', 'against', 'outside', 'underneath', 'beneath'})
+
+
+def _say_kind_again(tokens: list[str]) -> list[str]:
+    """Name the kind of "another", "one", "a third" in a list of things told apart by where they are.
+
+    "there's a cup on the desk, another on the windowsill and one under the chair": each is a cup.
+    """
+    if not {'another', 'one', 'second', 'third', 'fourth'} & set(tokens):
+        return tokens
+    out = list(tokens)
+    kind = ''
+    k = 0
+    while k < len(out):
+        t = out[k]
+        if t in '.;!?':
+            kind = ''
+        elif t in ('a', 'an') and k + 2 < len(out) and out[k + 2] in _WHERE_WORDS and \
+                out[k + 1] not in ORDINALS and out[k + 1] not in ('one', 'another', 'other') and \
+                is_name_word(out, k + 1, False) and not kind:
+            kind = out[k + 1]   # "a cup on the desk"
+        elif kind and k > 0 and out[k - 1] in (',', 'and'):
+            said = 2 if out[k:k + 2] == ['another', 'one'] or out[k] == 'a' and out[k + 1:k + 2] and \
+                out[k + 1] in ('second', 'third', 'fourth') else 1 if out[k] in ('another', 'one') else 0
+            if said == 2 and out[k] == 'a' and out[k + 2:k + 3] == ['one']:
+                said = 3   # "a third one under the stairs"
+            if said and out[k + said:k + said + 1] and out[k + said] in _WHERE_WORDS:
+                out[k:k + said] = ['a', kind]
+                k += 2
+                continue
+        k += 1
+    return out
+
+
 def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     """Replace references by list position ("the second one") with the phrase they point to.
 
     Only applies where an enumeration is followed by such a reference; the
     enumeration itself only sets the scene and is removed.
     """
-    tokens = _say_positions(tokens)
+    tokens = _say_kind_again(_say_positions(tokens))
     found = _find_list(tokens)
     if found is None:
         for k in range(len(tokens) - 2):
@@ -384,6 +419,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     # the kind all the listed things share ("hangar 1, hangar 2, hangar 3": hangar)
     kinds = {it[-2] for it in items if len(it) >= 3 and (len(it[-1]) == 1 or it[-1].isdigit())}
     kind = kinds.pop() if len(kinds) == 1 and all(len(it) >= 3 for it in items) else ''
+    if not kind and len({np.head for np in nps}) == 1 and all(np.descriptor.relations for np in nps):
+        kind = nps[0].head   # "a cart by the window, a cart behind the counter, ...: the second cart"
 
     def resolve(tail: list[str]) -> list[str]:
         out: list[str] = []

@@ -88,6 +88,21 @@ BLIND_ROUND_I4 = [
     ("There's a cart by the window, another one behind the counter, and a third under the stairs. Go to "
      'the second cart.',
      'F near[cart::isbehind(counter)]'),
+    # "X has to come after both of them" / "after A and B": X only after each; "I don't care which comes
+    # first, but ..." reads what follows "but" (it was dropped, with its rule)
+    ("Before you finish up at the storefront window, I need you to hit both the fitting rooms and the stock "
+     "room. I don't care which of those two comes first, but the window has to come after both of them, "
+     "since that's where the new display goes up today.",
+     'F near[storefront_window] & (!near[storefront_window] U near[fitting_rooms]) & '
+     '(!near[storefront_window] U near[stock_room])'),
+    ('Go to the window, the den and the hall. The window has to come after the den and the hall.',
+     'F near[window] & F near[den] & F near[hall] & (!near[window] U near[den]) & '
+     '(!near[window] U near[hall])'),
+    # a rule after "but" in a remark is never a story
+    ("Go to the den and the hall. I don't care which comes first, but never go to the garage.",
+     'F near[den] & F near[hall] & G !near[garage]'),
+    ('Go to the den. I had a long day, but never go to the garage.',
+     'F near[den] & G !near[garage]'),
 ]
 
 

@@ -1334,6 +1334,11 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
                                ' same ', ' comes ', ' come ', ' last ', ' first ')) and \
             words[0] not in ('i', 'we'):
         return False   # "the bank has to be last", "the same goes for the vase": about the task
+    if any(p in text for p in (' come after ', ' comes after ', ' come before ', ' comes before ',
+                               ' come first ', ' comes first ', ' come last ', ' comes last ',
+                               ' has to come ', ' have to come ', ' must come ', ' needs to come ',
+                               ' need to come ')):
+        return False   # "I don't care which comes first, but the window has to come after both": an order
     for phrase in _IDLE_YOU:
         text = text.replace(' ' + ' '.join(phrase) + ' ', ' ')
     if ' you ' in text or ' keep off ' in text or ' keep out ' in text or ' stay ' in text:
@@ -1343,6 +1348,8 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
         if t in commands and (k == 0 or sentence[k - 1] in PUNCT or sentence[k - 1] in (
                 'and', 'then', 'so', 'but', 'please', 'just')):
             return False
+        if t in ('never', 'not') and k + 1 < len(sentence) and sentence[k + 1] in commands:
+            return False   # "..., but never go to the garage": a rule, never a story
     first, second = words[0], words[1]
     if first in ('it', 'that', 'this', 'they', 'he', 'she') and second in ('is', 'are', 'was', 'were') and (
             words[2] in DETERMINERS or words[2] in PREPOSITIONS or

@@ -1870,6 +1870,13 @@ class _Reader:
         if why and _reason_holds_rule(tokens):
             # "..., I don't want the hall visited": never left out as a reason
             raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
+        if s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind')):
+            cut = next((k for k in range(len(tokens) - 2) if tokens[k] == ',' and tokens[k + 1] == 'but'), -1)
+            if cut > 0:
+                # "I don't care which comes first, but the window has to come after both": what it does ask
+                return self._read_clause_tokens(clause, tokens[cut + 2:], scope)
+            if _rule_in(tokens):
+                raise TranslationError(f'could not place "{s}" (a rule in a remark)', details={'part': s})
         if s.endswith(fine) or s in IGNORED_CLAUSES or why or \
                 s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind')):
             return scope
@@ -3149,6 +3156,20 @@ class _Reader:
 
     def _read_order_statement(self, tokens: list[str]) -> bool:
         """Read 'X comes after Y' (both goals, X not before Y); 'X comes before Y' the other way."""
+        k = next((k for k in range(2, len(tokens) - 1) if tokens[k] in ('after', 'before')), -1)
+        said = tokens[k + 1:]
+        while said[-1:] and said[-1] in (',', 'too', 'though'):
+            said = said[:-1]
+        if k > 0 and said in _THE_GOALS_BEFORE and tokens[0] in DETS:
+            # "the window has to come after both of them": the other goals given before
+            x = self.phrases.parse(tokens, 0)
+            goals = [d for st in self.task._all_steps() if st.kind == 'visit' for d in st.targets]
+            others = list(dict.fromkeys(d for d in goals if x is None or d != x.descriptor and not (
+                not x.descriptor.relations and d.name.endswith('_' + x.descriptor.name))))   # "the window"
+            if x is not None and len(others) >= 2 and (len(others) == 2 or 'both' not in said) and \
+                    all(not d.relations for d in others):
+                listed = [w for d in others for w in ('and', 'the', d.name)][1:]
+                tokens = tokens[:k + 1] + listed
         found = orders.order_statements(tokens, self.phrases)
         if found is None:
             return False

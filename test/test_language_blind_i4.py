@@ -103,6 +103,15 @@ BLIND_ROUND_I4 = [
      'F near[den] & F near[hall] & G !near[garage]'),
     ('Go to the den. I had a long day, but never go to the garage.',
      'F near[den] & G !near[garage]'),
+    # "sorry, that makes no sense, you obviously need the stairs": the avoidance of the stairs taken back
+    ('Bring the laundry up to the bedroom and avoid the stairs while you cary it. Sorry, that makes no '
+     "sense, you obviously need the stairs. I meant avoid the cat while you're carrying it, she keeps "
+     'trying to jump into the basket.',
+     'F (near[laundry] & F (pick[laundry] & (!near[cat] U (near[bedroom] & F '
+     'release[laundry, bedroom]))))'),
+    ('Bring the laundry up to the bedroom and avoid the stairs while you carry it. Sorry, that makes no '
+     'sense, you obviously need the stairs.',
+     'F (near[laundry] & F (pick[laundry] & F (near[bedroom] & F release[laundry, bedroom])))'),
 ]
 
 

@@ -1247,6 +1247,11 @@ _RETRACT: tuple[tuple[str, ...], ...] = (
     ('do', 'not', 'worry', 'about'), ('so', 'it', 'is', 'fine'), ('so', 'it', 'is', 'ok'),
     ('so', 'it', 'is', 'okay'), ('so', 'that', 'is', 'fine'), ('never', 'mind', 'about'),
     ('nevermind', 'about'),
+    # "that makes no sense, you obviously need the stairs": the thing avoided is needed after all
+    ('you', 'need'), ('you', 'obviously', 'need'), ('you', 'will', 'need'), ('you', 'have', 'to', 'use'),
+    ('you', 'need', 'to', 'use'), ('you', 'must', 'use'), ('you', 'have', 'to', 'take'),
+    ('you', 'need', 'to', 'take'), ('you', 'have', 'to', 'go', 'through'),
+    ('you', 'need', 'to', 'go', 'through'),
 ) + tuple((verb, 'the', what, part)   # "drop the avoidance part"
           for verb in ('drop', 'forget', 'ignore', 'skip', 'scratch', 'remove', 'cancel')
           for what in ('avoidance', 'avoid', 'avoiding', 'keep', 'away') for part in ('part', 'bit'))
@@ -2078,6 +2083,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 break
         for wrong in (['that', 'is', 'wrong'], ['that', 'was', 'wrong'], ['that', 'is', 'not', 'right'],
                       ['i', 'got', 'that', 'wrong'], ['that', 'is', 'a', 'mistake'], ['wrong', 'one'],
+                      ['that', 'makes', 'no', 'sense'], ['that', 'does', 'not', 'make', 'sense'],
+                      ['that', 'is', 'silly'], ['that', 'is', 'nonsense'],
                       ['wrong', 'colour'], ['wrong', 'color'], ['wrong', 'room'], ['wrong', 'place']):
             if seg[:len(wrong)] == wrong and seg[len(wrong):len(wrong) + 1] == [',']:
                 seg, stripped = seg[len(wrong) + 1:], True   # "no, sorry, that's wrong, avoid the hall"

@@ -112,6 +112,24 @@ BLIND_ROUND_I4 = [
     ('Bring the laundry up to the bedroom and avoid the stairs while you carry it. Sorry, that makes no '
      'sense, you obviously need the stairs.',
      'F (near[laundry] & F (pick[laundry] & F (near[bedroom] & F release[laundry, bedroom])))'),
+    # "between shelving unit 4 and the wall": a name in -ing said without its article
+    ('Go to the ladder between shelving unit 4 and the wall.',
+     'F near[ladder::isbetween(shelving_unit_4, wall)]'),
+    # "we've got an urgent one." sets the scene
+    ("We've got an urgent one. Pick up the medical kit on the helipad and fly it over to the second floor "
+     "balcony, where a nurse is waiting. Please don't go near the ambulance bay while you're carrying it, "
+     'there are people working down there right now.',
+     'F (near[medical_kit::isabove(helipad)] & F (pick[medical_kit::isabove(helipad)] & '
+     '(!near[ambulance_bay] U (near[second_floor_balcony] & F release[medical_kit::isabove(helipad), '
+     'second_floor_balcony]))))'),
+    # "for the PE class": who it is for; "couple of things before first period:" a heading with its time
+    ("Morning! Couple of things before first period: grab the first aid kit and drop it off in the gym, and "
+     "once that's done, take the stopwatch out to the running track for the PE class. Thanks a lot.",
+     'F (near[first_aid_kit] & F (pick[first_aid_kit] & F (near[gym] & F (release[first_aid_kit, gym] & F '
+     '(near[stopwatch] & F (pick[stopwatch] & F (near[running_track] & F release[stopwatch, '
+     'running_track])))))))'),
+    ('A couple of things before lunch: take the ball to the gym for the kids, then go to the hall.',
+     'F (near[ball] & F (pick[ball] & F (near[gym] & F (release[ball, gym] & F near[hall]))))'),
 ]
 
 

@@ -208,6 +208,11 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
 ) + _DURATIONS + _SPANS + _PURPOSES + _SIGNALS,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
+# Times of the day a list of tasks is to be done by ("couple of things before first period:").
+_TIMES_OF_DAY = frozenset('''
+lunch lunchtime dinner breakfast noon midday period class school assembly closing opening bedtime tonight
+tomorrow break recess service shift dark
+'''.split())
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
 # A pause asked for before anything is said ("hang on, can you just go to ...") corrects nothing.
 START_LEADS: tuple[tuple[str, ...], ...] = (
@@ -563,6 +568,11 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
                     head.pop()
             counted = [w for k, w in enumerate(head) if not (   # "three things to do:": no count of visits
                 w in NUMBER_WORDS and head[k + 1:k + 2] and head[k + 1] in TASK_NOUNS)]
+            when = next((k for k in range(1, len(counted) - 1) if counted[k] in ('before', 'by') and
+                         counted[-1] in _TIMES_OF_DAY and all(
+                             w in _TIMES_OF_DAY or w in ORDINALS or w == 'the' for w in counted[k + 1:])), -1)
+            if when > 0:
+                counted = counted[:when]   # "couple of things before first period:": when, no place
             # "Just to check the cat has everything: ...": what the list is for
             aim = head[1:] if head[:1] == ['just'] else head
             purpose = aim[:2] in (['to', 'check'], ['to', 'make'], ['to', 'see'])
@@ -960,6 +970,12 @@ _PERSON_ADJECTIVES = frozenset({'new', 'next', 'old', 'young', 'little', 'mornin
                                 'vip', 'important', 'elderly'})
 
 
+# Groups of people a thing may be for ("for the PE class").
+_GROUP_NOUNS = frozenset({'class', 'team', 'crew', 'group', 'kids', 'children', 'students', 'pupils',
+                          'guests', 'visitors', 'customers', 'patients', 'staff', 'players', 'volunteers',
+                          'residents'})
+
+
 def _beneficiary(tokens: Sequence[str], i: int) -> int:
     """Length of "for the visitor" / "for grandma" at ``i`` that ends its clause (who it is for), else 0."""
     j = i + 1
@@ -972,6 +988,12 @@ def _beneficiary(tokens: Sequence[str], i: int) -> int:
             j += 2
         elif j + 1 < len(tokens) and tokens[j] in _PERSON_ADJECTIVES:
             j += 1
+        elif j + 1 < len(tokens) and tokens[j + 1] in _GROUP_NOUNS and tokens[j] not in PUNCT:
+            j += 1   # "for the PE class", "for the night crew"
+    if j < len(tokens) and tokens[j] in _GROUP_NOUNS and tokens[i + 1:i + 2] and tokens[i + 1] in (
+            'the', 'my', 'our', 'your', 'his', 'her', 'their'):
+        j += 1   # "take the stopwatch out to the running track for the PE class": who it is for
+        return j - i if j >= len(tokens) or tokens[j] in _CLAUSE_END else 0
     if j >= len(tokens) or not (tokens[j] in PERSON_NOUNS or tokens[j] in FAMILY_NAMES) or \
             tokens[j] in ('dog', 'dogs', 'cat', 'animals', 'birds', 'pigeon', 'pigeons', 'delivery'):
         return 0

@@ -1934,6 +1934,8 @@ class _Reader:
             if _starts(clause.tokens, 0, lead) or _starts(tokens, 0, lead):
                 # sets the scene: the things named are remembered for "it" / "there", not goals
                 body = tokens[len(lead):] if _starts(tokens, 0, lead) else tokens
+                if lead == ['we', 'have'] and body[:1] == ['got'] and len(body) > 1:
+                    body = body[1:]   # "we've got an urgent one"
                 counts = ('several', 'few', 'a', 'couple', 'of')
                 while body and (body[0] in NUMBER_WORDS or body[0] in counts) and len(body) > 1 and \
                         body[1] not in PUNCT and not (body[0] == 'one' and match_relation(body, 1)):

@@ -195,6 +195,14 @@ class NounPhrase:
     pronoun: str = ''
 
 
+# Words in -ing that name a kind of place or thing before a noun ("shelving unit", "loading bay").
+_ING_NAMES = frozenset('''
+shelving dining sitting living washing parking loading landing waiting meeting changing shipping receiving
+packing sewing reading boarding charging vending cutting potting planting filing drying ironing recycling
+storing counting sorting welding printing cooling heating lighting seating nursing
+'''.split())
+
+
 def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
     """Return the comparator a relation phrase at ``tokens[i]`` introduces, and the index after it."""
     for words, comparator in RELATION_PHRASES:
@@ -205,7 +213,10 @@ def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
             nxt = tokens[i + n] if i + n < len(tokens) else ''
             if nxt == 'first' and i + n + 1 < len(tokens):
                 nxt = tokens[i + n + 1]   # "by first visiting X"
-            if nxt.endswith('ing') and nxt not in ('ceiling', 'building', 'railing', 'painting'):
+            if nxt.endswith('ing') and nxt not in ('ceiling', 'building', 'railing', 'painting') and not (
+                    # "between shelving unit 4 and the wall", "by parking lot B": a name said bare
+                    nxt in _ING_NAMES and i + n + 1 < len(tokens) and tokens[i + n + 1] not in PUNCT and
+                    tokens[i + n + 1] not in DETERMINERS):
                 continue  # "by passing through X" is a manner, not a place
             return comparator, i + n
     return None

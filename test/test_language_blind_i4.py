@@ -130,6 +130,17 @@ BLIND_ROUND_I4 = [
      'running_track])))))))'),
     ('A couple of things before lunch: take the ball to the gym for the kids, then go to the hall.',
      'F (near[ball] & F (pick[ball] & F (near[gym] & F (release[ball, gym] & F near[hall]))))'),
+    # "the time clock": a thing named for time ("time" was taken for a word of time)
+    ("Go to the loading bay and then the staff lounge. The lounge is off-limits until you've clocked in at "
+     'the time clock, though.',
+     'F (near[loading_bay] & F near[staff_lounge]) & (!near[staff_lounge] U near[time_clock])'),
+    # "save the gym for after X": the gym only after X
+    ("Go to the principal's office, but check in at the front office before that, and save the gym for after "
+     "the principal's office.",
+     'F near[principals_office] & (!near[principals_office] U near[front_office]) & F near[gym] & '
+     '(!near[gym] U near[principals_office])'),
+    ('Go to the office, and leave the gym until after the office.',
+     'F near[office] & F near[gym] & (!near[gym] U near[office])'),
 ]
 
 

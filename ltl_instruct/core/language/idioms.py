@@ -1207,6 +1207,9 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<j>, |; )(?:but |and )?(?P<x>(?:the|my|your|our) {_THING}) (?:has to|must|needs to|should|'
          rf'has got to|is to) (?:come|be visited|be done|be checked|go|happen|be) first\b',
          r'\g<j>but only after \g<x>'),
+    Rule('save the gym for after the office: only after it',
+         rf'\b(?:save|leave|keep|hold) (?P<x>(?:the|my|your|our) {_THING}) (?:for|until|till|to) after\b',
+         r'only go to \g<x> after'),
     Rule('stop at the ice machine a single time: exactly once',
          r'\b(?:(?:one time|once) and (?:only )?(?:one time|once)(?: only)?|a single time|one single time|'
          r'one time only|a single visit|just the one time|one stop|a single stop)\b',

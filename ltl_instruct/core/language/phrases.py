@@ -291,6 +291,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \
             nxt not in NUMBER_WORDS and nxt not in ('ones', 'one'):
         return True   # "the other desk"
+    if w == 'time' and i > 0 and tokens[i - 1] in ('the', 'a', 'my', 'our', 'your') and nxt.isalpha() and \
+            nxt not in STOPWORDS and nxt not in NUMBER_WORDS and not nxt.endswith('ly'):
+        return True   # "the time clock", "a time sheet": a thing named for time (not "the time you ...")
     if w in STOPWORDS:
         return False
     if w.endswith('ly') and len(w) > 5 and w not in LY_NOUNS:

@@ -80,6 +80,9 @@ WISHES: tuple[tuple[str, ...], ...] = (
     ('hope',), ('i', 'hope'), ('hoping',), ('have', 'a', 'good'), ('have', 'a', 'nice'), ('good', 'luck'),
     ('be', 'careful'), ('be', 'quick'), ('be', 'gentle'), ('be', 'quiet'), ('be', 'safe'), ('take', 'care'),
     ('thanks', 'for'), ('thank', 'you', 'for'), ('sorry', 'to', 'bother'), ('sorry', 'for'),
+    # how to behave, no place ("visitors are in today, so please behave")
+    ('behave',), ('be', 'good'), ('be', 'polite'), ('be', 'nice'), ('be', 'on', 'your', 'best'),
+    ('mind', 'your', 'manners'),
 )
 
 # How long to stay ("hover there for a few minutes"): the formula has no clock.
@@ -122,6 +125,7 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('if', 'you', 'can'), ('if', 'you', 'could'), ('if', 'possible'), ('if', 'you', 'would'),
     ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'), ('when', 'you', 'have', 'a', 'moment'),
     ('this', 'evening'), ('this', 'morning'), ('this', 'afternoon'), ('tonight',), ('today',),
+    ('this', 'time'),
     ('right', 'now'), ('now',), ('thanks',), ('thank', 'you'), ('would', 'you'), ('could', 'you'),
     ('for', 'a', 'sec'), ('for', 'a', 'second'), ('please',), ('nice', 'and', 'slow'),
     ('nice', 'and', 'easy'), ('nice', 'and', 'steady'), ('slow', 'and', 'steady'), ('nice', 'and', 'slowly'),
@@ -204,6 +208,11 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
 ) + _DURATIONS + _SPANS + _PURPOSES + _SIGNALS,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
+# Times of the day a list of tasks is to be done by ("couple of things before first period:").
+_TIMES_OF_DAY = frozenset('''
+lunch lunchtime dinner breakfast noon midday period class school assembly closing opening bedtime tonight
+tomorrow break recess service shift dark
+'''.split())
 # Lead-ins that ask for nothing only at the very start (later they take back what came before).
 # A pause asked for before anything is said ("hang on, can you just go to ...") corrects nothing.
 START_LEADS: tuple[tuple[str, ...], ...] = (
@@ -559,6 +568,11 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
                     head.pop()
             counted = [w for k, w in enumerate(head) if not (   # "three things to do:": no count of visits
                 w in NUMBER_WORDS and head[k + 1:k + 2] and head[k + 1] in TASK_NOUNS)]
+            when = next((k for k in range(1, len(counted) - 1) if counted[k] in ('before', 'by') and
+                         counted[-1] in _TIMES_OF_DAY and all(
+                             w in _TIMES_OF_DAY or w in ORDINALS or w == 'the' for w in counted[k + 1:])), -1)
+            if when > 0:
+                counted = counted[:when]   # "couple of things before first period:": when, no place
             # "Just to check the cat has everything: ...": what the list is for
             aim = head[1:] if head[:1] == ['just'] else head
             purpose = aim[:2] in (['to', 'check'], ['to', 'make'], ['to', 'see'])
@@ -588,6 +602,24 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
 
 
 _PAREN_RE = re.compile(r'\(([^()]{0,200})\)')
+# "walk the loop (front desk, elevator, mail room)": the places of a route, in its order
+_ROUTE_PAREN_RE = re.compile(r'\b(?:(?:the|that|this|my|your|our|usual|whole|same|regular|normal)\s+)+'
+                             r'(?:loop|route|circuit|round|rounds|tour|lap|course|run)\s*\(([^()]{0,200})\)'
+                             r'(?P<n>\s*,?\s*(?:twice|two times|three times|thrice|[2-5] times)'
+                             r'(?! in a row))?',
+                             re.IGNORECASE)
+_ROUTE_SEP_RE = re.compile(r'\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+|\s*->\s*|'
+                           r'\s+-+\s+|\s*>\s*)\s*', re.IGNORECASE)
+
+
+def _route_places(m: re.Match[str], notes: list[str]) -> str:
+    items = [i.strip() for i in _ROUTE_SEP_RE.split(m.group(1).strip()) if i.strip()]
+    if len(items) < 2 or any(not re.fullmatch(r"[a-z0-9' ]+", i, re.IGNORECASE) or len(i.split()) > 4 or
+                             carries_constraint(i.lower().split()) for i in items):
+        return m.group(0)
+    notes.append(f'read "{m.group(0)}" as the route of its places, in that order')
+    # "the loop (...) twice": the route done twice, as "twice in a row" says
+    return ' , then '.join(items) + (f' {m.group("n").strip(" ,")} in a row' if m.group('n') else ' ,')
 
 
 def strip_parentheticals(text: str, notes: list[str]) -> str:
@@ -603,6 +635,9 @@ def strip_parentheticals(text: str, notes: list[str]) -> str:
             return f', {m.group(1)} ,'
         notes.append(f'left out "({m.group(1).strip()})" (an aside)')
         return ' '
+    if '(' not in text:
+        return text
+    text = _ROUTE_PAREN_RE.sub(lambda m: _route_places(m, notes), text)
     return _PAREN_RE.sub(aside, text) if '(' in text else text
 
 
@@ -675,7 +710,7 @@ room rooms station desk office area lounge entrance center centre toilet toilets
 door car park parking bay table chair bed block quarters corridor lift lifts lot zone wing hall canteen
 cafeteria changing locker lockers stand counter gate bench shed garden playground pen basket bowl bed kennel
 bedroom bedrooms suite suites house cabin cottage closet wardrobe lobby reception book fridge washroom
-restroom restrooms shower showers exit cupboard apartment flat villa chalet tent ward garage
+restroom restrooms shower showers exit cupboard apartment flat villa chalet tent ward garage bath baths
 '''.split())
 # Words of a rule about where to go: a clause holding one is never said "about people".
 PLACE_RULE_WORDS = frozenset({
@@ -719,6 +754,9 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     if verb in PLACE_HEADS or '_' in verb or tokens[k - 1] in PERSON_NOUNS and \
             k + 1 < len(tokens) and tokens[k + 1] in PLACE_HEADS and verb not in DETERMINERS:
         return False   # "the staff room", "the guest lounge", "the customer service desk": a place
+    if tokens[-1] in PLACE_HEADS and len(tokens) - k <= 3 and not any(
+            w in DETERMINERS or w in PREPOSITIONS or w in PUNCT for w in tokens[k:]):
+        return False   # "the customer service desk", "the visitor parking lot": a place named for people
     if k == 1 and verb in ('will', 'shall') and tokens[0] in ('i', 'we') and \
             tokens[2] not in REQUEST_WORDS and \
             tokens[2] not in ('need', 'want', 'have', 'ask', 'be', 'get', 'let', 'tell', 'show', 'send'):
@@ -934,6 +972,12 @@ _PERSON_ADJECTIVES = frozenset({'new', 'next', 'old', 'young', 'little', 'mornin
                                 'vip', 'important', 'elderly'})
 
 
+# Groups of people a thing may be for ("for the PE class").
+_GROUP_NOUNS = frozenset({'class', 'team', 'crew', 'group', 'kids', 'children', 'students', 'pupils',
+                          'guests', 'visitors', 'customers', 'patients', 'staff', 'players', 'volunteers',
+                          'residents'})
+
+
 def _beneficiary(tokens: Sequence[str], i: int) -> int:
     """Length of "for the visitor" / "for grandma" at ``i`` that ends its clause (who it is for), else 0."""
     j = i + 1
@@ -946,6 +990,12 @@ def _beneficiary(tokens: Sequence[str], i: int) -> int:
             j += 2
         elif j + 1 < len(tokens) and tokens[j] in _PERSON_ADJECTIVES:
             j += 1
+        elif j + 1 < len(tokens) and tokens[j + 1] in _GROUP_NOUNS and tokens[j] not in PUNCT:
+            j += 1   # "for the PE class", "for the night crew"
+    if j < len(tokens) and tokens[j] in _GROUP_NOUNS and tokens[i + 1:i + 2] and tokens[i + 1] in (
+            'the', 'my', 'our', 'your', 'his', 'her', 'their'):
+        j += 1   # "take the stopwatch out to the running track for the PE class": who it is for
+        return j - i if j >= len(tokens) or tokens[j] in _CLAUSE_END else 0
     if j >= len(tokens) or not (tokens[j] in PERSON_NOUNS or tokens[j] in FAMILY_NAMES) or \
             tokens[j] in ('dog', 'dogs', 'cat', 'animals', 'birds', 'pigeon', 'pigeons', 'delivery'):
         return 0
@@ -1308,6 +1358,11 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
                                ' same ', ' comes ', ' come ', ' last ', ' first ')) and \
             words[0] not in ('i', 'we'):
         return False   # "the bank has to be last", "the same goes for the vase": about the task
+    if any(p in text for p in (' come after ', ' comes after ', ' come before ', ' comes before ',
+                               ' come first ', ' comes first ', ' come last ', ' comes last ',
+                               ' has to come ', ' have to come ', ' must come ', ' needs to come ',
+                               ' need to come ')):
+        return False   # "I don't care which comes first, but the window has to come after both": an order
     for phrase in _IDLE_YOU:
         text = text.replace(' ' + ' '.join(phrase) + ' ', ' ')
     if ' you ' in text or ' keep off ' in text or ' keep out ' in text or ' stay ' in text:
@@ -1317,6 +1372,8 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
         if t in commands and (k == 0 or sentence[k - 1] in PUNCT or sentence[k - 1] in (
                 'and', 'then', 'so', 'but', 'please', 'just')):
             return False
+        if t in ('never', 'not') and k + 1 < len(sentence) and sentence[k + 1] in commands:
+            return False   # "..., but never go to the garage": a rule, never a story
     first, second = words[0], words[1]
     if first in ('it', 'that', 'this', 'they', 'he', 'she') and second in ('is', 'are', 'was', 'were') and (
             words[2] in DETERMINERS or words[2] in PREPOSITIONS or

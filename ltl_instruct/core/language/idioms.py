@@ -1211,6 +1211,9 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<j>, |; )(?:but |and )?(?P<x>(?:the|my|your|our) {_THING}) (?:has to|must|needs to|should|'
          rf'has got to|is to) (?:come|be visited|be done|be checked|go|happen|be) first\b',
          r'\g<j>but only after \g<x>'),
+    Rule('save the gym for after the office: only after it',
+         rf'\b(?:save|leave|keep|hold) (?P<x>(?:the|my|your|our) {_THING}) (?:for|until|till|to) after\b',
+         r'only go to \g<x> after'),
     Rule('stop at the ice machine a single time: exactly once',
          r'\b(?:(?:one time|once) and (?:only )?(?:one time|once)(?: only)?|a single time|one single time|'
          r'one time only|a single visit|just the one time|one stop|a single stop)\b',
@@ -1235,7 +1238,8 @@ RULES: tuple[Rule, ...] = (
          ''),
     Rule('go to the seat and the chair, the chair first: the chair, then the seat',
          r'\b(?P<v>go to|visit|check|stop at|hit) (?:both )?(?P<a>(?:the|my|your|our) [a-z0-9_ ]+?) and '
-         r'(?P<b>(?:the|my|your|our) [a-z0-9_ ]+?) , (?:the |my |your |our )?(?P<c>[a-z0-9_ ]+?) first$',
+         r'(?P<b>(?:the|my|your|our) [a-z0-9_ ]+?) , (?:the |my |your |our )?(?P<c>[a-z0-9_ ]+?) first'
+         r'(?=$| , (?:and |but )?(?:do not|never|avoid|stay|keep|steer)\b)',   # (a rule may follow)
          _named_first),
     Rule('and after both of those come back to the bathroom: then',
          r'\b(?:and )?(?:after|once you have done|when you have done|once you are done with|'
@@ -1531,7 +1535,8 @@ RULES: tuple[Rule, ...] = (
          rf'from there on|from there onwards|'
          rf'afterwards|thereafter) (?:, )?(?P<x>(?:the|my|your|our) {_THING}) (?:is|are) '
          rf'(?:off limits|out of bounds|'
-         rf'forbidden|not allowed|a no go)$', r'\g<w> , avoid \g<x>'),
+         rf'forbidden|not allowed|a no go)(?=$| (?:, )?(?:so|and) )', r'\g<w> , avoid \g<x>'),
+    # ("after that the front door is off limits, so head up to the stairs": the goal is in its scope too)
     Rule('once it is in your hands: once picked up',
          r'\b(?P<c>once|when|after) (?:it is|they are) '
          r'(?:in your (?:hands|hand|grip|gripper|possession|arms)|'

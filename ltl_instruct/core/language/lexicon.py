@@ -155,6 +155,9 @@ STRICT_ORDER_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
 ), key=lambda t: -len(t)))
 
 IGNORED_CLAUSES = frozenset({
+    # where to leave it, either place said: the choice is the robot's ("..., wherever")
+    'wherever', 'wherever you like', 'wherever you want', 'wherever is easier', 'wherever is easiest',
+    'wherever is closer', 'wherever is nearer', 'wherever is fine', 'wherever works',
     'whichever', 'i do not care which', 'order does not matter', 'whatever you do', 'take off', 'lift off',
     'launch',
     'the order does not matter', 'any order', 'in any order', 'whichever one', 'either one', 'thanks',

@@ -1228,6 +1228,9 @@ class _Reader:
         subject = self.phrases.parse(words, 0)
         if subject is not None and chatter.is_statement(words, subject.end):
             return False   # "the kids left stuff everywhere.": about the scene, not where to go
+        said = [t for t in words if t not in ('please', 'and', 'so', 'just')]
+        if said[:1] and said[0] in _WISH_FIRST and any(_starts(said, 0, w) for w in chatter.WISHES):
+            return False   # "please behave.": how to be, no place
         while ',' in sentence[i:n]:   # "..., your call": a remark at the end
             c = max(k for k in range(i, n) if sentence[k] == ',')
             if not chatter.is_remark(sentence[c + 1:n]):
@@ -1777,6 +1780,9 @@ class _Reader:
     def _read_clause(self, clause: _Clause, scope: Optional[_Scope]) -> Optional[_Scope]:
         """Read one clause; returns the scope that carries to the next clause of the sentence."""
         had_chain, n_constraints = bool(self.task.chain), len(self.task.constraints)
+        if self.task.repeat > 1 and self.task.repeat_end is None:
+            # "a, then b twice in a row, then go to c": c comes after the route done twice
+            self.task.repeat_end = len(self.task.chain)
         try:
             return self._read_clause_body(clause, scope)
         finally:
@@ -1876,6 +1882,13 @@ class _Reader:
         if why and _reason_holds_rule(tokens):
             # "..., I don't want the hall visited": never left out as a reason
             raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
+        if s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind')):
+            cut = next((k for k in range(len(tokens) - 2) if tokens[k] == ',' and tokens[k + 1] == 'but'), -1)
+            if cut > 0:
+                # "I don't care which comes first, but the window has to come after both": what it does ask
+                return self._read_clause_tokens(clause, tokens[cut + 2:], scope)
+            if _rule_in(tokens):
+                raise TranslationError(f'could not place "{s}" (a rule in a remark)', details={'part': s})
         if s.endswith(fine) or s in IGNORED_CLAUSES or why or \
                 s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind')):
             return scope
@@ -1933,6 +1946,8 @@ class _Reader:
             if _starts(clause.tokens, 0, lead) or _starts(tokens, 0, lead):
                 # sets the scene: the things named are remembered for "it" / "there", not goals
                 body = tokens[len(lead):] if _starts(tokens, 0, lead) else tokens
+                if lead == ['we', 'have'] and body[:1] == ['got'] and len(body) > 1:
+                    body = body[1:]   # "we've got an urgent one"
                 counts = ('several', 'few', 'a', 'couple', 'of')
                 while body and (body[0] in NUMBER_WORDS or body[0] in counts) and len(body) > 1 and \
                         body[1] not in PUNCT and not (body[0] == 'one' and match_relation(body, 1)):
@@ -3155,6 +3170,20 @@ class _Reader:
 
     def _read_order_statement(self, tokens: list[str]) -> bool:
         """Read 'X comes after Y' (both goals, X not before Y); 'X comes before Y' the other way."""
+        k = next((k for k in range(2, len(tokens) - 1) if tokens[k] in ('after', 'before')), -1)
+        said = tokens[k + 1:]
+        while said[-1:] and said[-1] in (',', 'too', 'though'):
+            said = said[:-1]
+        if k > 0 and said in _THE_GOALS_BEFORE and tokens[0] in DETS:
+            # "the window has to come after both of them": the other goals given before
+            x = self.phrases.parse(tokens, 0)
+            goals = [d for st in self.task._all_steps() if st.kind == 'visit' for d in st.targets]
+            others = list(dict.fromkeys(d for d in goals if x is None or d != x.descriptor and not (
+                not x.descriptor.relations and d.name.endswith('_' + x.descriptor.name))))   # "the window"
+            if x is not None and len(others) >= 2 and (len(others) == 2 or 'both' not in said) and \
+                    all(not d.relations for d in others):
+                listed = [w for d in others for w in ('and', 'the', d.name)][1:]
+                tokens = tokens[:k + 1] + listed
         found = orders.order_statements(tokens, self.phrases)
         if found is None:
             return False

@@ -184,6 +184,17 @@ def order_statements(tokens: Sequence[str], parser: PhraseParser
     one = order_statement(tokens, parser)
     if one is not None:
         return [one]
+    k = next((k for k in range(2, len(tokens) - 3) if tokens[k] in ('after', 'before')), -1)
+    if k > 0:
+        j = k + 1 + (tokens[k + 1] == 'both')
+        nps, joiner, end = parser.parse_list(list(tokens), j)
+        if len(nps) >= 2 and joiner == 'and' and not [
+                t for t in tokens[end:] if t not in (',', 'too', 'though')]:
+            # "the window has to come after the den and the hall": after each of them
+            each = [order_statement(list(tokens[:k + 1]) + list(tokens[np.start:np.end]), parser)
+                    for np in nps]
+            if all(o is not None for o in each):
+                return [o for o in each if o is not None]
     for k in range(2, len(tokens) - 3):
         if tokens[k] == 'and' or tokens[k] == ',' and tokens[k + 1] in ('the', 'and'):
             j = k + 1 + (tokens[k + 1] == 'and')

@@ -99,7 +99,7 @@ me us he she they finally instead order every all way time times twice thrice ex
 backwards than no not never do does did go going gone went get got visit visited reach reached the a an my
 your our this these those some any each both either neither can could would will should must may might shall
 has have had make sure just now first lastly last next then around up down off out over through past via
-whichever whatever matter care which else other others until till avoid avoiding away stay keep clear
+whichever whatever wherever matter care which else other others until till avoid avoiding away stay keep clear
 while carrying holding its their own yes yeah okay ok hmm um uh er oh wait sorry actually mean meant
 fine enough again cannot cant dont one along throughout entire whole during without except only
 always directly immediately ever never by near behind between above under below beneath beside
@@ -195,6 +195,14 @@ class NounPhrase:
     pronoun: str = ''
 
 
+# Words in -ing that name a kind of place or thing before a noun ("shelving unit", "loading bay").
+_ING_NAMES = frozenset('''
+shelving dining sitting living washing parking loading landing waiting meeting changing shipping receiving
+packing sewing reading boarding charging vending cutting potting planting filing drying ironing recycling
+storing counting sorting welding printing cooling heating lighting seating nursing
+'''.split())
+
+
 def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
     """Return the comparator a relation phrase at ``tokens[i]`` introduces, and the index after it."""
     for words, comparator in RELATION_PHRASES:
@@ -205,7 +213,10 @@ def match_relation(tokens: Sequence[str], i: int) -> Optional[tuple[str, int]]:
             nxt = tokens[i + n] if i + n < len(tokens) else ''
             if nxt == 'first' and i + n + 1 < len(tokens):
                 nxt = tokens[i + n + 1]   # "by first visiting X"
-            if nxt.endswith('ing') and nxt not in ('ceiling', 'building', 'railing', 'painting'):
+            if nxt.endswith('ing') and nxt not in ('ceiling', 'building', 'railing', 'painting') and not (
+                    # "between shelving unit 4 and the wall", "by parking lot B": a name said bare
+                    nxt in _ING_NAMES and i + n + 1 < len(tokens) and tokens[i + n + 1] not in PUNCT and
+                    tokens[i + n + 1] not in DETERMINERS):
                 continue  # "by passing through X" is a manner, not a place
             return comparator, i + n
     return None
@@ -280,6 +291,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \
             nxt not in NUMBER_WORDS and nxt not in ('ones', 'one'):
         return True   # "the other desk"
+    if w == 'time' and i > 0 and tokens[i - 1] in ('the', 'a', 'my', 'our', 'your') and nxt.isalpha() and \
+            nxt not in STOPWORDS and nxt not in NUMBER_WORDS and not nxt.endswith('ly'):
+        return True   # "the time clock", "a time sheet": a thing named for time (not "the time you ...")
     if w in STOPWORDS:
         return False
     if w.endswith('ly') and len(w) > 5 and w not in LY_NOUNS:

@@ -305,13 +305,48 @@ _POSITION_WORDS = frozenset({'number', 'item', 'stop', 'no', 'point', 'step', 'e
                              'choice', 'thing', 'place'})
 
 
+_WHERE_WORDS = frozenset({'on', 'by', 'in', 'under', 'behind', 'next', 'near', 'beside', 'above', 'below',
+                          'inside', 'at', 'against', 'outside', 'underneath', 'beneath'})
+
+
+def _say_kind_again(tokens: list[str]) -> list[str]:
+    """Name the kind of "another", "one", "a third" in a list of things told apart by where they are.
+
+    "there's a cup on the desk, another on the windowsill and one under the chair": each is a cup.
+    """
+    if not {'another', 'one', 'second', 'third', 'fourth'} & set(tokens):
+        return tokens
+    out = list(tokens)
+    kind = ''
+    k = 0
+    while k < len(out):
+        t = out[k]
+        if t in '.;!?':
+            kind = ''
+        elif t in ('a', 'an') and k + 2 < len(out) and out[k + 2] in _WHERE_WORDS and \
+                out[k + 1] not in ORDINALS and out[k + 1] not in ('one', 'another', 'other') and \
+                is_name_word(out, k + 1, False) and not kind:
+            kind = out[k + 1]   # "a cup on the desk"
+        elif kind and k > 0 and out[k - 1] in (',', 'and'):
+            said = 2 if out[k:k + 2] == ['another', 'one'] or out[k] == 'a' and out[k + 1:k + 2] and \
+                out[k + 1] in ('second', 'third', 'fourth') else 1 if out[k] in ('another', 'one') else 0
+            if said == 2 and out[k] == 'a' and out[k + 2:k + 3] == ['one']:
+                said = 3   # "a third one under the stairs"
+            if said and out[k + said:k + said + 1] and out[k + said] in _WHERE_WORDS:
+                out[k:k + said] = ['a', kind]
+                k += 2
+                continue
+        k += 1
+    return out
+
+
 def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     """Replace references by list position ("the second one") with the phrase they point to.
 
     Only applies where an enumeration is followed by such a reference; the
     enumeration itself only sets the scene and is removed.
     """
-    tokens = _say_positions(tokens)
+    tokens = _say_kind_again(_say_positions(tokens))
     found = _find_list(tokens)
     if found is None:
         for k in range(len(tokens) - 2):
@@ -396,6 +431,8 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     # the kind all the listed things share ("hangar 1, hangar 2, hangar 3": hangar)
     kinds = {it[-2] for it in items if len(it) >= 3 and (len(it[-1]) == 1 or it[-1].isdigit())}
     kind = kinds.pop() if len(kinds) == 1 and all(len(it) >= 3 for it in items) else ''
+    if not kind and len({np.head for np in nps}) == 1 and all(np.descriptor.relations for np in nps):
+        kind = nps[0].head   # "a cart by the window, a cart behind the counter, ...: the second cart"
 
     def resolve(tail: list[str]) -> list[str]:
         out: list[str] = []
@@ -900,10 +937,11 @@ def _replace_step(prev: list[str], pos: int, rest: list[str], notes: list[str]) 
     return prev[:a] + prev[b:]
 
 
-def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]:
+def _remove_clause(prev: list[str], pos: int, narrow: bool = False, command: bool = False) -> list[str]:
     """Remove the clause around token ``pos`` (from the connective before it to the next stop).
 
     With ``narrow``, the next connective (``,``, ``then``, ``and``) also ends it: one goal of a list.
+    With ``command``, a connective that opens a new command ends it ("stay away from X and head to Y").
     """
     a = pos
     while a > 0 and prev[a - 1] not in PUNCT and prev[a - 1] not in ('and', 'but', 'then'):
@@ -912,8 +950,14 @@ def _remove_clause(prev: list[str], pos: int, narrow: bool = False) -> list[str]
         a -= 1
     b = pos
     while b < len(prev) and prev[b] not in '.;!?' and not (
-            narrow and b > pos and prev[b] in (',', 'then', 'and')):
+            narrow and b > pos and prev[b] in (',', 'then', 'and')) and not (
+            command and b > pos and prev[b] in (',', 'then', 'and') and _opens_command(prev, b + 1) and
+            prev[b + 1] not in _COMMAND_JOINERS):
         b += 1
+    if command and a == 0 and b < len(prev) and prev[b] not in '.;!?':
+        b += 1   # the clause opened the instruction: its joiner to the next goes with it
+        while b < len(prev) and prev[b] in ('and', 'then', ','):
+            b += 1
     return prev[:a] + prev[b:]
 
 
@@ -1169,6 +1213,14 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
             out = out[:j] + ([','] if out[j - 1] not in PUNCT else []) + seg[c + 1 + so:] + after
             continue   # ("no, the saw is broken, go to the drill press": not "no go to")
+        if c > lead and seg[c + 1:c + 2] and seg[c + 1] in _CANCEL and \
+                seg[c + 2:] in (['that'], ['it'], ['about', 'that'], ['about', 'it']):
+            # "actually the fireplace is off, forget that": "that" is the avoidance the remark takes back
+            fine = _fine_after_all(prev, seg[lead:c], notes)
+            if fine is not None:
+                out = fine + after
+                i = len(fine)
+                continue
         if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
@@ -1250,6 +1302,11 @@ _RETRACT: tuple[tuple[str, ...], ...] = (
     ('do', 'not', 'worry', 'about'), ('so', 'it', 'is', 'fine'), ('so', 'it', 'is', 'ok'),
     ('so', 'it', 'is', 'okay'), ('so', 'that', 'is', 'fine'), ('never', 'mind', 'about'),
     ('nevermind', 'about'),
+    # "that makes no sense, you obviously need the stairs": the thing avoided is needed after all
+    ('you', 'need'), ('you', 'obviously', 'need'), ('you', 'will', 'need'), ('you', 'have', 'to', 'use'),
+    ('you', 'need', 'to', 'use'), ('you', 'must', 'use'), ('you', 'have', 'to', 'take'),
+    ('you', 'need', 'to', 'take'), ('you', 'have', 'to', 'go', 'through'),
+    ('you', 'need', 'to', 'go', 'through'),
 ) + tuple((verb, 'the', what, part)   # "drop the avoidance part"
           for verb in ('drop', 'forget', 'ignore', 'skip', 'scratch', 'remove', 'cancel')
           for what in ('avoidance', 'avoid', 'avoiding', 'keep', 'away') for part in ('part', 'bit'))
@@ -1282,8 +1339,12 @@ def _fine_after_all(prev: list[str], seg: list[str], notes: list[str]) -> Option
         if seg[e:e + 1] == ['been'] and seg[e + 1:e + 2] in (['fixed'], ['repaired'], ['cleared'],
                                                              ['cleaned']):
             e += 1   # "the elevator's been fixed"
-        if seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe'], ['fixed'], ['repaired'],
-                                ['cleared'], ['acceptable'], ['allowed'], ['permitted']) and \
+        if seg[e:e + 2] in (['turned', 'off'], ['switched', 'off']):
+            e += 1   # "the heater's switched off"
+        if seg[e:e + 1] == ['off'] and seg[e + 1:e + 2] not in (['limits'], ['-'], ['to'], ['from']):
+            pass   # "the fireplace is off": what made it a danger is gone (not "off limits")
+        elif seg[e:e + 1] not in (['fine'], ['ok'], ['okay'], ['alright'], ['safe'], ['fixed'], ['repaired'],
+                                  ['cleared'], ['acceptable'], ['allowed'], ['permitted']) and \
                 seg[e:e + 2] not in (['no', 'problem'], ['not', 'a'], ['no', 'longer']):
             continue
         if seg[e:e + 2] == ['not', 'a'] and seg[e + 2:e + 3] not in (['problem'], ['hazard'], ['danger']):
@@ -1340,7 +1401,11 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
     """Remove from ``prev`` the avoidance of the phrase with ``head`` (any, without); keep seg's orders."""
     avoid_at = [p for p in range(len(prev)) if prev[p] in _AVOID_WORDS]
     for p in reversed(avoid_at):
-        spans = [sp for sp in _np_spans(prev[p:]) if not head or sp.head == head]
+        # only what the avoidance clause names ("keep away from the heater and go to the sofa": not the sofa)
+        q = next((q for q in range(p + 1, len(prev)) if prev[q] in '.;!?' or prev[q] in (
+            ',', 'and', 'then', 'but') and _opens_command(prev, q + 1) and
+            prev[q + 1] not in _COMMAND_JOINERS), len(prev))
+        spans = [sp for sp in _np_spans(prev[p:q]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
             leads = (['just'], ['but'], ['and'], ['so'], ['only'], ['then'])
@@ -1364,7 +1429,7 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
                     notes[-1] = f'"{" ".join(prev[a:b])}" replaced by "{" ".join(said[lead:])}" ' \
                         '(its scope kept)'
                     return prev[:a] + said[lead:] + prev[b:]
-            return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p)) + [
+            return (_remove_from_list(prev, p, spans[0]) or _remove_clause(prev, p, command=True)) + [
                 t for c in kept for t in [','] + c]
     return None
 
@@ -1644,6 +1709,69 @@ def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
         return None
     notes.append(f'{obj.descriptor} goes to {dest.descriptor} instead')
     return prev[:hit.end + 1] + words[k + 1:dest.end] + prev[old.end:]
+
+
+def _reorder_pair(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Move one goal of the sequence said before next to another: the order of the two corrected.
+
+    "go to the fridge, then the oven, then the table. wait, no, do the oven before the fridge" (or "the
+    oven first, then the fridge", "the fridge after the oven"): the oven goes right before the fridge,
+    the rest of the sequence stays as said. Both must be goals of one sentence of ``prev``.
+    """
+    words = [t for t in seg if t not in PUNCT or t == ',']
+    while words and words[-1] in (',', 'instead', 'please'):
+        words = words[:-1]
+    k = 0
+    while k < len(words) and words[k] in _VERBS | {'do', 'to', 'at', 'by', 'over', 'up', 'just'}:
+        k += 1
+    parser = PhraseParser()
+    first = parser.parse(words, k)
+    if first is None or first.pronoun:
+        return None
+    e = first.end
+    if words[e:e + 1] in (['before'], ['after']):
+        rel, e = words[e], e + 1
+    elif words[e:e + 2] == ['ahead', 'of']:
+        rel, e = 'before', e + 2
+    elif words[e:e + 3] in (['first', ',', 'then'], ['first', 'and', 'then'], ['first', ',', 'and']):
+        rel, e = 'before', e + 3
+        e += words[e:e + 1] == ['then']   # "first, and then"
+    else:
+        return None
+    k2 = e
+    while k2 < len(words) and words[k2] in _VERBS | {'do', 'to', 'at', 'by', 'go', 'you'}:
+        k2 += 1   # "the oven before you do the fridge"
+    second = parser.parse(words, k2)
+    if second is None or second.pronoun or second.end != len(words):
+        return None
+    spans = _np_spans(prev)
+    hit = [next((sp for sp in reversed(spans) if sp.descriptor == np.descriptor), None)
+           for np in (first, second)]
+    if hit[0] is None or hit[1] is None or hit[0].start == hit[1].start:
+        return None
+    moved, anchor = hit
+    if any(prev[p] in '.;!?' for p in range(min(moved.start, anchor.start), max(moved.end, anchor.end))):
+        return None
+    if (rel == 'before') == (moved.start < anchor.start):
+        return None   # already in that order: not a reordering
+    if not all(prev[p - 1] in (',', 'then', 'and', 'to', 'visit') for p in (moved.start, anchor.start)):
+        return None   # goals of a sequence ("go to X, then Y"), not things of a delivery or a rule
+    said = prev[moved.start:moved.end]
+    a, b = moved.start, moved.end
+    joiners = (',', 'then', 'and')
+    if prev[a - 1] in joiners:
+        while prev[a - 1] in joiners:
+            a -= 1   # ", and then the oven": its joiner goes with it
+    else:
+        while b < len(prev) and prev[b] in joiners:
+            b += 1   # "go to the fridge, then ...": the first goal, the joiner after it goes
+    rest = prev[:a] + prev[b:]
+    # (before: the anchor comes first, so it has not moved; after: it comes later)
+    at = anchor.start if anchor.start < a else anchor.end - (b - a)
+    out = rest[:at] + said + [',', 'then'] + rest[at:] if rel == 'before' else \
+        rest[:at] + [',', 'then'] + said + rest[at:]
+    notes.append(f'{first.descriptor} moved {rel} {second.descriptor}')
+    return out
 
 
 def _first_instead(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
@@ -2010,6 +2138,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 break
         for wrong in (['that', 'is', 'wrong'], ['that', 'was', 'wrong'], ['that', 'is', 'not', 'right'],
                       ['i', 'got', 'that', 'wrong'], ['that', 'is', 'a', 'mistake'], ['wrong', 'one'],
+                      ['that', 'makes', 'no', 'sense'], ['that', 'does', 'not', 'make', 'sense'],
+                      ['that', 'is', 'silly'], ['that', 'is', 'nonsense'],
                       ['wrong', 'colour'], ['wrong', 'color'], ['wrong', 'room'], ['wrong', 'place']):
             if seg[:len(wrong)] == wrong and seg[len(wrong):len(wrong) + 1] == [',']:
                 seg, stripped = seg[len(wrong) + 1:], True   # "no, sorry, that's wrong, avoid the hall"
@@ -2099,7 +2229,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         start = max((k for k in range(said) if prev[k] in '.;!?'), default=-1) + 1
         notes.append(f'"{" ".join(prev[start:said])}" replaced by "{" ".join(seg[1:])}"')
         return prev[:start] + seg[1:]
-    reordered = _first_instead(prev, seg, notes)   # before a restatement: "actually, go to X first"
+    reordered = _reorder_pair(prev, seg, notes) or _first_instead(prev, seg, notes)
+    # (before a restatement: "actually, go to X first", "do X before Y")
     if reordered is not None:
         return reordered
     if marker in _RESTATE:
@@ -2157,6 +2288,12 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         if tgt in ('', 'the last thing', 'the last one', 'the last part', 'that last part', 'that', 'it',
                    'the last bit', 'that last one', 'last thing', 'last part', 'that part', 'that last bit',
                    'last bit', 'the last step', 'that last step', 'the last instruction'):
+            stop = max((p for p in range(len(prev)) if prev[p] in '.;!?'), default=-1)
+            fine = _fine_after_all(prev[:stop + 1], prev[stop + 1:], notes) if tgt in ('', 'that', 'it') and \
+                stop >= 0 else None
+            if fine is not None:
+                # "... . oh, the heater is switched off, ignore that": the remark takes the avoidance back
+                return fine + ([','] + rest if rest else [])
             spans = _np_spans(prev)
             if not spans:
                 return None
@@ -2266,7 +2403,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         rest = seg[k + 2:]
         if tnp is not None:
             for sp in reversed(_np_spans(prev)):
-                if sp.head == tnp.head:
+                opens = max((p for p in range(sp.start)
+                             if prev[p] in PUNCT or prev[p] in ('and', 'then', 'but')), default=-1)
+                if sp.head == tnp.head and _clause_kind(prev[opens + 1:sp.start]) == 'avoid':
+                    # (only an avoidance: "go to the sofa. actually the sofa is fine" drops no goal)
                     notes.append(f'avoiding {tnp.descriptor} was retracted')
                     prev = _remove_clause(prev, sp.start)
                     break

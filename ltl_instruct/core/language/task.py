@@ -173,6 +173,7 @@ class Task:
         self.chain: list[Step] = []
         self.constraints: list[Formula] = []
         self.repeat = 1
+        self.repeat_end: Optional[int] = None   # the goals after this are said after the repeat
         self.chain_at: Optional[int] = None   # constraints printed before the goals (an until read with them)
 
     def find_step(self, d: Descriptor, head: str = '') -> Optional[Step]:
@@ -205,7 +206,8 @@ class Task:
 
     def formula(self) -> Formula:
         """Return the task's formula: the constraints and the chain (repeated as asked), conjoined."""
-        chain = self.chain * self.repeat
+        end = len(self.chain) if self.repeat_end is None else min(self.repeat_end, len(self.chain))
+        chain = self.chain[:end] * self.repeat + self.chain[end:]
         at = len(self.constraints) if self.chain_at is None else self.chain_at
         f = conjoin(*self.constraints[:at], render(chain), *self.constraints[at:])
         if f is None:

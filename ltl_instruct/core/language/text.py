@@ -219,6 +219,17 @@ def _then(number: str, following: str) -> str:
 
 
 _TILL_BEFORE = frozenset({'the', 'that', 'this', 'my', 'our', 'your', 'each', 'every'})
+# Typing shorthands that are also labels ("b4" for "before"; "shelf b4"), and the nouns labels follow.
+_LABEL_TYPOS = frozenset({'b4'})
+_LABELLED = frozenset('''
+shelf aisle bay room dock gate bin rack row section unit locker cabinet zone lane level platform building
+block cell stall slot spot door box pallet shelving station area hall ward bed seat table pen stand hangar pad
+lab office classroom greenhouse field plot tank wing suite apartment flat
+'''.split())
+_TILL_PLACES = frozenset('''
+front back main other first second third last left right middle end near far express north south east west
+open
+'''.split())
 _TILL_AFTER = frozenset({'rolls', 'roll', 'area', 'point', 'queue', 'drawer', 'counter', 'station', 'desk',
                          'number', 'lane', 'bank', 'points'})
 
@@ -236,6 +247,9 @@ def _till_is_counter(before: list[str], after: list[str]) -> bool:
     numbered = (nxt.isdigit() or nxt in _NUMBER_NAME.values()) and (len(after) < 2 or after[1] not in (
         'o', 'oclock', 'pm', 'am', 'p', 'a', 'minutes', 'mins', 'hours', 'seconds', 'tonight', 'today'))
     prev = before[-1] if before else ''
+    if prev in _TILL_PLACES and before[-2:-1] and before[-2] in _TILL_BEFORE and (
+            not nxt or nxt in (',', '.', ';', '!', '?', 'or', 'and', 'then')):
+        return True   # "the front till or the back till": which counter
     return prev in _TILL_BEFORE or numbered and prev not in ('until', 'not', 'wait')
 
 
@@ -343,6 +357,9 @@ def tokenize(text: str) -> list[str]:
         tok = ORDINAL_DIGITS.get(tok, tok)
         if tok == 'till' and _till_is_counter(out, found[k + 1:k + 3]):
             out.append(tok)   # "stuck at the till", "go to till 4": the counter, not "until"
+            continue
+        if tok in _LABEL_TYPOS and out and out[-1] in _LABELLED:
+            out.append(tok)   # "shelf b4", "gate b4": a label, not "before"
             continue
         words = TYPOS.get(tok, tok).split()
         for w in words:

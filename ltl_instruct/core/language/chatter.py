@@ -119,6 +119,9 @@ _SIGNALS: tuple[tuple[str, ...], ...] = tuple(
 # Courtesy and time-of-day phrases that end a clause and ask for nothing.
 COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('for', 'me'), ('for', 'us'), ('real', 'quick'), ('quick',), ('asap',), ('as', 'soon', 'as', 'possible'),
+    # formal haste and timing ("Proceed to X without delay, please", "At this time, I would like you to ...")
+    ('without', 'delay'), ('without', 'further', 'delay'), ('at', 'this', 'time'),
+    ('at', 'your', 'earliest', 'convenience'),
     ('if', 'you', 'can'), ('if', 'you', 'could'), ('if', 'possible'), ('if', 'you', 'would'),
     ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'), ('when', 'you', 'have', 'a', 'moment'),
     ('this', 'evening'), ('this', 'morning'), ('this', 'afternoon'), ('tonight',), ('today',),
@@ -219,7 +222,7 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('by', 'the', 'end', 'of', 'the', 'day'), ('before', 'the', 'end', 'of', 'the', 'shift'),
     ('fyi',), ('just', 'so', 'you', 'know'), ('busy', 'morning'), ('busy', 'day'), ('long', 'day'),
     ('busy', 'afternoon'), ('hectic', 'morning'), ('crazy', 'day'), ('busy', 'night'), ('so', 'you', 'know'),
-    ('by', 'the', 'way'), ('btw',),
+    ('by', 'the', 'way'), ('btw',), ('at', 'this', 'time'), ('at', 'this', 'point'), ('at', 'present'),
     ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
     ('listen',), ('look',), ('hey', 'there'), ('quick', 'one'), ('quick', 'favour'), ('quick', 'favor'),
     ('one', 'more', 'thing'), ('oh', 'and'), ('also', 'fyi'), ('for', 'the', 'record'), ('well',),

@@ -553,11 +553,13 @@ _NOT_A_NAME_END = frozenset({'to', 'at', 'in', 'on', 'by', 'of', 'and', 'or', 't
                              'are', 'go', 'not', 'the', 'a', 'an', 'that', 'what', 'it', 'do', 'if'})
 _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('no', 'wait'), ('oh', 'wait'), ('wait',), ('sorry',), ('er',), ('um',), ('uh',), ('i', 'mean'),
-    ('i', 'meant'), ('actually',), ('scratch', 'that'), ('forget',), ('ignore',), ('never', 'mind'),
+    ('i', 'meant'), ('actually',), ('scratch', 'that'), ('forget',), ('ignore',), ('disregard',),
+    ('never', 'mind'),
     ('hmm',), ('make', 'that'), ('correction',), ('oops',), ('rather',), ('no',),
     ('no', 'sorry'), ('sorry', 'no'), ('no', 'no'), ('erm',), ('uhh',), ('umm',), ('ah',), ('my', 'bad'),
     ('my', 'mistake'), ('or', 'rather'), ('or', 'actually'), ('or', 'better'), ('on', 'second', 'thought'),
-    ('on', 'second', 'thoughts'), ('come', 'to', 'think', 'of', 'it'), ('change', 'of', 'plan'),
+    ('on', 'second', 'thoughts'), ('on', 'reflection'), ('come', 'to', 'think', 'of', 'it'),
+    ('change', 'of', 'plan'),
     ('change', 'of', 'plans'), ('let', 'me', 'rephrase'), ('wait', 'no'), ('hold', 'on'), ('scratch',),
     ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'), ('hang', 'on'),
     ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
@@ -567,9 +569,11 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     # "ah no, I say it wrong: the mill before the lathe"
     ('i', 'say', 'it', 'wrong'), ('i', 'said', 'it', 'wrong'), ('i', 'got', 'it', 'wrong'),
     ('i', 'say', 'wrong'), ('i', 'said', 'wrong'), ('i', 'was', 'wrong'), ('i', 'said', 'that', 'wrong'),
+    # formal apologies open a correction as "sorry" does ("My apologies, I meant the microcentrifuge")
+    ('my', 'apologies'), ('apologies',), ('i', 'beg', 'your', 'pardon'), ('pardon',), ('pardon', 'me'),
 ), key=lambda m: -len(m)))
-_CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
-                     'leave', 'scrap'})
+_CANCEL = frozenset({'forget', 'ignore', 'disregard', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross',
+                     'omit', 'leave', 'scrap'})
 # Markers that restate a whole clause ("on second thought, bring it to the couch").
 _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
                       'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my', 'correction', 'ehm', 'mm',
@@ -616,7 +620,7 @@ def _marker_at(tokens: list[str], i: int) -> int:
                     i > 0 and tokens[i - 1] in '.;!?' and tokens[i + 1] == 'the' and i + 2 < len(tokens) and
                     tokens[i + 2] in ('one', 'other', 'ones')):
                 return 0   # (but "... . no the one on the right of it": a correction, the comma left out)
-            if m == ('ignore',) and i == 0:
+            if m in (('ignore',), ('disregard',)) and i == 0:
                 return 0
             if m == ('forget',) and i == 0:
                 return 0
@@ -967,7 +971,8 @@ _SAID_ABOUT = re.compile(r'\b(forget|ignore|scratch|disregard) (?:what i said|wh
 _CLEFT_GOAL = re.compile(
     r'\b(?:it is|it s|its) (?P<x>(?:the|my|your|our) [a-z0-9_ ]*?[a-z0-9_]+) (?:that |which )?(?:i|we) '
     r'(?:want|need|meant|mean|wanted|needed|am after|was after|were after|are after)(?= [,.;!?]|$)')
-_MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
+_MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying|should have|ought to have|should \'ve) '
+                    r'(?:to )?(?:say|said|write|written|tell|type|typed)\b')
 _NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
 # "better you start from the printer and finish with the copier": the route, said plainly
 _START_FINISH = re.compile(rf'\b(?:(?:it is )?better |maybe |instead )?(?:you )?(?:start|begin) '
@@ -1044,6 +1049,9 @@ def _forget_choice(prev: list[str], seg: list[str], notes: list[str]) -> Optiona
     return None
 
 
+_RETRACT_VERBS = frozenset({'forget', 'ignore', 'disregard', 'scratch', 'scrap', 'cancel'})
+
+
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
     tokens = _actually_first(_uncleft(tokens))
@@ -1058,10 +1066,57 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 tokens[k - 2] in ('no', 'sorry', 'wait', 'oops', 'actually'):
             skip = 3   # "no, not that one, the one behind the door": what it corrects, then what it is
             continue
+        if t == 'please' and tokens[k + 1:k + 2] and tokens[k + 1] in _RETRACT_VERBS and (
+                k == 0 or tokens[k - 1] in PUNCT):
+            continue   # "No, please disregard that restriction": the retraction, said politely
+        if t == ';' and any(said[-n:-n + 1] and said[-n] in _RETRACT_VERBS and
+                            said[-n + 1] in ('that', 'this') for n in range(2, 5)):
+            t = ','   # "disregard that restriction; visit it twice": what replaces it follows
         said.append(t)
         if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and tokens[k - 1] in PUNCT:
             said.append(',')   # ", no not the couch, the armchair": "no" then what it corrects
-    return _apply_corrections(said, notes)
+    return _apply_corrections(_retract_all(said, notes), notes)
+
+
+# What "all that was said" is called in a retraction ("ignore all of that", "forget everything I said").
+_ALL_SAID = tuple(sorted((
+    ('all', 'of', 'that'), ('all', 'that'), ('all', 'of', 'this'), ('all', 'this'), ('all', 'of', 'it'),
+    ('everything',), ('everything', 'i', 'said'), ('everything', 'i', 'just', 'said'),
+    ('all', 'of', 'the', 'above'), ('the', 'above'), ('everything', 'above'), ('what', 'i', 'said'),
+    ('what', 'i', 'just', 'said'), ('all', 'i', 'said'), ('all', 'i', 'just', 'said'),
+    ('everything', 'i', 'told', 'you'), ('all', 'those', 'instructions'), ('those', 'instructions'),
+    ('all', 'those', 'steps'), ('the', 'whole', 'thing'), ('the', 'lot'), ('all', 'of', 'those'),
+), key=lambda m: -len(m)))
+
+
+def _retract_all(tokens: list[str], notes: list[str]) -> list[str]:
+    """Retract all said before: 'go to A, then B. Please ignore all of that and simply go to C'.
+
+    The whole of what was said before is retracted (its goals and its rules alike: the speaker
+    takes it all back), but only where a new request follows the retraction; a retraction that
+    ends the instruction is left to the readers of corrections.
+    """
+    for i, t in enumerate(tokens):
+        if t not in _RETRACT_VERBS or i == 0 or \
+                tokens[i - 1] not in PUNCT | {'no', 'actually', 'so', 'oh', 'okay', 'ok', 'just'}:
+            continue
+        said = next((m for m in _ALL_SAID if tuple(tokens[i + 1:i + 1 + len(m)]) == m), None)
+        if said is None:
+            continue
+        k = i + 1 + len(said)
+        while k < len(tokens) and tokens[k] in ('before', 'earlier', 'above', 'so', 'far', 'then'):
+            k += 1
+        if k >= len(tokens) or tokens[k] not in (',', ';', ':', '.', 'and', '-'):
+            continue
+        k += 1
+        while k < len(tokens) and tokens[k] in (',', 'and', 'simply', 'instead', 'rather'):
+            k += 1
+        rest = tokens[k:]
+        if len([w for w in rest if w not in PUNCT]) < 2:
+            continue
+        notes.append(f'took back everything said before "{" ".join(tokens[i:i + 1 + len(said)])}"')
+        return rest
+    return tokens
 
 
 def _actually_first(tokens: list[str]) -> list[str]:
@@ -1409,6 +1464,12 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     return head + ([','] if head and head[-1] not in PUNCT else []) + new + prev[end:]
 
 
+# How a place still to be avoided is said in the passive ("only the boiler needs to be avoided").
+_AVOIDED_SAID = [w.split() for w in ('needs to be avoided', 'need to be avoided', 'should be avoided',
+                                     'must be avoided', 'is to be avoided', 'needs avoiding', 'is off limits',
+                                     'has to be avoided')]
+
+
 def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Keep one goal of a list: 'visit the museum and the zoo. Actually, just the zoo'."""
     words = [t for t in seg if t not in PUNCT]
@@ -1420,6 +1481,12 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
             words = ['only'] + words[:-1]   # "correction: north stairwell only"
     if not words or words[0] not in ('just', 'only'):
         return None
+    passive = next((k for k in range(2, len(words) - 1) if words[k:] in _AVOIDED_SAID), -1)
+    if passive > 0 and words[1] in DETERMINERS:
+        words = ['only', 'avoid'] + words[1:passive]   # "only the steam generator needs to be avoided"
+    if words[1:2] == ['avoid'] and len(words) > 3 and words[2] in DETERMINERS and 'avoid' in prev:
+        # "..., so just avoid the steam generator": one of the places avoided before is kept
+        words = ['just'] + words[2:]
     if words[1:3] in (['go', 'to'], ['head', 'to'], ['visit', 'the']) and len(words) > 3:
         words = ['just'] + words[3 if words[1] != 'visit' else 2:]   # "just go to the north one"
     if len(words) == 2 and _bare_label(words[1]):
@@ -1565,12 +1632,14 @@ _GOES = (('goes',), ('should', 'go'), ('belongs',), ('needs', 'to', 'go'), ('has
 def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Change a destination: 'bring the mug to the desk. wait, the mug goes to the sink': to the sink."""
     words = [t for t in seg if t not in PUNCT]
-    if not words or words[0] not in DETERMINERS:
+    # "take the cryobox to the tank. sorry, it should go to the cold room": "it" is the thing carried
+    it = words[:1] in (['it'], ['they']) and any(tuple(words[1:1 + len(v)]) == v for v in _GOES)
+    if not words or words[0] not in DETERMINERS and not it:
         return None
     parser = PhraseParser()
     at = next((k for k in range(1, len(words)) if any(tuple(words[k:k + len(v)]) == v for v in _GOES)), -1)
-    obj = parser.parse(words[:at], 0, destination_stops=True) if at > 0 else None
-    if obj is None or obj.pronoun or obj.end != at:
+    obj = None if it else parser.parse(words[:at], 0, destination_stops=True) if at > 0 else None
+    if not it and (obj is None or obj.pronoun or obj.end != at):
         return None   # (the verb found first: the parser would take "goes" into the name)
     verb = next(v for v in _GOES if tuple(words[at:at + len(v)]) == v)
     k = at + len(verb)
@@ -1579,9 +1648,14 @@ def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     dest = parser.parse(words, k + 1)
     if dest is None or dest.end != len(words):
         return None
-    hit = next((sp for sp in reversed(_np_spans(prev))
-                if sp.descriptor == obj.descriptor or sp.head == obj.head),
-               None)
+    if it:
+        hit = next((sp for sp in reversed(_np_spans(prev))
+                    if sp.start > 0 and prev[sp.start - 1] in _DELIVERY), None)
+        obj = hit
+    else:
+        hit = next((sp for sp in reversed(_np_spans(prev))
+                    if sp.descriptor == obj.descriptor or sp.head == obj.head),
+                   None)
     if hit is None or hit.end >= len(prev) or prev[hit.end] not in _PREPS | {'to'}:
         return None
     old = parser.parse(prev, hit.end + 1)
@@ -1964,11 +2038,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 seg, stripped = (['just'] if lead[0] == 'just' else []) + seg[len(lead):], True
         cut = seg.index(',') if ',' in seg else -1
         go = cut + 1 + (seg[cut + 1:cut + 2] == ['so'])
-        if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do') or seg[go] in _VERBS) and \
+        if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do', 'only') or seg[go] in _VERBS) and \
                 chatter.is_statement(seg[:cut], _np_end(seg[:cut])) and \
                 not chatter.carries_constraint(seg[:cut]) and \
                 (not {sp.head for sp in _np_spans(seg[:cut])} & {sp.head for sp in _np_spans(prev)} or
-                 _said_replaced(seg[go:])):
+                 _said_replaced(seg[go:]) or seg[go] in ('just', 'only') and 'avoid' in prev):
             # "actually it's chucking it down, just go to the conservatory": the reason asks for nothing
             notes.append(f'left out "{" ".join(seg[:cut])}" (asks for nothing)')
             seg, stripped = seg[go:], True
@@ -2033,7 +2107,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     swapped = _swap(prev, seg, notes) or _goes_to(prev, seg, notes)
     if swapped is not None:
         return swapped
-    only = _only_this(prev, seg, notes) if seg[:1] == ['just'] else None
+    only = _only_this(prev, seg, notes) if seg[:1] in (['just'], ['only']) else None
     if only is not None:
         return only   # "the north or south entrance ... just go to the north one"
     if seg[:1] in (['just'], ['simply']) and len(seg) > 1 and seg[1] in _VERBS and marker in _RESTATE:
@@ -2509,6 +2583,8 @@ def _number(word: str) -> bool:
 def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     """'visit X twice. no wait, exactly once': the count said before is replaced (with its modifier)."""
     counts = ('once', 'twice', 'thrice')
+    while seg[-1:] in (['please'], [','], ['then']) and len(seg) > 2:
+        seg = seg[:-1]   # "Correction: three times, please."
     if seg[:1] == ['not'] and ',' in seg[1:5]:
         seg = seg[seg.index(',') + 1:]   # "no wait, not twice, once": the count after the comma
     words = [t for t in seg if t not in PUNCT]

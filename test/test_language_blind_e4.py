@@ -1,0 +1,68 @@
+"""Readings found on the blind sets E4 (a ward nurse speaking to the hospital robot, as speech
+recognition writes it down) and H4 (a laboratory manager's formal written instructions).
+
+Every case is an instruction written for this project by a writer who never saw the translator (or
+a sentence of our own for the same construction), with the formula its writer gave; the translator
+must now give a formula equivalent to it on automata (names included). The whole sets stay outside
+the repository, so that later rounds are scored on language no rule was written for.
+"""
+from __future__ import annotations
+
+import pytest
+
+from translation_cases import check_translation
+
+BLIND_ROUND_E4 = [
+    # formal apologies open a correction as "sorry" does ("my apologies" was a place visited after)
+    ('Please go to the ultracentrifuge. My apologies, I meant the microcentrifuge.',
+     'F near[microcentrifuge]'),
+    ('Go to the kettle. I beg your pardon, I meant the toaster.',
+     'F near[toaster]'),
+    # "I should have said X" is "I meant X" (both racks were visited)
+    ('Please go to the rack to the left of the incubator. Sorry, I should have said the rack behind the '
+     'incubator.',
+     'F near[rack::isbehind(incubator)]'),
+    # "it should go to X" after a delivery moves its destination ("it" is the thing carried: was a
+    # second goal)
+    ('Take the cryobox to the liquid nitrogen tank. I beg your pardon, it should go to the cold room.',
+     'F (near[cryobox] & F (pick[cryobox] & F (near[cold_room] & F release[cryobox, cold_room])))'),
+    ('bring the mug to the desk. wait, it goes to the sink',
+     'F (near[mug] & F (pick[mug] & F (near[sink] & F release[mug, sink])))'),
+    # "disregard" retracts as "ignore" does, also said politely and before a semicolon (both counts held)
+    ('Visit the water purifier at most once. No, please disregard that restriction; visit it at least twice.',
+     'F (near[water_purifier] & F (!near[water_purifier] & F near[water_purifier]))'),
+    ('Go to the hall and avoid the stairs. Disregard that, avoid the lift.',
+     'F near[hall] & G !near[lift]'),
+    # "ignore all of that", "forget everything I said": only what follows stands (the old route stayed)
+    ('Go to the glovebox, then the balance, then the freezer. Please ignore all of that and simply go to '
+     'the freezer.',
+     'F near[freezer]'),
+    ('go to the glovebox, then the balance and avoid the hall. no, forget everything I said, just go to '
+     'the freezer.',
+     'F near[freezer]'),
+    # "on reflection" opens a correction as "on second thought" does (a place "reflection" was visited)
+    ('Visit the sonicator, the vortex mixer and the heat block, in that order. On reflection, omit the '
+     'middle one.',
+     'F (near[sonicator] & F near[heat_block])'),
+    # a corrected count with "please" after it ("Correction: three times, please": both counts were kept)
+    ('Please visit the pH meter twice. Correction: three times, please.',
+     'F (near[ph_meter] & F (!near[ph_meter] & F (near[ph_meter] & F (!near[ph_meter] & F '
+     'near[ph_meter]))))'),
+    # an avoidance narrowed to one of its places ("only X needs to be avoided", "so just avoid X")
+    ('Go to the wash room, and avoid the steam generator and the autoclave. On second thought, only the '
+     'steam generator needs to be avoided.',
+     'F near[wash_room] & G !near[steam_generator]'),
+    ('Go to the wash room, and avoid the steam generator and the autoclave. Actually, the autoclave is off, '
+     'so just avoid the steam generator.',
+     'F near[wash_room] & G !near[steam_generator]'),
+    # formal haste and timing ask for nothing ("without delay" was a place avoided; "at this time" refused)
+    ('Proceed to the emergency eyewash staton without delay, please.',
+     'F near[emergency_eyewash_station]'),
+    ('At this time, I would like you to go to the glovebox.',
+     'F near[glovebox]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', BLIND_ROUND_E4)
+def test_readings_found_on_blind_set_e4(instruction: str, gold: str) -> None:
+    check_translation(instruction, gold)

@@ -60,6 +60,27 @@ BLIND_ROUND_E4 = [
      'F near[emergency_eyewash_station]'),
     ('At this time, I would like you to go to the glovebox.',
      'F near[glovebox]'),
+    # speech recognition writes a label's number as the word that sounds like it ("bay for" dropped bay 4)
+    ('go to the linen cupboard then bay for and keep clear of the oxygen cylinders the whole time',
+     'F (near[linen_cupboard] & F near[bay_4]) & G !near[oxygen_cylinders]'),
+    ('take the commode to bed for please',
+     'F (near[commode] & F (pick[commode] & F (near[bed_4] & F release[commode, bed_4])))'),
+    ('if you go into side room to at all you have to go to the hand wash sink first',
+     '!near[side_room_2] W near[hand_wash_sink]'),
+    ('go to the lab for now', 'F near[lab]'),
+    ('bring the chair to the room too',
+     'F (near[chair] & F (pick[chair] & F (near[room] & F release[chair, room])))'),
+    # "A and E" is the accident and emergency department (the letters were avoided as two places)
+    ('go to pharmacy or the dispensary whichever and keep well away from A and E',
+     'F (near[pharmacy] | near[dispensary]) & G !near[a_and_e]'),
+    ('fly to the second floor blood bank then down to the ground floor A and E',
+     'F (near[second_floor_blood_bank] & F near[ground_floor_a_and_e])'),
+    ('go to field A and E', 'F near[field_a] & F near[field_e]'),
+    # where listed things are, said before the request with no full stop, sets the scene (was a goal)
+    ('theres a commode a hoist and a wheelchair out in the corridor go to the second one',
+     'F near[hoist]'),
+    ('there are a mop, a bucket and a broom in the cupboard bring the last one to the hall',
+     'F (near[broom] & F (pick[broom] & F (near[hall] & F release[broom, hall])))'),
 ]
 
 

@@ -556,6 +556,19 @@ def _proper_names(instruction: str) -> frozenset[str]:
     return frozenset(m.group(0).lower() for m in _PROPER_RE.finditer(instruction))
 
 
+# Numbers that speech recognition writes as words that sound like them ("bay for", "side room to").
+_HEARD_NUMBERS = {'for': '4', 'to': '2'}   # (not "too": "the bed too" is also the bed)
+# Places that are told apart by a number ("bay 4", "bed 11", "side room 2", "dock 3").
+_LABEL_HEADS = frozenset('''
+bay bed room ward dock gate bench aisle level theatre bin zone area table desk locker shelf rack pod cubicle
+booth pen stall platform lane lift wing block suite unit cell cabin cot stand bank lab station berth
+'''.split())
+# What may follow a number heard as a word: the end of its phrase, not the object "for" or "to" would take.
+_AFTER_HEARD_NUMBER = frozenset({'and', 'then', 'or', 'please', 'first', 'next', 'instead', 'at', 'okay',
+                                 'ok',
+                                 'as', 'again', 'but', 'after', 'before', 'last'})
+
+
 def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str],
                       names: frozenset[str] = frozenset()) -> list[str]:
     """Correct typing slips in words the rules do not know; each correction is noted."""
@@ -569,6 +582,13 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
         if w == 'than' and (k == 0 or tokens[k - 1] in PUNCT or tokens[k - 1] in ('and', 'but')):
             out[k] = 'then'   # "the rose bed, than the pond": no comparison before it
             notes.append('read "than" as "then"')
+            continue
+        if w in _HEARD_NUMBERS and 0 < k and tokens[k - 1] in _LABEL_HEADS and (
+                k + 1 == len(tokens) or tokens[k + 1] in PUNCT or tokens[k + 1] in _AFTER_HEARD_NUMBER):
+            # "then bay for and keep clear", "take the commode to bed for please": speech recognition
+            # wrote the label's number as the word that sounds like it (nothing follows "for" or "to")
+            out[k] = _HEARD_NUMBERS[w]
+            notes.append(f'read "{tokens[k - 1]} {w}" as "{tokens[k - 1]} {out[k]}"')
             continue
         twin = None
         if w not in known and len(w) >= 4 and w not in speller.words and w not in speller.lexicon:

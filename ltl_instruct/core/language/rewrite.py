@@ -35,6 +35,10 @@ _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'i
                        'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
                        'yesterday', 'along', 'against', 'under', 'behind', 'beside', 'inside', 'up',
                        'down', 'my', 'our'})   # "the vase, the candle and the frame I showed you?"
+# Words that say where the listed things are ("... out in the corridor", "... by the door").
+_WHERE_LISTED = frozenset({'out', 'in', 'on', 'over', 'at', 'by', 'around', 'along', 'inside', 'under',
+                           'behind', 'beside', 'near', 'outside', 'down', 'up', 'lying', 'sitting',
+                           'standing', 'parked'})
 # ("a hairbrush and a little china dog my mother gave me": who gave it, a clause of its own)
 # Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
 _POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
@@ -319,6 +323,13 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     tail = tokens[end:]
     if tail and tail[0] not in PUNCT and any(t in PUNCT for t in tail):
         tail = tail[next(k for k, t in enumerate(tail) if t in PUNCT):]
+    elif tail and tail[0] in _WHERE_LISTED:
+        # "there's a commode, a hoist and a wheelchair out in the corridor go to the second one": where
+        # they are sets the scene, the request starts at its verb (said without a full stop)
+        verb = next((k for k in range(2, len(tail)) if tail[k] in _VERBS and tail[k - 1] not in DETERMINERS),
+                    0)
+        if verb:
+            tail = ['.'] + tail[verb:]
     start = max((k for k in range(s - 1) if tokens[k] in '.;!?'), default=-1) + 1
     ahead = s >= 2 and tokens[s - 1] == ':' and any(t in ORDINALS or t in ('last', 'middle') for t in tokens[
         start:s - 1])   # "the first and third things on this list: ..."

@@ -194,6 +194,11 @@ _ITEM_ACRONYM_RE = re.compile(
     r"looks)\b)[a-z])")
 
 
+# The hospital's accident and emergency department, said in capitals ("avoid A and E", "A&E").
+# (not two labels: "fields A and E")
+_A_AND_E_RE = re.compile(r'(^|[,.;:!?]\s*|\b(?i:the|to|at|of|in|by|from|near|past|into|avoid|floor|and|or)'
+                         r'\s+)'
+                         r'A ?(?:and|&|n|\+) ?E\b')
 # A capital letter after a word names something ("field A", "Gate B"): not the article "a".
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
 
@@ -244,6 +249,8 @@ def tokenize(text: str) -> list[str]:
         Lower-case tokens; runs of the same punctuation collapse to one, a dash
         between spaces becomes a comma, and typos in :data:`TYPOS` are fixed.
     """
+    if 'E' in text:   # "A and E", "A&E": the accident and emergency department, one name
+        text = _A_AND_E_RE.sub(r'\1a_and_e', text)
     acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
     acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
     acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}

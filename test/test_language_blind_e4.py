@@ -81,6 +81,32 @@ BLIND_ROUND_E4 = [
      'F near[hoist]'),
     ('there are a mop, a bucket and a broom in the cupboard bring the last one to the hall',
      'F (near[broom] & F (pick[broom] & F (near[hall] & F release[broom, hall])))'),
+    # a list of "the one by X, the one by Y (,) and the one by Z": three things (the first two were one)
+    ('Three benches are free: the one by the window, the one by the sink, and the one by the door. Go to '
+     'either of the first two.',
+     'F near[bench::isnextto(window)] | F near[bench::isnextto(sink)]'),
+    ('Three benches are free: the one by the window, the one by the sink and the one by the door. Go to '
+     'the first one.',
+     'F near[bench::isnextto(window)]'),
+    ('go to the lamp by the sink and the one by the door',
+     'F near[lamp::isnextto(sink)] & F near[lamp::isnextto(door)]'),
+    # "either location is acceptable", "either is acceptable for this test", "either ones fine": remarks
+    # (a place "location" was visited after each drop-off; the others were refused)
+    ('Return the pipettes to the calibration bench or the tool drawer; either location is acceptable.',
+     'F (near[pipettes] & F (pick[pipettes] & (F (near[calibration_bench] & F release[pipettes, '
+     'calibration_bench]) | F (near[tool_drawer] & F release[pipettes, tool_drawer]))))'),
+    ('Go to the east emergency shower or the west one; either is acceptable for this test.',
+     'F near[east_emergency_shower] | F near[west_emergency_shower]'),
+    ('go to the med room or pharmacy either ones fine',
+     'F near[med_room] | F near[pharmacy]'),
+    # "the pit no longer matters" / "does not matter" after the scope's end: free again (the pit was a
+    # goal, and "longer_matters" avoided)
+    ('Drone, fly to the east gantry. On the way, do not fly over the open pit; once you are at the gantry, '
+     'the pit no longer matters.',
+     '!near[open_pit] U near[east_gantry]'),
+    ('fly to the east gantry. On the way, do not fly over the open pit; once you are at the gantry, the pit '
+     'does not matter.',
+     '!near[open_pit] U near[east_gantry]'),
 ]
 
 

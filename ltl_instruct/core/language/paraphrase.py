@@ -53,6 +53,12 @@ def _named_stand(m: 're.Match[str]') -> bool:
 
 
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
+    # "once you are at the gantry, the pit no longer matters": a place said to be fine (not "the order")
+    (r'(?<= )(the|that|this) ((?:(?!order\b|sequence\b|route\b)[a-z0-9_]+ ){0,3}?'
+     r'(?!order\b|sequence\b|route\b|rest\b)[a-z0-9_]+) '
+     r'(?:no longer matters|does not matter(?: any ?more)?|is no longer (?:an issue|a problem|a concern))'
+     r'(?= [,.;!?] |$)',
+     r'\1 \2 is fine'),
     # "the orchard first and then the vineyard, or the other way round": either order
     (r' (?:, )?or (?:the other way (?:round|around)|vice versa|the reverse|the opposite way|the other order)'
      r'(?: if (?:that is|it is) (?:easier|quicker|better|simpler)| if you (?:prefer|like|want))?(?= [,.;!?] '

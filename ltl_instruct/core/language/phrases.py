@@ -496,7 +496,9 @@ class PhraseParser:
                 j += 1   # "the pantry, which is next to the kitchen"
             lead = _relative_lead(tokens, j) + (j - i)
             j = i
-            if not lead and relations and tokens[j] in ('and', 'but'):
+            if not lead and relations and tokens[j] in ('and', 'but') and \
+                    tokens[j + 1:j + 3] != ['the', 'one']:
+                # (but "the lamp by the sink and the one by the door" is a second lamp)
                 lead = 1 + _relative_lead(tokens, j + 1) if match_relation(tokens, j + 1 + _relative_lead(
                     tokens, j + 1)) else 0
             j += lead
@@ -580,9 +582,11 @@ class PhraseParser:
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
             if sep == 'and' and tokens[i] == ',' and j == i + 1 and nxt.descriptor.relations and \
-                    nxt.pronoun in ('', 'one') and not (tokens[j] in ('one', 'a', 'an') and
+                    nxt.pronoun in ('', 'one') and not ((tokens[j] in ('one', 'a', 'an') or
+                                                         tokens[j:j + 2] == ['the', 'one']) and
                                                         phrases[-1].pronoun == 'one'):
-                # (but "one by the sink, one under the skylight", "a red one by X, a blue one by Y" are lists)
+                # (but "one by the sink, one under the skylight", "a red one by X, a blue one by Y", "the
+                # one by the window, the one by the sink" are lists)
                 # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
                 merged = _attach(phrases[-1].descriptor, nxt.descriptor, nxt.pronoun == 'one')
                 if merged is not None:

@@ -89,6 +89,8 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
      r"whichever|whatever)'s\b", r'\1 is'),
     (r"\b(either|whichever|which|each|this|that|any|neither|first|second|third|last|other|middle|red|blue|"
      r"green|left|right|big|small) one's\b", r'\1 one is'),   # "either one's fine", "the first one's"
+    # "either ones fine", as speech recognition writes it (the apostrophe lost)
+    (r"\b(either|any|whichever) ones(?= (?:fine|ok|okay|good|alright|great)\b)", r'\1 one is'),
     (r"'s(?= (?:next|first|last|after|before|then)\b)", ' is'),   # "the drum kit's next"
     (r"\blet's\b", 'let us'),
     # "the table's fine", "the red one's locked": "is", not a possessive, before how a thing is

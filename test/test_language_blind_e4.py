@@ -107,6 +107,19 @@ BLIND_ROUND_E4 = [
     ('fly to the east gantry. On the way, do not fly over the open pit; once you are at the gantry, the pit '
      'does not matter.',
      '!near[open_pit] U near[east_gantry]'),
+    # deliveries stated, then "take them there": the same deliveries said again (each was done twice more)
+    ('The clipboard and the lab notebook both belong on the meeting table; please take them there.',
+     'F (near[clipboard] & F (pick[clipboard] & F (near[meeting_table] & F release[clipboard, '
+     'meeting_table]))) & F (near[lab_notebook] & F (pick[lab_notebook] & F (near[meeting_table] & F '
+     'release[lab_notebook, meeting_table])))'),
+    # "(either) X then Y or Y then X", with a verb or an article left out: either order (the second
+    # route had become a choice between the pharmacy and itself)
+    ('either do the lab then the pharmacy or pharmacy then the lab up to you',
+     'F (near[lab] & F near[pharmacy]) | F (near[pharmacy] & F near[lab])'),
+    ('either go to the lab then the pharmacy or the pharmacy then the lab',
+     'F (near[lab] & F near[pharmacy]) | F (near[pharmacy] & F near[lab])'),
+    ('go to bay 3 then bay 4 or bay 4 then bay 3, and avoid the hall',
+     'F near[bay_3] & F near[bay_4] & G !near[hall]'),
 ]
 
 

@@ -494,8 +494,9 @@ RULES: tuple[Rule, ...] = (
          rf'|take|carry) '
          r'(?:them|it)(?: both| all| over)? (?:in|there|over|along)\b', r'bring \g<y> to \g<x>'),
     Rule('the first two belong in the drawer, put them away',
-         rf'(?P<x>the {_NPS}) (?:belong|belongs|go|goes) (?P<p>in|on|into|back in|back on|back into) '
-         rf'(?P<y>the {_NP}) , (?:please )?(?:put|take) (?:them|it|the [^,.;!?]+?) (?:away|there|back)\b',
+         rf'(?P<x>the {_NPS})(?: both| all)? (?:belong|belongs|go|goes) (?P<p>in|on|into|back in|back on|'
+         rf'back into) (?P<y>the {_NP}) [,;.] (?:please )?(?:put|take|bring) (?:them|it|the [^,.;!?]+?) '
+         r'(?:away|there|back|over)\b',
          r'put \g<x> \g<p> \g<y>'),
     Rule('some boxes got stacked behind the desk, go to them',
          rf'^(?:some |the |a |an |my |her |his |their |our |your )?(?P<x>{_W}(?: {_W}){{0,3}}?) (?:that )?'

@@ -3937,6 +3937,15 @@ class _Reader:
             # "get rid of the wrapper? just throw it out": the same delivery said again
             self.notes.append(f'"{" ".join(tokens)}": the delivery of {objs[0].descriptor} said again')
             return True
+        if tokens[k:k + 1] == ['them'] and last is not None and last.kind == 'all' and all(
+                len(c) == 1 and c[0].kind == 'deliver' and (c[0].dests == dest_ds or not dest_ds and verb in (
+                    'bring', 'take', 'carry')) for c in last.chains) and not [
+                    t for t in rest if t not in PUNCT and t not in ('over', 'along', 'round', 'across')] and \
+                len(self.task.chain) - 1 < self.sentence_start:
+            # "The clipboard and the notebook both belong on the table; please take them there": the
+            # deliveries said before, said again
+            self.notes.append(f'"{" ".join(tokens)}": the deliveries said before, said again')
+            return True
         if implicit_dest is not None and not dests:
             self.notes.append(f'"{verb}" releases the object at the implicit {implicit_dest}')
         if not dest_ds:

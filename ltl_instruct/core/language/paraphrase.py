@@ -53,6 +53,15 @@ def _named_stand(m: 're.Match[str]') -> bool:
 
 
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
+    # "either do the lab then the pharmacy or pharmacy then the lab": the two orders of the same two
+    # places, any order (the article may be left out of either saying)
+    (r'(^ | [,.;!?] | and | but )(?:either )?(?:(?P<v>go to|visit|do|check|hit) )?(?:the )?'
+     r'(?P<x>' + _NAME + r') (?:, )?then (?:the )?(?P<y>' + _NAME + r') (?:, )?or '
+     r'(?:(?:go to|visit|do|check|hit) )?(?:the )?(?P=y) '
+     r'(?:, )?then (?:the )?(?P=x)(?= [,.;!?] | ?$| (?:up to you|your (?:call|choice)|whichever|either way|'
+     r'i do not (?:mind|care)|does not matter)\b)',
+     lambda m: (lambda a: f'{m.group(1)}{m.group("v") or "go to"} {a}{m.group("x")} and {a}{m.group("y")} '
+                          'in any order')('the ' if ' the ' in m.group(0) else '')),
     # "once you are at the gantry, the pit no longer matters": a place said to be fine (not "the order")
     (r'(?<= )(the|that|this) ((?:(?!order\b|sequence\b|route\b)[a-z0-9_]+ ){0,3}?'
      r'(?!order\b|sequence\b|route\b|rest\b)[a-z0-9_]+) '

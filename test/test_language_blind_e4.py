@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import check_translation
+from ltl_instruct.core.errors import TranslationError
+from translation_cases import T, check_translation
 
 BLIND_ROUND_E4 = [
     # formal apologies open a correction as "sorry" does ("my apologies" was a place visited after)
@@ -120,9 +121,46 @@ BLIND_ROUND_E4 = [
      'F (near[lab] & F near[pharmacy]) | F (near[pharmacy] & F near[lab])'),
     ('go to bay 3 then bay 4 or bay 4 then bay 3, and avoid the hall',
      'F near[bay_3] & F near[bay_4] & G !near[hall]'),
+    # formal orders "you are (not) to ...", also with an aside ("You are not, however, to ..."), and "at
+    # no point during this task are you to ..." (all refused)
+    ('Proceed to the freezer and subsequently to the fume hood. You are not to go near the solvent cabinet '
+     'until you have reached the fume hood.',
+     'F (near[freezer] & F near[fume_hood]) & (!near[solvent_cabinet] U near[fume_hood])'),
+    ('Bring the buffer bottle to bench 3. You are not, however, to collect it before you have signed in at '
+     'the front desk.',
+     'F (near[buffer_bottle] & F (pick[buffer_bottle] & F (near[bench_3] & F release[buffer_bottle, '
+     'bench_3]))) & (!pick[buffer_bottle] U near[front_desk])'),
+    ('Bring the buffer bottle to bench 3. You must not, however, collect it before you have signed in at '
+     'the front desk.',
+     'F (near[buffer_bottle] & F (pick[buffer_bottle] & F (near[bench_3] & F release[buffer_bottle, '
+     'bench_3]))) & (!pick[buffer_bottle] U near[front_desk])'),
+    ('You are to visit the orbital shaker exaclty twice, no more and no fewer.',
+     '!near[orbital_shaker] U (near[orbital_shaker] & (near[orbital_shaker] U (!near[orbital_shaker] & '
+     '(!near[orbital_shaker] U (near[orbital_shaker] & (near[orbital_shaker] W G '
+     '!near[orbital_shaker]))))))'),
+    ('At no point during this task are you to go near the laser table. Please proceed to the optics bench.',
+     'F near[optics_bench] & G !near[laser_table]'),
+    # "that room" after a room named before is that room ("however," opening a part asks for nothing)
+    ('Bring the cell counter into the tissue culture room; however, you are not to enter that room before '
+     'visiting the decontamination station.',
+     'F (near[cell_counter] & F (pick[cell_counter] & F (near[tissue_culture_room] & F '
+     'release[cell_counter, tissue_culture_room]))) & (!near[tissue_culture_room] U '
+     'near[decontamination_station])'),
 ]
 
 
 @pytest.mark.parametrize('instruction,gold', BLIND_ROUND_E4)
 def test_readings_found_on_blind_set_e4(instruction: str, gold: str) -> None:
     check_translation(instruction, gold)
+
+
+# Refused, never guessed: "that room" with no room named before it is no place that was said.
+REFUSED_E4 = [
+    'go to the den. do not enter that room before visiting the hall.',
+]
+
+
+@pytest.mark.parametrize('instruction', REFUSED_E4)
+def test_refused_on_blind_set_e4(instruction: str) -> None:
+    with pytest.raises(TranslationError):
+        T.translate(instruction)

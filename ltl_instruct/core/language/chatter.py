@@ -223,6 +223,7 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('fyi',), ('just', 'so', 'you', 'know'), ('busy', 'morning'), ('busy', 'day'), ('long', 'day'),
     ('busy', 'afternoon'), ('hectic', 'morning'), ('crazy', 'day'), ('busy', 'night'), ('so', 'you', 'know'),
     ('by', 'the', 'way'), ('btw',), ('at', 'this', 'time'), ('at', 'this', 'point'), ('at', 'present'),
+    ('however',),
     ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
     ('listen',), ('look',), ('hey', 'there'), ('quick', 'one'), ('quick', 'favour'), ('quick', 'favor'),
     ('one', 'more', 'thing'), ('oh', 'and'), ('also', 'fyi'), ('for', 'the', 'record'), ('well',),

@@ -539,6 +539,21 @@ RULES: tuple[Rule, ...] = (
     Rule('your task is to go there',
          r'\b(?:you are required to|your task is to|your job is to|your goal is to|you are supposed to|'
          r'you are expected to)\b', 'you must'),
+    # formal orders: "You are not to go near X until ...", "you are to approach X exactly once", with an
+    # aside between ("You are not, however, to collect it before ...")
+    Rule('you are not, however, to collect it',
+         r'\b(?:you are not|you must not|you cannot|do not) , (?:(?:however|though|of course|therefore|'
+         r'also|in any case|at any point) , )?(?:to )?(?=[a-z])', 'do not '),
+    Rule('you are not to go near X', r'\byou are not to\b', 'do not'),
+    Rule('you are to approach X exactly once',
+         r'\byou are (?:(?:therefore|also|now|then) )?to (?=(?:go|visit|approach|enter|avoid|stay|keep|bring|'
+         r'take|return|proceed|head|fly|wait|remain|check|collect|put|move|carry|deliver|land|finish|end|'
+         r'pass|leave|inspect|survey|stop|call|swing|pop)\b)', 'you must '),
+    # "at no point during this task are you to go near X": never
+    Rule('never during this task are you to go near X',
+         r'\bnever (?:(?:during|throughout|in|on|for) (?:this|the|your) (?:task|mission|flight|run|job|trip|'
+         r'shift|visit|errand) (?:,? )?)?(?:are you to|may you|should you|must you|can you|will you|'
+         r'shall you|do you|are you allowed to|are you permitted to) ', 'never '),
     Rule('you cannot finish the task without visiting X',
          rf'\b(?:you cannot|you can not|you must not|do not) (?:complete|finish|end) '
          rf'(?:the task |the mission |your task )?without (?P<verb>{_GOING})\b',

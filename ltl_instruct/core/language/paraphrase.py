@@ -428,9 +428,24 @@ def _check_there(text: str) -> str:
     return ''.join(out) + text[last:]
 
 
+# "you are not to enter that room before ...": the room named before ("the room" is resolved to it)
+_THAT_PLACE_RE = re.compile(
+    r' (?P<v>enter|visit|approach|avoid|near|into|leave|reach|from|of) (?:that|this) '
+    r'(?=(?P<n>room|place|area|spot|location|lab|laboratory|office|building|zone|corridor|bay|ward|site|'
+    r'station|space|door) )')
+
+
+def _that_place(m: 're.Match[str]') -> str:
+    # (only a kind of place named before: "go to the den. don't enter that room" stays unread)
+    return f' {m.group("v")} the ' if f' {m.group("n")} ' in m.string[:m.start() + 1] else m.group(0)
+
+
 def paraphrase(tokens: list[str]) -> list[str]:
     """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
     text = ' ' + ' '.join(tokens) + ' '
+    if 'that' in tokens or 'this' in tokens:
+        text = _THAT_PLACE_RE.sub(_that_place, text)
+        tokens = text.split()
     if ':' in tokens:
         # "pick one: the den, the hall or the attic" is a choice; "avoid: the ramp, the bins" a list
         text = _VERB_COLON_RE.sub(r' \1 ', _COLON_RE.sub(r'\1 go to one of these : ', text))

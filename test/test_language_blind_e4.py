@@ -146,6 +146,26 @@ BLIND_ROUND_E4 = [
      'F (near[cell_counter] & F (pick[cell_counter] & F (near[tissue_culture_room] & F '
      'release[cell_counter, tissue_culture_room]))) & (!near[tissue_culture_room] U '
      'near[decontamination_station])'),
+    # the span of the run said after a rule or a count ("for the entire flight", "for the duration of the
+    # task", "throughout the flight", "over the course of the run"); "remain clear of" (all refused)
+    ('Drone, please survey the roof skylights and remain clear of the overhead crane for the entire flight.',
+     'F near[roof_skylights] & G !near[overhead_crane]'),
+    ('Proceed to the storeroom, avoiding the wet-lab sink and the eyewash station for the duration of the '
+     'task.',
+     'F near[storeroom] & G !near[wet_lab_sink] & G !near[eyewash_station]'),
+    ('Drone, inspect the ceiling lights, and keep well clear of the sprinkler heads throughout the flight.',
+     'F near[ceiling_lights] & G !near[sprinkler_heads]'),
+    ('Go to the autoclave three times over the course of the sterilisation run.',
+     'F (near[autoclave] & F (!near[autoclave] & F (near[autoclave] & F (!near[autoclave] & F '
+     'near[autoclave]))))'),
+    ('Remain clear of the sterilisation room untill you have been to the equipment log terminal; '
+     'subsequently, proceed to the sterilisation room.',
+     '(!near[sterilisation_room] U near[equipment_log_terminal]) & F near[sterilisation_room]'),
+    ('go to the den, remaining well away from the hall',
+     'F near[den] & G !near[hall]'),
+    # "until further instruction", "until you are told otherwise": no event of the task (refused)
+    ('Drone, please proceed to the forth floor viewing gallery and hover until further instruction.',
+     'F near[fourth_floor_viewing_gallery]'),
 ]
 
 

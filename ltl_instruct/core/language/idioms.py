@@ -590,7 +590,9 @@ RULES: tuple[Rule, ...] = (
     # task; what is said before it holds for the whole run
     Rule('stay at the door until I tell you otherwise',
          r'(?: ,)? (?:until|unless) (?:(?:i|we) (?:tell|say|call|radio|signal|let) (?:you )?(?:otherwise|'
-         r'differently|so|know)|further notice|told otherwise|you are told otherwise|you hear otherwise)\b',
+         r'differently|so|know)|further (?:notice|instruction|instructions|orders)|(?:you are |you get )?'
+         r'(?:told|instructed) otherwise|you hear otherwise|(?:you are |you get )?(?:told|instructed) to '
+         r'move)\b',
          ''),
     Rule('survey the whole array: the array',
          r'\b(?P<v>survey|inspect|cover|scan|search|check|patrol|sweep|map|photograph|visit|over|around|'

@@ -53,6 +53,19 @@ def _named_stand(m: 're.Match[str]') -> bool:
 
 
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
+    # "remain clear of X", "remaining well away from X": stay clear of it
+    (r' remain(?P<g>ing)? (?=(?:well |safely |completely )?(?:clear|away|out|off) )',
+     lambda m: ' staying ' if m.group('g') else ' stay '),
+    # how long the task lasts, said as the span of the run ("for the entire flight", "for the duration of
+    # the task", "throughout the flight", "over the course of the run"): the whole time (after a count, the
+    # visits are counted over the run anyway: left out)
+    # (not "either is fine for this test": the span says how long, "entire", "duration of", "throughout")
+    (r'(?<= )(?P<c>(?:times|twice|once|thrice) )?(?:(?:for|during|throughout|over) (?:the|this|your) '
+     r'(?:(?:entire|whole|full|complete) |(?:duration|course|length) of (?:the|this|your) )|throughout '
+     r'(?:the|this|your) )'
+     r'(?:[a-z]+ )?(?:flight|task|mission|run|trip|job|operation|procedure|test|session|visit|shift|errand)'
+     r'(?= [,.;!?] | ?$)',
+     lambda m: m.group('c') or 'the whole time'),
     # "either do the lab then the pharmacy or pharmacy then the lab": the two orders of the same two
     # places, any order (the article may be left out of either saying)
     (r'(^ | [,.;!?] | and | but )(?:either )?(?:(?P<v>go to|visit|do|check|hit) )?(?:the )?'

@@ -166,6 +166,19 @@ BLIND_ROUND_E4 = [
     # "until further instruction", "until you are told otherwise": no event of the task (refused)
     ('Drone, please proceed to the forth floor viewing gallery and hover until further instruction.',
      'F near[fourth_floor_viewing_gallery]'),
+    # a list said right before the request, with no full stop, as speech runs on (refused)
+    ('okay bay 1 bay 2 and bay 3 um go to the last one I said',
+     'F near[bay_3]'),
+    ('the pharmacy the lab and the blood bank go to the third one then the first',
+     'F (near[blood_bank] & F near[pharmacy])'),
+    ('theres the ECG machine the bladder scanner the obs machine and the feeding pump go to the one just '
+     'before the feeding pump',
+     'F near[obs_machine]'),
+    # labelled names said one after another are each a name ("bed 2 bed 4" was one place, bed_2_bed_6)
+    ('bed 2 bed 4 and bed 6 go to the first one no wait the second one',
+     'F near[bed_4]'),
+    ('side room 1 side room 2 and side room 3 go to the middle one',
+     'F near[side_room_2]'),
 ]
 
 

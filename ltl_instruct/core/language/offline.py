@@ -55,7 +55,7 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
     never_all as _never, render, until_avoid as _until_avoid,
 )
 from ltl_instruct.core.language.text import (
-    NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, join_compounds, tokenize,
+    NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, join_compounds, separate_labels, tokenize,
 )
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
@@ -201,7 +201,8 @@ class OfflineTranslator:
 
     def _prepare(self, instruction: str, notes: list[str]) -> list[str]:
         """Tokens of the instruction with typos, chatter, list references and corrections resolved."""
-        tokens = join_compounds(expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes))))
+        tokens = separate_labels(join_compounds(expand_labels(tokenize(
+            chatter.strip_parentheticals(instruction, notes)))))
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         tokens = _correct_spelling(tokens, notes, self.landmarks, _proper_names(instruction))

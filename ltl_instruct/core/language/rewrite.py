@@ -101,6 +101,11 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
             continue
         if end < len(tokens) and tokens[end] not in _LIST_END and not (
+                # "the pharmacy the lab and the blood bank go to the third one": the request said right
+                # after the list, as speech runs on (a position in it is named)
+                (tokens[end] in _VERBS or tokens[end] in chatter.HESITATIONS) and
+                _refers_to_list(tokens[end:]) and
+                all(t not in PUNCT for t in tokens[s:end] if t != ',')) and not (
                 # "carousels 3, 5, 7 and 9 need inspection": numbered things (not "the lamps and the rugs")
                 tokens[end] in ('need', 'needs') and (len(nps) > 2 or all(
                     np.descriptor.name.rpartition('_')[2].isdigit() for np in nps))) and not (

@@ -356,6 +356,22 @@ _LABEL_RE = re.compile(r'^(?:[a-z]|[a-z]?\d{1,3}[a-z]?)$')   # "A", "3", "a1"; o
 _NUMBER_LABELS = frozenset(_NUMBER_NAME.values())
 
 
+def separate_labels(tokens: list[str]) -> list[str]:
+    """Set labelled names said one after another apart: "bay 1 bay 2 and bay 3" -> "bay 1 , bay 2 and bay 3".
+
+    Speech comes without commas; a number followed by the words said before it starts a new name
+    (one kind, told apart by the number), never a longer name ("bed 2 bed 4" is no bed_2_bed_4).
+    """
+    out: list[str] = []
+    for k, t in enumerate(tokens):
+        out.append(t)
+        if (t.isdigit() or t in _NUMBER_LABELS) and 0 < k < len(tokens) - 1 and any(
+                k >= n and tokens[k + 1:k + 1 + n] == tokens[k - n:k] and tokens[k - n] not in PUNCT
+                for n in (1, 2, 3)):
+            out.append(',')
+    return out
+
+
 def expand_labels(tokens: list[str]) -> list[str]:
     """Name each labelled thing of a list in full: "turbines A, B and C" -> "turbine A, turbine B, ...".
 

@@ -179,6 +179,11 @@ BLIND_ROUND_E4 = [
      'F near[bed_4]'),
     ('side room 1 side room 2 and side room 3 go to the middle one',
      'F near[side_room_2]'),
+    # counts are no labels ("zero times once twice three times four times" stays a count)
+    ('you can visit the den zero times once twice three times four times or five times',
+     '!near[den] W (near[den] & (near[den] W (!near[den] & (!near[den] W (near[den] & (near[den] W '
+     '(!near[den] & (!near[den] W (near[den] & (near[den] W (!near[den] & (!near[den] W (near[den] & '
+     '(near[den] W (!near[den] & (!near[den] W (near[den] & (near[den] W G !near[den]))))))))))))))))))'),
 ]
 
 
@@ -190,6 +195,9 @@ def test_readings_found_on_blind_set_e4(instruction: str, gold: str) -> None:
 # Refused, never guessed: "that room" with no room named before it is no place that was said.
 REFUSED_E4 = [
     'go to the den. do not enter that room before visiting the hall.',
+    # a list after "before visiting" is no list that positions point into
+    'before visiting the hall the den and the attic visit the garage and never visit it again then visit '
+    'the hall before the den',
 ]
 
 

@@ -35,6 +35,10 @@ _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |
 # a name of a few words, none of them a connective
 _NAME = r'(?:(?!(?:and|or|then|followed|the)\b)[a-z0-9_]+)(?: (?!(?:and|or|then|followed)\b)[a-z0-9_]+){0,4}'
 
+# a place's name in a route, none of its words a verb of going or a connective
+_ROUTE_NAME = (r'(?:(?!(?:and|or|then|the|go|visit|do|check|hit|to)\b)[a-z0-9_]+)'
+               r'(?: (?!(?:and|or|then|followed|go|visit|do|check|hit|to)\b)[a-z0-9_]+){0,4}')
+
 # a word of a name, none of the words of a clause's frame
 _NOUN = r'(?!(?:is|are|was|were|has|have|had|then|to|go|and|or|not|too|as|it|they|will|can|so)\b)[a-z0-9_]+'
 
@@ -69,10 +73,11 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "either do the lab then the pharmacy or pharmacy then the lab": the two orders of the same two
     # places, any order (the article may be left out of either saying)
     (r'(^ | [,.;!?] | and | but )(?:either )?(?:(?P<v>go to|visit|do|check|hit) )?(?:the )?'
-     r'(?P<x>' + _NAME + r') (?:, )?then (?:the )?(?P<y>' + _NAME + r') (?:, )?or '
-     r'(?:(?:go to|visit|do|check|hit) )?(?:the )?(?P=y) '
-     r'(?:, )?then (?:the )?(?P=x)(?= [,.;!?] | ?$| (?:up to you|your (?:call|choice)|whichever|either way|'
-     r'i do not (?:mind|care)|does not matter)\b)',
+     r'(?P<x>' + _ROUTE_NAME + r') (?:, )?then (?:(?:go to|visit|do|check|hit) )?(?:the )?'
+     r'(?P<y>' + _ROUTE_NAME + r') (?:, )?or (?:(?:go to|visit|do|check|hit) )?(?:the )?(?P=y) '
+     r'(?:, )?then (?:(?:go to|visit|do|check|hit) )?(?:the )?(?P=x)'
+     r'(?= [,.;!?] | ?$| (?:up to you|your (?:call|choice)|whichever|either way|i do not (?:mind|care)|'
+     r'does not matter)\b)',
      lambda m: (lambda a: f'{m.group(1)}{m.group("v") or "go to"} {a}{m.group("x")} and {a}{m.group("y")} '
                           'in any order')('the ' if ' the ' in m.group(0) else '')),
     # "once you are at the gantry, the pit no longer matters": a place said to be fine (not "the order")

@@ -104,7 +104,10 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
                 # "the pharmacy the lab and the blood bank go to the third one": the request said right
                 # after the list, as speech runs on (a position in it is named)
                 (tokens[end] in _VERBS or tokens[end] in chatter.HESITATIONS) and
-                _refers_to_list(tokens[end:]) and
+                _refers_to_list(tokens[end:]) and (s == 0 or tokens[s - 1] in PUNCT or
+                                                   tokens[s - 1] in ('is', 'are', 'there') or all(
+                    t in ('okay', 'ok', 'so', 'right', 'well', 'now', 'um', 'uh', 'er', 'erm', ',')
+                    for t in tokens[:s])) and
                 all(t not in PUNCT for t in tokens[s:end] if t != ',')) and not (
                 # "carousels 3, 5, 7 and 9 need inspection": numbered things (not "the lamps and the rugs")
                 tokens[end] in ('need', 'needs') and (len(nps) > 2 or all(

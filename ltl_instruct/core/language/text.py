@@ -356,6 +356,12 @@ _LABEL_RE = re.compile(r'^(?:[a-z]|[a-z]?\d{1,3}[a-z]?)$')   # "A", "3", "a1"; o
 _NUMBER_LABELS = frozenset(_NUMBER_NAME.values())
 
 
+# Words a number follows that are no names: counts and measures ("twice three times four times").
+_NOT_LABELLED = frozenset({'times', 'time', 'minutes', 'minute', 'seconds', 'hours', 'metres', 'meters',
+                           'feet', 'laps', 'passes', 'rounds', 'visits', 'trips', 'x', 'by', 'and', 'or',
+                           'to', 'of'})
+
+
 def separate_labels(tokens: list[str]) -> list[str]:
     """Set labelled names said one after another apart: "bay 1 bay 2 and bay 3" -> "bay 1 , bay 2 and bay 3".
 
@@ -365,9 +371,10 @@ def separate_labels(tokens: list[str]) -> list[str]:
     out: list[str] = []
     for k, t in enumerate(tokens):
         out.append(t)
-        if (t.isdigit() or t in _NUMBER_LABELS) and 0 < k < len(tokens) - 1 and any(
-                k >= n and tokens[k + 1:k + 1 + n] == tokens[k - n:k] and tokens[k - n] not in PUNCT
-                for n in (1, 2, 3)):
+        if (t.isdigit() or t in _NUMBER_LABELS) and 0 < k < len(tokens) - 1 and \
+                tokens[k - 1] not in _NOT_LABELLED and any(
+                    k >= n and tokens[k + 1:k + 1 + n] == tokens[k - n:k] and tokens[k - n] not in PUNCT
+                    for n in (1, 2, 3)):
             out.append(',')
     return out
 

@@ -184,6 +184,20 @@ BLIND_ROUND_E4 = [
      '!near[den] W (near[den] & (near[den] W (!near[den] & (!near[den] W (near[den] & (near[den] W '
      '(!near[den] & (!near[den] W (near[den] & (near[den] W (!near[den] & (!near[den] W (near[den] & '
      '(near[den] W (!near[den] & (!near[den] W (near[den] & (near[den] W G !near[den]))))))))))))))))))'),
+    # speech recognition's slips: "at lease twice" is at least, "bay 4s fine" is "bay 4's fine", "theyve"
+    ('swing by the obs machine next to bed 3 at lease twice',
+     'F (near[obs_machine::isnextto(bed_3)] & F (!near[obs_machine::isnextto(bed_3)] & F '
+     'near[obs_machine::isnextto(bed_3)]))'),
+    ('avoid bay 4 um actually bay 4s fine now just keep out of the isolation room and go to the sluice room',
+     'F near[sluice_room] & G !near[isolation_room]'),
+    # a reason run on after a rule: "they have (got) ..." (refused)
+    ('go to the isolation room and after that avoid bay 3 completely theyve got norovirus',
+     'F (near[isolation_room] & G !near[bay_3])'),
+    # a count said again after "exactly" ("exactly once, just the once" had lost the exactly: silently)
+    ('check bay 4 exactly once okay just the once',
+     '!near[bay_4] U (near[bay_4] & (near[bay_4] W G !near[bay_4]))'),
+    ('check bay 4 exactly once, just the once',
+     '!near[bay_4] U (near[bay_4] & (near[bay_4] W G !near[bay_4]))'),
 ]
 
 
@@ -198,6 +212,8 @@ REFUSED_E4 = [
     # a list after "before visiting" is no list that positions point into
     'before visiting the hall the den and the attic visit the garage and never visit it again then visit '
     'the hall before the den',
+    # "until they have left": an event, not a reason
+    'go to the den and avoid the hall until they have left',
 ]
 
 

@@ -806,8 +806,10 @@ class _Reader:
         if out is not sentence or len(sentence) < 6:
             return out
         for k in range(len(sentence) - 3, 2, -1):
-            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she', 'there') and sentence[k + 1] in (
-                    'am', 'is', 'are', 'was', 'were') and sentence[k - 1] not in PUNCT and \
+            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she', 'there') and (sentence[k + 1] in (
+                    'am', 'is', 'are', 'was', 'were') or sentence[k] not in ('it', 'there') and
+                    sentence[k + 1] in ('have', 'has', 'had') and sentence[k + 2] not in ('to', 'been')) and \
+                    sentence[k - 1] not in PUNCT and \
                     sentence[k - 1] not in _NO_CUT_BEFORE and sentence[k - 1] not in DETS:
                 cut = self._drop_reason_after_comma(sentence[:k] + [','] + sentence[k:])
                 return sentence if len(cut) == len(sentence) + 1 else cut

@@ -380,6 +380,11 @@ _EXACT_AGAIN_RE = re.compile(
     r' (one|two|three|four|five|six|seven|eight|nine|ten|\d+) times , (?:exactly|precisely) '
     r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+|once|twice|thrice)(?: times)?(?= )')
 
+# "exactly once, just the once", "exactly once okay just once": the count said again (with "just"), exactly
+_EXACT_SAID_AGAIN_RE = re.compile(
+    r' (?:exactly|precisely) (once|twice|thrice|(?:one|two|three|four|five|six|\d+) times) (?:[.,;] )?'
+    r'(?:(?:okay|ok|so|yeah|right|yes) (?:[.,;] )?)?(?:just |only )?(?:the )?\1(?: (?:only|please))?(?= )')
+
 _PASS_RE = re.compile(r'(^| )(make|do|take|fly|run|perform|complete|made|done|did|taken|flown|performed|'
                       r'completed|(?:i |we )?(?:want|need)) (one|two|three|four|five|six|seven|'
                       r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
@@ -501,6 +506,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
     out = _passes(out)
     if 'exactly' in out or 'precisely' in out:
         out = _EXACT_AGAIN_RE.sub(r' exactly \1 times', ' ' + ' '.join(out) + ' ').split()
+        out = _EXACT_SAID_AGAIN_RE.sub(r' exactly \1', ' ' + ' '.join(out) + ' ').split()
     if 'more' in out and ('less' in out or 'fewer' in out):
         out = _NO_MORE_NO_LESS_RE.sub(r' exactly \1', ' ' + ' '.join(out) + ' ').split()
     return out

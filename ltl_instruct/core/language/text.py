@@ -19,6 +19,7 @@ TYPOS: dict[str, str] = {
     'thrid': 'third', 'undr': 'under', 'vist': 'visit', 'pls': 'please', 'plz': 'please',
     'kitchn': 'kitchen', 'dishwsher': 'dishwasher', 'litterbox': 'litter box', 'doesnt': 'does not',
     'cant': 'cannot', 'wont': 'will not', 'im': 'i am', 'ive': 'i have', 'youve': 'you have',
+    'theyve': 'they have', 'weve': 'we have',
     'thats': 'that is', 'theres': 'there is', 'somebodys': 'somebody is', 'someones': 'someone has',
     'dosent': 'does not', 'pleas': 'please', 'survery': 'survey', 'lol': '', 'rn': 'right now',
     'nevermind': 'never mind', 'untl': 'until', 'adn': 'and',
@@ -328,6 +329,11 @@ def tokenize(text: str) -> list[str]:
         s = _FORM_RE.sub(r'\1 from', s)
     if ' w' in s:
         s = _WAY_RE.sub(r'\1way', s)
+    if 'at lease ' in s:   # "at lease twice": speech recognition's "at least"
+        s = re.sub(r'\bat lease (?=once|twice|thrice|\w+ times)', 'at least ', s)
+    if re.search(r'\d+s ', s):   # "bay 4s fine": "bay 4's fine", the apostrophe lost (a label is no plural)
+        s = re.sub(r'\b(\d+)s (?=(?:fine|ok|okay|alright|safe|open|closed|shut|clear|free|busy|empty|full|'
+                   r'locked|off limits|out of bounds|not|no)\b)', r'\1 is ', s)
     if 'forth ' in s:   # "the forth floor": the fourth
         s = re.sub(r'\bforth (?=floor|time|stop|room|door|one|place|aisle|bay|shelf|level|row)', 'fourth ', s)
     out: list[str] = []

@@ -198,6 +198,23 @@ BLIND_ROUND_E4 = [
      '!near[bay_4] U (near[bay_4] & (near[bay_4] W G !near[bay_4]))'),
     ('check bay 4 exactly once, just the once',
      '!near[bay_4] U (near[bay_4] & (near[bay_4] W G !near[bay_4]))'),
+    # a choice narrowed by cancelling one and naming the other ("disregard the south one: the north
+    # loading door only"; "forget the south one, just the north one" had kept both, silently)
+    ('Go to either the north or the south loading door. Actually, disregard the south one: the north loading '
+     'door only.',
+     'F near[north_loading_door]'),
+    ('Go to either the north or the south loading door. Actually, forget the south one, just the north '
+     'loading door.',
+     'F near[north_loading_door]'),
+    ('go to the den or the hall. forget the hall, the den only.',
+     'F near[den]'),
+    # "actually just the kitchen" spoken with no comma, the kitchen being the ward kitchen of the choice,
+    # and the correction ending where the next command starts (refused; "and then the attic" kept both)
+    ('go to the day room or the ward kitchen actually just the kitchen and dont go near the dining trolley '
+     'till you get there',
+     'F near[ward_kitchen] & (!near[dining_trolley] U near[ward_kitchen])'),
+    ('go to the den or the hall, actually just the den and then the attic',
+     'F (near[den] & F near[attic])'),
 ]
 
 

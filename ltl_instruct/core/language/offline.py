@@ -421,9 +421,10 @@ _MOODS = frozenset({'mood', 'moods', 'temper', 'huff', 'strop', 'sulk', 'funk', 
 # Words after "is/are" that say where something is ("they are next to the door"), not why.
 _PLACE_PREPS = chatter.PREPOSITIONS | {'next', 'above', 'below'}
 # Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
-NEGATIVE_VERBS = frozenset({'ignore', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade', 'miss', 'exit',
-                            'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee', 'circumvent', 'spare',
-                            'leave', 'drop', 'scratch', 'lose', 'pass', 'release', 'free', 'not'})
+NEGATIVE_VERBS = frozenset({'ignore', 'disregard', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade',
+                            'miss', 'exit', 'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee',
+                            'circumvent', 'spare', 'leave', 'drop', 'scratch', 'lose', 'pass', 'release',
+                            'free', 'not'})
 # Prepositions after a motion verb that still mean going there ("hover above X", drone phrasing).
 MOTION_PREPS = frozenset({'above', 'below', 'beneath', 'under', 'beside', 'near', 'alongside', 'atop',
                           'across', 'along', 'outside', 'upon'})

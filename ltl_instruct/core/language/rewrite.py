@@ -1085,6 +1085,11 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 tokens[k - 2] in ('no', 'sorry', 'wait', 'oops', 'actually'):
             skip = 3   # "no, not that one, the one behind the door": what it corrects, then what it is
             continue
+        if t == 'disregard':
+            t = 'ignore'   # "disregard the south one": a retraction, read as "ignore" is
+        if t == 'actually' and tokens[k + 1:k + 2] in (['just'], ['only']) and said and \
+                said[-1] not in PUNCT and 'or' in said:
+            said.append(',')   # "the day room or the ward kitchen actually just the kitchen": spoken
         if t == 'please' and tokens[k + 1:k + 2] and tokens[k + 1] in _RETRACT_VERBS and (
                 k == 0 or tokens[k - 1] in PUNCT):
             continue   # "No, please disregard that restriction": the retraction, said politely
@@ -1235,6 +1240,14 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             result = _correct(prev, marker, seg[:cut], notes)
             if result is not None:
                 result = result + seg[cut:]
+        cut = next((k for k in range(lead + 2, len(seg) - 2) if seg[k] in ('and', 'then', 'but') and
+                    seg[k - 1] not in PUNCT and (seg[k + 1] in _COMMAND_START or 'then' in seg[k:k + 2])), -1)
+        if result is None and cut > 0 and seg[lead] in ('just', 'only'):
+            # "... actually just the kitchen and don't go near the trolley": spoken, the correction ends
+            # where the next command starts
+            result = _correct(prev, marker, seg[:cut], notes)
+            if result is not None:
+                result = result + [','] + seg[cut:]
         cut = next((k for k in range(lead + 2, len(seg) - 2) if seg[k] == ',' and seg[k + 1] in _VERBS), -1)
         if result is None and cut > 0 and seg[lead] in DETERMINERS:
             named = seg[lead:cut]
@@ -1530,6 +1543,10 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
     if np is None or np.end != len(words) and np not in spans or np.pronoun:
         return None
     hit = next((k for k in range(len(spans) - 1, -1, -1) if spans[k].descriptor == np.descriptor), -1)
+    if hit < 0 and not np.descriptor.relations:
+        # "the day room or the ward kitchen ... just the kitchen": the one name that ends in it
+        ends = [k for k, sp in enumerate(spans) if sp.descriptor.name.endswith('_' + np.descriptor.name)]
+        hit = ends[0] if len(ends) == 1 else -1
     if hit < 0:
         return _only_this_side(prev, words[np.start:np.end], spans, notes)
     # the list it is in: phrases joined by "," / "and" / "or" only
@@ -1960,10 +1977,36 @@ def _scope_corrected(prev: list[str], seg: list[str], notes: list[str]) -> Optio
     return prev[:p] + seg[k:new_np.end] + prev[old.end:]
 
 
+def _cancel_then_only(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Keep one of a choice: 'A or B. Actually, disregard the south one: the north loading door only'."""
+    words = list(seg[1:] if seg[:1] == [','] else seg)
+    if marker not in _CANCEL:
+        if words[:1] not in (['ignore'], ['forget'], ['skip'], ['scratch'], ['drop']):
+            return None
+        words = words[1:]
+    gone = PhraseParser().parse(words, 0)
+    if gone is None or gone.end >= len(words) or words[gone.end] not in (',', ':'):
+        return None
+    kept = [t for t in words[gone.end + 1:] if t not in PUNCT]
+    if kept[-1:] == ['only']:
+        kept = kept[:-1]
+    elif kept[:1] in (['just'], ['only']):
+        kept = kept[1:]
+    else:
+        return None
+    np = PhraseParser().parse(kept, 0)
+    if np is None or np.end != len(kept) or np.pronoun or 'or' not in prev:
+        return None
+    return _only_this(prev, ['just'] + kept, notes)
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     scoped = _scope_corrected(prev, seg, notes)
     if scoped is not None:
         return scoped
+    only = _cancel_then_only(prev, marker, seg, notes)
+    if only is not None:
+        return only
     lead = 1 if seg[:1] == [','] else 0
     for said in (['the', 'opposite', ','], ['the', 'other', 'way', 'round', ','],
                  ['the', 'other', 'way', 'around', ',']):

@@ -215,6 +215,24 @@ BLIND_ROUND_E4 = [
      'F near[ward_kitchen] & (!near[dining_trolley] U near[ward_kitchen])'),
     ('go to the den or the hall, actually just the den and then the attic',
      'F (near[den] & F near[attic])'),
+    # a list ended by "each", a passive check ("must be checked on at least two separate occasions"),
+    # "bring only the latter", "X and Y require a visit", "the order is at your discretion", "and from
+    # there continue to" (all refused)
+    ('The spectrophotmeter, the fluorimeter and the plate reader each need attention. Visit the third one at '
+     'least twice.',
+     'F (near[plate_reader] & F (!near[plate_reader] & F near[plate_reader]))'),
+    ('The incubator must be checked on at least two separate occasions; finish at the logbook desk.',
+     'F (near[incubator] & F (!near[incubator] & F (near[incubator] & F near[logbook_desk])))'),
+    ('Two flasks need moving: a round-bottom flask and an Erlenmeyer flask. For now, bring only the latter '
+     'to the fume hood.',
+     'F (near[erlenmeyer_flask] & F (pick[erlenmeyer_flask] & F (near[fume_hood] & F '
+     'release[erlenmeyer_flask, fume_hood])))'),
+    ('Both the freezer farm and the chemical store require a visit today; the order is at your discretion.',
+     'F near[freezer_farm] & F near[chemical_store]'),
+    ('visit the freezer farm and the chemical store, the order is your call',
+     'F near[freezer_farm] & F near[chemical_store]'),
+    ('Go to the freezer room, and from there continue to either bench 4 or bench 5.',
+     'F (near[freezer_room] & F (near[bench_4] | near[bench_5]))'),
 ]
 
 

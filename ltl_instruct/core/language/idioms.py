@@ -539,6 +539,15 @@ RULES: tuple[Rule, ...] = (
     Rule('your task is to go there',
          r'\b(?:you are required to|your task is to|your job is to|your goal is to|you are supposed to|'
          r'you are expected to)\b', 'you must'),
+    # "go to the freezer room, and from there continue to bench 4": then to it
+    Rule('and from there continue to bench 4',
+         r'(?:, )?(?:and )?from there(?: ,)? (?:continue|carry on|proceed|go|head|move|fly|go on|move on)'
+         r'(?: on| onward| onwards)? (?=to )',
+         ' , then go '),
+    # "bring only the latter to the fume hood": the one thing delivered, no rule of its own
+    Rule('bring only the flask to the hood',
+         r'\b(?P<v>bring|take|carry|move|put|deliver|return) (?:only|just) (?=(?:the|my|your|our|a|an) )',
+         r'\g<v> '),
     # formal orders: "You are not to go near X until ...", "you are to approach X exactly once", with an
     # aside between ("You are not, however, to collect it before ...")
     Rule('you are not, however, to collect it',
@@ -843,9 +852,15 @@ RULES: tuple[Rule, ...] = (
     # ---- passive goals and avoidances
     Rule('the shed must be visited',
          rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?P<aux>{_PASSIVE}) '
-         rf'(?:all |both |each )?(?:visited|reached|entered)(?= |$)',
+         rf'(?:all |both |each )?(?:visited|reached|entered|checked on|checked|inspected|looked at)(?= |$)',
          lambda m: f'{m.group("pre")}{"" if m.group("aux") in _PLAIN_AUX else "you must "}visit '
                    f'{m.group("x")}'),
+    # "Both the freezer farm and the chemical store require a visit today": visit them
+    Rule('the shed requires a visit',
+         rf'(?P<pre>^|, )(?P<x>(?:both )?(?:the|my|your|our) {_NPS}) (?:each |both |all )?'
+         r'(?:require|requires|need|needs|want|wants|deserve|deserves) (?:a visit|visiting|a check|checking|'
+         r'a look|inspecting|an inspection)(?= |$)',
+         r'\g<pre>visit \g<x>'),
     Rule('the shed must be avoided',
          rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?:always )?{_PASSIVE} '
          rf'(?:always )?avoided(?= |$)', r'\g<pre>avoid \g<x>'),

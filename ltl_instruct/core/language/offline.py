@@ -274,6 +274,10 @@ _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'e
 # What keeps a person busy ("dad's on a call"): a reason, not a place.
 _BUSY = frozenset({'call', 'phone', 'meeting', 'break', 'nap', 'shift', 'zoom', 'computer', 'asleep', 'busy',
                    'working', 'napping', 'sleeping', 'resting', 'studying', 'cooking', 'lunch', 'dinner'})
+# "the order is at your discretion", "the order is your call": the goals in any order
+_ORDER_FREE_RE = re.compile(r'^(?:the )?(?:order|sequence) (?:is|can be) (?:entirely |completely )?'
+                            r'(?:up to you|at your discretion|(?:your|the robot s) (?:call|choice|decision)|'
+                            r'yours to (?:choose|decide|pick)|flexible|not important|unimportant)$')
 # "for the whole time": how long a rule holds, said after it; the rule holds throughout anyway.
 _WHOLE_TIME: tuple[tuple[str, ...], ...] = (
     ('the', 'whole', 'time'), ('the', 'entire', 'time'), ('at', 'all', 'times'), ('all', 'the', 'time'),
@@ -1857,7 +1861,8 @@ class _Reader:
                                                 'order does not matter', 'the order is up to you',
                                                 'the order is not important', 'order is up to you',
                                                 'in whatever order', 'whatever order', 'any order works'))
-                                  or s in ('the order is yours', 'you choose the order', 'pick the order')):
+                                  or s in ('the order is yours', 'you choose the order', 'pick the order')
+                                  or _ORDER_FREE_RE.match(s)):
             self._any_order()   # "go to a, then b; any order works": the goals in any order
             return scope
         fine = (' is fine', ' is okay', ' are fine', ' is ok', ' will do', ' works', ' is good')

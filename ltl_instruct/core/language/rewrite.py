@@ -34,7 +34,7 @@ _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'i
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
                        'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
                        'yesterday', 'along', 'against', 'under', 'behind', 'beside', 'inside', 'up',
-                       'down', 'my', 'our'})   # "the vase, the candle and the frame I showed you?"
+                       'down', 'my', 'our', 'each'})   # "the vase, the candle and the frame I showed you?"
 # Words that say where the listed things are ("... out in the corridor", "... by the door").
 _WHERE_LISTED = frozenset({'out', 'in', 'on', 'over', 'at', 'by', 'around', 'along', 'inside', 'under',
                            'behind', 'beside', 'near', 'outside', 'down', 'up', 'lying', 'sitting',

@@ -233,6 +233,24 @@ BLIND_ROUND_E4 = [
      'F near[freezer_farm] & F near[chemical_store]'),
     ('Go to the freezer room, and from there continue to either bench 4 or bench 5.',
      'F (near[freezer_room] & F (near[bench_4] | near[bench_5]))'),
+    # formal asides: "in neither case may you pass near X", "do not under any circumstances go near X",
+    # "or, alternatively, to X", "I would ask that you ..." (all refused)
+    ('Go to the confocal microscope or the plate reader; in neither case may you pass near the MRI magnet.',
+     '(F near[confocal_microscope] | F near[plate_reader]) & G !near[mri_magnet]'),
+    ('Bring the dewar flask next to the glovebox to the cold room. While you are carrying it, do not under '
+     'any circumstances go near the fume hood to the left of the door.',
+     'F (near[dewar_flask::isnextto(glovebox)] & F (pick[dewar_flask::isnextto(glovebox)] & '
+     '(!near[fume_hood::isleftof(door)] U (near[cold_room] & F release[dewar_flask::isnextto(glovebox), '
+     'cold_room]))))'),
+    ('Proceed to the glovebox or, alternatively, to the anaerobic chamber. Should you choose the anaerobic '
+     'chamber, you must keep away from the gas manifold.',
+     'F near[glovebox] | (F near[anaerobic_chamber] & G !near[gas_manifold])'),
+    # a reason at the end of the sentence comes after its "there": no doubt what "there" is (refused)
+    ('Deliver the sample rack to the sequencing core. After you have set it down there, I would ask that you '
+     'stay away from the tissue culture room for the remainder of the task, as they are running a sterility '
+     'check this afternoon and any traffic near their door compromises it.',
+     'F (near[sample_rack] & F (pick[sample_rack] & F (near[sequencing_core] & F (release[sample_rack, '
+     'sequencing_core] & G !near[tissue_culture_room]))))'),
 ]
 
 
@@ -249,6 +267,8 @@ REFUSED_E4 = [
     'the hall before the den',
     # "until they have left": an event, not a reason
     'go to the den and avoid the hall until they have left',
+    # a part left out in a sentence before may be what "it" means
+    'go to the kitchen, the crew waxed the hall. avoid it',
 ]
 
 

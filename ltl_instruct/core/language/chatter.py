@@ -290,6 +290,9 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you '
      r'(?:could|would|can|will) ',
      r'\1 '),
+    # "I would ask that you stay away from X", "I must insist that you ...": a formal request
+    (r'(^ | [,.;!?] )(?:i|we) (?:would |must |have to |do |will )?(?:ask|request|insist|require) '
+     r'(?:that |of you that )?you (?:please )?', r'\1 '),
     (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
      r'get) )', r'\1 '),
     (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),

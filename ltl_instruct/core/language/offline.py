@@ -756,6 +756,9 @@ class _Reader:
         # "X has to come last" read over goals given as one unordered step: "the other two in any order"
         # after it says that again
         self.others_unordered = False
+        # notes of parts left out at the end of the sentence being read: said after its pronouns, so no
+        # pronoun of that sentence can mean what they name ("set it down there, ..., as they are busy")
+        self.trailing_notes: list[int] = []
 
     # What "it" / "there" point at, and how many notes there were when each was set: a part left out
     # after that which named a thing may be what a later pronoun means ("go to the kitchen, the crew
@@ -781,8 +784,8 @@ class _Reader:
 
         ("left out "the crew waxed the hall"" before "avoid it" read as the kitchen.)
         """
-        for note in self.notes[mark:]:
-            if note.startswith(('left out "', 'could not read "')):
+        for k, note in enumerate(self.notes[mark:], mark):
+            if note.startswith(('left out "', 'could not read "')) and k not in self.trailing_notes:
                 words = note.split('"')[1].split()
                 rel = next((k for k, w in enumerate(words) if k > 0 and w in ('that', 'which', 'who')),
                            len(words))
@@ -1030,6 +1033,7 @@ class _Reader:
                 [t for t in head if t not in PUNCT]):
             return sentence   # "also, the beehive is off limits": nothing before it to say why for
         said = ' '.join(t for t in sentence[cut + 1:] if t not in PUNCT)
+        self.trailing_notes.append(len(self.notes))
         self.notes.append(f'left out "{said}" (says why, asks for nothing)')
         return head + [t for t in sentence[cut + 1:] if t in '.;!?']
 
@@ -1077,6 +1081,7 @@ class _Reader:
             self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
+            self.trailing_notes = []
             sentence = self._drop_trailing_reason(self._drop_middle_reason(self._drop_summons(sentence)))
             if self._places_only(sentence):
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out

@@ -216,9 +216,15 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      ' after that '),
     (r' from now on ', ' '),
     (r'(^ | [.;!?] )you (?:may|can|are allowed to|are permitted to|should) only ', r'\1 only '),
-    (r' (?:under no circumstances|on no account|at no point|at no time)'
-     r'(?: should you| must you| are you to)? ',
+    (r' (?:under no circumstances|on no account|at no point|at no time|in neither case|in no case)'
+     r'(?: should you| must you| are you to| may you| can you| shall you)? ',
      ' never '),
+    # "do not, under any circumstances, go near X", "do not under any circumstances go near X"
+    (r' (do not|never|you must not|you should not|you may not) (?:, )?(?:under any circumstances|'
+     r'on any account|for any reason|at any point|at any time)(?: ,)? ',
+     r' \1 '),
+    # "to the glovebox or, alternatively, to the anaerobic chamber": or
+    (r' (or|either) , (?:alternatively|otherwise|if you prefer|failing that) , ', r' \1 '),
     (r' (?:pick|choose|select) (?:either|one of) ', ' go to either '),
     (r' (?:one time|1 time) (?:and one time )?only ', ' exactly once '),
     (r' once only ', ' exactly once '),

@@ -251,6 +251,12 @@ BLIND_ROUND_E4 = [
      'check this afternoon and any traffic near their door compromises it.',
      'F (near[sample_rack] & F (pick[sample_rack] & F (near[sequencing_core] & F (release[sample_rack, '
      'sequencing_core] & G !near[tissue_culture_room]))))'),
+    # spoken run-ons: "take off from the pad hover over X" (the leg was taken into the pad's name,
+    # dropped silently); "don't go near X just go straight to Y" (refused)
+    ('take off from the pad hover over the outpatients entrance and then land at the hospice',
+     'F (near[outpatients_entrance] & F near[hospice])'),
+    ('dont go near side room 1 or side room 3 just go straight to the nurses station',
+     'F near[nurses_station] & G !near[side_room_1] & G !near[side_room_3]'),
 ]
 
 

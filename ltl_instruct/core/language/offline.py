@@ -274,6 +274,9 @@ _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'e
 # What keeps a person busy ("dad's on a call"): a reason, not a place.
 _BUSY = frozenset({'call', 'phone', 'meeting', 'break', 'nap', 'shift', 'zoom', 'computer', 'asleep', 'busy',
                    'working', 'napping', 'sleeping', 'resting', 'studying', 'cooking', 'lunch', 'dinner'})
+# Verbs of a flight's legs, where a spoken leg starts ("take off from the pad hover over X").
+_FLIGHT_VERBS = frozenset({'hover', 'fly', 'land', 'circle', 'head', 'go', 'proceed', 'climb', 'descend',
+                           'survey', 'inspect', 'orbit', 'then'})
 # "the order is at your discretion", "the order is your call": the goals in any order
 _ORDER_FREE_RE = re.compile(r'^(?:the )?(?:order|sequence) (?:is|can be) (?:entirely |completely )?'
                             r'(?:up to you|at your discretion|(?:your|the robot s) (?:call|choice|decision)|'
@@ -1784,6 +1787,8 @@ class _Reader:
             return nxt in AVOID_FILLER or nxt in GOAL_VERBS
         if tokens[i] == 'not':
             return nxt == 'to'   # "visit a not to visit b before a not to visit c before b"
+        if tokens[i] == 'just':
+            return nxt in GOAL_VERBS and nxt != 'be'   # "don't go near bay 3 just go straight to the desk"
         if tokens[i] == 'leave':
             return nxt in ('and', 'then', ',', 'it', 'there')   # "go to a leave and then come back"
         if tokens[i] in ('ensure', 'make'):
@@ -4039,6 +4044,12 @@ class _Reader:
             if tokens[k:k + 1] == ['from']:
                 # "take off from the pad": where the flight starts, not a goal
                 src = self.phrases.parse(tokens, k + 1)
+                verb = next((v for v in range(k + 2, src.end) if tokens[v] in _FLIGHT_VERBS), 0) if src else 0
+                if verb:
+                    # "take off from the pad hover over the entrance": spoken, the next leg starts at its verb
+                    src = self.phrases.parse(tokens[:verb], k + 1)
+                    if src is not None and src.end == verb:
+                        tokens = tokens[:verb] + [','] + tokens[verb:]
                 if src is not None:
                     self.notes.append(f'"{" ".join(tokens[:src.end])}": the start, not a goal')
                     k = src.end

@@ -257,6 +257,12 @@ BLIND_ROUND_E4 = [
      'F (near[outpatients_entrance] & F near[hospice])'),
     ('dont go near side room 1 or side room 3 just go straight to the nurses station',
      'F near[nurses_station] & G !near[side_room_1] & G !near[side_room_3]'),
+    # "X um no not X VERB at Y", spoken with no commas: the step said again replaces it (refused)
+    ('fly to the staff car park then land at the mortuary um no not the mortuary land at the pharmacy '
+     'loading dock',
+     'F (near[staff_car_park] & F near[pharmacy_loading_dock])'),
+    ('go to the den no not the den go to the hall',
+     'F near[hall]'),
 ]
 
 

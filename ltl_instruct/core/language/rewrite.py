@@ -1097,9 +1097,26 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                             said[-n + 1] in ('that', 'this') for n in range(2, 5)):
             t = ','   # "disregard that restriction; visit it twice": what replaces it follows
         said.append(t)
-        if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and tokens[k - 1] in PUNCT:
-            said.append(',')   # ", no not the couch, the armchair": "no" then what it corrects
-    return _apply_corrections(_retract_all(said, notes), notes)
+        if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and (
+                tokens[k - 1] in PUNCT or tokens[k - 1] in chatter.HESITATIONS or
+                tokens[k + 2:k + 3] == ['the']):
+            # ", no not the couch, the armchair": "no" then what it corrects (spoken: "the den no not the
+            # den")
+            if said[-2] not in PUNCT and said[-2] not in chatter.HESITATIONS:
+                said.insert(len(said) - 1, ',')
+            said.append(',')
+    return _apply_corrections(_retract_all(_not_then_verb(said), notes), notes)
+
+
+def _not_then_verb(tokens: list[str]) -> list[str]:
+    """'land at the mortuary um no not the mortuary land at the dock': a comma before the step said again."""
+    for i in range(len(tokens) - 4):
+        if tokens[i:i + 3] == ['no', ',', 'not'] and i + 3 < len(tokens) and tokens[i + 3] in DETERMINERS:
+            v = next((v for v in range(i + 5, min(len(tokens) - 1, i + 10)) if tokens[v] in _VERBS), 0)
+            np = PhraseParser().parse(tokens[:v], i + 3) if v else None
+            if np is not None and np.end == v and tokens[v - 1] not in PUNCT:
+                return tokens[:v] + [','] + tokens[v:]
+    return tokens
 
 
 # What "all that was said" is called in a retraction ("ignore all of that", "forget everything I said").

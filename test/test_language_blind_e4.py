@@ -263,6 +263,10 @@ BLIND_ROUND_E4 = [
      'F (near[staff_car_park] & F near[pharmacy_loading_dock])'),
     ('go to the den no not the den go to the hall',
      'F near[hall]'),
+    # "but if you go to X go to Y first" spoken without a comma binds the choice of X (Y was visited after
+    # X, silently)
+    ('go to side room 1 or side room 2 but if you go to side room 2 go to the PPE station first',
+     'F near[side_room_1] | (F near[side_room_2] & (!near[side_room_2] U near[ppe_station]))'),
 ]
 
 

@@ -539,6 +539,14 @@ RULES: tuple[Rule, ...] = (
     Rule('your task is to go there',
          r'\b(?:you are required to|your task is to|your job is to|your goal is to|you are supposed to|'
          r'you are expected to)\b', 'you must'),
+    # "but if you go to side room 2 go to the PPE station first": spoken, the condition ends at the
+    # command's verb
+    Rule('if you go to side room 2 go to the station first',
+         rf'\b(?P<c>(?:if|should|when|in case) you (?:go to|go into|go in|visit|choose|pick|enter|end up at|'
+         rf'end up in|decide on|opt for) (?:the |my |your |our )?{_W}(?: {_W}){{0,4}}?) '
+         r'(?=(?:go|head|visit|stop|check|keep|stay|avoid|do not|never|you must|you have to|make sure|swing|'
+         r'pop)\b)',
+         r'\g<c> , '),
     # "go to the freezer room, and from there continue to bench 4": then to it
     Rule('and from there continue to bench 4',
          r'(?:, )?(?:and )?from there(?: ,)? (?:continue|carry on|proceed|go|head|move|fly|go on|move on)'

@@ -267,6 +267,10 @@ BLIND_ROUND_E4 = [
     # X, silently)
     ('go to side room 1 or side room 2 but if you go to side room 2 go to the PPE station first',
      'F near[side_room_1] | (F near[side_room_2] & (!near[side_room_2] U near[ppe_station]))'),
+    # a statement with a plural subject and its verb after the request is no place to go ("repeated door
+    # openings disturb the temperature" had made the temperature a goal, silently)
+    ('Enter the cold room at most once; repeated door openings disturb the temperature.',
+     '!near[cold_room] W (near[cold_room] & (near[cold_room] W G !near[cold_room]))'),
 ]
 
 

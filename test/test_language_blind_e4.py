@@ -271,6 +271,11 @@ BLIND_ROUND_E4 = [
     # openings disturb the temperature" had made the temperature a goal, silently)
     ('Enter the cold room at most once; repeated door openings disturb the temperature.',
      '!near[cold_room] W (near[cold_room] & (near[cold_room] W G !near[cold_room]))'),
+    # a reason that says how a thing is with "not" ("the autoclave is not running, so only X needs to be
+    # avoided"): no rule, the correction after it is read (it was dropped with it: both stayed avoided)
+    ('Go to the wash room, and avoid the steam generator and the autoclave. On second thought, the autoclave '
+     'is not running, so only the steam generator needs to be avoided.',
+     'F near[wash_room] & G !near[steam_generator]'),
 ]
 
 

@@ -1994,6 +1994,14 @@ def _scope_corrected(prev: list[str], seg: list[str], notes: list[str]) -> Optio
     return prev[:p] + seg[k:new_np.end] + prev[old.end:]
 
 
+def _without_state_not(words: list[str]) -> list[str]:
+    """Words without a "not" that says how a thing is ("the autoclave is not running"), no rule."""
+    return [w for k, w in enumerate(words) if not (
+        w == 'not' and 0 < k < len(words) - 1 and words[k - 1] in ('is', 'are', 'was', 'were') and
+        (words[k + 1].endswith('ing') and words[k + 1] not in ('going', 'coming', 'visiting', 'entering') or
+         words[k + 1] in chatter.STATES))]
+
+
 def _cancel_then_only(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Keep one of a choice: 'A or B. Actually, disregard the south one: the north loading door only'."""
     words = list(seg[1:] if seg[:1] == [','] else seg)
@@ -2117,9 +2125,10 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 seg, stripped = (['just'] if lead[0] == 'just' else []) + seg[len(lead):], True
         cut = seg.index(',') if ',' in seg else -1
         go = cut + 1 + (seg[cut + 1:cut + 2] == ['so'])
+        said = _without_state_not(seg[:cut]) if cut > 2 else []
         if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do', 'only') or seg[go] in _VERBS) and \
-                chatter.is_statement(seg[:cut], _np_end(seg[:cut])) and \
-                not chatter.carries_constraint(seg[:cut]) and \
+                chatter.is_statement(said, _np_end(said)) and \
+                not chatter.carries_constraint(said) and \
                 (not {sp.head for sp in _np_spans(seg[:cut])} & {sp.head for sp in _np_spans(prev)} or
                  _said_replaced(seg[go:]) or seg[go] in ('just', 'only') and 'avoid' in prev):
             # "actually it's chucking it down, just go to the conservatory": the reason asks for nothing

@@ -276,6 +276,20 @@ BLIND_ROUND_E4 = [
     ('Go to the wash room, and avoid the steam generator and the autoclave. On second thought, the autoclave '
      'is not running, so only the steam generator needs to be avoided.',
      'F near[wash_room] & G !near[steam_generator]'),
+    # a labelled place before a bound or a count ("bay 6 more than the one time", "bay 2 the once": "2
+    # the" was read as "to the"; "bay 3 actually skip bay 3" spoken without a comma) (all refused)
+    ('bring the clean sheets to bay 6 and dont go into bay 6 more than the one time',
+     'F (near[clean_sheets] & F (pick[clean_sheets] & F (near[bay_6] & F release[clean_sheets, bay_6]))) & '
+     '(!near[bay_6] W (near[bay_6] & (near[bay_6] W G !near[bay_6])))'),
+    ('do not go into bay 6 more than twice',
+     '!near[bay_6] W (near[bay_6] & (near[bay_6] W (!near[bay_6] & (!near[bay_6] W (near[bay_6] & '
+     '(near[bay_6] W G !near[bay_6]))))))'),
+    ('go to bay 1 then bay 2 then bay 3 actually skip bay 3 and do the day room instead oh and only go in '
+     'bay 2 the once',
+     'F (near[bay_1] & F (near[bay_2] & F near[day_room])) & (!near[bay_2] U (near[bay_2] & (near[bay_2] W '
+     'G !near[bay_2])))'),
+    ('take the towels 2 the cart',
+     'F (near[towels] & F (pick[towels] & F (near[cart] & F release[towels, cart])))'),
 ]
 
 

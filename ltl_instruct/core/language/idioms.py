@@ -1735,8 +1735,10 @@ RULES: tuple[Rule, ...] = (
          r'\bthere (?:should|must|might|may|could|will) be\b',
          'there is'),
     Rule('stop there only the one time: exactly once',
-         r'\b(?:only )?(?:the one time|a single trip|one single trip)\b',
-         'exactly once'),
+         r'\b(?P<m>more than |no more than |not more than )?(?:only )?(?:the one time|a single trip|'
+         r'one single trip)\b',
+         # ("not more than the one time": a bound, once)
+         lambda m: f'{m.group("m")}once' if m.group('m') else 'exactly once'),
     Rule('do not go into the laundry room a second time: at most once',
          rf'\bdo not (?:go|come) (?:into|to|in|back to|back into) (?P<x>(?:the|my|your|'
          rf'our) {_THING}) a second time'

@@ -55,7 +55,7 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
     never_all as _never, render, until_avoid as _until_avoid,
 )
 from ltl_instruct.core.language.text import (
-    NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, join_compounds, separate_labels, tokenize,
+    LABEL_HEADS, NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, join_compounds, separate_labels, tokenize,
 )
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
@@ -567,11 +567,6 @@ def _proper_names(instruction: str) -> frozenset[str]:
 
 # Numbers that speech recognition writes as words that sound like them ("bay for", "side room to").
 _HEARD_NUMBERS = {'for': '4', 'to': '2'}   # (not "too": "the bed too" is also the bed)
-# Places that are told apart by a number ("bay 4", "bed 11", "side room 2", "dock 3").
-_LABEL_HEADS = frozenset('''
-bay bed room ward dock gate bench aisle level theatre bin zone area table desk locker shelf rack pod cubicle
-booth pen stall platform lane lift wing block suite unit cell cabin cot stand bank lab station berth
-'''.split())
 # What may follow a number heard as a word: the end of its phrase, not the object "for" or "to" would take.
 _AFTER_HEARD_NUMBER = frozenset({'and', 'then', 'or', 'please', 'first', 'next', 'instead', 'at', 'okay',
                                  'ok',
@@ -592,7 +587,7 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
             out[k] = 'then'   # "the rose bed, than the pond": no comparison before it
             notes.append('read "than" as "then"')
             continue
-        if w in _HEARD_NUMBERS and 0 < k and tokens[k - 1] in _LABEL_HEADS and (
+        if w in _HEARD_NUMBERS and 0 < k and tokens[k - 1] in LABEL_HEADS and (
                 k + 1 == len(tokens) or tokens[k + 1] in PUNCT or tokens[k + 1] in _AFTER_HEARD_NUMBER):
             # "then bay for and keep clear", "take the commode to bed for please": speech recognition
             # wrote the label's number as the word that sounds like it (nothing follows "for" or "to")

@@ -276,7 +276,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     if have_name and w in _VERBS_AFTER_PERSON and (i == 1 or i > 1 and tokens[i - 2] in DETERMINERS | {','}):
         return False   # "the boss wants no robots in the lobby", "Marco gets chatty": a verb, not a name
     if w in NUMBER_WORDS or w.isdigit():
-        return have_name and nxt not in ('times', 'more', 'separate')
+        # ("bay 6 more than once": the label, then the bound; "the hall 3 more times" is a count)
+        return have_name and nxt not in ('times', 'separate') and (
+            nxt != 'more' or tokens[i + 2:i + 3] == ['than'])
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \
             nxt not in NUMBER_WORDS and nxt not in ('ones', 'one'):
         return True   # "the other desk"

@@ -1087,8 +1087,9 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             continue
         if t == 'disregard':
             t = 'ignore'   # "disregard the south one": a retraction, read as "ignore" is
-        if t == 'actually' and tokens[k + 1:k + 2] in (['just'], ['only']) and said and \
-                said[-1] not in PUNCT and 'or' in said:
+        if t == 'actually' and said and said[-1] not in PUNCT and (
+                tokens[k + 1:k + 2] in (['just'], ['only']) and 'or' in said or
+                tokens[k + 1:k + 2] in (['skip'], ['forget'], ['scratch'], ['ignore'], ['disregard'])):
             said.append(',')   # "the day room or the ward kitchen actually just the kitchen": spoken
         if t == 'please' and tokens[k + 1:k + 2] and tokens[k + 1] in _RETRACT_VERBS and (
                 k == 0 or tokens[k - 1] in PUNCT):

@@ -69,6 +69,11 @@ TYPOS: dict[str, str] = {
     'fl': 'floor', 'flr': 'floor', 'bldg': 'building', 'dept': 'department', 'mgr': 'manager',
     'rms': 'rooms', 'ppl': 'people',
 }
+# Places that are told apart by a number ("bay 4", "bed 11", "side room 2", "dock 3").
+LABEL_HEADS = frozenset('''
+bay bed room ward dock gate bench aisle level theatre bin zone area table desk locker shelf rack pod cubicle
+booth pen stall platform lane lift wing block suite unit cell cabin cot stand bank lab station berth
+'''.split())
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
 # "on your wat to the dining room": a slip in "on your way to" (one letter, a word of its own)
@@ -308,7 +313,9 @@ def tokenize(text: str) -> list[str]:
         s = re.sub(r'\b(to|at|into|outside|from) (\d{3})\b(?! ?(?:times|meters|metres|m|cm|feet|ft|percent|%|'
                    r'degrees|am|pm|hours|minutes|seconds|kg|km|miles)\b)', r'\1 room \2', s)
     if ' 2 ' in s:   # "go 2 the break room", "the towels 2 the cart": chat spelling of "to" before a place
-        s = re.sub(r'(?<=[a-z]) 2 (?=(?:the|my|our|your|this|that|either|both)\b)', ' to ', s)
+        # (not after a place told apart by its number: "only go in bay 2 the once")
+        s = re.sub(r'\b(?P<w>[a-z]+) 2 (?=(?:the|my|our|your|this|that|either|both)\b)',
+                   lambda m: m.group(0) if m.group('w') in LABEL_HEADS else f'{m.group("w")} to ', s)
         s = re.sub(r'\b(go|head|come|get|walk|drive|fly|run|move|back|over|down|up|way|next|close) 2 '
                    r'(?=(?:a|an)\b)', r'\1 to ', s)
     if ' need' in s:   # "the barn and the trough need checking", "... need a visit": check them

@@ -290,6 +290,11 @@ BLIND_ROUND_E4 = [
      'G !near[bay_2])))'),
     ('take the towels 2 the cart',
      'F (near[towels] & F (pick[towels] & F (near[cart] & F release[towels, cart])))'),
+    # "only one of them though not both" is exclusive; "go over their" is "there" (both refused)
+    ('go to the sluice room or the dirty utility only one of them though not both',
+     '(F near[sluice_room] & G !near[dirty_utility]) | (F near[dirty_utility] & G !near[sluice_room])'),
+    ('the blood gas machine uh go over their',
+     'F near[blood_gas_machine]'),
 ]
 
 

@@ -547,6 +547,11 @@ RULES: tuple[Rule, ...] = (
          r'(?=(?:go|head|visit|stop|check|keep|stay|avoid|do not|never|you must|you have to|make sure|swing|'
          r'pop)\b)',
          r'\g<c> , '),
+    # "the sluice room or the dirty utility only one of them though not both": but not both
+    Rule('only one of them though not both',
+         r'(?:, )?\b(?:but )?(?:only |just )?one of (?:them|the two)(?: ,)?(?: though| mind| please)?(?: ,)? '
+         r'(?:but )?not both\b',
+         ' but not both'),
     # "go to the freezer room, and from there continue to bench 4": then to it
     Rule('and from there continue to bench 4',
          r'(?:, )?(?:and )?from there(?: ,)? (?:continue|carry on|proceed|go|head|move|fly|go on|move on)'

@@ -336,6 +336,9 @@ def tokenize(text: str) -> list[str]:
         s = _FORM_RE.sub(r'\1 from', s)
     if ' w' in s:
         s = _WAY_RE.sub(r'\1way', s)
+    if 'their' in s:   # "go over their": "their" ends no phrase, "there" does (a homophone)
+        s = re.sub(r'\b(over|in|out|up|down|back|go|get|stay|wait|it|them) their'
+                   r'(?=\s*(?:[,.;:!?]|$|and\b|then\b|please\b|now\b|first\b))', r'\1 there', s)
     if 'at lease ' in s:   # "at lease twice": speech recognition's "at least"
         s = re.sub(r'\bat lease (?=once|twice|thrice|\w+ times)', 'at least ', s)
     if re.search(r'\d+s ', s):   # "bay 4s fine": "bay 4's fine", the apostrophe lost (a label is no plural)

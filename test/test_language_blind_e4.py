@@ -295,6 +295,12 @@ BLIND_ROUND_E4 = [
      '(F near[sluice_room] & G !near[dirty_utility]) | (F near[dirty_utility] & G !near[sluice_room])'),
     ('the blood gas machine uh go over their',
      'F near[blood_gas_machine]'),
+    # laboratory words are words, not slips ("argon" was read as "aragon")
+    ('Under no circumstances should you go near the cryogenic storage tanks or the argon manifold today.',
+     'G !near[cryogenic_storage_tanks] & G !near[argon_manifold]'),
+    ('Of the argon tank, the CO2 incubator and the nitrogen generator, avoid the first entirely and visit '
+     'the remaining two in reverse order.',
+     'F (near[nitrogen_generator] & F near[co2_incubator]) & G !near[argon_tank]'),
 ]
 
 

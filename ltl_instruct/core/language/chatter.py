@@ -122,6 +122,9 @@ _SIGNALS: tuple[tuple[str, ...], ...] = tuple(
 # Courtesy and time-of-day phrases that end a clause and ask for nothing.
 COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('for', 'me'), ('for', 'us'), ('real', 'quick'), ('quick',), ('asap',), ('as', 'soon', 'as', 'possible'),
+    # formal haste and timing ("Proceed to X without delay, please", "At this time, I would like you to ...")
+    ('without', 'delay'), ('without', 'further', 'delay'), ('at', 'this', 'time'),
+    ('at', 'your', 'earliest', 'convenience'),
     ('if', 'you', 'can'), ('if', 'you', 'could'), ('if', 'possible'), ('if', 'you', 'would'),
     ('when', 'you', 'get', 'a', 'chance'), ('when', 'you', 'can'), ('when', 'you', 'have', 'a', 'moment'),
     ('this', 'evening'), ('this', 'morning'), ('this', 'afternoon'), ('tonight',), ('today',),
@@ -228,7 +231,8 @@ LEADS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('by', 'the', 'end', 'of', 'the', 'day'), ('before', 'the', 'end', 'of', 'the', 'shift'),
     ('fyi',), ('just', 'so', 'you', 'know'), ('busy', 'morning'), ('busy', 'day'), ('long', 'day'),
     ('busy', 'afternoon'), ('hectic', 'morning'), ('crazy', 'day'), ('busy', 'night'), ('so', 'you', 'know'),
-    ('by', 'the', 'way'), ('btw',),
+    ('by', 'the', 'way'), ('btw',), ('at', 'this', 'time'), ('at', 'this', 'point'), ('at', 'present'),
+    ('however',),
     ('heads', 'up'), ('just', 'a', 'heads', 'up'), ('for', 'your', 'information'), ('as', 'you', 'know'),
     ('listen',), ('look',), ('hey', 'there'), ('quick', 'one'), ('quick', 'favour'), ('quick', 'favor'),
     ('one', 'more', 'thing'), ('oh', 'and'), ('also', 'fyi'), ('for', 'the', 'record'), ('well',),
@@ -295,6 +299,9 @@ FRAMES: tuple[tuple[re.Pattern[str], str], ...] = tuple((re.compile(p), r) for p
     (r'(^ | [,.;!?] )(?:i|we) (?:would|will|d) (?:love|like|appreciate|prefer) it if you '
      r'(?:could|would|can|will) ',
      r'\1 '),
+    # "I would ask that you stay away from X", "I must insist that you ...": a formal request
+    (r'(^ | [,.;!?] )(?:i|we) (?:would |must |have to |do |will )?(?:ask|request|insist|require) '
+     r'(?:that |of you that )?you (?:please )?', r'\1 '),
     (r'(^ | [,.;!?] )let (?:us )?(?=(?:go|visit|head|move|drive|fly|walk|check|bring|take|swing|stop|pop|'
      r'get) )', r'\1 '),
     (r'(^ | [,.;!?] )i am not (?:sure|certain) (?:where|if|whether|what|which|how) [^,.;!?]*(?:, )?', r'\1 '),
@@ -1201,8 +1208,10 @@ _REMARK_RE = re.compile(
     r'(?: which| either way| (?:about )?(?:what|which|the) order)?'
     r'(?: (?:one|option|way|route))?(?: you (?:go for|pick|choose|take|use|do))?'
     r'|take (?:your|as much) time(?: (?:as you need|about it|with it))?'
-    r'|(?:both|either|either one|either of them|both of them|any of them|any) (?:is|are|would be|will be) '
-    r'(?:fine|ok|okay|good|alright|great)(?: (?:by|with|for) me)?'
+    r'|(?:both|either|either one|either of them|both of them|any of them|any)'
+    r'(?: (?:location|place|option|destination|room|spot|route|way))? (?:is|are|would be|will be) '
+    r'(?:(?:perfectly|equally|entirely) )?(?:fine|ok|okay|good|alright|great|acceptable)'
+    r'(?: (?:by|with|for|to) me| for (?:this|the) (?:test|run|task|job|trial|exercise))?'
     r'|(?:(?:i |we )?(?:am|are) )?(?:fine|happy|ok|okay) with (?:either|both|any|whichever)(?: \w+)?'
     r'(?: (?:is|are|s) (?:less |more |the )?\w+(?: to \w+)?)?'
     r'|whichever(?: \w+)? (?:is|are|s|one is) (?:less |more |the )?\w+(?: (?:to \w+|for you|to you))?'

@@ -44,6 +44,12 @@ _NO_PLACE = frozenset({'everyone', 'everybody', 'someone', 'somebody', 'anyone',
                        'anything', 'everything', 'nothing', 'way', 'time', 'moment', 'while', 'bit', 'best'})
 
 
+# Words in -s before a verb that are no plural subject ("it is", "this", "always").
+_NOT_SUBJECTS = frozenset({'is', 'was', 'has', 'does', 'its', 'this', 'his', 'us', 'always', 'perhaps',
+                           'thus', 'plus', 'as', 'yes', 'less', 'unless', 'across', 'towards', 'afterwards',
+                           'besides'})
+
+
 @dataclass(frozen=True)
 class Unread:
     """A clause the rules could not read, and what the translator did with it.
@@ -96,6 +102,9 @@ def salvage_places(words: Sequence[str], parser: PhraseParser) -> Optional[int]:
                 i > 0 and words[i - 1] in _PLACE_LEADS and is_name_word(words, i, False)) or \
                 words[i] in _NO_PLACE or words[i + 1:i + 2] and words[i + 1] in _NO_PLACE:
             continue
+        if i >= 3 and words[i - 1] not in _PLACE_LEADS and words[i - 2].endswith('s') and \
+                words[i - 2] not in _NOT_SUBJECTS:
+            return None   # "repeated door openings disturb the temperature": a subject and its verb
         nps, _, end = parser.parse_list(words, i)
         if nps and end == len(words) and not any(np.pronoun for np in nps):
             return i

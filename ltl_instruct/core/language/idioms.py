@@ -494,8 +494,9 @@ RULES: tuple[Rule, ...] = (
          rf'|take|carry) '
          r'(?:them|it)(?: both| all| over)? (?:in|there|over|along)\b', r'bring \g<y> to \g<x>'),
     Rule('the first two belong in the drawer, put them away',
-         rf'(?P<x>the {_NPS}) (?:belong|belongs|go|goes) (?P<p>in|on|into|back in|back on|back into) '
-         rf'(?P<y>the {_NP}) , (?:please )?(?:put|take) (?:them|it|the [^,.;!?]+?) (?:away|there|back)\b',
+         rf'(?P<x>the {_NPS})(?: both| all)? (?:belong|belongs|go|goes) (?P<p>in|on|into|back in|back on|'
+         rf'back into) (?P<y>the {_NP}) [,;.] (?:please )?(?:put|take|bring) (?:them|it|the [^,.;!?]+?) '
+         r'(?:away|there|back|over)\b',
          r'put \g<x> \g<p> \g<y>'),
     Rule('some boxes got stacked behind the desk, go to them',
          rf'^(?:some |the |a |an |my |her |his |their |our |your )?(?P<x>{_W}(?: {_W}){{0,3}}?) (?:that )?'
@@ -538,6 +539,43 @@ RULES: tuple[Rule, ...] = (
     Rule('your task is to go there',
          r'\b(?:you are required to|your task is to|your job is to|your goal is to|you are supposed to|'
          r'you are expected to)\b', 'you must'),
+    # "but if you go to side room 2 go to the PPE station first": spoken, the condition ends at the
+    # command's verb
+    Rule('if you go to side room 2 go to the station first',
+         rf'\b(?P<c>(?:if|should|when|in case) you (?:go to|go into|go in|visit|choose|pick|enter|end up at|'
+         rf'end up in|decide on|opt for) (?:the |my |your |our )?{_W}(?: {_W}){{0,4}}?) '
+         r'(?=(?:go|head|visit|stop|check|keep|stay|avoid|do not|never|you must|you have to|make sure|swing|'
+         r'pop)\b)',
+         r'\g<c> , '),
+    # "the sluice room or the dirty utility only one of them though not both": but not both
+    Rule('only one of them though not both',
+         r'(?:, )?\b(?:but )?(?:only |just )?one of (?:them|the two)(?: ,)?(?: though| mind| please)?(?: ,)? '
+         r'(?:but )?not both\b',
+         ' but not both'),
+    # "go to the freezer room, and from there continue to bench 4": then to it
+    Rule('and from there continue to bench 4',
+         r'(?:, )?(?:and )?from there(?: ,)? (?:continue|carry on|proceed|go|head|move|fly|go on|move on)'
+         r'(?: on| onward| onwards)? (?=to )',
+         ' , then go '),
+    # "bring only the latter to the fume hood": the one thing delivered, no rule of its own
+    Rule('bring only the flask to the hood',
+         r'\b(?P<v>bring|take|carry|move|put|deliver|return) (?:only|just) (?=(?:the|my|your|our|a|an) )',
+         r'\g<v> '),
+    # formal orders: "You are not to go near X until ...", "you are to approach X exactly once", with an
+    # aside between ("You are not, however, to collect it before ...")
+    Rule('you are not, however, to collect it',
+         r'\b(?:you are not|you must not|you cannot|do not) , (?:(?:however|though|of course|therefore|'
+         r'also|in any case|at any point) , )?(?:to )?(?=[a-z])', 'do not '),
+    Rule('you are not to go near X', r'\byou are not to\b', 'do not'),
+    Rule('you are to approach X exactly once',
+         r'\byou are (?:(?:therefore|also|now|then) )?to (?=(?:go|visit|approach|enter|avoid|stay|keep|bring|'
+         r'take|return|proceed|head|fly|wait|remain|check|collect|put|move|carry|deliver|land|finish|end|'
+         r'pass|leave|inspect|survey|stop|call|swing|pop)\b)', 'you must '),
+    # "at no point during this task are you to go near X": never
+    Rule('never during this task are you to go near X',
+         r'\bnever (?:(?:during|throughout|in|on|for) (?:this|the|your) (?:task|mission|flight|run|job|trip|'
+         r'shift|visit|errand) (?:,? )?)?(?:are you to|may you|should you|must you|can you|will you|'
+         r'shall you|do you|are you allowed to|are you permitted to) ', 'never '),
     Rule('you cannot finish the task without visiting X',
          rf'\b(?:you cannot|you can not|you must not|do not) (?:complete|finish|end) '
          rf'(?:the task |the mission |your task )?without (?P<verb>{_GOING})\b',
@@ -574,7 +612,9 @@ RULES: tuple[Rule, ...] = (
     # task; what is said before it holds for the whole run
     Rule('stay at the door until I tell you otherwise',
          r'(?: ,)? (?:until|unless) (?:(?:i|we) (?:tell|say|call|radio|signal|let) (?:you )?(?:otherwise|'
-         r'differently|so|know)|further notice|told otherwise|you are told otherwise|you hear otherwise)\b',
+         r'differently|so|know)|further (?:notice|instruction|instructions|orders)|(?:you are |you get )?'
+         r'(?:told|instructed) otherwise|you hear otherwise|(?:you are |you get )?(?:told|instructed) to '
+         r'move)\b',
          ''),
     Rule('survey the whole array: the array',
          r'\b(?P<v>survey|inspect|cover|scan|search|check|patrol|sweep|map|photograph|visit|over|around|'
@@ -829,9 +869,15 @@ RULES: tuple[Rule, ...] = (
     # ---- passive goals and avoidances
     Rule('the shed must be visited',
          rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?P<aux>{_PASSIVE}) '
-         rf'(?:all |both |each )?(?:visited|reached|entered)(?= |$)',
+         rf'(?:all |both |each )?(?:visited|reached|entered|checked on|checked|inspected|looked at)(?= |$)',
          lambda m: f'{m.group("pre")}{"" if m.group("aux") in _PLAIN_AUX else "you must "}visit '
                    f'{m.group("x")}'),
+    # "Both the freezer farm and the chemical store require a visit today": visit them
+    Rule('the shed requires a visit',
+         rf'(?P<pre>^|, )(?P<x>(?:both )?(?:the|my|your|our) {_NPS}) (?:each |both |all )?'
+         r'(?:require|requires|need|needs|want|wants|deserve|deserves) (?:a visit|visiting|a check|checking|'
+         r'a look|inspecting|an inspection)(?= |$)',
+         r'\g<pre>visit \g<x>'),
     Rule('the shed must be avoided',
          rf'(?P<pre>^|, |\bsure (?:that )?|\bensure (?:that )?)(?P<x>{_NPS}) (?:always )?{_PASSIVE} '
          rf'(?:always )?avoided(?= |$)', r'\g<pre>avoid \g<x>'),
@@ -1703,8 +1749,10 @@ RULES: tuple[Rule, ...] = (
          r'\bthere (?:should|must|might|may|could|will) be\b',
          'there is'),
     Rule('stop there only the one time: exactly once',
-         r'\b(?:only )?(?:the one time|a single trip|one single trip)\b',
-         'exactly once'),
+         r'\b(?P<m>more than |no more than |not more than )?(?:only )?(?:the one time|a single trip|'
+         r'one single trip)\b',
+         # ("not more than the one time": a bound, once)
+         lambda m: f'{m.group("m")}once' if m.group('m') else 'exactly once'),
     Rule('do not go into the laundry room a second time: at most once',
          rf'\bdo not (?:go|come) (?:into|to|in|back to|back into) (?P<x>(?:the|my|your|'
          rf'our) {_THING}) a second time'

@@ -220,4 +220,4 @@ STAY_BY_FIRST_WORD = by_first_word(STAY_WITHIN)
 CLAUSE_OPENING_WORDS = STRONG_VERBS | {
     'only', 'then', 'and', ',', 'after', 'finally', 'afterwards', 'afterward', 'lastly', 'once', 'when',
     'before', 'always', 'do', 'never', 'ensure', 'make', 'you', 'not', 'leave', 'but', 'so', 'while', 'or',
-    ':', ';'}   # ":" as in "be careful: never...", "Rover: head to..."
+    ':', ';', 'just'}   # ":" as in "be careful: never...", "Rover: head to..."

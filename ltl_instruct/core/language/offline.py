@@ -55,7 +55,7 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
     never_all as _never, render, until_avoid as _until_avoid,
 )
 from ltl_instruct.core.language.text import (
-    NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, join_compounds, tokenize,
+    LABEL_HEADS, NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, join_compounds, separate_labels, tokenize,
 )
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
@@ -201,7 +201,8 @@ class OfflineTranslator:
 
     def _prepare(self, instruction: str, notes: list[str]) -> list[str]:
         """Tokens of the instruction with typos, chatter, list references and corrections resolved."""
-        tokens = join_compounds(expand_labels(tokenize(chatter.strip_parentheticals(instruction, notes))))
+        tokens = separate_labels(join_compounds(expand_labels(tokenize(
+            chatter.strip_parentheticals(instruction, notes)))))
         if not any(t not in PUNCT for t in tokens):
             raise TranslationError('the instruction is empty', ErrorCode.INVALID_INPUT)
         tokens = _correct_spelling(tokens, notes, self.landmarks, _proper_names(instruction))
@@ -273,6 +274,13 @@ _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'e
 # What keeps a person busy ("dad's on a call"): a reason, not a place.
 _BUSY = frozenset({'call', 'phone', 'meeting', 'break', 'nap', 'shift', 'zoom', 'computer', 'asleep', 'busy',
                    'working', 'napping', 'sleeping', 'resting', 'studying', 'cooking', 'lunch', 'dinner'})
+# Verbs of a flight's legs, where a spoken leg starts ("take off from the pad hover over X").
+_FLIGHT_VERBS = frozenset({'hover', 'fly', 'land', 'circle', 'head', 'go', 'proceed', 'climb', 'descend',
+                           'survey', 'inspect', 'orbit', 'then'})
+# "the order is at your discretion", "the order is your call": the goals in any order
+_ORDER_FREE_RE = re.compile(r'^(?:the )?(?:order|sequence) (?:is|can be) (?:entirely |completely )?'
+                            r'(?:up to you|at your discretion|(?:your|the robot s) (?:call|choice|decision)|'
+                            r'yours to (?:choose|decide|pick)|flexible|not important|unimportant)$')
 # "for the whole time": how long a rule holds, said after it; the rule holds throughout anyway.
 _WHOLE_TIME: tuple[tuple[str, ...], ...] = (
     ('the', 'whole', 'time'), ('the', 'entire', 'time'), ('at', 'all', 'times'), ('all', 'the', 'time'),
@@ -420,9 +428,10 @@ _MOODS = frozenset({'mood', 'moods', 'temper', 'huff', 'strop', 'sulk', 'funk', 
 # Words after "is/are" that say where something is ("they are next to the door"), not why.
 _PLACE_PREPS = chatter.PREPOSITIONS | {'next', 'above', 'below'}
 # Verbs that never mean going to the thing named ("skip the hall", "ignore the bin").
-NEGATIVE_VERBS = frozenset({'ignore', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade', 'miss', 'exit',
-                            'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee', 'circumvent', 'spare',
-                            'leave', 'drop', 'scratch', 'lose', 'pass', 'release', 'free', 'not'})
+NEGATIVE_VERBS = frozenset({'ignore', 'disregard', 'skip', 'forget', 'omit', 'bypass', 'dodge', 'evade',
+                            'miss', 'exit', 'quit', 'abandon', 'neglect', 'cancel', 'escape', 'flee',
+                            'circumvent', 'spare', 'leave', 'drop', 'scratch', 'lose', 'pass', 'release',
+                            'free', 'not'})
 # Prepositions after a motion verb that still mean going there ("hover above X", drone phrasing).
 MOTION_PREPS = frozenset({'above', 'below', 'beneath', 'under', 'beside', 'near', 'alongside', 'atop',
                           'across', 'along', 'outside', 'upon'})
@@ -556,6 +565,14 @@ def _proper_names(instruction: str) -> frozenset[str]:
     return frozenset(m.group(0).lower() for m in _PROPER_RE.finditer(instruction))
 
 
+# Numbers that speech recognition writes as words that sound like them ("bay for", "side room to").
+_HEARD_NUMBERS = {'for': '4', 'to': '2'}   # (not "too": "the bed too" is also the bed)
+# What may follow a number heard as a word: the end of its phrase, not the object "for" or "to" would take.
+_AFTER_HEARD_NUMBER = frozenset({'and', 'then', 'or', 'please', 'first', 'next', 'instead', 'at', 'okay',
+                                 'ok',
+                                 'as', 'again', 'but', 'after', 'before', 'last'})
+
+
 def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str],
                       names: frozenset[str] = frozenset()) -> list[str]:
     """Correct typing slips in words the rules do not know; each correction is noted."""
@@ -569,6 +586,13 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
         if w == 'than' and (k == 0 or tokens[k - 1] in PUNCT or tokens[k - 1] in ('and', 'but')):
             out[k] = 'then'   # "the rose bed, than the pond": no comparison before it
             notes.append('read "than" as "then"')
+            continue
+        if w in _HEARD_NUMBERS and 0 < k and tokens[k - 1] in LABEL_HEADS and (
+                k + 1 == len(tokens) or tokens[k + 1] in PUNCT or tokens[k + 1] in _AFTER_HEARD_NUMBER):
+            # "then bay for and keep clear", "take the commode to bed for please": speech recognition
+            # wrote the label's number as the word that sounds like it (nothing follows "for" or "to")
+            out[k] = _HEARD_NUMBERS[w]
+            notes.append(f'read "{tokens[k - 1]} {w}" as "{tokens[k - 1]} {out[k]}"')
             continue
         twin = None
         if w not in known and len(w) >= 4 and w not in speller.words and w not in speller.lexicon:
@@ -737,6 +761,9 @@ class _Reader:
         # "X has to come last" read over goals given as one unordered step: "the other two in any order"
         # after it says that again
         self.others_unordered = False
+        # notes of parts left out at the end of the sentence being read: said after its pronouns, so no
+        # pronoun of that sentence can mean what they name ("set it down there, ..., as they are busy")
+        self.trailing_notes: list[int] = []
 
     # What "it" / "there" point at, and how many notes there were when each was set: a part left out
     # after that which named a thing may be what a later pronoun means ("go to the kitchen, the crew
@@ -762,8 +789,8 @@ class _Reader:
 
         ("left out "the crew waxed the hall"" before "avoid it" read as the kitchen.)
         """
-        for note in self.notes[mark:]:
-            if note.startswith(('left out "', 'could not read "')):
+        for k, note in enumerate(self.notes[mark:], mark):
+            if note.startswith(('left out "', 'could not read "')) and k not in self.trailing_notes:
                 words = note.split('"')[1].split()
                 rel = next((k for k, w in enumerate(words) if k > 0 and w in ('that', 'which', 'who')),
                            len(words))
@@ -792,8 +819,10 @@ class _Reader:
         if out is not sentence or len(sentence) < 6:
             return out
         for k in range(len(sentence) - 3, 2, -1):
-            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she', 'there') and sentence[k + 1] in (
-                    'am', 'is', 'are', 'was', 'were') and sentence[k - 1] not in PUNCT and \
+            if sentence[k] in ('i', 'it', 'we', 'they', 'he', 'she', 'there') and (sentence[k + 1] in (
+                    'am', 'is', 'are', 'was', 'were') or sentence[k] not in ('it', 'there') and
+                    sentence[k + 1] in ('have', 'has', 'had') and sentence[k + 2] not in ('to', 'been')) and \
+                    sentence[k - 1] not in PUNCT and \
                     sentence[k - 1] not in _NO_CUT_BEFORE and sentence[k - 1] not in DETS:
                 cut = self._drop_reason_after_comma(sentence[:k] + [','] + sentence[k:])
                 return sentence if len(cut) == len(sentence) + 1 else cut
@@ -1009,6 +1038,7 @@ class _Reader:
                 [t for t in head if t not in PUNCT]):
             return sentence   # "also, the beehive is off limits": nothing before it to say why for
         said = ' '.join(t for t in sentence[cut + 1:] if t not in PUNCT)
+        self.trailing_notes.append(len(self.notes))
         self.notes.append(f'left out "{said}" (says why, asks for nothing)')
         return head + [t for t in sentence[cut + 1:] if t in '.;!?']
 
@@ -1056,6 +1086,7 @@ class _Reader:
             self.sentence_start = len(self.task.chain)
             while len(sentence) > 1 and sentence[-1] == ',':
                 sentence = sentence[:-1]   # "the fume hood behind the centrifuge, (that's where I need you)"
+            self.trailing_notes = []
             sentence = self._drop_trailing_reason(self._drop_middle_reason(self._drop_summons(sentence)))
             if self._places_only(sentence):
                 # "Garage, please.", "Either the red door or the blue one.": where to go, the verb left out
@@ -1766,6 +1797,8 @@ class _Reader:
             return nxt in AVOID_FILLER or nxt in GOAL_VERBS
         if tokens[i] == 'not':
             return nxt == 'to'   # "visit a not to visit b before a not to visit c before b"
+        if tokens[i] == 'just':
+            return nxt in GOAL_VERBS and nxt != 'be'   # "don't go near bay 3 just go straight to the desk"
         if tokens[i] == 'leave':
             return nxt in ('and', 'then', ',', 'it', 'there')   # "go to a leave and then come back"
         if tokens[i] in ('ensure', 'make'):
@@ -1851,7 +1884,8 @@ class _Reader:
                                                 'order does not matter', 'the order is up to you',
                                                 'the order is not important', 'order is up to you',
                                                 'in whatever order', 'whatever order', 'any order works'))
-                                  or s in ('the order is yours', 'you choose the order', 'pick the order')):
+                                  or s in ('the order is yours', 'you choose the order', 'pick the order')
+                                  or _ORDER_FREE_RE.match(s)):
             self._any_order()   # "go to a, then b; any order works": the goals in any order
             return scope
         fine = (' is fine', ' is okay', ' are fine', ' is ok', ' will do', ' works', ' is good')
@@ -3958,6 +3992,15 @@ class _Reader:
             # "get rid of the wrapper? just throw it out": the same delivery said again
             self.notes.append(f'"{" ".join(tokens)}": the delivery of {objs[0].descriptor} said again')
             return True
+        if tokens[k:k + 1] == ['them'] and last is not None and last.kind == 'all' and all(
+                len(c) == 1 and c[0].kind == 'deliver' and (c[0].dests == dest_ds or not dest_ds and verb in (
+                    'bring', 'take', 'carry')) for c in last.chains) and not [
+                    t for t in rest if t not in PUNCT and t not in ('over', 'along', 'round', 'across')] and \
+                len(self.task.chain) - 1 < self.sentence_start:
+            # "The clipboard and the notebook both belong on the table; please take them there": the
+            # deliveries said before, said again
+            self.notes.append(f'"{" ".join(tokens)}": the deliveries said before, said again')
+            return True
         if implicit_dest is not None and not dests:
             self.notes.append(f'"{verb}" releases the object at the implicit {implicit_dest}')
         if not dest_ds:
@@ -4037,6 +4080,12 @@ class _Reader:
             if tokens[k:k + 1] == ['from']:
                 # "take off from the pad": where the flight starts, not a goal
                 src = self.phrases.parse(tokens, k + 1)
+                verb = next((v for v in range(k + 2, src.end) if tokens[v] in _FLIGHT_VERBS), 0) if src else 0
+                if verb:
+                    # "take off from the pad hover over the entrance": spoken, the next leg starts at its verb
+                    src = self.phrases.parse(tokens[:verb], k + 1)
+                    if src is not None and src.end == verb:
+                        tokens = tokens[:verb] + [','] + tokens[verb:]
                 if src is not None:
                     self.notes.append(f'"{" ".join(tokens[:src.end])}": the start, not a goal')
                     k = src.end

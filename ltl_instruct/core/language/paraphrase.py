@@ -35,6 +35,10 @@ _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |
 # a name of a few words, none of them a connective
 _NAME = r'(?:(?!(?:and|or|then|followed|the)\b)[a-z0-9_]+)(?: (?!(?:and|or|then|followed)\b)[a-z0-9_]+){0,4}'
 
+# a place's name in a route, none of its words a verb of going or a connective
+_ROUTE_NAME = (r'(?:(?!(?:and|or|then|the|go|visit|do|check|hit|to)\b)[a-z0-9_]+)'
+               r'(?: (?!(?:and|or|then|followed|go|visit|do|check|hit|to)\b)[a-z0-9_]+){0,4}')
+
 # a word of a name, none of the words of a clause's frame
 _NOUN = r'(?!(?:is|are|was|were|has|have|had|then|to|go|and|or|not|too|as|it|they|will|can|so)\b)[a-z0-9_]+'
 
@@ -53,6 +57,35 @@ def _named_stand(m: 're.Match[str]') -> bool:
 
 
 _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) for p, r in (
+    # "remain clear of X", "remaining well away from X": stay clear of it
+    (r' remain(?P<g>ing)? (?=(?:well |safely |completely )?(?:clear|away|out|off) )',
+     lambda m: ' staying ' if m.group('g') else ' stay '),
+    # how long the task lasts, said as the span of the run ("for the entire flight", "for the duration of
+    # the task", "throughout the flight", "over the course of the run"): the whole time (after a count, the
+    # visits are counted over the run anyway: left out)
+    # (not "either is fine for this test": the span says how long, "entire", "duration of", "throughout")
+    (r'(?<= )(?P<c>(?:times|twice|once|thrice) )?(?:(?:for|during|throughout|over) (?:the|this|your) '
+     r'(?:(?:entire|whole|full|complete) |(?:duration|course|length) of (?:the|this|your) )|throughout '
+     r'(?:the|this|your) )'
+     r'(?:[a-z]+ )?(?:flight|task|mission|run|trip|job|operation|procedure|test|session|visit|shift|errand)'
+     r'(?= [,.;!?] | ?$)',
+     lambda m: m.group('c') or 'the whole time'),
+    # "either do the lab then the pharmacy or pharmacy then the lab": the two orders of the same two
+    # places, any order (the article may be left out of either saying)
+    (r'(^ | [,.;!?] | and | but )(?:either )?(?:(?P<v>go to|visit|do|check|hit) )?(?:the )?'
+     r'(?P<x>' + _ROUTE_NAME + r') (?:, )?then (?:(?:go to|visit|do|check|hit) )?(?:the )?'
+     r'(?P<y>' + _ROUTE_NAME + r') (?:, )?or (?:(?:go to|visit|do|check|hit) )?(?:the )?(?P=y) '
+     r'(?:, )?then (?:(?:go to|visit|do|check|hit) )?(?:the )?(?P=x)'
+     r'(?= [,.;!?] | ?$| (?:up to you|your (?:call|choice)|whichever|either way|i do not (?:mind|care)|'
+     r'does not matter)\b)',
+     lambda m: (lambda a: f'{m.group(1)}{m.group("v") or "go to"} {a}{m.group("x")} and {a}{m.group("y")} '
+                          'in any order')('the ' if ' the ' in m.group(0) else '')),
+    # "once you are at the gantry, the pit no longer matters": a place said to be fine (not "the order")
+    (r'(?<= )(the|that|this) ((?:(?!order\b|sequence\b|route\b)[a-z0-9_]+ ){0,3}?'
+     r'(?!order\b|sequence\b|route\b|rest\b)[a-z0-9_]+) '
+     r'(?:no longer matters|does not matter(?: any ?more)?|is no longer (?:an issue|a problem|a concern))'
+     r'(?= [,.;!?] |$)',
+     r'\1 \2 is fine'),
     # "the orchard first and then the vineyard, or the other way round": either order
     (r' (?:, )?or (?:the other way (?:round|around)|vice versa|the reverse|the opposite way|the other order)'
      r'(?: if (?:that is|it is) (?:easier|quicker|better|simpler)| if you (?:prefer|like|want))?(?= [,.;!?] '
@@ -183,9 +216,15 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      ' after that '),
     (r' from now on ', ' '),
     (r'(^ | [.;!?] )you (?:may|can|are allowed to|are permitted to|should) only ', r'\1 only '),
-    (r' (?:under no circumstances|on no account|at no point|at no time)'
-     r'(?: should you| must you| are you to)? ',
+    (r' (?:under no circumstances|on no account|at no point|at no time|in neither case|in no case)'
+     r'(?: should you| must you| are you to| may you| can you| shall you)? ',
      ' never '),
+    # "do not, under any circumstances, go near X", "do not under any circumstances go near X"
+    (r' (do not|never|you must not|you should not|you may not) (?:, )?(?:under any circumstances|'
+     r'on any account|for any reason|at any point|at any time)(?: ,)? ',
+     r' \1 '),
+    # "to the glovebox or, alternatively, to the anaerobic chamber": or
+    (r' (or|either) , (?:alternatively|otherwise|if you prefer|failing that) , ', r' \1 '),
     (r' (?:pick|choose|select) (?:either|one of) ', ' go to either '),
     (r' (?:one time|1 time) (?:and one time )?only ', ' exactly once '),
     (r' once only ', ' exactly once '),
@@ -347,6 +386,11 @@ _EXACT_AGAIN_RE = re.compile(
     r' (one|two|three|four|five|six|seven|eight|nine|ten|\d+) times , (?:exactly|precisely) '
     r'(?:one|two|three|four|five|six|seven|eight|nine|ten|\d+|once|twice|thrice)(?: times)?(?= )')
 
+# "exactly once, just the once", "exactly once okay just once": the count said again (with "just"), exactly
+_EXACT_SAID_AGAIN_RE = re.compile(
+    r' (?:exactly|precisely) (once|twice|thrice|(?:one|two|three|four|five|six|\d+) times) (?:[.,;] )?'
+    r'(?:(?:okay|ok|so|yeah|right|yes) (?:[.,;] )?)?(?:just |only )?(?:the )?\1(?: (?:only|please))?(?= )')
+
 _PASS_RE = re.compile(r'(^| )(make|do|take|fly|run|perform|complete|made|done|did|taken|flown|performed|'
                       r'completed|(?:i |we )?(?:want|need)) (one|two|three|four|five|six|seven|'
                       r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
@@ -413,9 +457,24 @@ def _check_there(text: str) -> str:
     return ''.join(out) + text[last:]
 
 
+# "you are not to enter that room before ...": the room named before ("the room" is resolved to it)
+_THAT_PLACE_RE = re.compile(
+    r' (?P<v>enter|visit|approach|avoid|near|into|leave|reach|from|of) (?:that|this) '
+    r'(?=(?P<n>room|place|area|spot|location|lab|laboratory|office|building|zone|corridor|bay|ward|site|'
+    r'station|space|door) )')
+
+
+def _that_place(m: 're.Match[str]') -> str:
+    # (only a kind of place named before: "go to the den. don't enter that room" stays unread)
+    return f' {m.group("v")} the ' if f' {m.group("n")} ' in m.string[:m.start() + 1] else m.group(0)
+
+
 def paraphrase(tokens: list[str]) -> list[str]:
     """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
     text = ' ' + ' '.join(tokens) + ' '
+    if 'that' in tokens or 'this' in tokens:
+        text = _THAT_PLACE_RE.sub(_that_place, text)
+        tokens = text.split()
     if ':' in tokens:
         # "pick one: the den, the hall or the attic" is a choice; "avoid: the ramp, the bins" a list
         text = _VERB_COLON_RE.sub(r' \1 ', _COLON_RE.sub(r'\1 go to one of these : ', text))
@@ -453,6 +512,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
     out = _passes(out)
     if 'exactly' in out or 'precisely' in out:
         out = _EXACT_AGAIN_RE.sub(r' exactly \1 times', ' ' + ' '.join(out) + ' ').split()
+        out = _EXACT_SAID_AGAIN_RE.sub(r' exactly \1', ' ' + ' '.join(out) + ' ').split()
     if 'more' in out and ('less' in out or 'fewer' in out):
         out = _NO_MORE_NO_LESS_RE.sub(r' exactly \1', ' ' + ' '.join(out) + ' ').split()
     return out

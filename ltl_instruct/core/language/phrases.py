@@ -287,7 +287,9 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     if have_name and w in _VERBS_AFTER_PERSON and (i == 1 or i > 1 and tokens[i - 2] in DETERMINERS | {','}):
         return False   # "the boss wants no robots in the lobby", "Marco gets chatty": a verb, not a name
     if w in NUMBER_WORDS or w.isdigit():
-        return have_name and nxt not in ('times', 'more', 'separate')
+        # ("bay 6 more than once": the label, then the bound; "the hall 3 more times" is a count)
+        return have_name and nxt not in ('times', 'separate') and (
+            nxt != 'more' or tokens[i + 2:i + 3] == ['than'])
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \
             nxt not in NUMBER_WORDS and nxt not in ('ones', 'one'):
         return True   # "the other desk"
@@ -510,7 +512,9 @@ class PhraseParser:
                 j += 1   # "the pantry, which is next to the kitchen"
             lead = _relative_lead(tokens, j) + (j - i)
             j = i
-            if not lead and relations and tokens[j] in ('and', 'but'):
+            if not lead and relations and tokens[j] in ('and', 'but') and \
+                    tokens[j + 1:j + 3] != ['the', 'one']:
+                # (but "the lamp by the sink and the one by the door" is a second lamp)
                 lead = 1 + _relative_lead(tokens, j + 1) if match_relation(tokens, j + 1 + _relative_lead(
                     tokens, j + 1)) else 0
             j += lead
@@ -594,9 +598,11 @@ class PhraseParser:
             if nxt is None or nxt.pronoun in ('there', 'it', 'them', 'that', 'here'):
                 break
             if sep == 'and' and tokens[i] == ',' and j == i + 1 and nxt.descriptor.relations and \
-                    nxt.pronoun in ('', 'one') and not (tokens[j] in ('one', 'a', 'an') and
+                    nxt.pronoun in ('', 'one') and not ((tokens[j] in ('one', 'a', 'an') or
+                                                         tokens[j:j + 2] == ['the', 'one']) and
                                                         phrases[-1].pronoun == 'one'):
-                # (but "one by the sink, one under the skylight", "a red one by X, a blue one by Y" are lists)
+                # (but "one by the sink, one under the skylight", "a red one by X, a blue one by Y", "the
+                # one by the window, the one by the sink" are lists)
                 # "the box on the tall cabinet, the cabinet that's left of the heater": the same cabinet
                 merged = _attach(phrases[-1].descriptor, nxt.descriptor, nxt.pronoun == 'one')
                 if merged is not None:

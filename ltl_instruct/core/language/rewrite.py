@@ -34,7 +34,11 @@ _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'i
                        'standing', 'nearby', 'available', 'left', 'waiting', 'close', 'by', 'at', 'near',
                        'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
                        'yesterday', 'along', 'against', 'under', 'behind', 'beside', 'inside', 'up',
-                       'down', 'my', 'our'})   # "the vase, the candle and the frame I showed you?"
+                       'down', 'my', 'our', 'each'})   # "the vase, the candle and the frame I showed you?"
+# Words that say where the listed things are ("... out in the corridor", "... by the door").
+_WHERE_LISTED = frozenset({'out', 'in', 'on', 'over', 'at', 'by', 'around', 'along', 'inside', 'under',
+                           'behind', 'beside', 'near', 'outside', 'down', 'up', 'lying', 'sitting',
+                           'standing', 'parked'})
 # ("a hairbrush and a little china dog my mother gave me": who gave it, a clause of its own)
 # Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
 _POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
@@ -97,6 +101,14 @@ def _find_list(tokens: list[str]) -> Optional[tuple[int, int, list[NounPhrase], 
         if len(nps) < 3 and not (len(nps) == 2 and joiner == 'and'):
             continue
         if end < len(tokens) and tokens[end] not in _LIST_END and not (
+                # "the pharmacy the lab and the blood bank go to the third one": the request said right
+                # after the list, as speech runs on (a position in it is named)
+                (tokens[end] in _VERBS or tokens[end] in chatter.HESITATIONS) and
+                _refers_to_list(tokens[end:]) and (s == 0 or tokens[s - 1] in PUNCT or
+                                                   tokens[s - 1] in ('is', 'are', 'there') or all(
+                    t in ('okay', 'ok', 'so', 'right', 'well', 'now', 'um', 'uh', 'er', 'erm', ',')
+                    for t in tokens[:s])) and
+                all(t not in PUNCT for t in tokens[s:end] if t != ',')) and not (
                 # "carousels 3, 5, 7 and 9 need inspection": numbered things (not "the lamps and the rugs")
                 tokens[end] in ('need', 'needs') and (len(nps) > 2 or all(
                     np.descriptor.name.rpartition('_')[2].isdigit() for np in nps))) and not (
@@ -365,6 +377,13 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     tail = tokens[end:]
     if tail and tail[0] not in PUNCT and any(t in PUNCT for t in tail):
         tail = tail[next(k for k, t in enumerate(tail) if t in PUNCT):]
+    elif tail and tail[0] in _WHERE_LISTED:
+        # "there's a commode, a hoist and a wheelchair out in the corridor go to the second one": where
+        # they are sets the scene, the request starts at its verb (said without a full stop)
+        verb = next((k for k in range(2, len(tail)) if tail[k] in _VERBS and tail[k - 1] not in DETERMINERS),
+                    0)
+        if verb:
+            tail = ['.'] + tail[verb:]
     start = max((k for k in range(s - 1) if tokens[k] in '.;!?'), default=-1) + 1
     ahead = s >= 2 and tokens[s - 1] == ':' and any(t in ORDINALS or t in ('last', 'middle') for t in tokens[
         start:s - 1])   # "the first and third things on this list: ..."
@@ -602,11 +621,13 @@ _NOT_A_NAME_END = frozenset({'to', 'at', 'in', 'on', 'by', 'of', 'and', 'or', 't
                              'are', 'go', 'not', 'the', 'a', 'an', 'that', 'what', 'it', 'do', 'if'})
 _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('no', 'wait'), ('oh', 'wait'), ('wait',), ('sorry',), ('er',), ('um',), ('uh',), ('i', 'mean'),
-    ('i', 'meant'), ('actually',), ('scratch', 'that'), ('forget',), ('ignore',), ('never', 'mind'),
+    ('i', 'meant'), ('actually',), ('scratch', 'that'), ('forget',), ('ignore',), ('disregard',),
+    ('never', 'mind'),
     ('hmm',), ('make', 'that'), ('correction',), ('oops',), ('rather',), ('no',),
     ('no', 'sorry'), ('sorry', 'no'), ('no', 'no'), ('erm',), ('uhh',), ('umm',), ('ah',), ('my', 'bad'),
     ('my', 'mistake'), ('or', 'rather'), ('or', 'actually'), ('or', 'better'), ('on', 'second', 'thought'),
-    ('on', 'second', 'thoughts'), ('come', 'to', 'think', 'of', 'it'), ('change', 'of', 'plan'),
+    ('on', 'second', 'thoughts'), ('on', 'reflection'), ('come', 'to', 'think', 'of', 'it'),
+    ('change', 'of', 'plan'),
     ('change', 'of', 'plans'), ('let', 'me', 'rephrase'), ('wait', 'no'), ('hold', 'on'), ('scratch',),
     ('cross', 'off'), ('skip',), ('omit',), ('leave', 'out'), ('make', 'it'), ('hang', 'on'),
     ('hang', 'on', 'a', 'sec'), ('hold', 'on', 'a', 'sec'), ('hang', 'on', 'a', 'second'), ('ugh',),
@@ -616,9 +637,11 @@ _MARKERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     # "ah no, I say it wrong: the mill before the lathe"
     ('i', 'say', 'it', 'wrong'), ('i', 'said', 'it', 'wrong'), ('i', 'got', 'it', 'wrong'),
     ('i', 'say', 'wrong'), ('i', 'said', 'wrong'), ('i', 'was', 'wrong'), ('i', 'said', 'that', 'wrong'),
+    # formal apologies open a correction as "sorry" does ("My apologies, I meant the microcentrifuge")
+    ('my', 'apologies'), ('apologies',), ('i', 'beg', 'your', 'pardon'), ('pardon',), ('pardon', 'me'),
 ), key=lambda m: -len(m)))
-_CANCEL = frozenset({'forget', 'ignore', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross', 'omit',
-                     'leave', 'scrap'})
+_CANCEL = frozenset({'forget', 'ignore', 'disregard', 'scratch', 'never', 'cancel', 'drop', 'skip', 'cross',
+                     'omit', 'leave', 'scrap'})
 # Markers that restate a whole clause ("on second thought, bring it to the couch").
 _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 'sorry', 'no', 'oh', 'rather',
                       'or', 'er', 'erm', 'um', 'uh', 'ah', 'i', 'oops', 'my', 'correction', 'ehm', 'mm',
@@ -665,7 +688,7 @@ def _marker_at(tokens: list[str], i: int) -> int:
                     i > 0 and tokens[i - 1] in '.;!?' and tokens[i + 1] == 'the' and i + 2 < len(tokens) and
                     tokens[i + 2] in ('one', 'other', 'ones')):
                 return 0   # (but "... . no the one on the right of it": a correction, the comma left out)
-            if m == ('ignore',) and i == 0:
+            if m in (('ignore',), ('disregard',)) and i == 0:
                 return 0
             if m == ('forget',) and i == 0:
                 return 0
@@ -1032,7 +1055,8 @@ _SAID_ABOUT = re.compile(r'\b(forget|ignore|scratch|disregard) (?:what i said|wh
 _CLEFT_GOAL = re.compile(
     r'\b(?:it is|it s|its) (?P<x>(?:the|my|your|our) [a-z0-9_ ]*?[a-z0-9_]+) (?:that |which )?(?:i|we) '
     r'(?:want|need|meant|mean|wanted|needed|am after|was after|were after|are after)(?= [,.;!?]|$)')
-_MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying) (?:to )?(?:say|write|tell|type)\b')
+_MEANT = re.compile(r'\bi (?:wanted|want|meant|was going|was trying|should have|ought to have|should \'ve) '
+                    r'(?:to )?(?:say|said|write|written|tell|type|typed)\b')
 _NP_RE = r'(?:the|my|your|our) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+'
 # "better you start from the printer and finish with the copier": the route, said plainly
 _START_FINISH = re.compile(rf'\b(?:(?:it is )?better |maybe |instead )?(?:you )?(?:start|begin) '
@@ -1109,6 +1133,9 @@ def _forget_choice(prev: list[str], seg: list[str], notes: list[str]) -> Optiona
     return None
 
 
+_RETRACT_VERBS = frozenset({'forget', 'ignore', 'disregard', 'scratch', 'scrap', 'cancel'})
+
+
 def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
     """Apply self-corrections so only the final intent remains."""
     tokens = _actually_first(_uncleft(tokens))
@@ -1123,10 +1150,80 @@ def apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 tokens[k - 2] in ('no', 'sorry', 'wait', 'oops', 'actually'):
             skip = 3   # "no, not that one, the one behind the door": what it corrects, then what it is
             continue
+        if t == 'disregard':
+            t = 'ignore'   # "disregard the south one": a retraction, read as "ignore" is
+        if t == 'actually' and said and said[-1] not in PUNCT and (
+                tokens[k + 1:k + 2] in (['just'], ['only']) and 'or' in said or
+                tokens[k + 1:k + 2] in (['skip'], ['forget'], ['scratch'], ['ignore'], ['disregard'])):
+            said.append(',')   # "the day room or the ward kitchen actually just the kitchen": spoken
+        if t == 'please' and tokens[k + 1:k + 2] and tokens[k + 1] in _RETRACT_VERBS and (
+                k == 0 or tokens[k - 1] in PUNCT):
+            continue   # "No, please disregard that restriction": the retraction, said politely
+        if t == ';' and any(said[-n:-n + 1] and said[-n] in _RETRACT_VERBS and
+                            said[-n + 1] in ('that', 'this') for n in range(2, 5)):
+            t = ','   # "disregard that restriction; visit it twice": what replaces it follows
         said.append(t)
-        if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and tokens[k - 1] in PUNCT:
-            said.append(',')   # ", no not the couch, the armchair": "no" then what it corrects
-    return _apply_corrections(said, notes)
+        if t == 'no' and tokens[k + 1:k + 2] == ['not'] and k > 0 and (
+                tokens[k - 1] in PUNCT or tokens[k - 1] in chatter.HESITATIONS or
+                tokens[k + 2:k + 3] == ['the']):
+            # ", no not the couch, the armchair": "no" then what it corrects (spoken: "the den no not the
+            # den")
+            if said[-2] not in PUNCT and said[-2] not in chatter.HESITATIONS:
+                said.insert(len(said) - 1, ',')
+            said.append(',')
+    return _apply_corrections(_retract_all(_not_then_verb(said), notes), notes)
+
+
+def _not_then_verb(tokens: list[str]) -> list[str]:
+    """'land at the mortuary um no not the mortuary land at the dock': a comma before the step said again."""
+    for i in range(len(tokens) - 4):
+        if tokens[i:i + 3] == ['no', ',', 'not'] and i + 3 < len(tokens) and tokens[i + 3] in DETERMINERS:
+            v = next((v for v in range(i + 5, min(len(tokens) - 1, i + 10)) if tokens[v] in _VERBS), 0)
+            np = PhraseParser().parse(tokens[:v], i + 3) if v else None
+            if np is not None and np.end == v and tokens[v - 1] not in PUNCT:
+                return tokens[:v] + [','] + tokens[v:]
+    return tokens
+
+
+# What "all that was said" is called in a retraction ("ignore all of that", "forget everything I said").
+_ALL_SAID = tuple(sorted((
+    ('all', 'of', 'that'), ('all', 'that'), ('all', 'of', 'this'), ('all', 'this'), ('all', 'of', 'it'),
+    ('everything',), ('everything', 'i', 'said'), ('everything', 'i', 'just', 'said'),
+    ('all', 'of', 'the', 'above'), ('the', 'above'), ('everything', 'above'), ('what', 'i', 'said'),
+    ('what', 'i', 'just', 'said'), ('all', 'i', 'said'), ('all', 'i', 'just', 'said'),
+    ('everything', 'i', 'told', 'you'), ('all', 'those', 'instructions'), ('those', 'instructions'),
+    ('all', 'those', 'steps'), ('the', 'whole', 'thing'), ('the', 'lot'), ('all', 'of', 'those'),
+), key=lambda m: -len(m)))
+
+
+def _retract_all(tokens: list[str], notes: list[str]) -> list[str]:
+    """Retract all said before: 'go to A, then B. Please ignore all of that and simply go to C'.
+
+    The whole of what was said before is retracted (its goals and its rules alike: the speaker
+    takes it all back), but only where a new request follows the retraction; a retraction that
+    ends the instruction is left to the readers of corrections.
+    """
+    for i, t in enumerate(tokens):
+        if t not in _RETRACT_VERBS or i == 0 or \
+                tokens[i - 1] not in PUNCT | {'no', 'actually', 'so', 'oh', 'okay', 'ok', 'just'}:
+            continue
+        said = next((m for m in _ALL_SAID if tuple(tokens[i + 1:i + 1 + len(m)]) == m), None)
+        if said is None:
+            continue
+        k = i + 1 + len(said)
+        while k < len(tokens) and tokens[k] in ('before', 'earlier', 'above', 'so', 'far', 'then'):
+            k += 1
+        if k >= len(tokens) or tokens[k] not in (',', ';', ':', '.', 'and', '-'):
+            continue
+        k += 1
+        while k < len(tokens) and tokens[k] in (',', 'and', 'simply', 'instead', 'rather'):
+            k += 1
+        rest = tokens[k:]
+        if len([w for w in rest if w not in PUNCT]) < 2:
+            continue
+        notes.append(f'took back everything said before "{" ".join(tokens[i:i + 1 + len(said)])}"')
+        return rest
+    return tokens
 
 
 def _actually_first(tokens: list[str]) -> list[str]:
@@ -1234,6 +1331,14 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             result = _correct(prev, marker, seg[:cut], notes)
             if result is not None:
                 result = result + seg[cut:]
+        cut = next((k for k in range(lead + 2, len(seg) - 2) if seg[k] in ('and', 'then', 'but') and
+                    seg[k - 1] not in PUNCT and (seg[k + 1] in _COMMAND_START or 'then' in seg[k:k + 2])), -1)
+        if result is None and cut > 0 and seg[lead] in ('just', 'only'):
+            # "... actually just the kitchen and don't go near the trolley": spoken, the correction ends
+            # where the next command starts
+            result = _correct(prev, marker, seg[:cut], notes)
+            if result is not None:
+                result = result + [','] + seg[cut:]
         cut = next((k for k in range(lead + 2, len(seg) - 2) if seg[k] == ',' and seg[k + 1] in _VERBS), -1)
         if result is None and cut > 0 and seg[lead] in DETERMINERS:
             named = seg[lead:cut]
@@ -1529,6 +1634,12 @@ def _restate(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     return head + ([','] if head and head[-1] not in PUNCT else []) + new + prev[end:]
 
 
+# How a place still to be avoided is said in the passive ("only the boiler needs to be avoided").
+_AVOIDED_SAID = [w.split() for w in ('needs to be avoided', 'need to be avoided', 'should be avoided',
+                                     'must be avoided', 'is to be avoided', 'needs avoiding', 'is off limits',
+                                     'has to be avoided')]
+
+
 def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Keep one goal of a list: 'visit the museum and the zoo. Actually, just the zoo'."""
     words = [t for t in seg if t not in PUNCT]
@@ -1540,6 +1651,12 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
             words = ['only'] + words[:-1]   # "correction: north stairwell only"
     if not words or words[0] not in ('just', 'only'):
         return None
+    passive = next((k for k in range(2, len(words) - 1) if words[k:] in _AVOIDED_SAID), -1)
+    if passive > 0 and words[1] in DETERMINERS:
+        words = ['only', 'avoid'] + words[1:passive]   # "only the steam generator needs to be avoided"
+    if words[1:2] == ['avoid'] and len(words) > 3 and words[2] in DETERMINERS and 'avoid' in prev:
+        # "..., so just avoid the steam generator": one of the places avoided before is kept
+        words = ['just'] + words[2:]
     if words[1:3] in (['go', 'to'], ['head', 'to'], ['visit', 'the']) and len(words) > 3:
         words = ['just'] + words[3 if words[1] != 'visit' else 2:]   # "just go to the north one"
     if len(words) == 2 and _bare_label(words[1]):
@@ -1564,6 +1681,10 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
     if np is None or np.end != len(words) and np not in spans or np.pronoun:
         return None
     hit = next((k for k in range(len(spans) - 1, -1, -1) if spans[k].descriptor == np.descriptor), -1)
+    if hit < 0 and not np.descriptor.relations:
+        # "the day room or the ward kitchen ... just the kitchen": the one name that ends in it
+        ends = [k for k, sp in enumerate(spans) if sp.descriptor.name.endswith('_' + np.descriptor.name)]
+        hit = ends[0] if len(ends) == 1 else -1
     if hit < 0:
         return _only_this_side(prev, words[np.start:np.end], spans, notes)
     # the list it is in: phrases joined by "," / "and" / "or" only
@@ -1685,12 +1806,14 @@ _GOES = (('goes',), ('should', 'go'), ('belongs',), ('needs', 'to', 'go'), ('has
 def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Change a destination: 'bring the mug to the desk. wait, the mug goes to the sink': to the sink."""
     words = [t for t in seg if t not in PUNCT]
-    if not words or words[0] not in DETERMINERS:
+    # "take the cryobox to the tank. sorry, it should go to the cold room": "it" is the thing carried
+    it = words[:1] in (['it'], ['they']) and any(tuple(words[1:1 + len(v)]) == v for v in _GOES)
+    if not words or words[0] not in DETERMINERS and not it:
         return None
     parser = PhraseParser()
     at = next((k for k in range(1, len(words)) if any(tuple(words[k:k + len(v)]) == v for v in _GOES)), -1)
-    obj = parser.parse(words[:at], 0, destination_stops=True) if at > 0 else None
-    if obj is None or obj.pronoun or obj.end != at:
+    obj = None if it else parser.parse(words[:at], 0, destination_stops=True) if at > 0 else None
+    if not it and (obj is None or obj.pronoun or obj.end != at):
         return None   # (the verb found first: the parser would take "goes" into the name)
     verb = next(v for v in _GOES if tuple(words[at:at + len(v)]) == v)
     k = at + len(verb)
@@ -1699,9 +1822,14 @@ def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     dest = parser.parse(words, k + 1)
     if dest is None or dest.end != len(words):
         return None
-    hit = next((sp for sp in reversed(_np_spans(prev))
-                if sp.descriptor == obj.descriptor or sp.head == obj.head),
-               None)
+    if it:
+        hit = next((sp for sp in reversed(_np_spans(prev))
+                    if sp.start > 0 and prev[sp.start - 1] in _DELIVERY), None)
+        obj = hit
+    else:
+        hit = next((sp for sp in reversed(_np_spans(prev))
+                    if sp.descriptor == obj.descriptor or sp.head == obj.head),
+                   None)
     if hit is None or hit.end >= len(prev) or prev[hit.end] not in _PREPS | {'to'}:
         return None
     old = parser.parse(prev, hit.end + 1)
@@ -2050,10 +2178,44 @@ def _scope_corrected(prev: list[str], seg: list[str], notes: list[str]) -> Optio
     return prev[:p] + seg[k:new_np.end] + prev[old.end:]
 
 
+def _without_state_not(words: list[str]) -> list[str]:
+    """Words without a "not" that says how a thing is ("the autoclave is not running"), no rule."""
+    return [w for k, w in enumerate(words) if not (
+        w == 'not' and 0 < k < len(words) - 1 and words[k - 1] in ('is', 'are', 'was', 'were') and
+        (words[k + 1].endswith('ing') and words[k + 1] not in ('going', 'coming', 'visiting', 'entering') or
+         words[k + 1] in chatter.STATES))]
+
+
+def _cancel_then_only(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
+    """Keep one of a choice: 'A or B. Actually, disregard the south one: the north loading door only'."""
+    words = list(seg[1:] if seg[:1] == [','] else seg)
+    if marker not in _CANCEL:
+        if words[:1] not in (['ignore'], ['forget'], ['skip'], ['scratch'], ['drop']):
+            return None
+        words = words[1:]
+    gone = PhraseParser().parse(words, 0)
+    if gone is None or gone.end >= len(words) or words[gone.end] not in (',', ':'):
+        return None
+    kept = [t for t in words[gone.end + 1:] if t not in PUNCT]
+    if kept[-1:] == ['only']:
+        kept = kept[:-1]
+    elif kept[:1] in (['just'], ['only']):
+        kept = kept[1:]
+    else:
+        return None
+    np = PhraseParser().parse(kept, 0)
+    if np is None or np.end != len(kept) or np.pronoun or 'or' not in prev:
+        return None
+    return _only_this(prev, ['just'] + kept, notes)
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     scoped = _scope_corrected(prev, seg, notes)
     if scoped is not None:
         return scoped
+    only = _cancel_then_only(prev, marker, seg, notes)
+    if only is not None:
+        return only
     lead = 1 if seg[:1] == [','] else 0
     for said in (['the', 'opposite', ','], ['the', 'other', 'way', 'round', ','],
                  ['the', 'other', 'way', 'around', ',']):
@@ -2149,11 +2311,12 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
                 seg, stripped = (['just'] if lead[0] == 'just' else []) + seg[len(lead):], True
         cut = seg.index(',') if ',' in seg else -1
         go = cut + 1 + (seg[cut + 1:cut + 2] == ['so'])
-        if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do') or seg[go] in _VERBS) and \
-                chatter.is_statement(seg[:cut], _np_end(seg[:cut])) and \
-                not chatter.carries_constraint(seg[:cut]) and \
+        said = _without_state_not(seg[:cut]) if cut > 2 else []
+        if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do', 'only') or seg[go] in _VERBS) and \
+                chatter.is_statement(said, _np_end(said)) and \
+                not chatter.carries_constraint(said) and \
                 (not {sp.head for sp in _np_spans(seg[:cut])} & {sp.head for sp in _np_spans(prev)} or
-                 _said_replaced(seg[go:])):
+                 _said_replaced(seg[go:]) or seg[go] in ('just', 'only') and 'avoid' in prev):
             # "actually it's chucking it down, just go to the conservatory": the reason asks for nothing
             notes.append(f'left out "{" ".join(seg[:cut])}" (asks for nothing)')
             seg, stripped = seg[go:], True
@@ -2218,7 +2381,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     swapped = _swap(prev, seg, notes) or _goes_to(prev, seg, notes)
     if swapped is not None:
         return swapped
-    only = _only_this(prev, seg, notes) if seg[:1] == ['just'] else None
+    only = _only_this(prev, seg, notes) if seg[:1] in (['just'], ['only']) else None
     if only is not None:
         return only   # "the north or south entrance ... just go to the north one"
     if seg[:1] in (['just'], ['simply']) and len(seg) > 1 and seg[1] in _VERBS and marker in _RESTATE:
@@ -2748,6 +2911,8 @@ def _number(word: str) -> bool:
 def _count_correction(prev: list[str], seg: list[str]) -> Optional[list[str]]:
     """'visit X twice. no wait, exactly once': the count said before is replaced (with its modifier)."""
     counts = ('once', 'twice', 'thrice')
+    while seg[-1:] in (['please'], [','], ['then']) and len(seg) > 2:
+        seg = seg[:-1]   # "Correction: three times, please."
     if seg[:1] == ['not'] and ',' in seg[1:5]:
         seg = seg[seg.index(',') + 1:]   # "no wait, not twice, once": the count after the comma
     words = [t for t in seg if t not in PUNCT]

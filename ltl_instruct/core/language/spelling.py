@@ -78,6 +78,7 @@ carton cartons pallet pallets racking conveyor loading dumbwaiter intercom doorb
 mailbox letterbox trashcan recycling greenhouse shed birdfeeder hedge flowerbed lawnmower
 hosepipe rooftop helideck antenna gutters solar atrium lobby
 wrapper compactor glassware sterilizer steriliser pipette pipettes beaker beakers dewar baler mezzanine
+argon cuvette cuvettes
 forklift forklifts workstation kennel trampoline scooter scooters cattle slurry ketchup colostrum
 hammock casserole headset headsets mantelpiece bedsheet bedsheets stockroom scaffold scaffolding screed
 shredding

@@ -19,6 +19,7 @@ TYPOS: dict[str, str] = {
     'thrid': 'third', 'undr': 'under', 'vist': 'visit', 'pls': 'please', 'plz': 'please',
     'kitchn': 'kitchen', 'dishwsher': 'dishwasher', 'litterbox': 'litter box', 'doesnt': 'does not',
     'cant': 'cannot', 'wont': 'will not', 'im': 'i am', 'ive': 'i have', 'youve': 'you have',
+    'theyve': 'they have', 'weve': 'we have',
     'thats': 'that is', 'theres': 'there is', 'somebodys': 'somebody is', 'someones': 'someone has',
     'dosent': 'does not', 'pleas': 'please', 'survery': 'survey', 'lol': '', 'rn': 'right now',
     'nevermind': 'never mind', 'untl': 'until', 'adn': 'and',
@@ -68,6 +69,11 @@ TYPOS: dict[str, str] = {
     'fl': 'floor', 'flr': 'floor', 'bldg': 'building', 'dept': 'department', 'mgr': 'manager',
     'rms': 'rooms', 'ppl': 'people',
 }
+# Places that are told apart by a number ("bay 4", "bed 11", "side room 2", "dock 3").
+LABEL_HEADS = frozenset('''
+bay bed room ward dock gate bench aisle level theatre bin zone area table desk locker shelf rack pod cubicle
+booth pen stall platform lane lift wing block suite unit cell cabin cot stand bank lab station berth
+'''.split())
 # "away form the stove": after these words "form" is a slip for "from".
 _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance) form\b')
 # "on your wat to the dining room": a slip in "on your way to" (one letter, a word of its own)
@@ -89,6 +95,8 @@ CONTRACTIONS: tuple[tuple[str, str], ...] = (
      r"whichever|whatever)'s\b", r'\1 is'),
     (r"\b(either|whichever|which|each|this|that|any|neither|first|second|third|last|other|middle|red|blue|"
      r"green|left|right|big|small) one's\b", r'\1 one is'),   # "either one's fine", "the first one's"
+    # "either ones fine", as speech recognition writes it (the apostrophe lost)
+    (r"\b(either|any|whichever) ones(?= (?:fine|ok|okay|good|alright|great)\b)", r'\1 one is'),
     (r"'s(?= (?:next|first|last|after|before|then)\b)", ' is'),   # "the drum kit's next"
     (r"\blet's\b", 'let us'),
     # "the table's fine", "the red one's locked": "is", not a possessive, before how a thing is
@@ -194,6 +202,11 @@ _ITEM_ACRONYM_RE = re.compile(
     r"looks)\b)[a-z])")
 
 
+# The hospital's accident and emergency department, said in capitals ("avoid A and E", "A&E").
+# (not two labels: "fields A and E")
+_A_AND_E_RE = re.compile(r'(^|[,.;:!?]\s*|\b(?i:the|to|at|of|in|by|from|near|past|into|avoid|floor|and|or)'
+                         r'\s+)'
+                         r'A ?(?:and|&|n|\+) ?E\b')
 # A capital letter after a word names something ("field A", "Gate B"): not the article "a".
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
 
@@ -267,6 +280,8 @@ def tokenize(text: str) -> list[str]:
         Lower-case tokens; runs of the same punctuation collapse to one, a dash
         between spaces becomes a comma, and typos in :data:`TYPOS` are fixed.
     """
+    if 'E' in text:   # "A and E", "A&E": the accident and emergency department, one name
+        text = _A_AND_E_RE.sub(r'\1a_and_e', text)
     acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
     acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
     acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
@@ -322,7 +337,9 @@ def tokenize(text: str) -> list[str]:
         s = re.sub(r'\b(to|at|into|outside|from) (\d{3})\b(?! ?(?:times|meters|metres|m|cm|feet|ft|percent|%|'
                    r'degrees|am|pm|hours|minutes|seconds|kg|km|miles)\b)', r'\1 room \2', s)
     if ' 2 ' in s:   # "go 2 the break room", "the towels 2 the cart": chat spelling of "to" before a place
-        s = re.sub(r'(?<=[a-z]) 2 (?=(?:the|my|our|your|this|that|either|both)\b)', ' to ', s)
+        # (not after a place told apart by its number: "only go in bay 2 the once")
+        s = re.sub(r'\b(?P<w>[a-z]+) 2 (?=(?:the|my|our|your|this|that|either|both)\b)',
+                   lambda m: m.group(0) if m.group('w') in LABEL_HEADS else f'{m.group("w")} to ', s)
         s = re.sub(r'\b(go|head|come|get|walk|drive|fly|run|move|back|over|down|up|way|next|close) 2 '
                    r'(?=(?:a|an)\b)', r'\1 to ', s)
     if ' need' in s:   # "the barn and the trough need checking", "... need a visit": check them
@@ -343,6 +360,14 @@ def tokenize(text: str) -> list[str]:
         s = _FORM_RE.sub(r'\1 from', s)
     if ' w' in s:
         s = _WAY_RE.sub(r'\1way', s)
+    if 'their' in s:   # "go over their": "their" ends no phrase, "there" does (a homophone)
+        s = re.sub(r'\b(over|in|out|up|down|back|go|get|stay|wait|it|them) their'
+                   r'(?=\s*(?:[,.;:!?]|$|and\b|then\b|please\b|now\b|first\b))', r'\1 there', s)
+    if 'at lease ' in s:   # "at lease twice": speech recognition's "at least"
+        s = re.sub(r'\bat lease (?=once|twice|thrice|\w+ times)', 'at least ', s)
+    if re.search(r'\d+s ', s):   # "bay 4s fine": "bay 4's fine", the apostrophe lost (a label is no plural)
+        s = re.sub(r'\b(\d+)s (?=(?:fine|ok|okay|alright|safe|open|closed|shut|clear|free|busy|empty|full|'
+                   r'locked|off limits|out of bounds|not|no)\b)', r'\1 is ', s)
     if 'forth ' in s:   # "the forth floor": the fourth
         s = re.sub(r'\bforth (?=floor|time|stop|room|door|one|place|aisle|bay|shelf|level|row)', 'fourth ', s)
     out: list[str] = []
@@ -375,6 +400,29 @@ def tokenize(text: str) -> list[str]:
 
 _LABEL_RE = re.compile(r'^(?:[a-z]|[a-z]?\d{1,3}[a-z]?)$')   # "A", "3", "a1"; or a number word:
 _NUMBER_LABELS = frozenset(_NUMBER_NAME.values())
+
+
+# Words a number follows that are no names: counts and measures ("twice three times four times").
+_NOT_LABELLED = frozenset({'times', 'time', 'minutes', 'minute', 'seconds', 'hours', 'metres', 'meters',
+                           'feet', 'laps', 'passes', 'rounds', 'visits', 'trips', 'x', 'by', 'and', 'or',
+                           'to', 'of'})
+
+
+def separate_labels(tokens: list[str]) -> list[str]:
+    """Set labelled names said one after another apart: "bay 1 bay 2 and bay 3" -> "bay 1 , bay 2 and bay 3".
+
+    Speech comes without commas; a number followed by the words said before it starts a new name
+    (one kind, told apart by the number), never a longer name ("bed 2 bed 4" is no bed_2_bed_4).
+    """
+    out: list[str] = []
+    for k, t in enumerate(tokens):
+        out.append(t)
+        if (t.isdigit() or t in _NUMBER_LABELS) and 0 < k < len(tokens) - 1 and \
+                tokens[k - 1] not in _NOT_LABELLED and any(
+                    k >= n and tokens[k + 1:k + 1 + n] == tokens[k - n:k] and tokens[k - n] not in PUNCT
+                    for n in (1, 2, 3)):
+            out.append(',')
+    return out
 
 
 def expand_labels(tokens: list[str]) -> list[str]:

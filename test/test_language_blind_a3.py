@@ -117,6 +117,9 @@ FOUND_ROUND_A3 = [
     ('Go to the third one: mixer, curing oven, cooler. Ah sorry, I mean the second.', 'F near[curing_oven]'),
     ('Go to the first one of these: the plotter, the scanner, the laminator. Wait, I meant the last one.',
      'F near[laminator]'),
+    # "a pass along X" is a visit, as "a pass over X" (it had been read only by the fallback's guess)
+    ('Fly over the pier first, after that do a pass along the beach huts, then hover by the ice cream kiosk.',
+     'F (near[pier] & F (near[beach_huts] & F near[ice_cream_kiosk]))'),
 ]
 
 

@@ -396,7 +396,7 @@ _PASS_RE = re.compile(r'(^| )(make|do|take|fly|run|perform|complete|made|done|di
                       r'eight|nine|ten|\d+|a|an|a single) (?:separate |more |full |complete |quick )?'
                       r'(?:passes|pass|trips|trip|laps|lap|rounds|round|sweeps|sweep|runs|run|loops|loop|'
                       r'flyovers|flyover|visits|visit|circuits|circuit) '
-                      r'(?:over|to|by|past|around|round|of|through|across|above|at)? ?')
+                      r'(?:over|to|by|past|around|round|of|through|across|above|at|along|down|beside)? ?')
 
 
 _GERUNDS = {'going': 'go', 'heading': 'head', 'visiting': 'visit', 'checking': 'check', 'stopping': 'stop',

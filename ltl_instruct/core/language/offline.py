@@ -306,8 +306,7 @@ def _rule_in(words: Sequence[str]) -> bool:
 # Verbs whose subject a thing said before them is ("the baby is sleeping", "the cat will scratch").
 _STATEMENT_VERBS = chatter.FINITE_VERBS | frozenset({
     'will', 'would', 'can', 'could', 'might', 'may', 'wants', 'want', 'needs', 'need', 'gets', 'get', 'd',
-    's',
-    'hates', 'loves', 'likes', 'says', 'thinks', 'worries'})
+    's', 'hates', 'loves', 'likes', 'says', 'thinks', 'worries'})
 
 
 # Verbs after "you'll" that say what the robot would do, not what may happen to it ("you'll find it there").
@@ -327,8 +326,8 @@ _NAMING_WORDS = frozenset({'the', 'my', 'your', 'our', 'this', 'that', 'next', '
 _REASON_TO_COMMAND = frozenset({'so', 'and', 'then', 'but', 'just', 'please', 'therefore', 'hence'})
 # Commands that may follow a reason, and words of the robot itself ("my husband hates the robot in the
 # study"): a part with one is about where the robot may go.
-_COMMANDS_AFTER_REASON = _REASON_ENDS | frozenset({'skip', 'keep', 'stay', 'steer', 'leave', 'use', 'wait',
-                                                   'pass', 'enter', 'touch', 'check', 'let', 'make'})
+_COMMANDS_AFTER_REASON = _REASON_ENDS | frozenset({'skip', 'steer', 'leave', 'use', 'wait', 'pass', 'enter',
+                                                   'touch', 'check', 'let', 'make'})
 _ROBOT_WORDS = frozenset({'robot', 'robots', 'drone', 'drones', 'bot', 'bots',
                           # what a place is to be left ("the vet needs the surgery empty")
                           'empty', 'alone', 'undisturbed', 'privacy', 'themselves'})
@@ -343,9 +342,8 @@ _PRONOUNS = frozenset({'it', 'them', 'there', 'that', 'this', 'those', 'these', 
 # have clearance for that", "I don't want the baby woken up" say no rule of where to go.
 _NOT_GOING = frozenset({'go', 'going', 'gone', 'went', 'enter', 'entering', 'entered', 'visit', 'visited',
                         'visiting', 'use', 'used', 'using', 'come', 'coming', 'fly', 'flying', 'flown',
-                        'pass',
-                        'passing', 'passed', 'let', 'near', 'in', 'into', 'inside', 'through', 'over', 'past',
-                        'disturbed', 'crossed', 'cross', 'crossing', 'touched', 'touch', 'allowed'})
+                        'pass', 'passing', 'passed', 'let', 'near', 'in', 'into', 'inside', 'through', 'over',
+                        'past', 'disturbed', 'crossed', 'cross', 'crossing', 'touched', 'touch', 'allowed'})
 
 
 # "I've only just planted them", "they were only reinstalled": "only" after an auxiliary says lately
@@ -412,17 +410,16 @@ def _is_consequence(tail: Sequence[str]) -> bool:
     return verb in _CONSEQUENCES or verb not in _COMMANDS
 
 
-# Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 # Words of an order in a request: a reason after it may repeat the order ("..., chef wants a word first").
 _ORDER_WORDS = frozenset({'until', 'till', 'before', 'first', 'then', 'after'})
+# Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
 _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'minds', 'sleep', 'sleeps',
                            'is', 'are', 'was', 'were', 'keeps', 'keep', 'gets', 'get', 'bite', 'bites',
                            'bark', 'barks', 'scratch', 'scratches', 'leaks', 'leak', 'spills', 'go', 'goes',
                            'need', 'needs', 'spook', 'spooks', 'scare', 'scares', 'panic', 'panics', 'freak',
                            'freaks', 'run', 'runs', 'chew', 'chews', 'knock', 'knocks', 'jump', 'jumps',
                            'love', 'loves', 'like', 'likes', 'raid', 'raids', 'eat', 'eats', 'steal',
-                           'steals',
-                           'smell', 'smells', 'attract', 'attracts'})
+                           'steals', 'smell', 'smells', 'attract', 'attracts'})
 # "in one of her moods", "in a huff": how someone is, not where
 _MOODS = frozenset({'mood', 'moods', 'temper', 'huff', 'strop', 'sulk', 'funk', 'state'})
 # Words after "is/are" that say where something is ("they are next to the door"), not why.
@@ -569,8 +566,7 @@ def _proper_names(instruction: str) -> frozenset[str]:
 _HEARD_NUMBERS = {'for': '4', 'to': '2'}   # (not "too": "the bed too" is also the bed)
 # What may follow a number heard as a word: the end of its phrase, not the object "for" or "to" would take.
 _AFTER_HEARD_NUMBER = frozenset({'and', 'then', 'or', 'please', 'first', 'next', 'instead', 'at', 'okay',
-                                 'ok',
-                                 'as', 'again', 'but', 'after', 'before', 'last'})
+                                 'ok', 'as', 'again', 'but', 'after', 'before', 'last'})
 
 
 def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str],

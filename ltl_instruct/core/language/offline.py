@@ -617,8 +617,8 @@ def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[s
         if fixed is not None:
             out[k] = fixed
             notes.append(f'read "{w}" as "{fixed}"')
-    return [t for w in out for t in w.split(' ')] if len(out) == len(tokens) and any(' ' in w for w in out) \
-        else out
+    # ("hoverthere" was made two words: split them)
+    return [t for w in out for t in w.split(' ')] if any(' ' in w for w in out) else out
 
 
 def _ordinal_name(tokens: Sequence[str], i: int) -> bool:
@@ -1094,9 +1094,9 @@ class _Reader:
                     ['the', t] if t in SKILL_VERBS and (k == 0 or sentence[k - 1] in listed) and (
                         k + 1 == len(sentence) or sentence[k + 1] in listed or sentence[k + 1] in PUNCT)
                     else [t])]
-            elif self._bare_route(sentence):
+            elif route := self._bare_route(sentence):
                 # "lighthouse to harbour wall, then do it again": the route from the one to the other
-                self.notes.append(f'read "{" ".join(sentence[:self._bare_route(sentence)])}" as a route')
+                self.notes.append(f'read "{" ".join(sentence[:route])}" as a route')
                 sentence = ['go', 'from'] + sentence
             elif self._bare_goal_start(sentence):
                 self._read_bare_goal(sentence)

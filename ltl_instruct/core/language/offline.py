@@ -248,15 +248,20 @@ def _renamed(d: Descriptor, mapping: dict[Descriptor, Descriptor]) -> Descriptor
                                     for r in d.relations))
 
 
+def _is_number(word: str) -> bool:
+    """Whether ``word`` is a number short enough to label a place ("row 8", "gate 21"; not a year)."""
+    return word.isdigit() and len(word) < 4
+
+
 def _is_label(word: str) -> bool:
     """Whether a name's last word is a label ("stairwell e", "row 8", "crane two")."""
-    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4 or word in NUMBER_WORDS
+    return len(word) == 1 and word.isalpha() or _is_number(word) or word in NUMBER_WORDS
 
 
 def _labelled(name: str, head: str) -> bool:
     """Whether ``name`` is ``head`` with a label after it ("stairwell_e" for "the stairwell")."""
-    return name.startswith(head + '_') and name.count('_') == head.count('_') + 1 and \
-        _is_label(name.rpartition('_')[2])
+    before, sep, label = name.rpartition('_')
+    return bool(sep) and before == head and _is_label(label)
 
 
 def _after_relation(tokens: Sequence[str], i: int) -> bool:
@@ -631,14 +636,14 @@ def _labelled_name(tokens: Sequence[str], k: int) -> bool:
     """Whether a name with a label starts at ``tokens[k]``, said with no article ("gate B", "aisle 3")."""
     label = tokens[k + 1] if k + 1 < len(tokens) else ''
     return tokens[k].isalpha() and tokens[k] not in GOAL_VERBS and tokens[k] not in STOPWORDS and (
-        label.isdigit() and len(label) < 4 or len(label) == 1 and label.isupper())
+        _is_number(label) or len(label) == 1 and label.isupper())
 
 
 def _numbered_name(tokens: Sequence[str], k: int) -> bool:
     """Whether a verb after "go to" is the name of a numbered place ("fly over stand 4", "survey stand 4")."""
     nxt = tokens[k + 2] if k + 2 < len(tokens) else '.'
-    return tokens[k] in GOAL_VERBS and tokens[k + 1:k + 2] != [] and tokens[k + 1].isdigit() and \
-        len(tokens[k + 1]) < 4 and (nxt in PUNCT or nxt in STOPWORDS) and nxt not in ('times', 'more')
+    return tokens[k] in GOAL_VERBS and tokens[k + 1:k + 2] != [] and _is_number(tokens[k + 1]) and \
+        (nxt in PUNCT or nxt in STOPWORDS) and nxt not in ('times', 'more')
 
 
 def normalize_counts(rest: list[str]) -> list[str]:
@@ -3492,7 +3497,7 @@ class _Reader:
         """Return the alternative a condition names, a bare label too ("if you take 21")."""
         np = self.phrases.parse(tokens, j)
         last = self.task.last_step(('visit',))
-        if np is None and j < len(tokens) and tokens[j].isdigit() and len(tokens[j]) < 4 and \
+        if np is None and j < len(tokens) and _is_number(tokens[j]) and \
                 last is not None and sum(t.name.endswith('_' + tokens[j]) for t in last.targets) == 1:
             np = NounPhrase(Descriptor(tokens[j]), j, j + 1, tokens[j])
         return np

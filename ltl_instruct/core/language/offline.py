@@ -1166,16 +1166,8 @@ class _Reader:
                                       'named before')
                 continue
             if _is_label(d.name) and len(d.name) == 1:
-                # "check-in island D or E": the bare letter names one of the same kind
+                # "check-in island D or E", "stairwell A or B": the bare letter names one of the same kind
                 kinds = {n.rpartition('_')[0] for n in longer if _is_label(n.rpartition('_')[2])}
-                if len(kinds) == 1:
-                    mapping[d] = Descriptor(f'{kinds.pop()}_{d.name}')
-                    self.notes.append(f'took "{d.name}" as the {mapping[d].name.replace("_", " ")}')
-                continue
-            if len(d.name) == 1 and not self.phrases.landmarks:
-                # "stairwell A or B", "stockpile A then B": a bare label is one of the kind named with
-                # a label before (of one kind only)
-                kinds = {n.rpartition('_')[0] for n in longer if len(n.rpartition('_')[2]) == 1}
                 if len(kinds) == 1:
                     mapping[d] = Descriptor(f'{kinds.pop()}_{d.name}')
                     self.notes.append(f'took "{d.name}" as the {mapping[d].name.replace("_", " ")}')

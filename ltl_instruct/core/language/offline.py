@@ -699,6 +699,23 @@ def _uncomma(rest: list[str]) -> list[str]:
             rest[k + 1] in DETS]
 
 
+def _avoid_in_choice(step: Step, choice: Descriptor, avoided: list[Descriptor], onway: bool) -> None:
+    """Make ``step`` a choice of its goals, ``avoided`` kept away from only in the alternative ``choice``.
+
+    "if you choose the server room, avoid the cooling unit": always in that alternative; "... on the
+    way in" (``onway``): until the server room is reached.
+    """
+    chains = []
+    for d in step.targets:
+        if d != choice:
+            chains.append([Step('visit', [d])])
+        elif onway:
+            chains.append([Step('visit', [d], avoid_until=list(avoided))])
+        else:
+            chains.append([Step('formula', formula=f) for f in _never(avoided)] + [Step('visit', [d])])
+    step.kind, step.targets, step.chains = 'any', [], chains
+
+
 def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
     return tuple(tokens[i:i + len(words)]) == tuple(words)
 
@@ -3054,15 +3071,7 @@ class _Reader:
                 if kind not in ('global', 'onway', 'until') or kind != 'global' and not onway:
                     raise TranslationError('could not place the scope of the avoidance in that choice',
                                            details={'part': ' '.join(map(str, targets))})
-                chains = []
-                for d in step.targets:
-                    if onway and d == self.choice:
-                        # "if it's the server room, avoid the cooling unit on the way in": until it is reached
-                        chains.append([Step('visit', [d], avoid_until=list(targets))])
-                        continue
-                    extra = [Step('formula', formula=f) for f in _never(targets)] if d == self.choice else []
-                    chains.append(extra + [Step('visit', [d])])
-                step.kind, step.targets, step.chains = 'any', [], chains
+                _avoid_in_choice(step, self.choice, targets, onway)
             self.choice = None
             return
         kind = scope.kind if scope is not None else 'global'
@@ -3550,16 +3559,7 @@ class _Reader:
             if after and not onway and not self._leave_out(after):
                 raise TranslationError(f'could not place "{" ".join(after)}" in "{" ".join(tokens)}"',
                                        details={'part': ' '.join(after)})
-            chains = []
-            for d in step.targets:
-                if onway and d == np.descriptor:
-                    # "if it's the server room, avoid the cooling unit on the way in": until it is reached
-                    chains.append([Step('visit', [d], avoid_until=[n.descriptor for n in nps])])
-                    continue
-                extra = [Step('formula', formula=f) for f in _never([n.descriptor for n in nps])] \
-                    if d == np.descriptor else []
-                chains.append(extra + [Step('visit', [d])])
-            step.kind, step.targets, step.chains = 'any', [], chains
+            _avoid_in_choice(step, np.descriptor, [n.descriptor for n in nps], onway)
             return
         rest = self._strip_fillers(rest)
         if self._is_permission(rest):

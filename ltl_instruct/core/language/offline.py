@@ -1918,23 +1918,21 @@ class _Reader:
         if chatter.is_remark(tokens) and not (tokens[:1] == ['either'] and 'or' in tokens):
             self.notes.append(f'left out "{s}" (asks for nothing)')
             return scope
-        if s.startswith(('because ', 'since ')) and _rule_in(tokens):
-            # "because you must never go there": a reason holding a rule is never dropped
-            raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
         why = s.startswith(('because ', 'since ', 'so that ', 'do not want the ', 'i do not want the ',
                             'as '))
-        if why and _reason_holds_rule(tokens):
-            # "..., I don't want the hall visited": never left out as a reason
+        if why and (s.startswith(('because ', 'since ')) and _rule_in(tokens) or _reason_holds_rule(tokens)):
+            # "because you must never go there", "..., I don't want the hall visited": a reason holding a
+            # rule is never left out
             raise TranslationError(f'could not place "{s}" (a reason holding a rule)', details={'part': s})
-        if s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind')):
+        indifferent = s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind'))
+        if indifferent:
             cut = next((k for k in range(len(tokens) - 2) if tokens[k] == ',' and tokens[k + 1] == 'but'), -1)
             if cut > 0:
                 # "I don't care which comes first, but the window has to come after both": what it does ask
                 return self._read_clause_tokens(clause, tokens[cut + 2:], scope)
             if _rule_in(tokens):
                 raise TranslationError(f'could not place "{s}" (a rule in a remark)', details={'part': s})
-        if s.endswith(fine) or s in IGNORED_CLAUSES or why or \
-                s.startswith(('i do not care', 'do not care', 'do not mind', 'i do not mind')):
+        if s.endswith(fine) or s in IGNORED_CLAUSES or why or indifferent:
             return scope
         if tokens == ['visit', 'each', 'place', 'only', 'once']:
             self.no_revisits = True   # the canonical wording of "no revisiting" (see idioms)

@@ -2698,26 +2698,30 @@ class _Reader:
                                    details={'part': np.pronoun})
         return out
 
+    def _held_back(self, np: NounPhrase) -> Optional[NounPhrase]:
+        """Return X of "don't go to X until Y" when ``np`` points at Y and X is no goal yet, else None."""
+        if self.held_until is None:
+            return None
+        held, until = self.held_until
+        if (self.last_place or np).descriptor != until or len(held) != 1 or \
+                self.task.find_step(held[0]) is not None:
+            return None
+        return NounPhrase(held[0], np.start, np.end, held[0].name.split('_')[-1], np.pronoun)
+
     def _resolve_once(self, np: NounPhrase, place: bool) -> NounPhrase:
-        held_there = self.held_until is not None and (self.last_place or np).descriptor == self.held_until[1]
-        if np.pronoun == 'there' and self.held_until is not None and held_there and \
-                len(self.held_until[0]) == 1 and self.task.find_step(self.held_until[0][0]) is None:
+        if np.pronoun == 'there' and (held := self._held_back(np)) is not None:
             # "the patio is off limits until you've been by the grill, then go out there": the patio
-            held = self.held_until[0][0]
-            return NounPhrase(held, np.start, np.end, held.name.split('_')[-1], np.pronoun)
+            return held
         if np.pronoun in ('there', 'here') and self.last_place is not None:
             return self.last_place
         if np.pronoun in ('it', 'them', 'that') and self.last_object is not None and not place:
             return self.last_object
         if np.pronoun in ('it', 'them') and place and self.left_thing is not None:
             return self.left_thing   # "I left my charger in the hall, go find it": the charger
-        if np.pronoun in ('it', 'them') and place and self.held_until is not None and (
-                self.last_place or np).descriptor == self.held_until[1] and len(self.held_until[0]) == 1 and \
-                self.task.find_step(self.held_until[0][0]) is None:
+        if np.pronoun in ('it', 'them') and place and (held := self._held_back(np)) is not None:
             # "don't go to the forklift before you visit the office. After that, go to it": the forklift
             # held back (the office is where the robot already is)
-            held = self.held_until[0][0]
-            return NounPhrase(held, np.start, np.end, held.name.split('_')[-1], np.pronoun)
+            return held
         if np.pronoun in ('it', 'them', 'that') and place and self.last_place is not None:
             return self.last_place
         return np

@@ -716,6 +716,11 @@ def _avoid_in_choice(step: Step, choice: Descriptor, avoided: list[Descriptor], 
     step.kind, step.targets, step.chains = 'any', [], chains
 
 
+def _said_as_list(places: Sequence[Descriptor]) -> list[str]:
+    """Words naming ``places`` as a list, to be read again ("the shed and the gate")."""
+    return [w for d in places for w in ('and', 'the', d.name)][1:]
+
+
 def _starts(tokens: Sequence[str], i: int, words: Sequence[str]) -> bool:
     return tuple(tokens[i:i + len(words)]) == tuple(words)
 
@@ -3015,6 +3020,11 @@ class _Reader:
                 return leg
         return None, rest
 
+    def _visit_goals(self) -> list[Descriptor]:
+        """Every place given as a goal to visit so far, once each, in the order given."""
+        return list(dict.fromkeys(d for st in self.task._all_steps() if st.kind == 'visit'
+                                  for d in st.targets))
+
     def _goals_named(self) -> set[Descriptor]:
         """Every place named as a goal or in an order so far ("go to both", "visit all three")."""
         names = {d for st in self.task._all_steps() for d in st.targets + st.dests}
@@ -3215,13 +3225,11 @@ class _Reader:
         if k > 0 and said in _THE_GOALS_BEFORE and tokens[0] in DETS:
             # "the window has to come after both of them": the other goals given before
             x = self.phrases.parse(tokens, 0)
-            goals = [d for st in self.task._all_steps() if st.kind == 'visit' for d in st.targets]
-            others = list(dict.fromkeys(d for d in goals if x is None or d != x.descriptor and not (
-                not x.descriptor.relations and d.name.endswith('_' + x.descriptor.name))))   # "the window"
+            others = [d for d in self._visit_goals() if x is None or d != x.descriptor and not (
+                not x.descriptor.relations and d.name.endswith('_' + x.descriptor.name))]   # "the window"
             if x is not None and len(others) >= 2 and (len(others) == 2 or 'both' not in said) and \
                     all(not d.relations for d in others):
-                listed = [w for d in others for w in ('and', 'the', d.name)][1:]
-                tokens = tokens[:k + 1] + listed
+                tokens = tokens[:k + 1] + _said_as_list(others)
         found = orders.order_statements(tokens, self.phrases)
         if found is None:
             return False
@@ -3264,8 +3272,7 @@ class _Reader:
             return False
         x = self._named_before(np).descriptor
         step = self.task.find_step(x)
-        others = list(dict.fromkeys(d for st in self.task._all_steps() if st.kind == 'visit'
-                                    for d in st.targets if d != x))   # "visit a, b and c": one step
+        others = [d for d in self._visit_goals() if d != x]   # "visit a, b and c": one step
         if not others or step is None and (verb or not all(_is_word(w) for w in tokens[:np.end])):
             return False
         if step is None:   # "tower crane last": a goal of its own, ordered against the others
@@ -4501,15 +4508,14 @@ class _Reader:
             if group and word in ('before', 'after') and not rest[1 + group:]:
                 k = 1
                 # "hit the mail room before both of those": the goals said before this one
-                prior = list(dict.fromkeys(d for st in self.task._all_steps() if st.kind == 'visit'
-                                           for d in st.targets if d not in targets))
+                prior = [d for d in self._visit_goals() if d not in targets]
                 only = only or word == 'after'   # after the group: each of them before, in any order
                 if rest[k] == 'both' and len(prior) >= 2:
                     prior = prior[-2:]
                 if not prior or rest[k] == 'both' and len(prior) != 2:
                     raise TranslationError(f'could not tell what "{" ".join(rest)}" refers to in '
                                            f'"{" ".join(whole)}"', details={'part': rest})
-                rest = rest[:k] + [t for d in prior for t in ('the', d.name, 'and')][:-1]
+                rest = rest[:k] + _said_as_list(prior)
             nps, _, end = self._np_list(rest, k)
             p = k + 2 if rest[k:k + 2] == ['anywhere', 'near'] else k
             pointer = rest[p:p + 1] in (['it'], ['there'], ['that'], ['them'], ['this'])

@@ -3985,24 +3985,23 @@ class _Reader:
                 return False
         dest_ds = [d.descriptor for d in dests] or ([implicit_dest] if implicit_dest else [])
         last = self.task.chain[-1] if self.task.chain else None
-        if len(objs) == 1 and tokens[k:k + 1] in (['it'], ['them']) and last is not None and \
-                last.kind == 'deliver' and last.targets == [objs[0].descriptor] and \
-                (last.dests == dest_ds or not dest_ds and verb in ('bring', 'take', 'carry')) and not [
-                    t for t in rest if t not in PUNCT and t not in ('over', 'along', 'round', 'across')] and \
-                len(self.task.chain) - 1 < self.sentence_start:   # said in a sentence before
+        if tokens[k:k + 1] in (['it'], ['them']) and last is not None and \
+                len(self.task.chain) - 1 < self.sentence_start and not [   # said in a sentence before
+                    t for t in rest if t not in PUNCT and t not in ('over', 'along', 'round', 'across')]:
             # ("I need the laptop on my desk. Bring it over.": the destination said before)
-            # "get rid of the wrapper? just throw it out": the same delivery said again
-            self.notes.append(f'"{" ".join(tokens)}": the delivery of {objs[0].descriptor} said again')
-            return True
-        if tokens[k:k + 1] == ['them'] and last is not None and last.kind == 'all' and all(
-                len(c) == 1 and c[0].kind == 'deliver' and (c[0].dests == dest_ds or not dest_ds and verb in (
-                    'bring', 'take', 'carry')) for c in last.chains) and not [
-                    t for t in rest if t not in PUNCT and t not in ('over', 'along', 'round', 'across')] and \
-                len(self.task.chain) - 1 < self.sentence_start:
-            # "The clipboard and the notebook both belong on the table; please take them there": the
-            # deliveries said before, said again
-            self.notes.append(f'"{" ".join(tokens)}": the deliveries said before, said again')
-            return True
+            said_before = not dest_ds and verb in ('bring', 'take', 'carry')
+            if len(objs) == 1 and last.kind == 'deliver' and last.targets == [objs[0].descriptor] and \
+                    (last.dests == dest_ds or said_before):
+                # "get rid of the wrapper? just throw it out": the same delivery said again
+                self.notes.append(f'"{" ".join(tokens)}": the delivery of {objs[0].descriptor} said again')
+                return True
+            if tokens[k] == 'them' and last.kind == 'all' and all(
+                    len(c) == 1 and c[0].kind == 'deliver' and (c[0].dests == dest_ds or said_before)
+                    for c in last.chains):
+                # "The clipboard and the notebook both belong on the table; please take them there": the
+                # deliveries said before, said again
+                self.notes.append(f'"{" ".join(tokens)}": the deliveries said before, said again')
+                return True
         if implicit_dest is not None and not dests:
             self.notes.append(f'"{verb}" releases the object at the implicit {implicit_dest}')
         if not dest_ds:

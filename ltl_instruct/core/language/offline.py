@@ -812,18 +812,18 @@ class _Reader:
 
         ("left out "the crew waxed the hall"" before "avoid it" read as the kitchen.)
         """
-        for k, note in enumerate(self.notes[mark:], mark):
-            if note.startswith(('left out "', 'could not read "')) and k not in self.trailing_notes:
+        head = name.rpartition('_')[2]
+        for n, note in enumerate(self.notes[mark:], mark):
+            if note.startswith(('left out "', 'could not read "')) and n not in self.trailing_notes:
                 words = note.split('"')[1].split()
-                rel = next((k for k, w in enumerate(words) if k > 0 and w in ('that', 'which', 'who')),
+                rel = next((j for j, w in enumerate(words) if j > 0 and w in ('that', 'which', 'who')),
                            len(words))
                 words = words[:rel]   # (a relative clause says more about the thing before it)
                 # (a thing named there other than what "it" was read as; not a relative clause's people)
                 if words[0] not in ('that', 'which', 'who', 'where') and any(
-                        w in DETS and k + 1 < len(words) and words[k + 1] not in STOPWORDS and
-                        words[k + 1] not in chatter.PERSON_NOUNS and
-                        name.split('_')[-1] not in words[k + 1:k + 4]
-                        for k, w in enumerate(words)):
+                        w in DETS and j + 1 < len(words) and words[j + 1] not in STOPWORDS and
+                        words[j + 1] not in chatter.PERSON_NOUNS and head not in words[j + 1:j + 4]
+                        for j, w in enumerate(words)):
                     return True
         return False
 
@@ -977,7 +977,7 @@ class _Reader:
         if first in ('i', 'we', 'somebody', 'someone', 'everyone', 'nobody', 'my', 'our', 'his', 'her',
                      'their'):
             if first in DETS:
-                nps, joiner, end = self.phrases.parse_list(tail, 0)
+                _, joiner, end = self.phrases.parse_list(tail, 0)
                 if joiner and end < len(tail) and tail[end] in ('to', 'on', 'onto', 'into', 'in'):
                     return sentence   # "bring my hoodie, my backpack and my shoes to my bed": a list
             return self._noted_cut(sentence, cut)

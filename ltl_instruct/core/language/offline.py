@@ -317,7 +317,7 @@ _STATEMENT_VERBS = chatter.FINITE_VERBS | frozenset({
 # Verbs after "you'll" that say what the robot would do, not what may happen to it ("you'll find it there").
 _NOT_CONSEQUENCES = frozenset({'need', 'have', 'want', 'find', 'see', 'meet', 'pass', 'reach', 'come', 'go',
                                'visit', 'arrive', 'then', 'also', 'just', 'only', 'do', 'start', 'finish'})
-# What may happen, after "you'll be" / "you'll get": "mucky", "your wheels stuck", "stuck in it".
+# "you will / would / could / might / may ...": how a warning of what may happen starts.
 _CONSEQUENCE_MODALS = frozenset({'will', 'would', 'could', 'might', 'may'})
 
 
@@ -388,6 +388,8 @@ _CONSEQUENCES = frozenset({
     'hurt', 'tumble', 'topple', 'crash', 'bump', 'squash', 'frighten', 'annoy', 'wreck', 'smash', 'trample',
     'get', 'set', 'catch', 'soak', 'scratch', 'damage', 'ruin', 'tip', 'trail', 'tread', 'track', 'drip',
     'smear', 'splash', 'muddy', 'dirty'})
+# After "you'll be" / "you'll get", words of where the robot goes ("you'll get there"), not of what may
+# happen to it ("mucky", "your wheels stuck", "stuck in it").
 _NOT_STATES = frozenset({'it', 'them', 'there', 'here', 'back', 'to', 'him', 'her', 'me', 'us', 'up', 'out',
                          'in', 'into', 'on', 'onto', 'off', 'over', 'round', 'around', 'through', 'past'})
 
@@ -395,9 +397,9 @@ _NOT_STATES = frozenset({'it', 'them', 'there', 'here', 'back', 'to', 'him', 'he
 def _is_consequence(tail: Sequence[str]) -> bool:
     """Whether a part warns what would happen ("you'll wake him", "or you might get soaked", "you'll sink").
 
-    Only "(or) you will / would / could / might ..." with no rule, order or count word and no place to
-    go ("you'll find it by the door", "you'll get the bottle"); after "be" or "get", no thing named
-    with an article ("you'll be mucky", "you'll get your wheels stuck").
+    Only "(or / otherwise) you will / would / could / might / may ..." with no rule, order or count
+    word and no place to go ("you'll find it by the door", "you'll get the bottle"); after "be" or
+    "get", no thing named with an article ("you'll be mucky", "you'll get your wheels stuck").
     """
     k = 1 if tail[:1] in (['or'], ['otherwise']) else 0
     if tail[k:k + 1] != ['you'] or tail[k + 1:k + 2] == [] or tail[k + 1] not in _CONSEQUENCE_MODALS:

@@ -35,11 +35,11 @@ _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'i
                        'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
                        'yesterday', 'along', 'against', 'under', 'behind', 'beside', 'inside', 'up',
                        'down', 'my', 'our', 'each'})   # "the vase, the candle and the frame I showed you?"
+# ("a hairbrush and a little china dog my mother gave me": who gave it, a clause of its own)
 # Words that say where the listed things are ("... out in the corridor", "... by the door").
 _WHERE_LISTED = frozenset({'out', 'in', 'on', 'over', 'at', 'by', 'around', 'along', 'inside', 'under',
                            'behind', 'beside', 'near', 'outside', 'down', 'up', 'lying', 'sitting',
                            'standing', 'parked'})
-# ("a hairbrush and a little china dog my mother gave me": who gave it, a clause of its own)
 # Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
 _POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
                              'destination', 'choice', 'point', 'bit'})
@@ -257,7 +257,8 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     # "in the reverse of that order", "last to first", "backwards": in reverse order
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
-    (r'\bthe one in between\b', 'the middle one'),
+    # "the one in between", "the one in (the) middle": the middle one
+    (r'\bthe one in (?:between|(?:the )?middle)\b', 'the middle one'),
     # "do them backwards, gate first": the last thing listed said again as the start (it was merged
     # with the first thing, "bathroom_gate")
     (r'\bin reverse order (?:, |- )(?:(?:so |i e )?(?:the )?(?P<x>[a-z]+(?: [a-z]+){0,2}) first|'
@@ -269,8 +270,6 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'(?:^|(?<=[.;!?] ))(?:and |so |now )?(?:start|begin)(?:ing)? (?:from|with|at|on) the last(?: one)?'
      r'(?: ,)?(?: (?:and |then )?(?:finish|end)(?:ing)? (?:on|with|at|in) the first(?: one)?)?(?= [.;!?]|$)',
      'do them in reverse order'),
-    # "the one in middle": the middle one
-    (r'\bthe one in (?:the )?middle\b', 'the middle one'),
     # "the first and last of those": the first and the last
     (r'\bthe (?P<a>first|second|third) and (?P<b>last|second|third|fourth|fifth)\b'
      r'(?! (?:things|ones|items|places|stops|one|two)\b)', r'the \g<a> and the \g<b>'),
@@ -279,9 +278,12 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
 ))
 
 
+_LAST_LISTED = re.compile(r'\band (?:the |a |an |my |our )?([a-z ]+?) [.;:!?] ')
+
+
 def _last_listed(before: str, said: str) -> bool:
     """Whether ``said`` ends the last thing of the last list in ``before`` ("..., the lift and the gate")."""
-    found = re.findall(r'\band (?:the |a |an |my |our )?([a-z ]+?) [.;:!?] ', before + ' ')
+    found = _LAST_LISTED.findall(before + ' ')
     return bool(found) and found[-1].split()[-1] == said.split()[-1]
 
 
@@ -309,7 +311,7 @@ def _say_positions(tokens: list[str]) -> list[str]:
 def _names_label(words: list[str], k: int) -> bool:
     """Whether the number ``words[k]`` labels the noun before it ("then aisle 3"), no list position."""
     before = words[k - 1] if k > 0 else ''
-    return before.isalpha() and before not in _NOT_LISTED | _VERBS | _POSITION_WORDS
+    return before.isalpha() and before not in _NOT_LABELLING
 
 
 # Words before a number that make it a position in a list ("number 2", "item 3").
@@ -319,6 +321,8 @@ _POSITION_WORDS = frozenset({'number', 'item', 'stop', 'no', 'point', 'step', 'e
 
 _WHERE_WORDS = frozenset({'on', 'by', 'in', 'under', 'behind', 'next', 'near', 'beside', 'above', 'below',
                           'inside', 'at', 'against', 'outside', 'underneath', 'beneath'})
+# Words that may stand for the kind of a thing listed before ("another on the windowsill", "a third one").
+_KIND_AGAIN = frozenset({'another', 'one', 'second', 'third', 'fourth'})
 
 
 def _say_kind_again(tokens: list[str]) -> list[str]:
@@ -326,7 +330,7 @@ def _say_kind_again(tokens: list[str]) -> list[str]:
 
     "there's a cup on the desk, another on the windowsill and one under the chair": each is a cup.
     """
-    if not {'another', 'one', 'second', 'third', 'fourth'} & set(tokens):
+    if not _KIND_AGAIN & set(tokens):
         return tokens
     out = list(tokens)
     kind = ''
@@ -649,6 +653,8 @@ _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 
 # Words that start a clause of their own (the verbs of goals and deliveries).
 _VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
                        'deliver', 'carry', 'return', 'avoid'}
+# Words before a number that do not make it a label (_names_label): no noun, a verb, a position word.
+_NOT_LABELLING = _NOT_LISTED | _VERBS | _POSITION_WORDS
 
 
 # Markers that correct even where no comma sets them off, right after a name ("the couch sorry to the
@@ -755,8 +761,14 @@ def _strip_corr(seg: list[str]) -> list[str]:
     return seg
 
 
+def _bare_label(word: str) -> bool:
+    """Tell whether a word is a letter or a short number that labels one of a kind ("island D", "gate 4")."""
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4
+
+
 def _is_label(word: str) -> bool:
-    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4 or word in NUMBER_WORDS
+    """Tell whether a word labels one of a kind: a letter, a short number or a number word ("dock three")."""
+    return _bare_label(word) or word in NUMBER_WORDS
 
 
 def _relabel(prev: list[str], new: list[str]) -> Optional[list[str]]:
@@ -1539,9 +1551,8 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
     return None
 
 
-# Words a command starts with, and the words that join it to a remark before it ("the cat is fine just
-# don't go near the fish tank": no comma between them).
-_COMMAND_START = _VERBS | {'keep', 'stay', 'steer', 'avoid', 'do', 'never'}
+# The words that join a command to a remark before it ("the cat is fine just don't go near the fish tank":
+# no comma between them); the words a command starts with are _COMMAND_START.
 _COMMAND_JOINERS = frozenset({'just', 'but', 'and', 'so', 'only', 'instead', 'then'})
 
 
@@ -1571,6 +1582,8 @@ def _np_end(words: list[str]) -> int:
 # Verbs of keeping away that a restatement may start with ("keep the dog out... I mean, keep away from it").
 _KEEP_VERBS = frozenset({'keep', 'stay', 'steer'})
 _AVOID_VERBS = _KEEP_VERBS | {'avoid'}
+# Words a command starts with ("avoid" is one of _VERBS).
+_COMMAND_START = _VERBS | _KEEP_VERBS | {'do', 'never'}
 _DELIVERY = frozenset({'put', 'place', 'bring', 'take', 'throw', 'toss', 'move', 'carry', 'deliver', 'drop',
                        'leave', 'set', 'stash', 'store', 'dump', 'load', 'unload', 'hang', 'return', 'stick'})
 
@@ -1698,11 +1711,6 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     notes.append(f'only {np.descriptor} kept of that list')
     return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
-
-
-def _bare_label(word: str) -> bool:
-    """Tell whether a word is a letter or a short number that labels one of a kind ("island D", "gate 4")."""
-    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4
 
 
 def _only_label(prev: list[str], label: str, notes: list[str]) -> Optional[list[str]]:
@@ -1839,6 +1847,11 @@ def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     return prev[:hit.end + 1] + words[k + 1:dest.end] + prev[old.end:]
 
 
+# Words said before the two places of a reordering ("do the oven before you do the fridge").
+_BEFORE_MOVED = _VERBS | {'do', 'to', 'at', 'by', 'over', 'up', 'just'}
+_BEFORE_ANCHOR = _VERBS | {'do', 'to', 'at', 'by', 'you'}   # ("go" is one of _VERBS)
+
+
 def _reorder_pair(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Move one goal of the sequence said before next to another: the order of the two corrected.
 
@@ -1850,7 +1863,7 @@ def _reorder_pair(prev: list[str], seg: list[str], notes: list[str]) -> Optional
     while words and words[-1] in (',', 'instead', 'please'):
         words = words[:-1]
     k = 0
-    while k < len(words) and words[k] in _VERBS | {'do', 'to', 'at', 'by', 'over', 'up', 'just'}:
+    while k < len(words) and words[k] in _BEFORE_MOVED:
         k += 1
     parser = PhraseParser()
     first = parser.parse(words, k)
@@ -1867,7 +1880,7 @@ def _reorder_pair(prev: list[str], seg: list[str], notes: list[str]) -> Optional
     else:
         return None
     k2 = e
-    while k2 < len(words) and words[k2] in _VERBS | {'do', 'to', 'at', 'by', 'go', 'you'}:
+    while k2 < len(words) and words[k2] in _BEFORE_ANCHOR:
         k2 += 1   # "the oven before you do the fridge"
     second = parser.parse(words, k2)
     if second is None or second.pronoun or second.end != len(words):

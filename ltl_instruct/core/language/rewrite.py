@@ -952,9 +952,9 @@ def _replace_step(prev: list[str], pos: int, rest: list[str], notes: list[str]) 
     if not words:
         return None
     command = words[0] in _VERBS and words[1:2] not in (['it'], ['them'])
-    statement = not command and (chatter.is_statement(words, _np_end(words)) or chatter.is_person_statement(
-        words) or len(words) > 2 and words[0] not in DETERMINERS and words[0] not in _VERBS and words[1] in (
-        'is', 'are', 'was', 'has', 'have') and not chatter.carries_constraint(words))
+    statement = not command and (_stated(words) or chatter.is_person_statement(words) or len(words) > 2 and (
+        words[0] not in DETERMINERS and words[0] not in _VERBS and
+        words[1] in ('is', 'are', 'was', 'has', 'have') and not chatter.carries_constraint(words)))
     if not command and not statement:
         return None
     a = _step_start(prev, pos)
@@ -972,22 +972,24 @@ def _replace_step(prev: list[str], pos: int, rest: list[str], notes: list[str]) 
     return prev[:a] + prev[b:]
 
 
+def _clause_open(prev: list[str], pos: int) -> int:
+    """Where the clause holding ``prev[pos]`` opens: the last stop or connective before it (-1: none)."""
+    return max((q for q in range(pos) if prev[q] in PUNCT or prev[q] in ('and', 'then', 'but')), default=-1)
+
+
 def _remove_clause(prev: list[str], pos: int, narrow: bool = False, command: bool = False) -> list[str]:
     """Remove the clause around token ``pos`` (from the connective before it to the next stop).
 
     With ``narrow``, the next connective (``,``, ``then``, ``and``) also ends it: one goal of a list.
     With ``command``, a connective that opens a new command ends it ("stay away from X and head to Y").
     """
-    a = pos
-    while a > 0 and prev[a - 1] not in PUNCT and prev[a - 1] not in ('and', 'but', 'then'):
-        a -= 1
+    a = _clause_open(prev, pos) + 1
     while a > 0 and prev[a - 1] in ('and', 'but', 'then', ','):
         a -= 1
     b = pos
     while b < len(prev) and prev[b] not in '.;!?' and not (
             narrow and b > pos and prev[b] in (',', 'then', 'and')) and not (
-            command and b > pos and prev[b] in (',', 'then', 'and') and _opens_command(prev, b + 1) and
-            prev[b + 1] not in _COMMAND_JOINERS):
+            command and b > pos and prev[b] in (',', 'then', 'and') and _command_after(prev, b)):
         b += 1
     if command and a == 0 and b < len(prev) and prev[b] not in '.;!?':
         b += 1   # the clause opened the instruction: its joiner to the next goes with it
@@ -1314,8 +1316,9 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             out = moved + after
             i = len(moved)
             continue
+        stated = c > lead and _stated(said)
         so = 1 if seg[c + 1:c + 2] == ['so'] else 0
-        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 + so < len(seg) and (
+        if stated and c + 1 + so < len(seg) and (
                 seg[c + 1 + so] in _VERBS or seg[c + 1 + so] in ('the', 'my', 'your', 'our') and
                 'instead' in seg[c + 1 + so:]) and marker not in _CANCEL:
             # "actually it has been washed already, (so) put it in the dryer": the reason, then the step
@@ -1330,7 +1333,7 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 out = fine + after
                 i = len(fine)
                 continue
-        if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
+        if stated and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
             out = prev + [','] + _forget_what_was_said(prev, said, seg[c + 1:]) + after
@@ -1397,10 +1400,11 @@ def _forget_what_was_said(prev: list[str], said: list[str], rest: list[str]) -> 
     the remark names, if a step said before names it too (else "that" is the last thing said).
     """
     m = _marker_at([','] + rest, 1)   # (read as after a comma: "forget" opens no request here)
-    if not m or rest[0] not in _CANCEL or [t for t in rest[m:] if t not in PUNCT] not in (
+    what = [t for t in rest[m:] if t not in PUNCT]
+    if not m or rest[0] not in _CANCEL or what not in (
             [], ['that'], ['it'], ['about', 'that'], ['about', 'it']):
         return rest
-    if rest[:2] == ['never', 'mind'] and [t for t in rest[m:] if t not in PUNCT] == []:
+    if rest[:2] == ['never', 'mind'] and not what:
         return rest   # "never mind" alone may take the whole request back
     end = _np_end(said)
     # (or said with no article, as the task names it: "aisle 7 is off")
@@ -1520,8 +1524,7 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
     for p in reversed(avoid_at):
         # only what the avoidance clause names ("keep away from the heater and go to the sofa": not the sofa)
         q = next((q for q in range(p + 1, len(prev)) if prev[q] in '.;!?' or prev[q] in (
-            ',', 'and', 'then', 'but') and _opens_command(prev, q + 1) and
-            prev[q + 1] not in _COMMAND_JOINERS), len(prev))
+            ',', 'and', 'then', 'but') and _command_after(prev, q)), len(prev))
         spans = [sp for sp in _np_spans(prev[p:q]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
@@ -1529,11 +1532,10 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             parts = [_cleft_avoidance(c[1:] if c[:1] in leads else c)
                      for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
             # what else is said is kept: a command, or any part holding a rule ("just don't go near X")
-            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and (
+            kept = [c for c in parts if c and not _stated(c) and (
                 c[0] in _COMMAND_START or chatter.carries_constraint(c))]
             a, b = p + spans[0].start, p + spans[0].end
-            opens = max((q for q in range(p) if prev[q] in PUNCT or prev[q] in ('and', 'then', 'but')),
-                        default=-1)
+            opens = _clause_open(prev, p)
             if len(kept) == 1 and (b < len(prev) and prev[b] in _SCOPE_WORDS or any(
                     prev[q] in _SCOPE_WORDS for q in range(opens + 1, p))):
                 # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place
@@ -1564,6 +1566,11 @@ def _opens_command(seg: list[str], k: int) -> bool:
         seg[k] != 'do' or seg[k + 1:k + 2] in (['not'], ['never']))
 
 
+def _command_after(seg: list[str], k: int) -> bool:
+    """Whether a command of its own starts right after the connective ``seg[k]`` ("..., head to Y")."""
+    return _opens_command(seg, k + 1) and seg[k + 1] not in _COMMAND_JOINERS
+
+
 def _split_commas(seg: list[str]) -> list[list[str]]:
     out: list[list[str]] = [[]]
     for t in seg:
@@ -1577,6 +1584,11 @@ def _split_commas(seg: list[str]) -> list[list[str]]:
 def _np_end(words: list[str]) -> int:
     np = PhraseParser().parse(words, 0) if words and words[0] in DETERMINERS else None
     return np.end if np is not None else 0
+
+
+def _stated(words: list[str]) -> bool:
+    """Whether ``words`` describe the scene ("the milk is already in there") rather than ask for something."""
+    return chatter.is_statement(words, _np_end(words))
 
 
 # Verbs of keeping away that a restatement may start with ("keep the dog out... I mean, keep away from it").
@@ -2222,6 +2234,10 @@ def _cancel_then_only(prev: list[str], marker: str, seg: list[str], notes: list[
     return _only_this(prev, ['just'] + kept, notes)
 
 
+# Words that make a story after a correction hold a rule (it is not left out as asking for nothing).
+_STORY_RULE_WORDS = chatter.PLACE_RULE_WORDS | {'before', 'after', 'first', 'last'}
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     scoped = _scope_corrected(prev, seg, notes)
     if scoped is not None:
@@ -2254,10 +2270,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     neither = _neither(prev, seg, notes)
     if neither is not None:
         return neither
-    named = {w for sp in _np_spans(prev) for w in prev[sp.start:sp.end]} if marker in _CANCEL else set()
+    prev_spans = _np_spans(prev) if marker in _CANCEL else []
+    named = {w for sp in prev_spans for w in prev[sp.start:sp.end]}
     if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and seg[1] in _VERBS and named:
         # "bring a cup to the sink. scratch that, head to the garage": the whole step replaced
-        step = _replace_step(prev, _np_spans(prev)[-1].start, seg, notes)
+        step = _replace_step(prev, prev_spans[-1].start, seg, notes)
         if step is not None:
             return step
     if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and (
@@ -2326,8 +2343,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         go = cut + 1 + (seg[cut + 1:cut + 2] == ['so'])
         said = _without_state_not(seg[:cut]) if cut > 2 else []
         if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do', 'only') or seg[go] in _VERBS) and \
-                chatter.is_statement(said, _np_end(said)) and \
-                not chatter.carries_constraint(said) and \
+                _stated(said) and not chatter.carries_constraint(said) and \
                 (not {sp.head for sp in _np_spans(seg[:cut])} & {sp.head for sp in _np_spans(prev)} or
                  _said_replaced(seg[go:]) or seg[go] in ('just', 'only') and 'avoid' in prev):
             # "actually it's chucking it down, just go to the conservatory": the reason asks for nothing
@@ -2369,10 +2385,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             break
         if _cleft_avoidance(tail) is not tail:
             continue   # "the kitchen's fine, it's the floor that's wet": says what to avoid instead
-        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or (chatter.is_statement(
-                tail, _np_end(tail)) or chatter.is_story(tail, _VERBS) and not (chatter.PLACE_RULE_WORDS | {
-                    'before', 'after', 'first', 'last'}) & set(tail)) and not [
-                t for t in seg[end:] if t not in PUNCT]:
+        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or (
+                _stated(tail) or chatter.is_story(tail, _VERBS) and not _STORY_RULE_WORDS & set(tail)) and \
+                not [t for t in seg[end:] if t not in PUNCT]:
             # "I meant the cooler, sorry, it's been a long day": the apology and the reason ask for nothing
             dropped = ' '.join(t for t in seg[k + 1:] if t not in PUNCT)
             notes.append(f'left out "{dropped}" (asks for nothing)')
@@ -2540,7 +2555,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return prev + ([','] if prev and prev[-1] not in PUNCT and rest else []) + rest
         if hit is None:
             return None
-        if new and chatter.is_statement(new, _np_end(new)):
+        if new and _stated(new):
             new = []   # "never mind the dog, it is outside": a reason, not a replacement
         lead = next((k for k in range(len(new)) if new[k] not in _REPLACED_VERB_WORDS), len(new))
         said = _clause_kind(prev[max((p for p in range(hit.start) if prev[p] in '.;!?,' or prev[p] in (
@@ -2579,8 +2594,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         rest = seg[k + 2:]
         if tnp is not None:
             for sp in reversed(_np_spans(prev)):
-                opens = max((p for p in range(sp.start)
-                             if prev[p] in PUNCT or prev[p] in ('and', 'then', 'but')), default=-1)
+                opens = _clause_open(prev, sp.start)
                 if sp.head == tnp.head and _clause_kind(prev[opens + 1:sp.start]) == 'avoid':
                     # (only an avoidance: "go to the sofa. actually the sofa is fine" drops no goal)
                     notes.append(f'avoiding {tnp.descriptor} was retracted')
@@ -2762,7 +2776,7 @@ def _replace_one(prev: list[str], seg: list[str], named: NounPhrase, notes: list
     rest = seg[named.end + 1:]
     c = rest.index(',') if ',' in rest else len(rest)
     new, tail = _strip_corr(rest[:c]), [t for t in rest[c + 1:] if t not in PUNCT]
-    if tail and (chatter.carries_constraint(tail) or not chatter.is_statement(tail, _np_end(tail))):
+    if tail and (chatter.carries_constraint(tail) or not _stated(tail)):
         return None   # only a statement may follow: what else is said is read as said
     nnp = PhraseParser().parse(new, 0) if new else None
     if nnp is None or nnp.end != len(new):

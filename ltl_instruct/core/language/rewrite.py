@@ -35,11 +35,11 @@ _LIST_END = frozenset({':', '.', ',', ';', '!', '?', 'here', 'lying', 'from', 'i
                        'i', 'we', 'that', 'you', 'parked', 'lined', 'for', 'which', 'earlier', 'were', 'was',
                        'yesterday', 'along', 'against', 'under', 'behind', 'beside', 'inside', 'up',
                        'down', 'my', 'our', 'each'})   # "the vase, the candle and the frame I showed you?"
+# ("a hairbrush and a little china dog my mother gave me": who gave it, a clause of its own)
 # Words that say where the listed things are ("... out in the corridor", "... by the door").
 _WHERE_LISTED = frozenset({'out', 'in', 'on', 'over', 'at', 'by', 'around', 'along', 'inside', 'under',
                            'behind', 'beside', 'near', 'outside', 'down', 'up', 'lying', 'sitting',
                            'standing', 'parked'})
-# ("a hairbrush and a little china dog my mother gave me": who gave it, a clause of its own)
 # Nouns that only stand for a listed thing after a position word ("the second place I mentioned").
 _POSITION_NOUNS = frozenset({'one', 'item', 'thing', 'place', 'spot', 'stop', 'location', 'object', 'option',
                              'destination', 'choice', 'point', 'bit'})
@@ -257,7 +257,8 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     # "in the reverse of that order", "last to first", "backwards": in reverse order
     (r'\b(?:in the reverse of that order|in the opposite order|in reverse|from last to first|last to first|'
      r'backwards|back to front)(?! order)\b', 'in reverse order'),
-    (r'\bthe one in between\b', 'the middle one'),
+    # "the one in between", "the one in (the) middle": the middle one
+    (r'\bthe one in (?:between|(?:the )?middle)\b', 'the middle one'),
     # "do them backwards, gate first": the last thing listed said again as the start (it was merged
     # with the first thing, "bathroom_gate")
     (r'\bin reverse order (?:, |- )(?:(?:so |i e )?(?:the )?(?P<x>[a-z]+(?: [a-z]+){0,2}) first|'
@@ -269,8 +270,6 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
     (r'(?:^|(?<=[.;!?] ))(?:and |so |now )?(?:start|begin)(?:ing)? (?:from|with|at|on) the last(?: one)?'
      r'(?: ,)?(?: (?:and |then )?(?:finish|end)(?:ing)? (?:on|with|at|in) the first(?: one)?)?(?= [.;!?]|$)',
      'do them in reverse order'),
-    # "the one in middle": the middle one
-    (r'\bthe one in (?:the )?middle\b', 'the middle one'),
     # "the first and last of those": the first and the last
     (r'\bthe (?P<a>first|second|third) and (?P<b>last|second|third|fourth|fifth)\b'
      r'(?! (?:things|ones|items|places|stops|one|two)\b)', r'the \g<a> and the \g<b>'),
@@ -279,9 +278,12 @@ _POSITION_SAID = tuple((re.compile(p), r) for p, r in (
 ))
 
 
+_LAST_LISTED = re.compile(r'\band (?:the |a |an |my |our )?([a-z ]+?) [.;:!?] ')
+
+
 def _last_listed(before: str, said: str) -> bool:
     """Whether ``said`` ends the last thing of the last list in ``before`` ("..., the lift and the gate")."""
-    found = re.findall(r'\band (?:the |a |an |my |our )?([a-z ]+?) [.;:!?] ', before + ' ')
+    found = _LAST_LISTED.findall(before + ' ')
     return bool(found) and found[-1].split()[-1] == said.split()[-1]
 
 
@@ -309,7 +311,7 @@ def _say_positions(tokens: list[str]) -> list[str]:
 def _names_label(words: list[str], k: int) -> bool:
     """Whether the number ``words[k]`` labels the noun before it ("then aisle 3"), no list position."""
     before = words[k - 1] if k > 0 else ''
-    return before.isalpha() and before not in _NOT_LISTED | _VERBS | _POSITION_WORDS
+    return before.isalpha() and before not in _NOT_LABELLING
 
 
 # Words before a number that make it a position in a list ("number 2", "item 3").
@@ -319,6 +321,8 @@ _POSITION_WORDS = frozenset({'number', 'item', 'stop', 'no', 'point', 'step', 'e
 
 _WHERE_WORDS = frozenset({'on', 'by', 'in', 'under', 'behind', 'next', 'near', 'beside', 'above', 'below',
                           'inside', 'at', 'against', 'outside', 'underneath', 'beneath'})
+# Words that may stand for the kind of a thing listed before ("another on the windowsill", "a third one").
+_KIND_AGAIN = frozenset({'another', 'one', 'second', 'third', 'fourth'})
 
 
 def _say_kind_again(tokens: list[str]) -> list[str]:
@@ -326,7 +330,7 @@ def _say_kind_again(tokens: list[str]) -> list[str]:
 
     "there's a cup on the desk, another on the windowsill and one under the chair": each is a cup.
     """
-    if not {'another', 'one', 'second', 'third', 'fourth'} & set(tokens):
+    if not _KIND_AGAIN & set(tokens):
         return tokens
     out = list(tokens)
     kind = ''
@@ -649,6 +653,8 @@ _RESTATE = frozenset({'on', 'come', 'change', 'let', 'actually', 'hmm', 'wait', 
 # Words that start a clause of their own (the verbs of goals and deliveries).
 _VERBS = NAME_VERBS | {'go', 'head', 'visit', 'bring', 'take', 'put', 'move', 'drive', 'fly', 'walk',
                        'deliver', 'carry', 'return', 'avoid'}
+# Words before a number that do not make it a label (_names_label): no noun, a verb, a position word.
+_NOT_LABELLING = _NOT_LISTED | _VERBS | _POSITION_WORDS
 
 
 # Markers that correct even where no comma sets them off, right after a name ("the couch sorry to the
@@ -755,8 +761,14 @@ def _strip_corr(seg: list[str]) -> list[str]:
     return seg
 
 
+def _bare_label(word: str) -> bool:
+    """Tell whether a word is a letter or a short number that labels one of a kind ("island D", "gate 4")."""
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4
+
+
 def _is_label(word: str) -> bool:
-    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4 or word in NUMBER_WORDS
+    """Tell whether a word labels one of a kind: a letter, a short number or a number word ("dock three")."""
+    return _bare_label(word) or word in NUMBER_WORDS
 
 
 def _relabel(prev: list[str], new: list[str]) -> Optional[list[str]]:
@@ -940,9 +952,9 @@ def _replace_step(prev: list[str], pos: int, rest: list[str], notes: list[str]) 
     if not words:
         return None
     command = words[0] in _VERBS and words[1:2] not in (['it'], ['them'])
-    statement = not command and (chatter.is_statement(words, _np_end(words)) or chatter.is_person_statement(
-        words) or len(words) > 2 and words[0] not in DETERMINERS and words[0] not in _VERBS and words[1] in (
-        'is', 'are', 'was', 'has', 'have') and not chatter.carries_constraint(words))
+    statement = not command and (_stated(words) or chatter.is_person_statement(words) or len(words) > 2 and (
+        words[0] not in DETERMINERS and words[0] not in _VERBS and
+        words[1] in ('is', 'are', 'was', 'has', 'have') and not chatter.carries_constraint(words)))
     if not command and not statement:
         return None
     a = _step_start(prev, pos)
@@ -960,22 +972,24 @@ def _replace_step(prev: list[str], pos: int, rest: list[str], notes: list[str]) 
     return prev[:a] + prev[b:]
 
 
+def _clause_open(prev: list[str], pos: int) -> int:
+    """Where the clause holding ``prev[pos]`` opens: the last stop or connective before it (-1: none)."""
+    return max((q for q in range(pos) if prev[q] in PUNCT or prev[q] in ('and', 'then', 'but')), default=-1)
+
+
 def _remove_clause(prev: list[str], pos: int, narrow: bool = False, command: bool = False) -> list[str]:
     """Remove the clause around token ``pos`` (from the connective before it to the next stop).
 
     With ``narrow``, the next connective (``,``, ``then``, ``and``) also ends it: one goal of a list.
     With ``command``, a connective that opens a new command ends it ("stay away from X and head to Y").
     """
-    a = pos
-    while a > 0 and prev[a - 1] not in PUNCT and prev[a - 1] not in ('and', 'but', 'then'):
-        a -= 1
+    a = _clause_open(prev, pos) + 1
     while a > 0 and prev[a - 1] in ('and', 'but', 'then', ','):
         a -= 1
     b = pos
     while b < len(prev) and prev[b] not in '.;!?' and not (
             narrow and b > pos and prev[b] in (',', 'then', 'and')) and not (
-            command and b > pos and prev[b] in (',', 'then', 'and') and _opens_command(prev, b + 1) and
-            prev[b + 1] not in _COMMAND_JOINERS):
+            command and b > pos and prev[b] in (',', 'then', 'and') and _command_after(prev, b)):
         b += 1
     if command and a == 0 and b < len(prev) and prev[b] not in '.;!?':
         b += 1   # the clause opened the instruction: its joiner to the next goes with it
@@ -1302,8 +1316,9 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
             out = moved + after
             i = len(moved)
             continue
+        stated = c > lead and _stated(said)
         so = 1 if seg[c + 1:c + 2] == ['so'] else 0
-        if c > lead and chatter.is_statement(said, _np_end(said)) and c + 1 + so < len(seg) and (
+        if stated and c + 1 + so < len(seg) and (
                 seg[c + 1 + so] in _VERBS or seg[c + 1 + so] in ('the', 'my', 'your', 'our') and
                 'instead' in seg[c + 1 + so:]) and marker not in _CANCEL:
             # "actually it has been washed already, (so) put it in the dryer": the reason, then the step
@@ -1318,7 +1333,7 @@ def _apply_corrections(tokens: list[str], notes: list[str]) -> list[str]:
                 out = fine + after
                 i = len(fine)
                 continue
-        if c > lead and chatter.is_statement(said, _np_end(said)) and _marker_at(seg, c + 1):
+        if stated and _marker_at(seg, c + 1):
             # "wait, the milk is already in there, I meant the juice": the reason, then the correction
             notes.append(f'took "{" ".join(seg[lead:c])}" as a description of the scene, not a task')
             out = prev + [','] + _forget_what_was_said(prev, said, seg[c + 1:]) + after
@@ -1385,10 +1400,11 @@ def _forget_what_was_said(prev: list[str], said: list[str], rest: list[str]) -> 
     the remark names, if a step said before names it too (else "that" is the last thing said).
     """
     m = _marker_at([','] + rest, 1)   # (read as after a comma: "forget" opens no request here)
-    if not m or rest[0] not in _CANCEL or [t for t in rest[m:] if t not in PUNCT] not in (
+    what = [t for t in rest[m:] if t not in PUNCT]
+    if not m or rest[0] not in _CANCEL or what not in (
             [], ['that'], ['it'], ['about', 'that'], ['about', 'it']):
         return rest
-    if rest[:2] == ['never', 'mind'] and [t for t in rest[m:] if t not in PUNCT] == []:
+    if rest[:2] == ['never', 'mind'] and not what:
         return rest   # "never mind" alone may take the whole request back
     end = _np_end(said)
     # (or said with no article, as the task names it: "aisle 7 is off")
@@ -1508,8 +1524,7 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
     for p in reversed(avoid_at):
         # only what the avoidance clause names ("keep away from the heater and go to the sofa": not the sofa)
         q = next((q for q in range(p + 1, len(prev)) if prev[q] in '.;!?' or prev[q] in (
-            ',', 'and', 'then', 'but') and _opens_command(prev, q + 1) and
-            prev[q + 1] not in _COMMAND_JOINERS), len(prev))
+            ',', 'and', 'then', 'but') and _command_after(prev, q)), len(prev))
         spans = [sp for sp in _np_spans(prev[p:q]) if not head or sp.head == head]
         if spans:
             notes.append('the avoidance was retracted')
@@ -1517,11 +1532,10 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
             parts = [_cleft_avoidance(c[1:] if c[:1] in leads else c)
                      for c in _split_commas(seg[:at]) + _split_commas(seg[end:])]
             # what else is said is kept: a command, or any part holding a rule ("just don't go near X")
-            kept = [c for c in parts if c and not chatter.is_statement(c, _np_end(c)) and (
+            kept = [c for c in parts if c and not _stated(c) and (
                 c[0] in _COMMAND_START or chatter.carries_constraint(c))]
             a, b = p + spans[0].start, p + spans[0].end
-            opens = max((q for q in range(p) if prev[q] in PUNCT or prev[q] in ('and', 'then', 'but')),
-                        default=-1)
+            opens = _clause_open(prev, p)
             if len(kept) == 1 and (b < len(prev) and prev[b] in _SCOPE_WORDS or any(
                     prev[q] in _SCOPE_WORDS for q in range(opens + 1, p))):
                 # "avoid the dog while you carry it. the dog's fine, just avoid the sprinklers": in its place
@@ -1539,9 +1553,8 @@ def _drop_avoidance(prev: list[str], seg: list[str], at: int, end: int, head: st
     return None
 
 
-# Words a command starts with, and the words that join it to a remark before it ("the cat is fine just
-# don't go near the fish tank": no comma between them).
-_COMMAND_START = _VERBS | {'keep', 'stay', 'steer', 'avoid', 'do', 'never'}
+# The words that join a command to a remark before it ("the cat is fine just don't go near the fish tank":
+# no comma between them); the words a command starts with are _COMMAND_START.
 _COMMAND_JOINERS = frozenset({'just', 'but', 'and', 'so', 'only', 'instead', 'then'})
 
 
@@ -1551,6 +1564,11 @@ def _opens_command(seg: list[str], k: int) -> bool:
         k += 1
     return k < len(seg) and seg[k] in _COMMAND_START and (
         seg[k] != 'do' or seg[k + 1:k + 2] in (['not'], ['never']))
+
+
+def _command_after(seg: list[str], k: int) -> bool:
+    """Whether a command of its own starts right after the connective ``seg[k]`` ("..., head to Y")."""
+    return _opens_command(seg, k + 1) and seg[k + 1] not in _COMMAND_JOINERS
 
 
 def _split_commas(seg: list[str]) -> list[list[str]]:
@@ -1568,9 +1586,16 @@ def _np_end(words: list[str]) -> int:
     return np.end if np is not None else 0
 
 
+def _stated(words: list[str]) -> bool:
+    """Whether ``words`` describe the scene ("the milk is already in there") rather than ask for something."""
+    return chatter.is_statement(words, _np_end(words))
+
+
 # Verbs of keeping away that a restatement may start with ("keep the dog out... I mean, keep away from it").
 _KEEP_VERBS = frozenset({'keep', 'stay', 'steer'})
 _AVOID_VERBS = _KEEP_VERBS | {'avoid'}
+# Words a command starts with ("avoid" is one of _VERBS).
+_COMMAND_START = _VERBS | _KEEP_VERBS | {'do', 'never'}
 _DELIVERY = frozenset({'put', 'place', 'bring', 'take', 'throw', 'toss', 'move', 'carry', 'deliver', 'drop',
                        'leave', 'set', 'stash', 'store', 'dump', 'load', 'unload', 'hang', 'return', 'stick'})
 
@@ -1698,11 +1723,6 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         return None
     notes.append(f'only {np.descriptor} kept of that list')
     return prev[:spans[a].start] + prev[spans[hit].start:spans[hit].end] + prev[spans[b].end:]
-
-
-def _bare_label(word: str) -> bool:
-    """Tell whether a word is a letter or a short number that labels one of a kind ("island D", "gate 4")."""
-    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4
 
 
 def _only_label(prev: list[str], label: str, notes: list[str]) -> Optional[list[str]]:
@@ -1839,6 +1859,11 @@ def _goes_to(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list
     return prev[:hit.end + 1] + words[k + 1:dest.end] + prev[old.end:]
 
 
+# Words said before the two places of a reordering ("do the oven before you do the fridge").
+_BEFORE_MOVED = _VERBS | {'do', 'to', 'at', 'by', 'over', 'up', 'just'}
+_BEFORE_ANCHOR = _VERBS | {'do', 'to', 'at', 'by', 'you'}   # ("go" is one of _VERBS)
+
+
 def _reorder_pair(prev: list[str], seg: list[str], notes: list[str]) -> Optional[list[str]]:
     """Move one goal of the sequence said before next to another: the order of the two corrected.
 
@@ -1850,7 +1875,7 @@ def _reorder_pair(prev: list[str], seg: list[str], notes: list[str]) -> Optional
     while words and words[-1] in (',', 'instead', 'please'):
         words = words[:-1]
     k = 0
-    while k < len(words) and words[k] in _VERBS | {'do', 'to', 'at', 'by', 'over', 'up', 'just'}:
+    while k < len(words) and words[k] in _BEFORE_MOVED:
         k += 1
     parser = PhraseParser()
     first = parser.parse(words, k)
@@ -1867,7 +1892,7 @@ def _reorder_pair(prev: list[str], seg: list[str], notes: list[str]) -> Optional
     else:
         return None
     k2 = e
-    while k2 < len(words) and words[k2] in _VERBS | {'do', 'to', 'at', 'by', 'go', 'you'}:
+    while k2 < len(words) and words[k2] in _BEFORE_ANCHOR:
         k2 += 1   # "the oven before you do the fridge"
     second = parser.parse(words, k2)
     if second is None or second.pronoun or second.end != len(words):
@@ -2209,6 +2234,10 @@ def _cancel_then_only(prev: list[str], marker: str, seg: list[str], notes: list[
     return _only_this(prev, ['just'] + kept, notes)
 
 
+# Words that make a story after a correction hold a rule (it is not left out as asking for nothing).
+_STORY_RULE_WORDS = chatter.PLACE_RULE_WORDS | {'before', 'after', 'first', 'last'}
+
+
 def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> Optional[list[str]]:
     scoped = _scope_corrected(prev, seg, notes)
     if scoped is not None:
@@ -2241,10 +2270,11 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
     neither = _neither(prev, seg, notes)
     if neither is not None:
         return neither
-    named = {w for sp in _np_spans(prev) for w in prev[sp.start:sp.end]} if marker in _CANCEL else set()
+    prev_spans = _np_spans(prev) if marker in _CANCEL else []
+    named = {w for sp in prev_spans for w in prev[sp.start:sp.end]}
     if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and seg[1] in _VERBS and named:
         # "bring a cup to the sink. scratch that, head to the garage": the whole step replaced
-        step = _replace_step(prev, _np_spans(prev)[-1].start, seg, notes)
+        step = _replace_step(prev, prev_spans[-1].start, seg, notes)
         if step is not None:
             return step
     if marker in _CANCEL and seg[:1] == [','] and len(seg) > 2 and (
@@ -2313,8 +2343,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         go = cut + 1 + (seg[cut + 1:cut + 2] == ['so'])
         said = _without_state_not(seg[:cut]) if cut > 2 else []
         if cut > 2 and seg[go:go + 1] and (seg[go] in ('just', 'do', 'only') or seg[go] in _VERBS) and \
-                chatter.is_statement(said, _np_end(said)) and \
-                not chatter.carries_constraint(said) and \
+                _stated(said) and not chatter.carries_constraint(said) and \
                 (not {sp.head for sp in _np_spans(seg[:cut])} & {sp.head for sp in _np_spans(prev)} or
                  _said_replaced(seg[go:]) or seg[go] in ('just', 'only') and 'avoid' in prev):
             # "actually it's chucking it down, just go to the conservatory": the reason asks for nothing
@@ -2356,10 +2385,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             break
         if _cleft_avoidance(tail) is not tail:
             continue   # "the kitchen's fine, it's the floor that's wet": says what to avoid instead
-        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or (chatter.is_statement(
-                tail, _np_end(tail)) or chatter.is_story(tail, _VERBS) and not (chatter.PLACE_RULE_WORDS | {
-                    'before', 'after', 'first', 'last'}) & set(tail)) and not [
-                t for t in seg[end:] if t not in PUNCT]:
+        if tuple(tail) in _APOLOGIES or tail[:1] == ['same'] and len(tail) <= 4 or (
+                _stated(tail) or chatter.is_story(tail, _VERBS) and not _STORY_RULE_WORDS & set(tail)) and \
+                not [t for t in seg[end:] if t not in PUNCT]:
             # "I meant the cooler, sorry, it's been a long day": the apology and the reason ask for nothing
             dropped = ' '.join(t for t in seg[k + 1:] if t not in PUNCT)
             notes.append(f'left out "{dropped}" (asks for nothing)')
@@ -2527,7 +2555,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             return prev + ([','] if prev and prev[-1] not in PUNCT and rest else []) + rest
         if hit is None:
             return None
-        if new and chatter.is_statement(new, _np_end(new)):
+        if new and _stated(new):
             new = []   # "never mind the dog, it is outside": a reason, not a replacement
         lead = next((k for k in range(len(new)) if new[k] not in _REPLACED_VERB_WORDS), len(new))
         said = _clause_kind(prev[max((p for p in range(hit.start) if prev[p] in '.;!?,' or prev[p] in (
@@ -2566,8 +2594,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
         rest = seg[k + 2:]
         if tnp is not None:
             for sp in reversed(_np_spans(prev)):
-                opens = max((p for p in range(sp.start)
-                             if prev[p] in PUNCT or prev[p] in ('and', 'then', 'but')), default=-1)
+                opens = _clause_open(prev, sp.start)
                 if sp.head == tnp.head and _clause_kind(prev[opens + 1:sp.start]) == 'avoid':
                     # (only an avoidance: "go to the sofa. actually the sofa is fine" drops no goal)
                     notes.append(f'avoiding {tnp.descriptor} was retracted')
@@ -2749,7 +2776,7 @@ def _replace_one(prev: list[str], seg: list[str], named: NounPhrase, notes: list
     rest = seg[named.end + 1:]
     c = rest.index(',') if ',' in rest else len(rest)
     new, tail = _strip_corr(rest[:c]), [t for t in rest[c + 1:] if t not in PUNCT]
-    if tail and (chatter.carries_constraint(tail) or not chatter.is_statement(tail, _np_end(tail))):
+    if tail and (chatter.carries_constraint(tail) or not _stated(tail)):
         return None   # only a statement may follow: what else is said is read as said
     nnp = PhraseParser().parse(new, 0) if new else None
     if nnp is None or nnp.end != len(new):

@@ -152,7 +152,6 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('first', 'thing'), ('first', 'thing', 'tomorrow'), ('first', 'thing', 'in', 'the', 'morning'),
     ('tomorrow',), ('tomorrow', 'morning'), ('tomorrow', 'evening'), ('already',), ('anyway',), ('pronto',),
     ('sharpish',), ('smartish',), ('quick', 'smart'), ('double', 'quick'), ('chop', 'chop'),
-    ('on', 'the', 'double'),
     ('and', 'stuff'), ('or', 'something'), ('or', 'whatever'), ('if', 'that', 'is', 'ok'),
     ('if', 'that', 'is', 'okay'), ('if', 'that', 'is', 'alright'), ('if', 'that', 'is', 'fine'),
     ('if', 'you', 'would', 'be', 'so', 'kind'), ('if', 'it', 'is', 'not', 'too', 'much', 'trouble'),
@@ -1338,7 +1337,7 @@ _STORY_VERBS = frozenset('''
 says said bought took left told thinks thought rang called came went gets got is was has had keeps kept
 will would did does loves hates likes used moved broke fixed planted put set lost found rearranged
 always never usually often still just only
-leaves lives plays hides sleeps thinks makes loses forgets drops
+leaves lives plays hides sleeps makes loses forgets drops
 '''.split())
 _STORY_LEADS = frozenset({'oh', 'well', 'and', 'but', 'so', 'anyway', 'honestly', 'now', 'mind', 'although',
                           'though', 'because'})
@@ -1500,9 +1499,6 @@ STOPWORDS_STORY = frozenset({'please', 'if', 'when', 'once', 'after', 'before', 
                              'no', 'then', 'first', 'just', 'also', 'either', 'both', 'each', 'every', 'all',
                              'here', 'this', 'these', 'those'})
 
-
-# Titles before a person's name ("Mr. Alvarez"): the name's first word, never a place.
-TITLES = frozenset({'mr', 'mrs', 'ms', 'miss', 'dr', 'doctor', 'mister', 'missus', 'madam', 'sir', 'chef'})
 
 # What a person wants of the robot, said as the reason to go ("chef's shouting for you", "Sofia
 # needs a hand with it", "Mr. Alvarez would like a word"): it names no place and asks for nothing

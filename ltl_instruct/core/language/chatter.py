@@ -406,6 +406,7 @@ def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
     if where is None:
         return tokens
     place = where.group('x').split()
+    said = f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are'
     rest = (text[:where.start()] + text[where.end():]).split()
     while rest and rest[0] in PUNCT:
         rest = rest[1:]
@@ -417,15 +418,15 @@ def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
             m + 2 == len(rest) or rest[m + 2] in PUNCT)), -1) if v >= 0 else -1
         if m < 0 or any(t in '.;!?' for t in rest[v:m]):
             return tokens
-        notes.append(f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are')
+        notes.append(said)
         return rest[:m + 1] + place + rest[m + 2:]
     end = next((e for e in range(k + 2, len(rest)) if rest[e] in '.;!?' or rest[e] == ',' and (
         e + 1 >= len(rest) or rest[e + 1] in ('then', 'and', 'but', 'after'))), len(rest))
-    if k < 0 or any(t in ('to', 'into', 'onto') for t in rest[k + 2:end]):
+    if any(t in ('to', 'into', 'onto') for t in rest[k + 2:end]):
         return tokens   # "bring me the cup to the table": the place is said
     while end > k + 2 and rest[end - 1] in PUNCT:
         end -= 1
-    notes.append(f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are')
+    notes.append(said)
     return rest[:k + 1] + rest[k + 2:end] + ['to'] + place + rest[end:]
 
 
@@ -441,8 +442,8 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
         if addressed and k > 0 and before == addressed[-1] and not out:
             before = '.'   # "yo drone fly over X": both are said to it
         after = tokens[k + 1] if k + 1 < len(tokens) else '.'
-        vocative = t in VOCATIVES and before in PUNCT and after in (PUNCT | (
-            _COMMAND_STARTS if before in '.;!?' else frozenset())) or \
+        vocative = t in VOCATIVES and before in PUNCT and (
+            after in PUNCT or before in '.;!?' and after in _COMMAND_STARTS) or \
             t == 'k' and (before in '.;!?' or after in '.;!?')   # "..., dear?", "k go to the desk"
         if t in HESITATIONS and not (t == 'er' and out and out[-1] == 'the') or vocative:
             (addressed if vocative else dropped).append(t)
@@ -486,7 +487,7 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
     nothing, so the correction marker reaches what it corrects. A single address word is also
     left to :func:`strip_hesitations`; here only a word set off on both sides, or a phrase.
     """
-    if not (VOCATIVES | {'me', 'my'}) & set(tokens):
+    if not _ADDRESS_WORDS & set(tokens):
         return tokens
     out: list[str] = []
     dropped: list[str] = []
@@ -507,7 +508,7 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
                     'robot', 'drone', 'bot') and tokens[k + j + 1:k + j + 2] == [','] and all(
                         t.isalpha() and t not in STOPWORDS for t in tokens[k:k + j])), 0)
                 after = tokens[k + m + 1] if k + m + 1 < n else '.'
-                if m and (after in STOPWORDS - _COMMAND_STARTS or after in PUNCT):
+                if m and (after in STOPWORDS and after not in _COMMAND_STARTS or after in PUNCT):
                     m = 0   # ("kitchen robot, then the hall": a list of places)
                 if m:
                     dropped.append(' '.join(tokens[k:k + m]))
@@ -526,15 +527,17 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
-# Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
 # Words a request starts with, after a name it is addressed to ("bro just go to the fridge").
 _COMMAND_STARTS = frozenset({'just', 'go', 'please', 'can', 'could', 'bring', 'take', 'fly', 'come', 'grab',
                              'put', 'never', 'avoid', 'stay', 'visit', 'head', 'hit', 'now', 'robot',
                              'drone'})
+# Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
 VOCATIVES = frozenset({'dear', 'honey', 'sweetie', 'buddy', 'pal', 'mate', 'love', 'sir', 'madam', 'maam',
                        'robot', 'drone', 'bot', 'friend', 'darling', 'hun', 'bro', 'dude', 'sweetheart',
                        'dearie', 'pet', 'petal', 'duck', 'ducky', 'poppet', 'lovey', 'chum', 'sunshine',
                        'yo'})
+# Words without one of which a sentence holds no address for strip_addresses to drop.
+_ADDRESS_WORDS = VOCATIVES | {'me', 'my'}
 
 
 # Words said twice in a row by slip ("the the"), never twice on purpose.

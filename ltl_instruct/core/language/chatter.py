@@ -210,6 +210,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
 ) + _DURATIONS + _SPANS + _PURPOSES + _SIGNALS,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
+# Words that start what something is done for ("... please, to check the gate", "Just to check ...:").
+_WHAT_FOR = (['to', 'check'], ['to', 'make'], ['to', 'see'])
 # Times of the day a list of tasks is to be done by ("couple of things before first period:").
 _TIMES_OF_DAY = frozenset('''
 lunch lunchtime dinner breakfast noon midday period class school assembly closing opening bedtime tonight
@@ -554,6 +556,16 @@ _HEADING_ORDERS: tuple[tuple[str, ...], ...] = (
     ('in', 'this', 'sequence'), ('in', 'sequence'))
 
 
+def _list_in_order(tokens: list[str], i: int, out: list[str], verb: Sequence[str] = ()) -> int:
+    """Put ``verb``, the list from ``tokens[i]`` to the end of its sentence and "in this order" into ``out``.
+
+    Returns where the sentence ends.
+    """
+    end = next((k for k in range(i, len(tokens)) if tokens[k] in '.;!?'), len(tokens))
+    out.extend([*verb, *tokens[i:end], ',', 'in', 'this', 'order'])
+    return end
+
+
 def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
     """Remove a heading before a colon that opens a sentence ("Morning routine for you, robot: ..."), noted.
 
@@ -584,26 +596,20 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
                 counted = counted[:when]   # "couple of things before first period:": when, no place
             # "Just to check the cat has everything: ...": what the list is for
             aim = head[1:] if head[:1] == ['just'] else head
-            purpose = aim[:2] in (['to', 'check'], ['to', 'make'], ['to', 'see'])
+            purpose = aim[:2] in _WHAT_FOR
             if order and all(w in _ORDER_LEADS for w in head):
                 # "in this order: a, b, c", "visit these in order: a, b, c": the list, then its order
-                end = next((k for k in range(c + 1, n) if tokens[k] in '.;!?'), n)
                 verb = [w for w in head if w in ('visit', 'check')][:1] or (
                     ['go', 'to'] if 'go' in head else [])
-                out.extend(verb + tokens[c + 1:end] + [',', 'in', 'this', 'order'])
-                i = end
+                i = _list_in_order(tokens, c + 1, out, verb)
                 continue
             if head and c + 1 < n and (any(w in TASK_NOUNS for w in head) or purpose) and \
-                    not carries_constraint(counted) \
-                    and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
+                    not carries_constraint(counted) and not _CHANGES & set(head) and \
+                    head[0] not in ACTIVITY_VERBS and head[0] not in _COMMANDS and not any(
                         w in DETERMINERS and k > 0 and head[k - 1] in (',', 'and', 'or')
                         for k, w in enumerate(head)):
                 notes.append(f'left out the heading "{" ".join(t for t in head if t != ",")}:"')
-                i = c + 1
-                if order:
-                    end = next((k for k in range(i, n) if tokens[k] in '.;!?'), n)
-                    out.extend(tokens[i:end] + [',', 'in', 'this', 'order'])
-                    i = end
+                i = _list_in_order(tokens, c + 1, out) if order else c + 1
                 continue
         out.append(tokens[i])
         i += 1
@@ -1154,7 +1160,7 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
                 m = len(phrase)
                 ends = i + m >= n or tokens[i + m] in _CLAUSE_END or (   # (or "..., please")
                     tokens[i + m] == 'please' and (i + m + 1 >= n or tokens[i + m + 1] in _CLAUSE_END)) or \
-                    tokens[i + m:i + m + 2] in (['to', 'check'], ['to', 'see'], ['to', 'make'])   # what for
+                    tokens[i + m:i + m + 2] in _WHAT_FOR
                 if tuple(tokens[i:i + m]) == phrase and ends and not (timing and phrase in TIMING):
                     hit = m
                     break

@@ -1088,28 +1088,37 @@ nightfall sundown
 '''.split())
 
 
+# Words without which _PERSON_BUSY_RE cannot match: who is busy, and the word of time.
+_BUSY_WHO = frozenset({'i', 'we', 'someone', 'somebody', 'anyone', 'anybody', 'he', 'she', 'they'})
+_BUSY_WHEN = frozenset({'until', 'till', 'while', 'before'})
+
+
+def _leave_out(tokens: list[str], pattern: re.Pattern[str], notes: list[str], why: str) -> list[str]:
+    """Remove what ``pattern`` matches in the words, each part noted with ``why``."""
+    text = ' ' + ' '.join(tokens) + ' '
+    found = [m.group(0).strip(' ,') for m in pattern.finditer(text)]
+    if not found:
+        return tokens
+    for said in found:
+        notes.append(f'left out "{said}" ({why})')
+    return pattern.sub('', text).split()
+
+
 def strip_person_busy(tokens: list[str], notes: list[str]) -> list[str]:
     """Leave out what the person is busy with, said as the time of the request ("till I've finished").
 
     So too the light or the weather said as a deadline ("before the light goes").
     """
-    if _DEADLINE_WORDS & set(tokens) and 'before' in tokens:
-        text = ' ' + ' '.join(tokens) + ' '
-        found = [m.group(0).strip(' ,') for m in _DEADLINE_RE.finditer(text)]
-        if found and not PLACE_RULE_WORDS & set(tokens):   # never in a rule ("don't go there before dark")
-            for said in found:
-                notes.append(f'left out "{said}" (a time, no event the robot can wait for: check this)')
-            tokens = _DEADLINE_RE.sub('', text).split()
-    if not {'i', 'we', 'someone', 'somebody', 'anyone', 'anybody', 'he', 'she', 'they'} & set(tokens) or \
-            not {'until', 'till', 'while', 'before'} & set(tokens):
+    words = set(tokens)
+    if _DEADLINE_WORDS & words and 'before' in words and not PLACE_RULE_WORDS & words:
+        # (never in a rule: "don't go there before dark")
+        tokens = _leave_out(tokens, _DEADLINE_RE, notes,
+                            'a time, no event the robot can wait for: check this')
+        words = set(tokens)
+    if not _BUSY_WHO & words or not _BUSY_WHEN & words:
         return tokens
-    text = ' ' + ' '.join(tokens) + ' '
-    found = [m.group(0).strip(' ,') for m in _PERSON_BUSY_RE.finditer(text)]
-    if not found:
-        return tokens
-    for said in found:
-        notes.append(f'left out "{said}" (what the person is busy with: nothing the robot can wait for)')
-    return _PERSON_BUSY_RE.sub('', text).split()
+    return _leave_out(tokens, _PERSON_BUSY_RE, notes,
+                      'what the person is busy with: nothing the robot can wait for')
 
 
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:

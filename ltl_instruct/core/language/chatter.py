@@ -993,10 +993,14 @@ _GROUP_NOUNS = frozenset({'class', 'team', 'crew', 'group', 'kids', 'children', 
                           'residents'})
 
 
+# Words before whose the thing is ("for the PE class", "for my grandma").
+_WHOSE = frozenset({'the', 'my', 'our', 'your', 'his', 'her', 'their'})
+
+
 def _beneficiary(tokens: Sequence[str], i: int) -> int:
     """Length of "for the visitor" / "for grandma" at ``i`` that ends its clause (who it is for), else 0."""
     j = i + 1
-    if j < len(tokens) and tokens[j] in ('the', 'my', 'our', 'your', 'a', 'an', 'his', 'her', 'their'):
+    if j < len(tokens) and (tokens[j] in _WHOSE or tokens[j] in ('a', 'an')):
         j += 1
         # "for the 2pm visitor", "for the 10 am visitor", "for the new guests": when or which one
         if j + 1 < len(tokens) and _CLOCK_RE.match(tokens[j]):
@@ -1007,8 +1011,7 @@ def _beneficiary(tokens: Sequence[str], i: int) -> int:
             j += 1
         elif j + 1 < len(tokens) and tokens[j + 1] in _GROUP_NOUNS and tokens[j] not in PUNCT:
             j += 1   # "for the PE class", "for the night crew"
-    if j < len(tokens) and tokens[j] in _GROUP_NOUNS and tokens[i + 1:i + 2] and tokens[i + 1] in (
-            'the', 'my', 'our', 'your', 'his', 'her', 'their'):
+    if j < len(tokens) and tokens[j] in _GROUP_NOUNS and tokens[i + 1:i + 2] and tokens[i + 1] in _WHOSE:
         j += 1   # "take the stopwatch out to the running track for the PE class": who it is for
         return j - i if j >= len(tokens) or tokens[j] in _CLAUSE_END else 0
     if j >= len(tokens) or not (tokens[j] in PERSON_NOUNS or tokens[j] in FAMILY_NAMES) or \
@@ -1025,15 +1028,25 @@ _PURPOSE_NOUNS = frozenset({'photos', 'photo', 'pictures', 'picture', 'footage',
                             'socials', 'records', 'record', 'report', 'archive'})
 
 
+# Words that open a short noun phrase after "for" ("for the wedding photos", "wait for the crew").
+_FOR_DETERMINERS = frozenset({'the', 'a', 'an', 'some', 'our', 'their', 'your', 'my'})
+_OBJECT_PRONOUNS = frozenset({'me', 'us', 'him', 'her', 'them'})
+
+
+def _plain_word(t: str) -> bool:
+    """Whether ``t`` may be a word of a short noun phrase: letters only, no stopword, no constraint word."""
+    return t.isalpha() and t not in STOPWORDS and t not in CONSTRAINT_WORDS
+
+
 def _purpose_at(tokens: Sequence[str], i: int) -> int:
     """Length of "for the (wedding) photos" at ``tokens[i]``, ending the clause (0: none)."""
     j = i + 1
-    if j >= len(tokens) or tokens[j] not in ('the', 'a', 'an', 'some', 'our', 'their', 'your', 'my'):
+    if j >= len(tokens) or tokens[j] not in _FOR_DETERMINERS:
         return 0
     for k in range(j + 1, min(j + 4, len(tokens))):
         if tokens[k] in _PURPOSE_NOUNS and (k + 1 >= len(tokens) or tokens[k + 1] in _CLAUSE_END):
             return k + 1 - i
-        if not tokens[k].isalpha() or tokens[k] in STOPWORDS or tokens[k] in CONSTRAINT_WORDS:
+        if not _plain_word(tokens[k]):
             return 0
     return 0
 
@@ -1048,15 +1061,16 @@ def _wait_for(tokens: list[str], i: int) -> int:
     if tokens[j:j + 1] != ['wait']:
         return 0
     j += 1 + (tokens[j + 1:j + 2] in (['there'], ['here']))
-    if tokens[j:j + 1] != ['for'] or j + 1 >= len(tokens) or tokens[j + 1] not in (
-            'the', 'a', 'an', 'some', 'our', 'their', 'your', 'my', 'me', 'us', 'him', 'her', 'them'):
+    if tokens[j:j + 1] != ['for'] or j + 1 >= len(tokens):
         return 0
-    if tokens[j + 1] in ('me', 'us', 'him', 'her', 'them'):
+    if tokens[j + 1] in _OBJECT_PRONOUNS:
         return j + 2 - i if j + 2 >= len(tokens) or tokens[j + 2] in _CLAUSE_END else 0
+    if tokens[j + 1] not in _FOR_DETERMINERS:
+        return 0
     for k in range(j + 2, min(j + 6, len(tokens) + 1)):
         if k == len(tokens) or tokens[k] in _CLAUSE_END:
             return k - i if k > j + 2 else 0
-        if not tokens[k].isalpha() or tokens[k] in STOPWORDS or tokens[k] in CONSTRAINT_WORDS:
+        if not _plain_word(tokens[k]):
             return 0
     return 0
 

@@ -26,7 +26,7 @@ import re
 from typing import Sequence
 
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS, PLACEHOLDER_ADJECTIVES, STOPWORDS, is_name_word, match_relation,
+    DETERMINERS, NUMBER_SUBJECT_VERBS, PLACEHOLDER_ADJECTIVES, STOPWORDS, is_name_word, match_relation,
 )
 from ltl_instruct.core.language.text import FAMILY_NAMES, NUMBER_WORDS, ORDINALS, PUNCT
 
@@ -892,10 +892,8 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     return False
 
 
-# Verbs of a numbered place said as the people at it ("table 4 wants ketchup", "table 3 asked for ...").
-_NUMBERED_SUBJECT_VERBS = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
-                                     'ordered', 'requested', 'has', 'have', 'is', 'are', 'was', 'were',
-                                     'says', 'said', 'complained'})
+# Verbs of a numbered place said as the people at it ("table 4 wants ketchup", "table 12 are celebrating").
+_NUMBERED_SUBJECT_VERBS = NUMBER_SUBJECT_VERBS | {'has', 'have', 'is', 'are', 'was', 'were'}
 
 
 def is_numbered_subject(tokens: Sequence[str], np_end: int) -> bool:
@@ -1426,7 +1424,7 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
     if first in ('he', 'she', 'they', 'it', 'that', 'there') or first in FAMILY_NAMES:
         return second not in ('is', 'was') or words[2] not in PERMISSIVE
     if first in ('my', 'our', 'his', 'her', 'their') or first in ('the', 'a') and second in PERSON_NOUNS:
-        return not {'needs', 'need', 'wants', 'want'} & set(words[1:5])
+        return not _OTHERS_WANT & set(words[1:5])
     if first == 'the' or len(first) > 3 and first.endswith('s') and first not in commands and \
             first not in STOPWORDS_STORY and first not in PRONOUN_OBJECTS and second not in FINITE_VERBS and \
             is_name_word(words, 0, False) and is_name_word(words, 1, True):

@@ -238,10 +238,11 @@ def _relative_lead(tokens: Sequence[str], i: int) -> int:
     return 0
 
 
-# Verbs after a numbered name ("table 4 wants ..."): the name's subject's verb, never more of its name.
-_VERBS_AFTER_NUMBER = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
-                                 'ordered', 'orders', 'requested', 'would', 'says', 'said', 'called',
-                                 'complained', 'just'})
+# Verbs of the people at a numbered place, said right after its number ("table 4 wants ketchup").
+NUMBER_SUBJECT_VERBS = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
+                                  'ordered', 'requested', 'says', 'said', 'complained'})
+# Words after a numbered name ("table 4 wants ..."): the name's subject's verb, never more of its name.
+_VERBS_AFTER_NUMBER = NUMBER_SUBJECT_VERBS | {'orders', 'would', 'called', 'just'}
 
 
 _VERBS_AFTER_PERSON = frozenset({'wants', 'needs', 'gets', 'hates', 'says', 'thinks', 'worries', 'wanted',

@@ -625,11 +625,13 @@ _ROUTE_PAREN_RE = re.compile(r'\b(?:(?:the|that|this|my|your|our|usual|whole|sam
                              re.IGNORECASE)
 _ROUTE_SEP_RE = re.compile(r'\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+|\s*->\s*|'
                            r'\s+-+\s+|\s*>\s*)\s*', re.IGNORECASE)
+_ROUTE_ITEM_RE = re.compile(r"[a-z0-9' ]+", re.IGNORECASE)
 
 
 def _route_places(m: re.Match[str], notes: list[str]) -> str:
+    """Read a route's places in parentheses as visits in a row, unless one is no short plain name."""
     items = [i.strip() for i in _ROUTE_SEP_RE.split(m.group(1).strip()) if i.strip()]
-    if len(items) < 2 or any(not re.fullmatch(r"[a-z0-9' ]+", i, re.IGNORECASE) or len(i.split()) > 4 or
+    if len(items) < 2 or any(not _ROUTE_ITEM_RE.fullmatch(i) or len(i.split()) > 4 or
                              carries_constraint(i.lower().split()) for i in items):
         return m.group(0)
     notes.append(f'read "{m.group(0)}" as the route of its places, in that order')
@@ -640,7 +642,8 @@ def _route_places(m: re.Match[str], notes: list[str]) -> str:
 def strip_parentheticals(text: str, notes: list[str]) -> str:
     """Leave out asides in parentheses ("the mug (the one with the chipped handle)"), noted.
 
-    An aside holding a constraint word ("(but never the red one)") is read as a clause instead.
+    An aside holding a constraint word ("(but never the red one)") is read as a clause instead, and
+    the places of a route ("walk the loop (front desk, elevator, mail room)") as visits in that order.
     """
     def aside(m: re.Match[str]) -> str:
         words = re.findall(r"[a-z0-9']+", m.group(1).lower())

@@ -26,7 +26,7 @@ import re
 from typing import Sequence
 
 from ltl_instruct.core.language.phrases import (
-    DETERMINERS, PLACEHOLDER_ADJECTIVES, STOPWORDS, is_name_word, match_relation,
+    DETERMINERS, NUMBER_SUBJECT_VERBS, PLACEHOLDER_ADJECTIVES, STOPWORDS, is_name_word, match_relation,
 )
 from ltl_instruct.core.language.text import FAMILY_NAMES, NUMBER_WORDS, ORDINALS, PUNCT
 
@@ -152,7 +152,6 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('first', 'thing'), ('first', 'thing', 'tomorrow'), ('first', 'thing', 'in', 'the', 'morning'),
     ('tomorrow',), ('tomorrow', 'morning'), ('tomorrow', 'evening'), ('already',), ('anyway',), ('pronto',),
     ('sharpish',), ('smartish',), ('quick', 'smart'), ('double', 'quick'), ('chop', 'chop'),
-    ('on', 'the', 'double'),
     ('and', 'stuff'), ('or', 'something'), ('or', 'whatever'), ('if', 'that', 'is', 'ok'),
     ('if', 'that', 'is', 'okay'), ('if', 'that', 'is', 'alright'), ('if', 'that', 'is', 'fine'),
     ('if', 'you', 'would', 'be', 'so', 'kind'), ('if', 'it', 'is', 'not', 'too', 'much', 'trouble'),
@@ -211,6 +210,8 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
 ) + _DURATIONS + _SPANS + _PURPOSES + _SIGNALS,
     key=lambda t: -len(t)))
 _CLAUSE_END = frozenset({'and', 'then', 'but', 'so'}) | PUNCT
+# Words that start what something is done for ("... please, to check the gate", "Just to check ...:").
+_WHAT_FOR = (['to', 'check'], ['to', 'make'], ['to', 'see'])
 # Times of the day a list of tasks is to be done by ("couple of things before first period:").
 _TIMES_OF_DAY = frozenset('''
 lunch lunchtime dinner breakfast noon midday period class school assembly closing opening bedtime tonight
@@ -407,6 +408,7 @@ def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
     if where is None:
         return tokens
     place = where.group('x').split()
+    said = f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are'
     rest = (text[:where.start()] + text[where.end():]).split()
     while rest and rest[0] in PUNCT:
         rest = rest[1:]
@@ -418,15 +420,15 @@ def deliver_to_speaker(tokens: list[str], notes: list[str]) -> list[str]:
             m + 2 == len(rest) or rest[m + 2] in PUNCT)), -1) if v >= 0 else -1
         if m < 0 or any(t in '.;!?' for t in rest[v:m]):
             return tokens
-        notes.append(f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are')
+        notes.append(said)
         return rest[:m + 1] + place + rest[m + 2:]
     end = next((e for e in range(k + 2, len(rest)) if rest[e] in '.;!?' or rest[e] == ',' and (
         e + 1 >= len(rest) or rest[e + 1] in ('then', 'and', 'but', 'after'))), len(rest))
-    if k < 0 or any(t in ('to', 'into', 'onto') for t in rest[k + 2:end]):
+    if any(t in ('to', 'into', 'onto') for t in rest[k + 2:end]):
         return tokens   # "bring me the cup to the table": the place is said
     while end > k + 2 and rest[end - 1] in PUNCT:
         end -= 1
-    notes.append(f'"{where.group(0).strip(" ,.")}": brought to {"_".join(place[1:])}, where you are')
+    notes.append(said)
     return rest[:k + 1] + rest[k + 2:end] + ['to'] + place + rest[end:]
 
 
@@ -442,8 +444,8 @@ def strip_hesitations(tokens: list[str], notes: list[str]) -> list[str]:
         if addressed and k > 0 and before == addressed[-1] and not out:
             before = '.'   # "yo drone fly over X": both are said to it
         after = tokens[k + 1] if k + 1 < len(tokens) else '.'
-        vocative = t in VOCATIVES and before in PUNCT and after in (PUNCT | (
-            _COMMAND_STARTS if before in '.;!?' else frozenset())) or \
+        vocative = t in VOCATIVES and before in PUNCT and (
+            after in PUNCT or before in '.;!?' and after in _COMMAND_STARTS) or \
             t == 'k' and (before in '.;!?' or after in '.;!?')   # "..., dear?", "k go to the desk"
         if t in HESITATIONS and not (t == 'er' and out and out[-1] == 'the') or vocative:
             (addressed if vocative else dropped).append(t)
@@ -487,7 +489,7 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
     nothing, so the correction marker reaches what it corrects. A single address word is also
     left to :func:`strip_hesitations`; here only a word set off on both sides, or a phrase.
     """
-    if not (VOCATIVES | {'me', 'my'}) & set(tokens):
+    if not _ADDRESS_WORDS & set(tokens):
         return tokens
     out: list[str] = []
     dropped: list[str] = []
@@ -508,7 +510,7 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
                     'robot', 'drone', 'bot') and tokens[k + j + 1:k + j + 2] == [','] and all(
                         t.isalpha() and t not in STOPWORDS for t in tokens[k:k + j])), 0)
                 after = tokens[k + m + 1] if k + m + 1 < n else '.'
-                if m and (after in STOPWORDS - _COMMAND_STARTS or after in PUNCT):
+                if m and (after in STOPWORDS and after not in _COMMAND_STARTS or after in PUNCT):
                     m = 0   # ("kitchen robot, then the hall": a list of places)
                 if m:
                     dropped.append(' '.join(tokens[k:k + m]))
@@ -527,15 +529,17 @@ def strip_addresses(tokens: list[str], notes: list[str]) -> list[str]:
     return out
 
 
-# Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
 # Words a request starts with, after a name it is addressed to ("bro just go to the fridge").
 _COMMAND_STARTS = frozenset({'just', 'go', 'please', 'can', 'could', 'bring', 'take', 'fly', 'come', 'grab',
                              'put', 'never', 'avoid', 'stay', 'visit', 'head', 'hit', 'now', 'robot',
                              'drone'})
+# Ways of addressing the person or the robot, set off by commas ("Dear, would you ...").
 VOCATIVES = frozenset({'dear', 'honey', 'sweetie', 'buddy', 'pal', 'mate', 'love', 'sir', 'madam', 'maam',
                        'robot', 'drone', 'bot', 'friend', 'darling', 'hun', 'bro', 'dude', 'sweetheart',
                        'dearie', 'pet', 'petal', 'duck', 'ducky', 'poppet', 'lovey', 'chum', 'sunshine',
                        'yo'})
+# Words without one of which a sentence holds no address for strip_addresses to drop.
+_ADDRESS_WORDS = VOCATIVES | {'me', 'my'}
 
 
 # Words said twice in a row by slip ("the the"), never twice on purpose.
@@ -550,6 +554,16 @@ _ORDER_LEADS = frozenset({'please', 'go', 'to', 'visit', 'check', 'these', 'them
 _HEADING_ORDERS: tuple[tuple[str, ...], ...] = (
     ('in', 'this', 'order'), ('in', 'that', 'order'), ('in', 'the', 'following', 'order'), ('in', 'order'),
     ('in', 'this', 'sequence'), ('in', 'sequence'))
+
+
+def _list_in_order(tokens: list[str], i: int, out: list[str], verb: Sequence[str] = ()) -> int:
+    """Put ``verb``, the list from ``tokens[i]`` to the end of its sentence and "in this order" into ``out``.
+
+    Returns where the sentence ends.
+    """
+    end = next((k for k in range(i, len(tokens)) if tokens[k] in '.;!?'), len(tokens))
+    out.extend([*verb, *tokens[i:end], ',', 'in', 'this', 'order'])
+    return end
 
 
 def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
@@ -582,26 +596,20 @@ def strip_headings(tokens: list[str], notes: list[str]) -> list[str]:
                 counted = counted[:when]   # "couple of things before first period:": when, no place
             # "Just to check the cat has everything: ...": what the list is for
             aim = head[1:] if head[:1] == ['just'] else head
-            purpose = aim[:2] in (['to', 'check'], ['to', 'make'], ['to', 'see'])
+            purpose = aim[:2] in _WHAT_FOR
             if order and all(w in _ORDER_LEADS for w in head):
                 # "in this order: a, b, c", "visit these in order: a, b, c": the list, then its order
-                end = next((k for k in range(c + 1, n) if tokens[k] in '.;!?'), n)
                 verb = [w for w in head if w in ('visit', 'check')][:1] or (
                     ['go', 'to'] if 'go' in head else [])
-                out.extend(verb + tokens[c + 1:end] + [',', 'in', 'this', 'order'])
-                i = end
+                i = _list_in_order(tokens, c + 1, out, verb)
                 continue
             if head and c + 1 < n and (any(w in TASK_NOUNS for w in head) or purpose) and \
-                    not carries_constraint(counted) \
-                    and not _CHANGES & set(head) and head[0] not in ACTIVITY_VERBS | _COMMANDS and not any(
+                    not carries_constraint(counted) and not _CHANGES & set(head) and \
+                    head[0] not in ACTIVITY_VERBS and head[0] not in _COMMANDS and not any(
                         w in DETERMINERS and k > 0 and head[k - 1] in (',', 'and', 'or')
                         for k, w in enumerate(head)):
                 notes.append(f'left out the heading "{" ".join(t for t in head if t != ",")}:"')
-                i = c + 1
-                if order:
-                    end = next((k for k in range(i, n) if tokens[k] in '.;!?'), n)
-                    out.extend(tokens[i:end] + [',', 'in', 'this', 'order'])
-                    i = end
+                i = _list_in_order(tokens, c + 1, out) if order else c + 1
                 continue
         out.append(tokens[i])
         i += 1
@@ -617,11 +625,13 @@ _ROUTE_PAREN_RE = re.compile(r'\b(?:(?:the|that|this|my|your|our|usual|whole|sam
                              re.IGNORECASE)
 _ROUTE_SEP_RE = re.compile(r'\s*(?:,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+|\s*->\s*|'
                            r'\s+-+\s+|\s*>\s*)\s*', re.IGNORECASE)
+_ROUTE_ITEM_RE = re.compile(r"[a-z0-9' ]+", re.IGNORECASE)
 
 
 def _route_places(m: re.Match[str], notes: list[str]) -> str:
+    """Read a route's places in parentheses as visits in a row, unless one is no short plain name."""
     items = [i.strip() for i in _ROUTE_SEP_RE.split(m.group(1).strip()) if i.strip()]
-    if len(items) < 2 or any(not re.fullmatch(r"[a-z0-9' ]+", i, re.IGNORECASE) or len(i.split()) > 4 or
+    if len(items) < 2 or any(not _ROUTE_ITEM_RE.fullmatch(i) or len(i.split()) > 4 or
                              carries_constraint(i.lower().split()) for i in items):
         return m.group(0)
     notes.append(f'read "{m.group(0)}" as the route of its places, in that order')
@@ -632,7 +642,8 @@ def _route_places(m: re.Match[str], notes: list[str]) -> str:
 def strip_parentheticals(text: str, notes: list[str]) -> str:
     """Leave out asides in parentheses ("the mug (the one with the chipped handle)"), noted.
 
-    An aside holding a constraint word ("(but never the red one)") is read as a clause instead.
+    An aside holding a constraint word ("(but never the red one)") is read as a clause instead, and
+    the places of a route ("walk the loop (front desk, elevator, mail room)") as visits in that order.
     """
     def aside(m: re.Match[str]) -> str:
         words = re.findall(r"[a-z0-9']+", m.group(1).lower())
@@ -884,10 +895,8 @@ def is_statement(tokens: Sequence[str], np_end: int = 0) -> bool:
     return False
 
 
-# Verbs of a numbered place said as the people at it ("table 4 wants ketchup", "table 3 asked for ...").
-_NUMBERED_SUBJECT_VERBS = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
-                                     'ordered', 'requested', 'has', 'have', 'is', 'are', 'was', 'were',
-                                     'says', 'said', 'complained'})
+# Verbs of a numbered place said as the people at it ("table 4 wants ketchup", "table 12 are celebrating").
+_NUMBERED_SUBJECT_VERBS = NUMBER_SUBJECT_VERBS | {'has', 'have', 'is', 'are', 'was', 'were'}
 
 
 def is_numbered_subject(tokens: Sequence[str], np_end: int) -> bool:
@@ -985,10 +994,14 @@ _GROUP_NOUNS = frozenset({'class', 'team', 'crew', 'group', 'kids', 'children', 
                           'residents'})
 
 
+# Words before whose the thing is ("for the PE class", "for my grandma").
+_WHOSE = frozenset({'the', 'my', 'our', 'your', 'his', 'her', 'their'})
+
+
 def _beneficiary(tokens: Sequence[str], i: int) -> int:
     """Length of "for the visitor" / "for grandma" at ``i`` that ends its clause (who it is for), else 0."""
     j = i + 1
-    if j < len(tokens) and tokens[j] in ('the', 'my', 'our', 'your', 'a', 'an', 'his', 'her', 'their'):
+    if j < len(tokens) and (tokens[j] in _WHOSE or tokens[j] in ('a', 'an')):
         j += 1
         # "for the 2pm visitor", "for the 10 am visitor", "for the new guests": when or which one
         if j + 1 < len(tokens) and _CLOCK_RE.match(tokens[j]):
@@ -999,8 +1012,7 @@ def _beneficiary(tokens: Sequence[str], i: int) -> int:
             j += 1
         elif j + 1 < len(tokens) and tokens[j + 1] in _GROUP_NOUNS and tokens[j] not in PUNCT:
             j += 1   # "for the PE class", "for the night crew"
-    if j < len(tokens) and tokens[j] in _GROUP_NOUNS and tokens[i + 1:i + 2] and tokens[i + 1] in (
-            'the', 'my', 'our', 'your', 'his', 'her', 'their'):
+    if j < len(tokens) and tokens[j] in _GROUP_NOUNS and tokens[i + 1:i + 2] and tokens[i + 1] in _WHOSE:
         j += 1   # "take the stopwatch out to the running track for the PE class": who it is for
         return j - i if j >= len(tokens) or tokens[j] in _CLAUSE_END else 0
     if j >= len(tokens) or not (tokens[j] in PERSON_NOUNS or tokens[j] in FAMILY_NAMES) or \
@@ -1017,15 +1029,25 @@ _PURPOSE_NOUNS = frozenset({'photos', 'photo', 'pictures', 'picture', 'footage',
                             'socials', 'records', 'record', 'report', 'archive'})
 
 
+# Words that open a short noun phrase after "for" ("for the wedding photos", "wait for the crew").
+_FOR_DETERMINERS = frozenset({'the', 'a', 'an', 'some', 'our', 'their', 'your', 'my'})
+_OBJECT_PRONOUNS = frozenset({'me', 'us', 'him', 'her', 'them'})
+
+
+def _plain_word(t: str) -> bool:
+    """Whether ``t`` may be a word of a short noun phrase: letters only, no stopword, no constraint word."""
+    return t.isalpha() and t not in STOPWORDS and t not in CONSTRAINT_WORDS
+
+
 def _purpose_at(tokens: Sequence[str], i: int) -> int:
     """Length of "for the (wedding) photos" at ``tokens[i]``, ending the clause (0: none)."""
     j = i + 1
-    if j >= len(tokens) or tokens[j] not in ('the', 'a', 'an', 'some', 'our', 'their', 'your', 'my'):
+    if j >= len(tokens) or tokens[j] not in _FOR_DETERMINERS:
         return 0
     for k in range(j + 1, min(j + 4, len(tokens))):
         if tokens[k] in _PURPOSE_NOUNS and (k + 1 >= len(tokens) or tokens[k + 1] in _CLAUSE_END):
             return k + 1 - i
-        if not tokens[k].isalpha() or tokens[k] in STOPWORDS or tokens[k] in CONSTRAINT_WORDS:
+        if not _plain_word(tokens[k]):
             return 0
     return 0
 
@@ -1040,15 +1062,16 @@ def _wait_for(tokens: list[str], i: int) -> int:
     if tokens[j:j + 1] != ['wait']:
         return 0
     j += 1 + (tokens[j + 1:j + 2] in (['there'], ['here']))
-    if tokens[j:j + 1] != ['for'] or j + 1 >= len(tokens) or tokens[j + 1] not in (
-            'the', 'a', 'an', 'some', 'our', 'their', 'your', 'my', 'me', 'us', 'him', 'her', 'them'):
+    if tokens[j:j + 1] != ['for'] or j + 1 >= len(tokens):
         return 0
-    if tokens[j + 1] in ('me', 'us', 'him', 'her', 'them'):
+    if tokens[j + 1] in _OBJECT_PRONOUNS:
         return j + 2 - i if j + 2 >= len(tokens) or tokens[j + 2] in _CLAUSE_END else 0
+    if tokens[j + 1] not in _FOR_DETERMINERS:
+        return 0
     for k in range(j + 2, min(j + 6, len(tokens) + 1)):
         if k == len(tokens) or tokens[k] in _CLAUSE_END:
             return k - i if k > j + 2 else 0
-        if not tokens[k].isalpha() or tokens[k] in STOPWORDS or tokens[k] in CONSTRAINT_WORDS:
+        if not _plain_word(tokens[k]):
             return 0
     return 0
 
@@ -1080,28 +1103,37 @@ nightfall sundown
 '''.split())
 
 
+# Words without which _PERSON_BUSY_RE cannot match: who is busy, and the word of time.
+_BUSY_WHO = frozenset({'i', 'we', 'someone', 'somebody', 'anyone', 'anybody', 'he', 'she', 'they'})
+_BUSY_WHEN = frozenset({'until', 'till', 'while', 'before'})
+
+
+def _leave_out(tokens: list[str], pattern: re.Pattern[str], notes: list[str], why: str) -> list[str]:
+    """Remove what ``pattern`` matches in the words, each part noted with ``why``."""
+    text = ' ' + ' '.join(tokens) + ' '
+    found = [m.group(0).strip(' ,') for m in pattern.finditer(text)]
+    if not found:
+        return tokens
+    for said in found:
+        notes.append(f'left out "{said}" ({why})')
+    return pattern.sub('', text).split()
+
+
 def strip_person_busy(tokens: list[str], notes: list[str]) -> list[str]:
     """Leave out what the person is busy with, said as the time of the request ("till I've finished").
 
     So too the light or the weather said as a deadline ("before the light goes").
     """
-    if _DEADLINE_WORDS & set(tokens) and 'before' in tokens:
-        text = ' ' + ' '.join(tokens) + ' '
-        found = [m.group(0).strip(' ,') for m in _DEADLINE_RE.finditer(text)]
-        if found and not PLACE_RULE_WORDS & set(tokens):   # never in a rule ("don't go there before dark")
-            for said in found:
-                notes.append(f'left out "{said}" (a time, no event the robot can wait for: check this)')
-            tokens = _DEADLINE_RE.sub('', text).split()
-    if not {'i', 'we', 'someone', 'somebody', 'anyone', 'anybody', 'he', 'she', 'they'} & set(tokens) or \
-            not {'until', 'till', 'while', 'before'} & set(tokens):
+    words = set(tokens)
+    if _DEADLINE_WORDS & words and 'before' in words and not PLACE_RULE_WORDS & words:
+        # (never in a rule: "don't go there before dark")
+        tokens = _leave_out(tokens, _DEADLINE_RE, notes,
+                            'a time, no event the robot can wait for: check this')
+        words = set(tokens)
+    if not _BUSY_WHO & words or not _BUSY_WHEN & words:
         return tokens
-    text = ' ' + ' '.join(tokens) + ' '
-    found = [m.group(0).strip(' ,') for m in _PERSON_BUSY_RE.finditer(text)]
-    if not found:
-        return tokens
-    for said in found:
-        notes.append(f'left out "{said}" (what the person is busy with: nothing the robot can wait for)')
-    return _PERSON_BUSY_RE.sub('', text).split()
+    return _leave_out(tokens, _PERSON_BUSY_RE, notes,
+                      'what the person is busy with: nothing the robot can wait for')
 
 
 def strip_courtesy(tokens: list[str], notes: list[str], timing: bool = False) -> list[str]:
@@ -1152,7 +1184,7 @@ def _strip_courtesy_once(tokens: list[str], notes: list[str], timing: bool) -> l
                 m = len(phrase)
                 ends = i + m >= n or tokens[i + m] in _CLAUSE_END or (   # (or "..., please")
                     tokens[i + m] == 'please' and (i + m + 1 >= n or tokens[i + m + 1] in _CLAUSE_END)) or \
-                    tokens[i + m:i + m + 2] in (['to', 'check'], ['to', 'see'], ['to', 'make'])   # what for
+                    tokens[i + m:i + m + 2] in _WHAT_FOR
                 if tuple(tokens[i:i + m]) == phrase and ends and not (timing and phrase in TIMING):
                     hit = m
                     break
@@ -1338,7 +1370,7 @@ _STORY_VERBS = frozenset('''
 says said bought took left told thinks thought rang called came went gets got is was has had keeps kept
 will would did does loves hates likes used moved broke fixed planted put set lost found rearranged
 always never usually often still just only
-leaves lives plays hides sleeps thinks makes loses forgets drops
+leaves lives plays hides sleeps makes loses forgets drops
 '''.split())
 _STORY_LEADS = frozenset({'oh', 'well', 'and', 'but', 'so', 'anyway', 'honestly', 'now', 'mind', 'although',
                           'though', 'because'})
@@ -1395,7 +1427,7 @@ def is_story(sentence: Sequence[str], commands: frozenset[str]) -> bool:
     if first in ('he', 'she', 'they', 'it', 'that', 'there') or first in FAMILY_NAMES:
         return second not in ('is', 'was') or words[2] not in PERMISSIVE
     if first in ('my', 'our', 'his', 'her', 'their') or first in ('the', 'a') and second in PERSON_NOUNS:
-        return not {'needs', 'need', 'wants', 'want'} & set(words[1:5])
+        return not _OTHERS_WANT & set(words[1:5])
     if first == 'the' or len(first) > 3 and first.endswith('s') and first not in commands and \
             first not in STOPWORDS_STORY and first not in PRONOUN_OBJECTS and second not in FINITE_VERBS and \
             is_name_word(words, 0, False) and is_name_word(words, 1, True):
@@ -1500,9 +1532,6 @@ STOPWORDS_STORY = frozenset({'please', 'if', 'when', 'once', 'after', 'before', 
                              'no', 'then', 'first', 'just', 'also', 'either', 'both', 'each', 'every', 'all',
                              'here', 'this', 'these', 'those'})
 
-
-# Titles before a person's name ("Mr. Alvarez"): the name's first word, never a place.
-TITLES = frozenset({'mr', 'mrs', 'ms', 'miss', 'dr', 'doctor', 'mister', 'missus', 'madam', 'sir', 'chef'})
 
 # What a person wants of the robot, said as the reason to go ("chef's shouting for you", "Sofia
 # needs a hand with it", "Mr. Alvarez would like a word"): it names no place and asks for nothing

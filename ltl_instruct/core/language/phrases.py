@@ -238,14 +238,23 @@ def _relative_lead(tokens: Sequence[str], i: int) -> int:
     return 0
 
 
-# Verbs after a numbered name ("table 4 wants ..."): the name's subject's verb, never more of its name.
-_VERBS_AFTER_NUMBER = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
-                                 'ordered', 'orders', 'requested', 'would', 'says', 'said', 'called',
-                                 'complained', 'just'})
+# Verbs of the people at a numbered place, said right after its number ("table 4 wants ketchup").
+NUMBER_SUBJECT_VERBS = frozenset({'wants', 'want', 'wanted', 'needs', 'need', 'needed', 'asked', 'asks',
+                                  'ordered', 'requested', 'says', 'said', 'complained'})
+# Words after a numbered name ("table 4 wants ..."): the name's subject's verb, never more of its name.
+_VERBS_AFTER_NUMBER = NUMBER_SUBJECT_VERBS | {'orders', 'would', 'called', 'just'}
 
 
+# Verbs after a person named with an article or after a comma ("the boss wants ...", ", Marco gets ...").
 _VERBS_AFTER_PERSON = frozenset({'wants', 'needs', 'gets', 'hates', 'says', 'thinks', 'worries', 'wanted',
                                  'needed', 'said'})
+_BEFORE_PERSON = DETERMINERS | {','}
+# Adverbs in -ly seen between an article and an adjective ("the really big box"): no adjective of a name.
+_LY_ADVERBS = frozenset({'really', 'fairly', 'truly', 'extremely', 'particularly', 'especially', 'actually',
+                         'nearly', 'mostly', 'totally', 'completely', 'slightly', 'terribly', 'awfully',
+                         'incredibly', 'reasonably', 'relatively', 'entirely', 'absolutely', 'usually',
+                         'probably', 'definitely', 'certainly', 'possibly', 'exactly', 'quickly', 'carefully',
+                         'slowly', 'gently', 'quietly', 'simply', 'currently', 'normally', 'originally'})
 
 
 CAN_DETERMINERS = frozenset({'the', 'a', 'an', 'that', 'this', 'each', 'every', 'my', 'your', 'our',
@@ -275,7 +284,6 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
                                                         'after', 'later', 'earlier', 'at', 'in', 'into',
                                                         'only'):
         return False   # "the checkout comes last", "the lamp goes in the box"
-
     if w == 'till':
         return True   # "the till", "till 4": the counter (tokenize made every other "till" "until")
     if have_name and w in _VERBS_AFTER_NUMBER and i > 0 and (
@@ -284,7 +292,7 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     if w in ('need', 'needs') and have_name and (nxt.endswith('ing') or nxt in (
             'to', 'a', 'an', 'some', 'inspection', 'attention', 'help', 'work', 'repair', 'repairs')):
         return False   # "carousels 3, 5 and 9 need inspection", "the dock needs cleaning": the name ends
-    if have_name and w in _VERBS_AFTER_PERSON and (i == 1 or i > 1 and tokens[i - 2] in DETERMINERS | {','}):
+    if have_name and w in _VERBS_AFTER_PERSON and (i == 1 or i > 1 and tokens[i - 2] in _BEFORE_PERSON):
         return False   # "the boss wants no robots in the lobby", "Marco gets chatty": a verb, not a name
     if w in NUMBER_WORDS or w.isdigit():
         # ("bay 6 more than once": the label, then the bound; "the hall 3 more times" is a count)
@@ -304,15 +312,6 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return i > 0 and tokens[i - 1] in DETERMINERS and w not in _LY_ADVERBS and nxt.isalpha() and \
             not nxt.endswith('ly') and nxt not in STOPWORDS
     return True
-
-
-# Adverbs in -ly that say how much, seen between an article and an adjective ("the really big box").
-_LY_ADVERBS = frozenset({'really', 'fairly', 'truly', 'extremely', 'particularly', 'especially', 'actually',
-                         'nearly', 'mostly', 'totally', 'completely', 'slightly', 'terribly', 'awfully',
-                         'incredibly', 'reasonably', 'relatively', 'entirely', 'absolutely', 'only',
-                         'usually',
-                         'probably', 'definitely', 'certainly', 'possibly', 'exactly', 'quickly', 'carefully',
-                         'slowly', 'gently', 'quietly', 'simply', 'currently', 'normally', 'originally'})
 
 
 def singular(word: str) -> str:

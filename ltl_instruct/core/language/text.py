@@ -211,12 +211,14 @@ _A_AND_E_RE = re.compile(r'(^|[,.;:!?]\s*|\b(?i:the|to|at|of|in|by|from|near|pas
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
 
 
-# "shelf B4", "bay b4": a letter and a digit after a noun that takes labels is a label, not "before".
+# "shelf B4" (in capitals, after any word), "bay b4" (after a noun that takes labels): a label, not
+# the typed shorthand for "before".
 _B4_RE = re.compile(r"(?<=[A-Za-z] )B4\b")
-_LABEL_NOUNS = frozenset('''
+_B4_LABELLED = frozenset('''
 shelf shelves aisle bay bin gate room locker seat row table dock box cell rack unit section slot cabinet
 drawer stall platform bed desk level door hangar pod cage pen tank zone area lab office ward wing suite
-booth counter station lane pallet pier berth bench
+booth counter station lane pallet pier berth bench building block spot shelving hall stand pad classroom
+greenhouse field plot apartment flat
 '''.split())
 
 
@@ -232,13 +234,6 @@ def _then(number: str, following: str) -> str:
 
 
 _TILL_BEFORE = frozenset({'the', 'that', 'this', 'my', 'our', 'your', 'each', 'every'})
-# Typing shorthands that are also labels ("b4" for "before"; "shelf b4"), and the nouns labels follow.
-_LABEL_TYPOS = frozenset({'b4'})
-_LABELLED = frozenset('''
-shelf aisle bay room dock gate bin rack row section unit locker cabinet zone lane level platform building
-block cell stall slot spot door box pallet shelving station area hall ward bed seat table pen stand hangar pad
-lab office classroom greenhouse field plot tank wing suite apartment flat
-'''.split())
 _TILL_PLACES = frozenset('''
 front back main other first second third last left right middle end near far express north south east west
 open
@@ -376,15 +371,12 @@ def tokenize(text: str) -> list[str]:
         if acronyms and tok.startswith('zq'):
             out.append(tok[2:] if tok == 'zqb4' else tok[2:].upper())   # "shelf B4": shelf_b4
             continue
-        if tok == 'b4' and out and out[-1] in _LABEL_NOUNS:
-            out.append(tok)   # "bay b4": a label
+        if tok == 'b4' and out and out[-1] in _B4_LABELLED:
+            out.append(tok)   # "bay b4", "shelf b4": a label, not "before"
             continue
         tok = ORDINAL_DIGITS.get(tok, tok)
         if tok == 'till' and _till_is_counter(out, found[k + 1:k + 3]):
             out.append(tok)   # "stuck at the till", "go to till 4": the counter, not "until"
-            continue
-        if tok in _LABEL_TYPOS and out and out[-1] in _LABELLED:
-            out.append(tok)   # "shelf b4", "gate b4": a label, not "before"
             continue
         words = TYPOS.get(tok, tok).split()
         for w in words:

@@ -277,10 +277,12 @@ def tokenize(text: str) -> list[str]:
     """
     if 'E' in text:   # "A and E", "A&E": the accident and emergency department, one name
         text = _A_AND_E_RE.sub(r'\1a_and_e', text)
-    acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
-    acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
-    acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
-    acronyms |= {m.start() for m in _B4_RE.finditer(text)}
+    acronyms: set[int] = set()
+    if not text.islower():   # each of these is said in capitals ("the IT office", "field A", "shelf B4")
+        acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
+        acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
+        acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
+        acronyms |= {m.start() for m in _B4_RE.finditer(text)}
     if acronyms:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))

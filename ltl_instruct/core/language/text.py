@@ -80,6 +80,10 @@ _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance)
 _WAY_RE = re.compile(r'\b(on (?:your|the|my|its) )(?:wat|wau|wy|wya|waay|wey)'
                      r'(?= (?:to|back|in|out|there|over)\b)')
 
+# Chat shorthand written with a slash.
+_SLASH_SHORT = {'w/e': 'whatever', 'w/o': 'without', 'b/c': 'because'}
+_SLASH_SHORT_RE = re.compile(r'\b(?:w/e|w/o|b/c)\b')
+
 # Family members named like names, with no article ("Mum's bedroom", "Dad always worries").
 FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
                           'gran', 'grandad', 'granddad', 'nana', 'nan', 'papa', 'mama'})
@@ -304,9 +308,7 @@ def tokenize(text: str) -> list[str]:
     if '/' in s or '&' in s or '+' in s:
         # chat shorthand ("w/e you find first", "w/o"), a slash between spaces separates list items
         # ("mail room / supply closet"), and "&" or "+" between words is "and" ("lost & found")
-        s = re.sub(r'\bw/e\b', 'whatever', s)
-        s = re.sub(r'\bw/o\b', 'without', s)
-        s = re.sub(r'\bb/c\b', 'because', s)
+        s = _SLASH_SHORT_RE.sub(lambda m: _SLASH_SHORT[m.group(0)], s)
         s = re.sub(r'(?<=[a-z0-9]) / (?=[a-z0-9])', ' , ', s)
         s = re.sub(r'(?<=[a-z0-9]) [&+] (?=[a-z0-9])', ' and ', s)
     if '.' in s:   # "Mr. Alvarez": the title's full stop ends no sentence

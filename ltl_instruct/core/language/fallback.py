@@ -8,7 +8,8 @@ This module decides between the two, by what the words could carry:
 - a clause holding a word that constrains the task (a negation, an avoid or stay verb, an
   order or time word, a count: :func:`ltl_instruct.core.language.chatter.carries_constraint`)
   is never dropped nor guessed: the translator still raises ``TranslationError`` naming it,
-  since an avoidance or an order silently lost is worse than no plan;
+  since an avoidance or an order silently lost is worse than no plan; so is a correction
+  the rules could not apply ("I meant ..."), whose replaced words are unknown;
 - otherwise, if the clause ends in places (a noun phrase, or a list of them, after words
   the rules do not know), it is read as going there (:func:`salvage_places`);
 - otherwise it is left out.
@@ -95,7 +96,8 @@ def salvage_places(words: Sequence[str], parser: PhraseParser) -> Optional[int]:
 
     The noun phrase (or list of them) must end the clause (``words``, punctuation removed) and
     start at a determiner or after a preposition of place; None where the clause ends
-    otherwise ("keep an eye on it").
+    otherwise ("keep an eye on it"), or where the place is the object of a subject's verb
+    ("repeated door openings disturb the temperature").
     """
     for i in range(len(words)):
         if not (words[i] in _DEFINITE or

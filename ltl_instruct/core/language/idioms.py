@@ -143,10 +143,15 @@ def _upto(m: 're.Match[str]') -> str:
     return f'at most {_times(max(_count_of(c) for c in counts))}'
 
 
+# The bound a limit word names ("max", "minimum", "exactly"); any other ("no more than", "only") is "at most".
+_BOUNDS = {'maximum': 'at most', 'max': 'at most', 'minimum': 'at least', 'min': 'at least',
+           'at least': 'at least', 'required': 'exactly', 'exact': 'exactly', 'exactly': 'exactly'}
+
+
 def _bound(m: 're.Match[str]') -> str:
-    mode = {'maximum': 'at most', 'max': 'at most', 'minimum': 'at least', 'min': 'at least',
-            'required': 'exactly', 'exact': 'exactly'}[m.group('bound')]
-    return f'visit {m.group("x")} {mode} {_times(_number(m.group("n")))}'
+    """Say a count with its bound: 'the maximum number of visits to X is three', 'max one visit to X'."""
+    mode = _BOUNDS.get(m.group('bound'), 'at most')
+    return f'visit {m.group("x")} {mode} {_times(_number(m.group("n").split()[-1]))}'
 
 
 def _visits(m: 're.Match[str]') -> str:
@@ -185,13 +190,6 @@ def _carried(m: 're.Match[str]') -> str:
     return f'carry {m.group("x")} {m.group("p")}'
 
 
-def _count_phrase(m: 're.Match[str]') -> str:
-    """'max one visit to the gate' -> 'visit the gate at most once'."""
-    mode = {'at least': 'at least', 'min': 'at least', 'minimum': 'at least', 'exactly': 'exactly'}.get(
-        m.group('mode'), 'at most')
-    return f'visit {m.group("x")} {mode} {_times(_number(m.group("n").split()[-1]))}'
-
-
 def _each_named(m: 're.Match[str]') -> str:
     """Name one of each: 'the first and third floors' is 'the first floor and the third floor'."""
     words = m.group('n').split()
@@ -209,6 +207,14 @@ _LIST_THEN = (r'(?P<l>(?:the|my|your|our) [a-z0-9_]+(?: [a-z0-9_]+){0,3}?(?: , (
 def _in_turn(m: 're.Match[str]') -> str:
     """Put each after the one before: 'the bench, the shelf, the lamp and finally the exit'."""
     return m.group('l').replace(' , ', ' , then ') + f' , and {m.group("w")} '
+
+
+_LIST_COMMA_RE = re.compile(r' , (?:and )?(?:then )?')
+
+
+def _in_order(places: str) -> str:
+    """Join the places of a route with "then": 'crane 1 , crane 2 , and site office' -> '... then ...'."""
+    return _LIST_COMMA_RE.sub(' then ', places)
 
 
 def _put_or_move(m: 're.Match[str]') -> str:
@@ -604,9 +610,9 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?P<v>take|bring|carry|return|move|haul|lug|wheel|ferry|cart) '
          rf'(?P<x>(?:the|a|an|my|your|our|this|that|'
          rf'these|those) {_NP}) back (?P<p>to|into|in|onto|inside)\b', r'\g<v> \g<x> \g<p>'),
-    Rule('hold position over it', r'\bhold (?:your |its )?position (?=over|above|there|here|for)', 'hover '),
-    Rule('hold position at inverter station 4: hover there (not "as long as b does not happen")',
-         r'\bhold (?:your |its )?position (?=(?:at|by|near|on) (?!.*\b(?:as long as|unless|until)\b))',
+    Rule('hold position over it, at inverter station 4: hover there (not "as long as b does not happen")',
+         r'\bhold (?:your |its )?position '
+         r'(?=over|above|there|here|for|(?:at|by|near|on) (?!.*\b(?:as long as|unless|until)\b))',
          'hover '),
     # "park yourself at the door until I tell you otherwise": the person's word is no event of the
     # task; what is said before it holds for the whole run
@@ -762,10 +768,10 @@ RULES: tuple[Rule, ...] = (
          rf'times (?:that )?you (?:can|must|may|should|are allowed to|have to|need to) {_GO} (?P<x>{_NP}) '
          rf'(?:is |are )?(?:exactly )?(?P<n>{_NUM}|once|twice)\b', _bound),
     Rule('max one visit to the gate, only one trip to the dock: a count on its own',
-         rf'(?:^|(?<=, ))(?P<mode>max|maximum|at most|no more than|only|just|at least|min|minimum|exactly) '
+         rf'(?:^|(?<=, ))(?P<bound>max|maximum|at most|no more than|only|just|at least|min|minimum|exactly) '
          rf'(?P<n>{_NUM}|a|a single|one single) {_KIND}(?:visits?|trips?|passes|stops?) '
          rf'(?:to|through|at|in) (?P<x>(?:the|my|your|our) {_NP})(?= [,.;]|$)',
-         _count_phrase),
+         _bound),
     Rule('do not make any single visit to X', r'\b(?:make|pay) (?:any|a) (?:single )?(?:visits?|trips?) to\b',
          'visit'),
     Rule('make at least three separate visits to X',
@@ -1124,12 +1130,10 @@ RULES: tuple[Rule, ...] = (
          r'go to \g<x> , then '),
     Rule('and after again to the printer: then back to it',
          r'(?P<j>, |\band )after again (?=to\b)', r'\g<j>then back '),
-    Rule('go to the copier and after to the printer: "after" alone is "then"',
+    Rule('go to the copier and after to the printer, and after bring the report: "after" alone is "then"',
          r'(?P<j>, |\band )after (?=(?:to|go|come|land|fly|head|return|again|back|visit|check|drive|move|'
-         r'proceed|finish|continue|stop|swing|pop|over|through|past|into|onto)\b)', r'\g<j>then '),
-    Rule('and after bring the report to the office: "after" before a request verb is "then"',
-         r'(?P<j>, |\band )after (?=(?:bring|take|carry|deliver|fetch|grab|pick|put|place|drop|throw|toss|'
-         r'hover|survey|inspect|patrol|inspect)\b)', r'\g<j>then '),
+         r'proceed|finish|continue|stop|swing|pop|over|through|past|into|onto|bring|take|carry|deliver|fetch|'
+         r'grab|pick|put|place|drop|throw|toss|hover|survey|inspect|patrol)\b)', r'\g<j>then '),
     Rule('and the other two you avoid: the thing avoided said first',
          r'(?P<j>(?:^|, |\band |\bbut ))(?P<x>(?:the|my|your|our) (?:[a-z0-9_]+ ){0,8}?[a-z0-9_]+) (?:you|u) '
          r'(?P<v>avoid|never go to|never visit|do not go to|do not visit|do not go near|stay away from|'
@@ -1155,7 +1159,7 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?:do|walk|run|drive|fly|make|complete|follow|take|patrol) (?:the|that|this|a) '
          rf'(?P<l>{_W}(?: {_W}){{0,3}}(?: (?:,|then|, then|and then) (?:the )?{_W}(?: {_W}){{0,3}}?){{1,6}}) '
          r'(?:loop|route|run|circuit|round|sequence|course)\b(?! (?:from|to)\b)',
-         lambda m: 'go to the ' + re.sub(r' , (?:and )?(?:then )?', ' then ', m.group('l'))),
+         lambda m: 'go to the ' + _in_order(m.group('l'))),
     Rule('walk the route from the entrance to the fire door: that route',
          r'\b(?:do|walk|run|drive|fly|make|complete|follow|take|ride) (?:the|that|this|a) '
          r'(?:loop|route|run|circuit|lap|trip|path|round|leg) (?=from\b)', 'go '),
@@ -1189,7 +1193,7 @@ RULES: tuple[Rule, ...] = (
     Rule('loop crane 1, crane 2, site office: the places in that order',
          rf'^loop (?:through |around |round )?(?P<l>(?:the )?{_W}(?: {_W}){{0,3}}(?: (?:,|then|, then|, and|'
          rf'and then) (?:the )?{_W}(?: {_W}){{0,3}}?){{1,6}})(?= twice in a row\b|$)',
-         lambda m: 'go to ' + re.sub(r' , (?:and )?(?:then )?', ' then ', m.group('l'))),
+         lambda m: 'go to ' + _in_order(m.group('l'))),
     Rule('avoid always the spilled coffee: always avoid it',
          r'\b(?P<v>avoid|visit) (?P<a>always|also|too|again|ever) (?=(?:the|my|your|a|an|our)\b)',
          r'\g<a> \g<v> '),
@@ -1707,7 +1711,7 @@ RULES: tuple[Rule, ...] = (
          r'making|get|getting)\b)'
          r'(?P<x>(?:the |my )?(?!(?:do|go|come|get|head|and|then|not|never|please|you|we|i|just|put|take|'
          r'while|when|on|as|once|after|before|if|until|till|bring|'
-         r'move|carry|fly|drive|tidy|clear|pack|put|throw|toss)\b)[a-z0-9_]+(?: [a-z0-9_]+){0,3}?) back '
+         r'move|carry|fly|drive|tidy|clear|pack|throw|toss)\b)[a-z0-9_]+(?: [a-z0-9_]+){0,3}?) back '
          r'(?P<p>into|in|onto|on|to) '
          r'(?=(?:the|my|your|our)\b)',
          r'put \g<x> back \g<p> '),

@@ -173,9 +173,14 @@ def order_statement(tokens: Sequence[str], parser: PhraseParser, verbless: bool 
     while k < len(tokens) and tokens[k] in _EVENT_SKIP and tokens[k] != 'the':
         k += 1
     y = parser.parse(tokens, k)
-    if y is None or y.pronoun or [t for t in tokens[y.end:] if t not in (',', 'too', 'though')]:
+    if y is None or y.pronoun or not _ends_statement(tokens[y.end:]):
         return None
     return x, word, y
+
+
+def _ends_statement(rest: Sequence[str]) -> bool:
+    """Whether nothing but commas, "too" and "though" follows the last place of an order statement."""
+    return all(t in (',', 'too', 'though') for t in rest)
 
 
 def order_statements(tokens: Sequence[str], parser: PhraseParser
@@ -188,8 +193,7 @@ def order_statements(tokens: Sequence[str], parser: PhraseParser
     if k > 0:
         j = k + 1 + (tokens[k + 1] == 'both')
         nps, joiner, end = parser.parse_list(list(tokens), j)
-        if len(nps) >= 2 and joiner == 'and' and not [
-                t for t in tokens[end:] if t not in (',', 'too', 'though')]:
+        if len(nps) >= 2 and joiner == 'and' and _ends_statement(tokens[end:]):
             # "the window has to come after the den and the hall": after each of them
             each = [order_statement(list(tokens[:k + 1]) + list(tokens[np.start:np.end]), parser)
                     for np in nps]

@@ -469,6 +469,23 @@ def _that_place(m: 're.Match[str]') -> str:
     return f' {m.group("v")} the ' if f' {m.group("n")} ' in m.string[:m.start() + 1] else m.group(0)
 
 
+# Text a sentence holds if any rewrite below may apply to it (else it is returned as it came).
+_CUES = (
+    ' done', ' finish', ' through', ' ready', ' once ', ' time ', ' look', ' peek', ' peep', ' glance',
+    ' gander', ' visit', ' trip', ' see ', ' check', ' whether', ' if ', ' away', ' clear', ' off', ' out',
+    ' goal', ' destination', ' target', ' aim', ' objective', ' end', ' job', ' task', ' mission', ' pass',
+    ' lap', ' round', ' sweep', ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter', ' only ',
+    ' no ', ' choose', ' select', ' sure', ' ensure', ' verify', ' confirm', ' pay ', ' what ', ' stop',
+    ' place', ' location', ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ', ' start',
+    ' begin', ' kick', ' wrap', ' whichever', ' any ', ' either ', ' one of ', ' drop ', ' duck ', ' nip ',
+    ' pop ', ' last ', ' dropped', ' popped', ' swung', ' called', ' come ', ' probably', ' maybe',
+    ' possibly', ' likely', ' usually', ' currently', ' still', ' normally', ' hopefully', ' typically',
+    ' forget', ' remember', ' try ', ' will need', ' will want', ' should', ' need to', ' have to', ' must',
+    ' free', ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted', ' supposed', ' sooner',
+    ' earlier', ' or ', ' times', ' back ', ' matter', ' care ', ' order', ' do ', ' shot', ' photo', ' pic',
+    ' footage', ' video', ' clip', ' image', ' snaps', ' lot ', ' send ')
+
+
 def paraphrase(tokens: list[str]) -> list[str]:
     """Rewrite paraphrases in ``tokens`` to the phrasing the clause reader knows."""
     text = ' ' + ' '.join(tokens) + ' '
@@ -480,26 +497,7 @@ def paraphrase(tokens: list[str]) -> list[str]:
         text = _VERB_COLON_RE.sub(r' \1 ', _COLON_RE.sub(r'\1 go to one of these : ', text))
         tokens = text.split()
         text = ' ' + ' '.join(tokens) + ' '
-    if not any(w in text for w in (' done', ' finish', ' through', ' ready', ' once ', ' time ', ' look',
-                                   ' peek', ' peep', ' glance', ' gander', ' visit', ' trip', ' see ',
-                                   ' check', ' whether', ' if ', ' away', ' clear', ' off', ' out',
-                                   ' goal', ' destination', ' target', ' aim', ' objective', ' end',
-                                   ' job', ' task', ' mission', ' pass', ' lap', ' round', ' sweep',
-                                   ' run', ' loop', ' flyover', ' circuit', ' from ', ' thereafter',
-                                   ' only ', ' no ', ' pick', ' choose', ' select', ' sure', ' ensure',
-                                   ' verify', ' confirm', ' pay ', ' what ', ' stop', ' place', ' location',
-                                   ' give ', ' you ', ' and ', ' wait ', ' stand ', ' sit ', ' park ',
-                                   ' start', ' begin', ' kick', ' finish', ' end ', ' wrap', ' whichever',
-                                   ' any ', ' either ', ' one of ', ' drop ', ' duck ', ' nip ', ' pop ',
-                                   ' last ', ' dropped', ' popped', ' swung', ' stopped', ' called',
-                                   ' looked', ' come ', ' probably', ' maybe', ' possibly', ' likely',
-                                   ' usually', ' currently', ' still', ' normally', ' hopefully',
-                                   ' typically', ' forget', ' remember', ' be sure', ' try ', ' will need',
-                                   ' will want', ' should', ' need to', ' have to', ' must', ' free',
-                                   ' often', ' sometimes', ' before ', ' after ', ' allowed', ' permitted',
-                                   ' supposed', ' sooner', ' earlier', ' or ', ' times', ' back ', ' matter',
-                                   ' care ', ' order', ' do ', ' shot', ' photo', ' picture', ' pic',
-                                   ' footage', ' video', ' clip', ' image', ' snaps', ' lot ', ' send ')):
+    if not any(w in text for w in _CUES):
         return tokens
     text = _one_of_group(text)
     for pattern, repl in _REWRITES:
@@ -511,8 +509,8 @@ def paraphrase(tokens: list[str]) -> list[str]:
     out = text.split()
     out = _passes(out)
     if 'exactly' in out or 'precisely' in out:
-        out = _EXACT_AGAIN_RE.sub(r' exactly \1 times', ' ' + ' '.join(out) + ' ').split()
-        out = _EXACT_SAID_AGAIN_RE.sub(r' exactly \1', ' ' + ' '.join(out) + ' ').split()
+        said = _EXACT_AGAIN_RE.sub(r' exactly \1 times', ' ' + ' '.join(out) + ' ')
+        out = _EXACT_SAID_AGAIN_RE.sub(r' exactly \1', said).split()
     if 'more' in out and ('less' in out or 'fewer' in out):
         out = _NO_MORE_NO_LESS_RE.sub(r' exactly \1', ' ' + ' '.join(out) + ' ').split()
     return out

@@ -15,8 +15,10 @@ a rule ("whenever", "every time", "if") or a prompt response makes one; "after/o
 makes one when the response is an obligation ("you must", "you have to", "b must be
 visited") or an avoidance, and the trigger is no goal given before (then the clause
 reader scopes it to that goal instead). A plain command ("after you visit a, go to b")
-stays a sequence. Anything the rule reader cannot place leaves the sentence to the clause
-reader (and to its errors).
+stays a sequence, and so, by the conventions, does an avoidance after "after" or said as a
+command after an opening "once" ("once you've been to a, stay clear of b": a is a goal, b
+avoided after it), unless ``after_scope='conditional'`` asks for the rule. Anything the
+rule reader cannot place leaves the sentence to the clause reader (and to its errors).
 """
 from __future__ import annotations
 

@@ -212,8 +212,10 @@ class Speller:
         if word in self._cache:
             return self._cache[word]
         out: Optional[str] = None
-        if len(word) >= 7 and word.isascii() and word.isalpha() and word not in self.words and \
-                word not in self.lexicon:
+        plain = word.isascii() and word.isalpha()
+        unlisted = plain and word not in self.words and word not in self.lexicon
+        known = plain and self.known(word)   # (asked once: every test below is of a plain word)
+        if len(word) >= 7 and unlisted:
             # one slip from a thing robots are sent to, even where the word reads as two run together
             # ("bedsheats": beds + heats, "casesrole": cases + role) or derived ("mantlepiece")
             near = {c for c, kind in _slips(word) if c in DOMAIN_WORDS and kind in (
@@ -221,8 +223,7 @@ class Speller:
             if len(near) == 1:
                 self._cache[word] = out = near.pop()
                 return out
-        if len(word) >= 6 and word.isascii() and word.isalpha() and word not in self.words and \
-                word not in self.lexicon and word.endswith(('er', 'or', 'ers', 'ors')):
+        if len(word) >= 6 and unlisted and word.endswith(('er', 'or', 'ers', 'ors')):
             # "-er" for "-or" and back ("moniter", "conveyer", "compacter", "computor"): the listed one
             s = 's' if word.endswith('s') else ''
             base = word[:-2 - len(s)]
@@ -230,21 +231,20 @@ class Speller:
             if other in self.words or other in self.lexicon:
                 self._cache[word] = other
                 return other
-        if len(word) == 4 and word.isascii() and word.isalpha() and not self.known(word):
+        if len(word) == 4 and plain and not known:
             # a four-letter word one dropped letter from one common word ("empy": empty)
             common = sorted(c for c, kind in _slips(word) if kind in ('missing', 'swap') and
                             self.words.get(c, _COMMON) < 5000 and not _inflection(word, c))
             if len(common) == 1:
                 self._cache[word] = common[0]
                 return common[0]
-        if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word) and self.core:
+        if len(word) >= 4 and plain and not known and self.core:
             core = sorted(c for c, kind in _slips(word)
                           if c in self.core and kind in ('swap', 'double', 'missing', 'sound'))
             if core:
                 self._cache[word] = core[0]
                 return core[0]
-        if len(word) >= 6 and word.isascii() and word.isalpha() and word.endswith(('er', 'ers')) and \
-                word not in self.words and word not in self.lexicon and self.known(word):
+        if len(word) >= 6 and unlisted and known and word.endswith(('er', 'ers')):
             # known only as an agent noun made up ("techer": tech + er), yet one dropped letter from a
             # common word ("teacher"): the common word ("sanding" stays: sand + ing is a word)
             common = sorted((self.words[c], c) for c, kind in _slips(word) if kind == 'missing' and
@@ -252,8 +252,7 @@ class Speller:
             if len(common) == 1:
                 self._cache[word] = common[0][1]
                 return common[0][1]
-        if len(word) >= 6 and word.isascii() and word.isalpha() and word not in self.words and \
-                word not in self.lexicon and self.known(word):
+        if len(word) >= 6 and unlisted and known:
             # known only as made up ("galery": gal + ery), yet a common word with one of its doubled
             # letters typed once ("gallery", "address"): the common word
             fits = {c for c in _undoubled(word)
@@ -261,7 +260,7 @@ class Speller:
             if len(fits) == 1:
                 self._cache[word] = out = fits.pop()
                 return out
-        if len(word) >= 4 and word.isascii() and word.isalpha() and not self.known(word):
+        if len(word) >= 4 and plain and not known:
             best: Optional[tuple[int, bool, int, str]] = None
             for cand, kind in _slips(word):
                 rank = self.words.get(cand, _DOMAIN_RANK if cand in DOMAIN_WORDS else None)
@@ -308,7 +307,7 @@ class Speller:
                 word not in self.words and word not in self.lexicon:
             base = self.correct(word[:-1])   # a possessive or plural of a misspelt word ("techer's")
             out = base + 's' if base is not None and (base in self.words or base in DOMAIN_WORDS) else None
-        if out is None and len(word) >= 7 and word.isascii() and word.isalpha() and not self.known(word):
+        if out is None and len(word) >= 7 and plain and not known:
             # (last: a plural of a misspelt word, "restroms", is "restrooms", not "re" + "storms")
             # a letter dropped or two swapped in a word made of a listed one ("combner": combiner,
             # "batchign": batching, "substaton": substation): only when exactly one fits

@@ -80,6 +80,10 @@ _FORM_RE = re.compile(r'\b(away|clear|far|apart|back|out|off|keep|stay|distance)
 _WAY_RE = re.compile(r'\b(on (?:your|the|my|its) )(?:wat|wau|wy|wya|waay|wey)'
                      r'(?= (?:to|back|in|out|there|over)\b)')
 
+# Chat shorthand written with a slash.
+_SLASH_SHORT = {'w/e': 'whatever', 'w/o': 'without', 'b/c': 'because'}
+_SLASH_SHORT_RE = re.compile(r'\b(?:w/e|w/o|b/c)\b')
+
 # Family members named like names, with no article ("Mum's bedroom", "Dad always worries").
 FAMILY_NAMES = frozenset({'mum', 'mom', 'mummy', 'mommy', 'dad', 'daddy', 'grandma', 'grandpa', 'granny',
                           'gran', 'grandad', 'granddad', 'nana', 'nan', 'papa', 'mama'})
@@ -211,12 +215,14 @@ _A_AND_E_RE = re.compile(r'(^|[,.;:!?]\s*|\b(?i:the|to|at|of|in|by|from|near|pas
 _LETTER_RE = re.compile(r"(?<=[a-z]) ([A-HJ-Z])(?=[\s,.;:!?)]|$)")
 
 
-# "shelf B4", "bay b4": a letter and a digit after a noun that takes labels is a label, not "before".
+# "shelf B4" (in capitals, after any word), "bay b4" (after a noun that takes labels): a label, not
+# the typed shorthand for "before".
 _B4_RE = re.compile(r"(?<=[A-Za-z] )B4\b")
-_LABEL_NOUNS = frozenset('''
+_B4_LABELLED = frozenset('''
 shelf shelves aisle bay bin gate room locker seat row table dock box cell rack unit section slot cabinet
 drawer stall platform bed desk level door hangar pod cage pen tank zone area lab office ward wing suite
-booth counter station lane pallet pier berth bench
+booth counter station lane pallet pier berth bench building block spot shelving hall stand pad classroom
+greenhouse field plot apartment flat
 '''.split())
 
 
@@ -232,13 +238,6 @@ def _then(number: str, following: str) -> str:
 
 
 _TILL_BEFORE = frozenset({'the', 'that', 'this', 'my', 'our', 'your', 'each', 'every'})
-# Typing shorthands that are also labels ("b4" for "before"; "shelf b4"), and the nouns labels follow.
-_LABEL_TYPOS = frozenset({'b4'})
-_LABELLED = frozenset('''
-shelf aisle bay room dock gate bin rack row section unit locker cabinet zone lane level platform building
-block cell stall slot spot door box pallet shelving station area hall ward bed seat table pen stand hangar pad
-lab office classroom greenhouse field plot tank wing suite apartment flat
-'''.split())
 _TILL_PLACES = frozenset('''
 front back main other first second third last left right middle end near far express north south east west
 open
@@ -282,10 +281,12 @@ def tokenize(text: str) -> list[str]:
     """
     if 'E' in text:   # "A and E", "A&E": the accident and emergency department, one name
         text = _A_AND_E_RE.sub(r'\1a_and_e', text)
-    acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
-    acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
-    acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
-    acronyms |= {m.start() for m in _B4_RE.finditer(text)}
+    acronyms: set[int] = set()
+    if not text.islower():   # each of these is said in capitals ("the IT office", "field A", "shelf B4")
+        acronyms = {m.start(2) for m in _ACRONYM_RE.finditer(text) if m.group(2).isupper()}
+        acronyms |= {m.start(1) for m in _ITEM_ACRONYM_RE.finditer(text)}
+        acronyms |= {m.start(1) for m in _LETTER_RE.finditer(text)}
+        acronyms |= {m.start() for m in _B4_RE.finditer(text)}
     if acronyms:
         # marked so that lower-casing keeps them apart from the words they spell ("it", "or")
         text = ''.join(f'zq{c.lower()}' if i in acronyms else c for i, c in enumerate(text))
@@ -307,9 +308,7 @@ def tokenize(text: str) -> list[str]:
     if '/' in s or '&' in s or '+' in s:
         # chat shorthand ("w/e you find first", "w/o"), a slash between spaces separates list items
         # ("mail room / supply closet"), and "&" or "+" between words is "and" ("lost & found")
-        s = re.sub(r'\bw/e\b', 'whatever', s)
-        s = re.sub(r'\bw/o\b', 'without', s)
-        s = re.sub(r'\bb/c\b', 'because', s)
+        s = _SLASH_SHORT_RE.sub(lambda m: _SLASH_SHORT[m.group(0)], s)
         s = re.sub(r'(?<=[a-z0-9]) / (?=[a-z0-9])', ' , ', s)
         s = re.sub(r'(?<=[a-z0-9]) [&+] (?=[a-z0-9])', ' and ', s)
     if '.' in s:   # "Mr. Alvarez": the title's full stop ends no sentence
@@ -376,15 +375,12 @@ def tokenize(text: str) -> list[str]:
         if acronyms and tok.startswith('zq'):
             out.append(tok[2:] if tok == 'zqb4' else tok[2:].upper())   # "shelf B4": shelf_b4
             continue
-        if tok == 'b4' and out and out[-1] in _LABEL_NOUNS:
-            out.append(tok)   # "bay b4": a label
+        if tok == 'b4' and out and out[-1] in _B4_LABELLED:
+            out.append(tok)   # "bay b4", "shelf b4": a label, not "before"
             continue
         tok = ORDINAL_DIGITS.get(tok, tok)
         if tok == 'till' and _till_is_counter(out, found[k + 1:k + 3]):
             out.append(tok)   # "stuck at the till", "go to till 4": the counter, not "until"
-            continue
-        if tok in _LABEL_TYPOS and out and out[-1] in _LABELLED:
-            out.append(tok)   # "shelf b4", "gate b4": a label, not "before"
             continue
         words = TYPOS.get(tok, tok).split()
         for w in words:

@@ -8,7 +8,7 @@ import bench
 
 
 def main() -> int:
-    """Run ``bench.<name>.main()`` for each module, or those named on the command line."""
+    """Run the main function of each bench module, or of those named on the command line."""
     names = sys.argv[1:] or sorted(m.name for m in pkgutil.iter_modules(bench.__path__)
                                    if not m.name.startswith('_'))
     failed = 0

@@ -21,7 +21,7 @@ SIM = 'sim_world'
 
 
 def _nodes(context, *args, **kwargs):
-    """The nodes, with the scene's per-node parameters after the parameters file."""
+    """Return the nodes, with the scene's per-node parameters after the parameters file."""
     from ltl_instruct.commands.bringup import scene_overrides
     params_file = LaunchConfiguration('params_file').perform(context)
     overrides = scene_overrides(LaunchConfiguration('scene').perform(context))

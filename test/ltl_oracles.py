@@ -133,7 +133,7 @@ def ltlf2dfa_dfa(f: Formula, atoms: Sequence[Atom]) -> MonaDfa:
 
 
 def languages_differ(ours, mona: MonaDfa, letters: Sequence[frozenset]) -> Optional[list]:
-    """A shortest non-empty trace on which the two DFAs disagree, or None."""
+    """Return a shortest non-empty trace on which the two DFAs disagree, or None."""
     start = (ours.initial, mona.initial)
     q = deque([(start, [])])
     seen = {start}

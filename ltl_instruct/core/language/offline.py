@@ -55,7 +55,8 @@ from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders
     never_all as _never, render, until_avoid as _until_avoid,
 )
 from ltl_instruct.core.language.text import (
-    LABEL_HEADS, NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, join_compounds, separate_labels, tokenize,
+    LABEL_HEADS, NUMBER_WORDS, ORDINALS, PUNCT, expand_labels, is_label, join_compounds, separate_labels,
+    tokenize,
 )
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
@@ -253,15 +254,10 @@ def _is_number(word: str) -> bool:
     return word.isdigit() and len(word) < 4
 
 
-def _is_label(word: str) -> bool:
-    """Whether a name's last word is a label ("stairwell e", "row 8", "crane two")."""
-    return len(word) == 1 and word.isalpha() or _is_number(word) or word in NUMBER_WORDS
-
-
 def _labelled(name: str, head: str) -> bool:
     """Whether ``name`` is ``head`` with a label after it ("stairwell_e" for "the stairwell")."""
     before, sep, label = name.rpartition('_')
-    return bool(sep) and before == head and _is_label(label)
+    return bool(sep) and before == head and is_label(label)
 
 
 def _after_relation(tokens: Sequence[str], i: int) -> bool:
@@ -1173,8 +1169,8 @@ class _Reader:
                 # "panel row 7, then row 8": row 8 of the panel rows named in full before
                 head, _, label = d.name.rpartition('_')
                 kinds = {n.rpartition('_')[0] for n in longer
-                         if n.rpartition('_')[0].endswith('_' + head) and _is_label(n.rpartition('_')[2])}
-                if '_' not in head and _is_label(label) and len(kinds) == 1:
+                         if n.rpartition('_')[0].endswith('_' + head) and is_label(n.rpartition('_')[2])}
+                if '_' not in head and is_label(label) and len(kinds) == 1:
                     mapping[d] = Descriptor(f'{kinds.pop()}_{label}')
                     said, meant = d.name.replace('_', ' '), mapping[d].name.replace('_', ' ')
                     self.notes.append(f'took "{said}" as the {meant}')
@@ -1182,16 +1178,16 @@ class _Reader:
                 # "the gate 7 apron door ... back to the apron door": the one named in full before
                 # (a label in front of it: "the apron door" is that gate's)
                 full = [n for n in longer if n.endswith('_' + d.name) and any(
-                    _is_label(w) for w in n[:-len(d.name) - 1].split('_'))]
-                if not _is_label(label) and len(full) == 1 and not any(
+                    is_label(w) for w in n[:-len(d.name) - 1].split('_'))]
+                if not is_label(label) and len(full) == 1 and not any(
                         n.endswith('_' + d.name) for n in longer if n != full[0] and n != d.name):
                     mapping[d] = Descriptor(full[0])
                     self.notes.append(f'took "{d.name.replace("_", " ")}" as the {full[0].replace("_", " ")} '
                                       'named before')
                 continue
-            if _is_label(d.name) and len(d.name) == 1:
+            if is_label(d.name) and len(d.name) == 1:
                 # "check-in island D or E", "stairwell A or B": the bare letter names one of the same kind
-                kinds = {n.rpartition('_')[0] for n in longer if _is_label(n.rpartition('_')[2])}
+                kinds = {n.rpartition('_')[0] for n in longer if is_label(n.rpartition('_')[2])}
                 if len(kinds) == 1:
                     mapping[d] = Descriptor(f'{kinds.pop()}_{d.name}')
                     self.notes.append(f'took "{d.name}" as the {mapping[d].name.replace("_", " ")}')
@@ -3517,7 +3513,7 @@ class _Reader:
     def _alternative(self, np: NounPhrase, targets: Sequence[Descriptor]) -> Descriptor:
         """Return the alternative a condition names ("the passenger one": the passenger elevator)."""
         d = self._resolve(np, place=True).descriptor
-        if not d.relations and _is_label(d.name):
+        if not d.relations and is_label(d.name):
             # "row 20 or row 21. If you take 21, ...": the one with that label
             fits = [t for t in targets if t.name.endswith('_' + d.name)]
             return fits[0] if len(fits) == 1 else d

@@ -23,7 +23,7 @@ from ltl_instruct.core.language.phrases import (
     COLOURS, DETERMINERS, NAME_VERBS, PLACEHOLDER_ADJECTIVES, STOPWORDS, NounPhrase, PhraseParser,
     is_name_word, match_relation, singular,
 )
-from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT
+from ltl_instruct.core.language.text import NUMBER_WORDS, ORDINALS, PUNCT, bare_label, is_label
 from ltl_instruct.core.spec import Descriptor
 
 _LIST_INTROS = frozenset({'see', 'has', 'have', 'is', 'are', ':', 'of', 'list', 'here', 'got', 'spot',
@@ -761,25 +761,15 @@ def _strip_corr(seg: list[str]) -> list[str]:
     return seg
 
 
-def _bare_label(word: str) -> bool:
-    """Tell whether a word is a letter or a short number that labels one of a kind ("island D", "gate 4")."""
-    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4
-
-
-def _is_label(word: str) -> bool:
-    """Tell whether a word labels one of a kind: a letter, a short number or a number word ("dock three")."""
-    return _bare_label(word) or word in NUMBER_WORDS
-
-
 def _relabel(prev: list[str], new: list[str]) -> Optional[list[str]]:
     """'... checked stairwell A. I meant stairwell C': the last thing of that kind with another label."""
     words = new[1:] if new[:1] and new[0] in DETERMINERS else new
-    if len(words) < 2 or not _is_label(words[-1]) or not all(w.isalpha() for w in words[:-1]):
+    if len(words) < 2 or not is_label(words[-1]) or not all(w.isalpha() for w in words[:-1]):
         return None
     kind = words[:-1]
     n = len(kind)
     for p in range(len(prev) - n - 1, -1, -1):
-        if prev[p:p + n] == kind and _is_label(prev[p + n]) and (p + n + 1 == len(prev) or prev[
+        if prev[p:p + n] == kind and is_label(prev[p + n]) and (p + n + 1 == len(prev) or prev[
                 p + n + 1] in PUNCT or prev[p + n + 1] in _AFTER_LABEL):
             return None if prev[p + n].lower() == words[-1].lower() else \
                 prev[:p + n] + [words[-1]] + prev[p + n + 1:]
@@ -1684,7 +1674,7 @@ def _only_this(prev: list[str], seg: list[str], notes: list[str]) -> Optional[li
         words = ['just'] + words[2:]
     if words[1:3] in (['go', 'to'], ['head', 'to'], ['visit', 'the']) and len(words) > 3:
         words = ['just'] + words[3 if words[1] != 'visit' else 2:]   # "just go to the north one"
-    if len(words) == 2 and _bare_label(words[1]):
+    if len(words) == 2 and bare_label(words[1]):
         return _only_label(prev, words[1], notes)   # "check-in island D or E ... just D"
     np = PhraseParser().parse(words, 1)
     spans = _np_spans(prev)
@@ -1730,13 +1720,13 @@ def _only_label(prev: list[str], label: str, notes: list[str]) -> Optional[list[
     for p in range(len(prev) - 2, 0, -1):
         a, b = prev[p - 1], prev[p + 1]
         if prev[p] == 'or' and p >= 2 and p + 2 < len(prev) and prev[p + 1] == prev[p - 2] and \
-                _bare_label(a) and _bare_label(prev[p + 2]):
+                bare_label(a) and bare_label(prev[p + 2]):
             b = prev[p + 2]   # "room 4 or room 5" (the kind said again)
             if label not in (a, b) or prev[p + 3:p + 4] in (['or'], [',']):
                 return None
             notes.append(f'only {label} kept of that choice')
             return prev[:p - 1] + [label] + prev[p + 3:]
-        if prev[p] != 'or' or not (_bare_label(a) and _bare_label(b)) or label not in (a, b) or \
+        if prev[p] != 'or' or not (bare_label(a) and bare_label(b)) or label not in (a, b) or \
                 prev[p - 2:p - 1] in (['or'], [',']) or prev[p + 2:p + 3] in (['or'], [',', 'or']):
             continue
         if p < 2 or prev[p - 2] in PUNCT or prev[p - 2] in STOPWORDS:
@@ -2530,7 +2520,7 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             notes.append(f'"{tgt}" ({hit.descriptor}) was dropped')
             return _remove_from_list(prev, 0, hit) or _remove_clause(prev, hit.start, narrow=True)
         tnp = parser.parse(target, 0)
-        if tnp is None and len(target) == 1 and _is_label(target[0]):
+        if tnp is None and len(target) == 1 and is_label(target[0]):
             # "survey rows 4, 5 and 6. actually skip 5": the one with that label
             labelled = [sp for sp in spans if sp.descriptor.name.endswith('_' + target[0].lower())]
             if len(labelled) == 1:

@@ -232,6 +232,16 @@ _ITEM_OPENERS = frozenset({'then', 'never', 'do', 'don', 'dont', 'avoid', 'and',
                            'stay', 'also', 'optionally', 'or', 'either', 'first', 'lastly', 'next', 'until'})
 
 
+def bare_label(word: str) -> bool:
+    """Whether a word is a letter or a short number that labels one of a kind ("island D", "gate 4")."""
+    return len(word) == 1 and word.isalpha() or word.isdigit() and len(word) < 4
+
+
+def is_label(word: str) -> bool:
+    """Whether a word labels one of a kind: a letter, a short number or a number word ("dock three")."""
+    return bare_label(word) or word in NUMBER_WORDS
+
+
 def _then(number: str, following: str) -> str:
     """Return "then " for a list number after the first (a numbered list is an order), unless told."""
     return '' if number in ('0', '1', '01') or following in _ITEM_OPENERS else 'then '

@@ -4509,9 +4509,10 @@ class _Reader:
                 only = only or word == 'after'   # after the group: each of them before, in any order
                 if rest[k] == 'both' and len(prior) >= 2:
                     prior = prior[-2:]
-                if not prior or rest[k] == 'both' and len(prior) != 2:
+                # (said again by name only, a goal placed by another thing would lose its place: refused)
+                if not prior or rest[k] == 'both' and len(prior) != 2 or any(d.relations for d in prior):
                     raise TranslationError(f'could not tell what "{" ".join(rest)}" refers to in '
-                                           f'"{" ".join(whole)}"', details={'part': rest})
+                                           f'"{" ".join(whole)}"', details={'part': ' '.join(rest)})
                 rest = rest[:k] + _said_as_list(prior)
             nps, _, end = self._np_list(rest, k)
             p = k + 2 if rest[k:k + 2] == ['anywhere', 'near'] else k

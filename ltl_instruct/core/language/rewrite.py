@@ -1550,7 +1550,7 @@ _COMMAND_JOINERS = frozenset({'just', 'but', 'and', 'so', 'only', 'instead', 'th
 
 def _opens_command(seg: list[str], k: int) -> bool:
     """Whether a command starts at ``seg[k]``, after a remark ("..., the cat is fine just avoid X")."""
-    if seg[k] in _COMMAND_JOINERS:
+    if k < len(seg) and seg[k] in _COMMAND_JOINERS:
         k += 1
     return k < len(seg) and seg[k] in _COMMAND_START and (
         seg[k] != 'do' or seg[k + 1:k + 2] in (['not'], ['never']))

@@ -110,6 +110,9 @@ RUN_ON_NOT_AFTER = frozenset({'and', 'or', 'but', 'then', 'that', 'so', 'if', 'w
                               'which', 'who', 'what', 'why', 'how', 'as', 'the', 'a', 'an', 'to', 'of', 'for',
                               'until', 'before', 'after', 'while', 'unless', 'whenever'})
 
+# Words of place names that a speller would take for slips ("porta potty" is no "portal").
+NAME_WORDS = frozenset({'porta', 'potty', 'portaloo', 'loo', 'cubby', 'mudroom'})
+
 STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})
 
 # Trailing phrases that add nothing to the task ("at all costs", "on your travels").

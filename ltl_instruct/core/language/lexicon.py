@@ -110,7 +110,8 @@ RUN_ON_NOT_AFTER = frozenset({'and', 'or', 'but', 'then', 'that', 'so', 'if', 'w
                               'which', 'who', 'what', 'why', 'how', 'as', 'the', 'a', 'an', 'to', 'of', 'for',
                               'until', 'before', 'after', 'while', 'unless', 'whenever'})
 
-# Words of place names that a speller would take for slips ("porta potty" is no "portal").
+# Words of place names that a speller would take for slips ("porta potty" is no "portal"). Read by no
+# name: every word set of this module is the speller's lexicon (offline._speller).
 NAME_WORDS = frozenset({'porta', 'potty', 'portaloo', 'loo', 'cubby', 'mudroom'})
 
 STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})

@@ -262,7 +262,9 @@ def test_pick_and_place_is_executed_with_skill_results(graph):
     done = client.wait_status(iid, 'satisfied', timeout=60.0)
     assert done is not None, client.received.statuses[iid]
     results = [r for r in client.received.skill_results if r['id'] == iid]
-    assert [r['skill'] for r in results] == ['pick', 'release'] and all(r['ok'] for r in results)
+    assert [r['skill'] for r in results] == ['pick', 'release'] and all(r['ok'] for r in results), (
+        [(r['skill'], r['ok'], r.get('error')) for r in results],
+        [(s['status'], s.get('reason')) for s in client.received.statuses[iid]])
 
 
 def test_task_plan_lists_steps_with_automaton_states(graph):

@@ -30,6 +30,8 @@ from ltl_instruct.nodes.common import (
     ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node, sensor_qos,
 )
 
+_EARLY_PLANS = 8   # plans whose skill requests may wait for them at once
+
 PARAMS = (
     ParamSpec('scene', 'apartment', 'built-in scene name or path of a scene file'),
     ParamSpec('rate_hz', 20.0, 'simulation and odometry rate [Hz]', 1.0, 200.0),
@@ -56,7 +58,10 @@ class SimWorldNode(Node):
         self.world = SimulatedWorld(self.scene, max_speed=self.params['max_speed'],
                                     reach=self.params['reach'])
         self._plan_key: Optional[int] = None
-        self._pending: dict[int, dict[str, Any]] = {}   # path index -> skill request
+        # skill requests of the followed plan: (path index, request); -1: where the robot is now
+        self._pending: list[tuple[int, dict[str, Any]]] = []
+        # requests that came before their plan (another topic: DDS does not order them): by plan stamp
+        self._early: dict[int, list[dict[str, Any]]] = {}
         self._skill_busy_until = 0.0
         self._last_tick = time.monotonic()
         self._classes_sent: Optional[dict[str, str]] = None
@@ -116,31 +121,49 @@ class SimWorldNode(Node):
             return
         self._pending.clear()
         self._plan_key = conv.stamp_key(msg.header.stamp)
+        early = self._early.pop(self._plan_key, [])
+        for stamp in [k for k in self._early if k < self._plan_key]:
+            del self._early[stamp]   # their plan was replaced before it came
         if len(points) == 0:
             self.world.robot.stop()
             return
         self.world.robot.follow(points)
         self.get_logger().info(f'following a plan of {len(points)} poses')
+        for req in early:
+            self._queue(req)
 
     def on_skill_request(self, msg: String) -> None:
-        """Queue a pick or release at a path index of the current plan."""
+        """Queue a pick or release at a path index of its plan.
+
+        The plan comes on ``plan`` and its skill requests on ``skill/request``; DDS does not
+        order two topics, so a request may come first. It is held until its plan comes
+        (plan stamps grow); one for a plan already replaced is dropped.
+        """
         try:
             req = conv.parse_json_payload(msg.data, conv.SKILL_REQUEST)
             skill = req['skill']
-            index = int(req['path_index'])
+            int(req['path_index'])
             if skill not in ('pick', 'release') or not isinstance(req.get('args'), list):
                 raise ValueError(f'bad skill request {skill!r}')
+            stamp = None if req.get('plan_stamp') is None else int(req['plan_stamp'])
         except (LtlInstructError, KeyError, ValueError, TypeError) as e:
             self.get_logger().warning(f'skill request rejected: {e}')
             return
-        if req.get('plan_stamp') is not None and int(req['plan_stamp']) != self._plan_key:
-            self.get_logger().warning('skill request for another plan: carried out where the robot is')
+        if stamp is None or stamp == self._plan_key:
+            self._queue(req)
+        elif self._plan_key is None or stamp > self._plan_key:
+            if stamp not in self._early and len(self._early) >= _EARLY_PLANS:
+                del self._early[min(self._early)]
+            self._early.setdefault(stamp, []).append(req)
+        else:
+            self.get_logger().warning(f'{req["id"]}: {skill} request for a plan already replaced: dropped')
+
+    def _queue(self, req: dict[str, Any]) -> None:
+        index = int(req['path_index'])
+        if not self.world.robot.add_stop(index):   # already passed: carried out where the robot is
             self.world.robot.pause()
-            self._pending[-1] = req
-            return
-        self._pending[index] = req
-        if not self.world.robot.add_stop(index):
-            self._pending[-1] = self._pending.pop(index)
+            index = -1
+        self._pending.append((index, req))
 
     def on_tick(self) -> None:
         """Advance the simulation and publish odometry; carry out a skill at a stop."""
@@ -149,11 +172,12 @@ class SimWorldNode(Node):
         self._last_tick = now
         robot = self.world.robot
         if robot.is_paused and now >= self._skill_busy_until:
-            due = [i for i in self._pending if i <= robot.path_index]
+            due = [k for k, (i, _) in enumerate(self._pending) if i <= robot.path_index]
             if due:
-                self._do_skill(self._pending.pop(min(due)))
+                first = min(due, key=lambda k: self._pending[k][0])   # by index, then arrival
+                self._do_skill(self._pending.pop(first)[1])
                 self._skill_busy_until = now + self.params['skill_duration'] / self.params['time_scale']
-            elif not any(i == robot.path_index for i in self._pending):
+            elif not any(i == robot.path_index for i, _ in self._pending):
                 robot.resume()
         before = robot.pose.xyz
         pose = self.world.step(dt)

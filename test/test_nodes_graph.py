@@ -267,6 +267,28 @@ def test_pick_and_place_is_executed_with_skill_results(graph):
         [(s['status'], s.get('reason')) for s in client.received.statuses[iid]])
 
 
+def test_a_late_failure_from_a_replaced_plan_does_not_replan(graph):
+    g, client, _ = graph
+    iid = client.send(formula='F (near[armchair] & F near[plant])')
+    status = client.wait_terminal(iid, timeout=30.0)
+    assert status['status'] == 'planned', status
+    from ltl_instruct.nodes.common import reliable_qos
+    pub = client.node.create_publisher(String, 'skill/result', reliable_qos())
+    try:
+        client.wait_until(lambda: pub.get_subscription_count() > 1 or None, 5.0)
+        pub.publish(conv.json_msg(conv.payload(
+            conv.SKILL_RESULT, iid, skill='pick', args=['plant'], ok=False,
+            plan_stamp=status['plan_stamp'] - 1, error={'code': 'SKILL_FAILED', 'message': 'stale'})))
+        done = client.wait_status(iid, 'satisfied', timeout=60.0)
+    finally:
+        client.node.destroy_publisher(pub)
+    statuses = [s['status'] for s in client.received.statuses[iid]]
+    odom = [(round(t, 2), p.round(2).tolist()) for t, p in client.received.odom[-400::40]]
+    plan = client.received.plans.get(status['plan_stamp'])
+    assert done is not None and 'skill_failed' not in statuses and 'replanning' not in statuses, (
+        statuses, odom, None if plan is None else plan[[0, -1]].round(2).tolist())
+
+
 def test_task_plan_lists_steps_with_automaton_states(graph):
     g, client, _ = graph
     iid = client.send(formula='F (near[armchair] & F near[plant])')

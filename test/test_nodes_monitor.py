@@ -8,7 +8,7 @@ from hypothesis import given, settings, strategies as st
 from ltl_instruct.core.automaton import compile_automaton
 from ltl_instruct.core.errors import InvalidInputError
 from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap
-from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, Verdict
+from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, PlanTrace, Verdict
 from ltl_instruct.core.spec import near, parse_formula
 
 
@@ -117,3 +117,60 @@ def test_update_along_sees_a_region_between_two_far_apart_poses():
     assert fast.update_along([0.0, -2.0, 0.0], [4.0, 2.0, 0.0]).verdict is Verdict.SATISFIED
     with pytest.raises(InvalidInputError):
         fast.update_along([0, 0, 0], [np.nan, 0, 0])
+
+
+# a plan that turns at the sofa: (0, -3) -> (2, -1.15) -> (4, -3), densified every 0.1 m
+_LEGS = [np.linspace([0.0, -3.0, 0.0], [2.0, -1.15, 0.0], 28),
+         np.linspace([2.0, -1.15, 0.0], [4.0, -3.0, 0.0], 28)[1:]]
+TURN = np.vstack(_LEGS)
+
+
+def test_poses_far_apart_on_the_plan_are_read_along_it():
+    """A busy node saw the robot only before and after its turn at the sofa: the plan fills the gap."""
+    straight = _monitor('F (near[sofa] & F near[computer])')
+    straight.update(TURN[3])
+    # read as a straight line, the move from before the turn to after it misses the sofa
+    assert not straight.update_along(TURN[3], TURN[-4]).changed
+    m = _monitor('F (near[sofa] & F near[computer])')
+    trace = PlanTrace(TURN, tolerance=0.1, dims=2)
+    trace.start(TURN[3])
+    m.update(TURN[3])
+    via = trace.via(TURN[-4] + [0.03, 0.03, 0.0])            # a little off the plan is still on it
+    assert any(np.allclose(v, [2.0, -1.15, 0.0]) for v in via)
+    assert m.update_along(TURN[3], TURN[-4], via=via).changed
+
+
+def test_a_pose_off_the_plan_or_behind_it_is_read_straight():
+    trace = PlanTrace(TURN, tolerance=0.1, dims=2)
+    trace.start(TURN[10])
+    assert trace.via([1.0, 1.0, 0.0]) == []           # off the plan
+    assert trace.via(TURN[30]) == []                  # the last pose was off it: straight
+    assert len(trace.via(TURN[40])) == 9              # on it again: the points in between
+    assert trace.via(TURN[20]) == []                  # behind where the robot has been
+    assert trace.cursor is None
+
+
+def test_a_plan_that_comes_back_is_located_in_order():
+    out_and_back = np.vstack([np.linspace([0.0, 0.0, 0.0], [3.0, 0.0, 0.0], 31),
+                              np.linspace([3.0, 0.0, 0.0], [0.0, 0.05, 0.0], 31)[1:]])
+    trace = PlanTrace(out_and_back, tolerance=0.1, dims=2)
+    trace.start([1.0, 0.0, 0.0])
+    assert trace.cursor == pytest.approx(1.0)
+    trace.via([2.9, 0.0, 0.0])
+    assert trace.cursor == pytest.approx(2.9)
+    trace.via([1.0, 0.03, 0.0])                       # on the way back, not the way out
+    assert trace.cursor == pytest.approx(5.0, abs=0.01)
+
+
+def test_plan_trace_heights_count_for_a_drone_only():
+    path = np.array([[0.0, 0.0, 5.0], [4.0, 0.0, 5.0]])
+    assert PlanTrace(path, 0.1, dims=2).locate([1.0, 0.0, 0.0]) == pytest.approx(1.0)
+    assert PlanTrace(path, 0.1, dims=3).locate([1.0, 0.0, 0.0]) is None
+
+
+@pytest.mark.parametrize('bad', [dict(path=np.zeros((0, 3))), dict(path=np.full((2, 3), np.nan)),
+                                 dict(path=np.zeros((2, 2))), dict(path=np.zeros((2, 3)), tolerance=0.0),
+                                 dict(path=np.zeros((2, 3)), dims=4)])
+def test_plan_trace_rejects_bad_input(bad):
+    with pytest.raises(InvalidInputError):
+        PlanTrace(**bad)

@@ -118,3 +118,20 @@ def test_two_stops_already_passed_are_both_carried_out_in_order(sim):
     _run(sim)
     assert _skills(sim) == [('pick', False), ('release', False)], sim.result_pub.results
     assert all(r['error']['message'] for r in sim.result_pub.results)
+
+
+def test_a_slow_tick_publishes_the_corners_passed_before_the_pose(sim):
+    class Odom:
+        def __init__(self):
+            self.poses = []
+
+        def publish(self, msg):
+            self.poses.append(conv.odometry_pose(msg).xyz[:2].round(3).tolist())
+
+    sim.odom_pub = Odom()
+    plan, _, _ = _path(5_000)
+    sim.on_plan(plan)
+    sim.params['time_scale'] = 50.0
+    sim._last_tick = time.monotonic() - 0.5     # a stalled tick: 25 simulated seconds
+    sim.on_tick()
+    assert sim.odom_pub.poses == [list(TOY), list(BASKET)]

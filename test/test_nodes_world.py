@@ -63,6 +63,23 @@ def test_robot_follows_a_path_at_bounded_speed():
     assert robot.pose.yaw == pytest.approx(math.pi / 2)
 
 
+def test_a_long_step_reports_the_corners_it_passed():
+    """Straight moves between the reported poses follow the path, however long the step."""
+    robot = KinematicRobot((0.0, 0.0, 0.0), max_speed=1.0)
+    straight = np.column_stack([np.linspace(0.0, 3.0, 31), np.zeros(31), np.zeros(31)])
+    up = np.column_stack([np.full(20, 3.0), np.linspace(0.2, 4.0, 20), np.zeros(20)])
+    back = np.array([[1.0, 4.0, 0.0]])
+    robot.follow(np.vstack([straight, up, back]))
+    end = robot.step(100.0)        # the whole path in one step
+    assert [c.position for c in robot.corners] == [(3.0, 0.0, 0.0), (3.0, 4.0, 0.0)]
+    assert np.allclose(end.xyz, [1.0, 4.0, 0.0])
+    robot.follow(straight)
+    robot.step(1.0)
+    assert robot.corners == []     # points on a straight line are no corners
+    robot.step(0.0)
+    assert robot.corners == []
+
+
 def test_robot_stops_at_a_skill_index_and_resumes():
     robot = KinematicRobot((0.0, 0.0, 0.0), max_speed=1.0)
     robot.follow(np.array([[1.0, 0, 0], [2.0, 0, 0], [3.0, 0, 0]]), stop_at=[1])

@@ -171,32 +171,37 @@ class ExecutionMonitor:
         return self.read(letter)
 
     def update_along(self, start: Sequence[float], end: Sequence[float], events: Iterable[Atom] = (),
-                     spacing: float = 0.05) -> MonitorReport:
-        """Read the letters along the straight move ``start`` -> ``end`` [m], every ``spacing`` [m].
+                     spacing: float = 0.05, via: Sequence[Sequence[float]] = ()) -> MonitorReport:
+        """Read the letters along the move ``start`` -> ``via``... -> ``end`` [m], every ``spacing`` [m].
 
         Poses come at a finite rate; a fast robot would otherwise step over a thin region
-        between two of them. ``start`` was read already; ``events`` belong to the last
-        letter. Reading stops at the first letter that satisfies or violates the task;
-        the report says whether the state changed anywhere along the move.
+        between two of them. The move is straight unless ``via`` gives the corners it
+        turned at (:class:`PlanTrace` knows them when both poses lie on the plan).
+        ``start`` was read already; ``events`` belong to the last letter. Reading stops at
+        the first letter that satisfies or violates the task; the report says whether the
+        state changed anywhere along the move.
 
         Raises
         ------
         InvalidInputError
             On non-finite positions or ``spacing`` <= 0.
         """
-        a = np.asarray(start, dtype=float)
-        b = np.asarray(end, dtype=float)
-        if a.shape != (3,) or b.shape != (3,) or not (np.all(np.isfinite(a)) and np.all(np.isfinite(b))):
+        corners = [np.asarray(p, dtype=float) for p in (start, *via, end)]
+        if any(c.shape != (3,) or not np.all(np.isfinite(c)) for c in corners):
             raise InvalidInputError('positions must be 3 finite numbers')
         if not spacing > 0:
             raise InvalidInputError(f'spacing must be positive, got {spacing}')
-        n = max(1, int(np.ceil(float(np.linalg.norm(b - a)) / spacing)))
         events = list(events)
         first_state = self.state
         report: Optional[MonitorReport] = None
-        for k in range(1, n + 1):
-            report = self.update(a + (b - a) * (k / n), events if k == n else ())
-            if report.verdict is not Verdict.PROGRESSING:
+        for i, (a, b) in enumerate(zip(corners, corners[1:])):
+            last_leg = i == len(corners) - 2
+            n = max(1, int(np.ceil(float(np.linalg.norm(b - a)) / spacing)))
+            for k in range(1, n + 1):
+                report = self.update(a + (b - a) * (k / n), events if last_leg and k == n else ())
+                if report.verdict is not Verdict.PROGRESSING:
+                    break
+            if report is not None and report.verdict is not Verdict.PROGRESSING:
                 break
         assert report is not None
         if report.previous_state != first_state:   # say what the whole move did
@@ -226,3 +231,77 @@ class ExecutionMonitor:
             if self.automaton.distance_to_accepting(alt) is not None:
                 out.append(a.key)
         return tuple(sorted(out))
+
+
+class PlanTrace:
+    """Where along its plan the robot is, to fill the gap between two odometry poses.
+
+    Odometry can come late and in bursts, or be dropped, from a busy node's queue; a
+    straight line between two poses far apart cuts the corners the robot turned at, and
+    can miss the region it turned in. A robot follows its plan, so when both poses lie
+    on the plan (within ``tolerance`` [m]), in order along it, the move between them is
+    taken to be the plan's, corners included. Otherwise the move is read as straight.
+
+    Parameters
+    ----------
+    path: the plan's points (N, 3) [m].
+    tolerance: how far from the plan a pose may be and still be on it [m].
+    dims: 2 for a ground robot (heights are not compared), 3 for a drone.
+    """
+
+    def __init__(self, path: np.ndarray, tolerance: float = 0.1, dims: int = 3) -> None:
+        p = np.array(path, dtype=float)
+        if p.ndim != 2 or p.shape[1] != 3 or len(p) == 0 or not np.all(np.isfinite(p)):
+            raise InvalidInputError('a plan trace needs finite points of shape (N, 3)')
+        if not (tolerance > 0 and math.isfinite(tolerance)):
+            raise InvalidInputError(f'tolerance must be positive, got {tolerance}')
+        if dims not in (2, 3):
+            raise InvalidInputError(f'dims must be 2 or 3, got {dims}')
+        self.dims = dims
+        self.path = p
+        self.tolerance = float(tolerance)
+        self._s = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(p[:, :dims], axis=0), axis=1))])
+        self.cursor: Optional[float] = None   # arc length of the last pose, when it was on the plan
+        self._reached = 0.0                   # the farthest arc length a pose was on the plan at
+
+    def locate(self, position: Sequence[float], after: float = 0.0) -> Optional[float]:
+        """Return the least arc length >= ``after`` [m] whose plan point is within tolerance, or None."""
+        q = np.asarray(position, dtype=float)[:self.dims]
+        path = self.path[:, :self.dims]
+        if len(path) == 1:
+            ok = float(np.linalg.norm(q - path[0])) <= self.tolerance
+            return 0.0 if ok else None
+        a, b = path[:-1], path[1:]
+        ab = b - a
+        length2 = np.einsum('ij,ij->i', ab, ab)
+        t = np.where(length2 > 1e-18, np.einsum('ij,ij->i', q - a, ab) / np.maximum(length2, 1e-18), 0.0)
+        seg_len = np.sqrt(length2)
+        # no earlier than ``after`` on each segment
+        t_min = np.where(seg_len > 1e-9, (after - self._s[:-1]) / np.maximum(seg_len, 1e-9), 0.0)
+        t = np.clip(np.maximum(t, t_min), 0.0, 1.0)
+        near = np.linalg.norm(a + ab * t[:, None] - q, axis=1) <= self.tolerance
+        s = self._s[:-1] + t * seg_len
+        ok = near & (s >= after - 1e-9)
+        if not ok.any():
+            return None
+        return float(s[np.flatnonzero(ok)[0]])
+
+    def start(self, position: Sequence[float]) -> None:
+        """Place the first pose."""
+        self.cursor = self.locate(position)
+        self._reached = self.cursor or 0.0
+
+    def via(self, position: Sequence[float]) -> list[np.ndarray]:
+        """Return the plan's points passed between the last pose and ``position``; move on to it.
+
+        Empty when the move is to be read as straight: either pose off the plan, or
+        ``position`` on it only behind where the robot has been.
+        """
+        last = self.cursor
+        self.cursor = self.locate(position, self._reached)
+        if self.cursor is not None:
+            self._reached = self.cursor
+        if last is None or self.cursor is None:
+            return []
+        inside = (self._s > last + 1e-9) & (self._s < self.cursor - 1e-9)
+        return [self.path[i] for i in np.flatnonzero(inside)]

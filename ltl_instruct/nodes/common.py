@@ -29,6 +29,9 @@ from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPo
 from ltl_instruct.core.errors import InvalidInputError
 
 BURST_DEPTH = 64
+# the execution monitor reads the trace as straight moves between odometry poses: a pose
+# dropped from a queue while a node was busy would cut a corner, so the queue is deep
+ODOM_DEPTH = 50
 
 
 def latched_qos(depth: int = BURST_DEPTH) -> QoSProfile:

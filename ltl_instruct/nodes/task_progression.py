@@ -39,10 +39,10 @@ from ltl_instruct.core import planning
 from ltl_instruct.core.automaton import Automaton, compile_automaton
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError, PlanningError
 from ltl_instruct.core.grounding.rsm import ReferentMap
-from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, Verdict
+from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, PlanTrace, Verdict
 from ltl_instruct.core.spec import Atom, parse_formula
 from ltl_instruct.nodes.common import (
-    ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node,
+    ODOM_DEPTH, ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node,
 )
 
 PARAMS = (
@@ -61,6 +61,8 @@ PARAMS = (
     ParamSpec('bounds', '', '3D bounds "xmin,ymin,zmin,xmax,ymax,zmax" [m] for map_cloud ("" = its extent)'),
     ParamSpec('max_replans', 3, 'replans allowed per instruction during execution', 0, 100),
     ParamSpec('tpsm_spacing', 0.25, 'point spacing of the tpsm cloud [m]', 0.05, 5.0),
+    ParamSpec('trace_tolerance', 0.25, 'odometry poses this close to the plan are on it: the monitor '
+              'reads the move between two of them along the plan [m]', 0.01, 10.0),
     ParamSpec('start_x', float('nan'), 'start x when no odometry comes [m] (nan: wait for odom)'),
     ParamSpec('start_y', float('nan'), 'start y when no odometry comes [m]'),
     ParamSpec('start_z', 0.0, 'start z when no odometry comes [m]'),
@@ -94,6 +96,7 @@ class _Active:
     rmap_revision: int
     plan: Any = None
     replans: int = 0
+    trace: Optional[PlanTrace] = None
     finished: bool = False
     events: list = field(default_factory=list)
     last_position: Optional[np.ndarray] = None
@@ -134,7 +137,7 @@ class TaskProgressionNode(Node):
         self.skill_pub = self.create_publisher(String, 'skill/request', reliable_qos())
         self.create_subscription(String, 'task_spec', self.on_task_spec, latched_qos())
         self.create_subscription(String, 'referent_map', self.on_referent_map, latched_qos())
-        self.create_subscription(Odometry, 'odom', self.on_odom, reliable_qos(10))
+        self.create_subscription(Odometry, 'odom', self.on_odom, reliable_qos(ODOM_DEPTH))
         self.create_subscription(Path, 'plan_segment', self.on_plan_segment, reliable_qos())
         self.create_subscription(String, 'fmt_planner/status', self.on_segment_status, reliable_qos())
         self.create_subscription(String, 'skill/result', self.on_skill_result, reliable_qos())
@@ -281,10 +284,13 @@ class TaskProgressionNode(Node):
             event = active.events.pop(0) if active.events else None
             try:
                 if active.last_position is None:
+                    active.trace.start(self._pose)
                     report = active.monitor.update(self._pose, [event] if event is not None else [])
-                else:   # every 5 cm of the move since the last pose: no region is stepped over
+                else:   # every 5 cm of the move since the last pose (along the plan where it was
+                    # on it): no region is stepped over, whatever poses a busy queue dropped
                     report = active.monitor.update_along(active.last_position, self._pose,
-                                                         [event] if event is not None else [])
+                                                         [event] if event is not None else [],
+                                                         via=active.trace.via(self._pose))
                 active.last_position = self._pose
             except LtlInstructError as e:
                 self._input_warning(active.iid, e)
@@ -336,8 +342,12 @@ class TaskProgressionNode(Node):
             active = self._active
             if active is None or active.iid != data['id'] or active.finished:
                 return
-            if data.get('ok'):
+            if data.get('ok'):   # done is done, whichever plan asked for it
                 active.events.append(atom)
+                return
+            if data.get('plan_stamp') is not None and data['plan_stamp'] != active.plan_stamp:
+                self.get_logger().warning(f'{data["id"]}: {skill} of a replaced plan failed; '
+                                          'the current plan stands')
                 return
             err = _error_from_dict(data.get('error') or {}, ErrorCode.SKILL_FAILED)
         self.publish_status(data['id'], 'skill_failed', False, phase='execution', error=err)
@@ -490,7 +500,8 @@ class TaskProgressionNode(Node):
         path, skills = _path_and_skills(plan, rmap)
         with self._lock:
             self._active = _Active(iid, automaton, rmap, ExecutionMonitor(automaton, letters, monitor_state),
-                                   stamp, revision, plan, replans)
+                                   stamp, revision, plan, replans,
+                                   PlanTrace(path, self.params['trace_tolerance'], letters.dims))
         stamp_msg = conv.stamp_from_key(stamp)
         self.plan_pub.publish(conv.path_msg(path, stamp_msg))
         self.task_plan_pub.publish(conv.json_msg(conv.payload(

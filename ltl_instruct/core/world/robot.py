@@ -101,6 +101,7 @@ class KinematicRobot:
         self._travelled = 0.0
         self._offset = 0                   # points driven back along the trail before the path
         self._trail: list[np.ndarray] = []  # path vertices reached since the last follow()
+        self.corners: list[Pose] = []       # path corners passed in the last step()
 
     # ------------------------------------------------------------------ state
     @property
@@ -205,8 +206,16 @@ class KinematicRobot:
         """True while holding at a stop point or after :meth:`pause`."""
         return self._paused
 
+    TURN_ANGLE = 0.01   # [rad] a path vertex turning more than this is a corner
+
     def step(self, dt: float) -> Pose:
-        """Advance ``dt`` [s] along the path; return the new pose."""
+        """Advance ``dt`` [s] along the path; return the new pose.
+
+        The corners passed on the way are kept in :attr:`corners`: whoever reads the
+        trace as straight moves between poses (the execution monitor) needs them, or a
+        long step (a slow tick) cuts the corner and can miss the region turned in.
+        """
+        self.corners = []
         if not dt > 0.0 or self._path is None or self._paused:
             return self.pose
         budget = self.max_speed * dt
@@ -231,11 +240,24 @@ class KinematicRobot:
                     self._stop_at.discard(reached)
                     self._paused = True
                     break
+                if budget > 1e-12 and self._turns_at(reached, delta):
+                    self.corners.append(self.pose)
             else:
                 self._position = self._position + delta * (budget / dist)
                 self._travelled += budget
                 budget = 0.0
         return self.pose
+
+    def _turns_at(self, index: int, incoming: np.ndarray) -> bool:
+        """Whether the path turns at vertex ``index`` (reached along ``incoming``)."""
+        if self._path is None or index + 1 >= len(self._path):
+            return False
+        outgoing = self._path[index + 1] - self._path[index]
+        a, b = float(np.linalg.norm(incoming)), float(np.linalg.norm(outgoing))
+        if a < 1e-9 or b < 1e-9:
+            return False
+        cos = float(np.dot(incoming, outgoing)) / (a * b)
+        return math.acos(max(-1.0, min(1.0, cos))) > self.TURN_ANGLE
 
 
 class SimulatedWorld:

@@ -267,7 +267,7 @@ RULES: tuple[Rule, ...] = (
     # ---- "one" named by the noun it stands for
     Rule('the upstairs autoclave or the basement one',
          rf'\bthe (?P<x>{_W}(?: {_W}){{1,4}}) (?P<j>or|and) the (?P<y>{_W}(?: {_W}){{0,2}})'
-         rf' one\b', _same_head),
+         rf' one\b(?! (?:times?|more|single)\b)', _same_head),   # "the hall one time" is a count
     Rule('I need the laundry room and the closet both looked at',
          rf'(?:\b(?:i|we) |^)(?:need|want) (?P<x>(?:the|my|our) {_NPS}) (?:both |all |each )?'
          r'(?:looked at|checked|'
@@ -1541,6 +1541,13 @@ RULES: tuple[Rule, ...] = (
          rf'(?P<b>(?:the|my|your|our) {_THING})(?: ,)? or (?:do it |go )?'
          rf'(?:the other way (?:round|around)|vice versa|in the opposite order|the reverse|in reverse)$',
          r'either \g<v> \g<a> and then \g<b> , or \g<v> \g<b> and then \g<a>'),
+    Rule('go to the den then the hall, or the hall then the kitchen: one route or the other',
+         rf'^(?P<v>go to|visit|inspect|check|fly over|fly to|survey|stop at) '
+         rf'(?P<a>(?:the|my|your|our) {_THING}) (?P<t1>(?:and )?then) (?:to )?'
+         rf'(?P<b>(?:the|my|your|our) {_THING})'
+         rf'(?: ,)? or (?:go to |visit )?(?P<c>(?:the|my|your|our) {_THING}) (?P<t2>(?:and )?then) (?:to )?'
+         rf'(?P<d>(?:the|my|your|our) {_THING})$',
+         r'either \g<v> \g<a> \g<t1> \g<b> , or \g<v> \g<c> \g<t2> \g<d>'),
     Rule('go to the last one first, and after it the first one: then',
          r'\band after (?:it|that|this|them) (?=(?:the|my|your|our)\b)', 'and then '),
     Rule('hold there for a bit: hover there',

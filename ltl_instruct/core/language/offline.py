@@ -176,6 +176,11 @@ class OfflineTranslator:
         notes: list[str] = []
         try:
             tokens = self._prepare(instruction, notes)
+            if not any(t not in PUNCT for t in tokens):
+                # "Go to the glovebox. Never mind.": all of it taken back, or only sounds ("um, hmm.")
+                why = f' ({"; ".join(notes)})' if notes else ''
+                raise TranslationError(f'nothing is left to do in "{instruction.strip()[:200]}"{why}',
+                                       details={'part': instruction.strip()[:200]})
             # one pass: a clause that cannot be read is recorded, left out, and the rest read on, so
             # a refusal carries the best reading of the rest without a second reading
             reader = _Reader(self.avoid_scope, notes, self.landmarks, self.once_scope, self.after_scope,

@@ -296,7 +296,7 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return False   # "the boss wants no robots in the lobby", "Marco gets chatty": a verb, not a name
     if w in NUMBER_WORDS or w.isdigit():
         # ("bay 6 more than once": the label, then the bound; "the hall 3 more times" is a count)
-        return have_name and nxt not in ('times', 'separate') and (
+        return have_name and nxt not in ('times', 'time', 'separate') and (
             nxt != 'more' or tokens[i + 2:i + 3] == ['than'])
     if w == 'other' and not have_name and nxt not in STOPWORDS and nxt not in PUNCT and nxt and \
             nxt not in NUMBER_WORDS and nxt not in ('ones', 'one'):

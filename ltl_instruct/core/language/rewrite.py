@@ -1200,13 +1200,42 @@ _ALL_SAID = tuple(sorted((
 ), key=lambda m: -len(m)))
 
 
+def _taken_back_at_end(tokens: list[str]) -> Optional[str]:
+    """Return the words that take the whole request back at its end ("... Forget everything."), or None.
+
+    "never mind all of that", "ignore everything I said", "cancel that": nothing is left to do.
+    """
+    end = len(tokens)
+    while end and (tokens[end - 1] in PUNCT or tokens[end - 1] in ('please', 'thanks')):
+        end -= 1
+    for i in range(end):
+        if i and tokens[i - 1] not in PUNCT | {'no', 'actually', 'so', 'oh', 'okay', 'ok', 'just', 'and'}:
+            continue
+        j = i + 2 if tokens[i:i + 2] == ['never', 'mind'] else i + 1 if tokens[i] in _RETRACT_VERBS else 0
+        if not j:
+            continue
+        j += tokens[j:j + 1] == ['about']
+        what = tuple(tokens[j:end])
+        if what in _ALL_SAID or what in (('it', 'all'), ('all',)) or \
+                tokens[i] == 'cancel' and what in (('that',), ('it',), ('this',), ('the', 'order'),
+                                                   ('the', 'request'), ('the', 'task')):
+            return ' '.join(tokens[i:end])
+    return None
+
+
 def _retract_all(tokens: list[str], notes: list[str]) -> list[str]:
     """Retract all said before: 'go to A, then B. Please ignore all of that and simply go to C'.
 
     The whole of what was said before is retracted (its goals and its rules alike: the speaker
-    takes it all back), but only where a new request follows the retraction; a retraction that
-    ends the instruction is left to the readers of corrections.
+    takes it all back), but only where a new request follows the retraction. A retraction of
+    everything that ends the instruction leaves nothing to do: a :class:`TranslationError`
+    says so (a robot must not carry out what was taken back). Other retractions that end the
+    instruction are left to the readers of corrections.
     """
+    gone = _taken_back_at_end(tokens)
+    if gone is not None:
+        raise TranslationError(f'everything was taken back ("{gone}"): there is nothing to do',
+                               details={'part': gone})
     for i, t in enumerate(tokens):
         if t not in _RETRACT_VERBS or i == 0 or \
                 tokens[i - 1] not in PUNCT | {'no', 'actually', 'so', 'oh', 'okay', 'ok', 'just'}:

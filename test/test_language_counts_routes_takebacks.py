@@ -1,0 +1,64 @@
+"""Leftovers found reading the offline translator's known failures: counts, route choices, take-backs.
+
+Each was silently wrong before: "the hall one time" was read as "the hall two times" (the
+"the basement one" rule took "one" for a pronoun), "A then B, or C then D" as A, then B or C,
+then D, and "Forget everything." after a request as a goal at a place called "forget".
+"""
+from __future__ import annotations
+
+import pytest
+
+from ltl_instruct.core.errors import TranslationError
+from translation_cases import T, check_translation
+
+RIGHT: list[tuple[str, str]] = [
+    # a count of one after a count of two: each goal its own count
+    ('visit the den two times and the hall one time',
+     'F (near[den] & F (!near[den] & F near[den])) & F near[hall]'),
+    ('visit the den 2 times and the hall 1 time',
+     'F (near[den] & F (!near[den] & F near[den])) & F near[hall]'),
+    ('go to the hall 1 time', 'F near[hall]'),
+    ('go to room 1 then the den', 'F (near[room_1] & F near[den])'),
+    # ("the upstairs autoclave or the basement one" is still the basement autoclave)
+    ('go to the upstairs autoclave or the basement one',
+     'F (near[upstairs_autoclave] | near[basement_autoclave])'),
+    # one route or the other, "either" left unsaid
+    ('go to the den then the hall or the hall then the kitchen',
+     'F (near[den] & F near[hall]) | F (near[hall] & F near[kitchen])'),
+    ('go to the den and then the hall, or the hall and then the kitchen',
+     'F (near[den] & F near[hall]) | F (near[hall] & F near[kitchen])'),
+    ('visit the den then the hall, or the kitchen then the garage',
+     'F (near[den] & F near[hall]) | F (near[kitchen] & F near[garage])'),
+    # (one choice inside a route stays a choice of goals)
+    ('go to the den or the hall then the kitchen', 'F ((near[den] | near[hall]) & F near[kitchen])'),
+    # taking back everything, then asking anew
+    ('go to the den, then the hall. forget all that, just go to the garage', 'F near[garage]'),
+    ('go to the den. forget it, go to the hall instead', 'F near[hall]'),
+]
+
+# Everything taken back: nothing to do, said so (never a goal at "forget", never the old request).
+NOTHING_LEFT = [
+    'Go to the glovebox. Forget everything.',
+    'Go to the glovebox. Forget everything I said.',
+    'go to the den. cancel that.',
+    'go to the den, and cancel that',
+    'go to the den. never mind all of that.',
+    'go to the den. forget it all.',
+    'Go to the glovebox. Never mind.',
+    'go to the den. no wait. never mind.',
+    'cancel everything',
+    'um, hmm.',
+]
+
+
+@pytest.mark.parametrize('instruction,gold', RIGHT)
+def test_readings(instruction: str, gold: str) -> None:
+    check_translation(instruction, gold)
+
+
+@pytest.mark.parametrize('instruction', NOTHING_LEFT)
+def test_nothing_left_to_do_is_refused_clearly(instruction: str) -> None:
+    with pytest.raises(TranslationError) as e:
+        T.translate(instruction)
+    message = str(e.value)
+    assert 'taken back' in message or 'nothing is left to do' in message, message

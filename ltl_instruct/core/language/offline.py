@@ -60,7 +60,7 @@ from ltl_instruct.core.language.text import (
 )
 from ltl_instruct.core.spec import (
     Always, Atom, Descriptor, Eventually, Formula, Implies, Next, Not, Relation, Until, WeakUntil,
-    avoided_referents_of, referents_of, rename_descriptors,
+    atoms_of, avoided_referents_of, referents_of, rename_descriptors,
 )
 
 MAX_INSTRUCTION_CHARS = 2000
@@ -237,6 +237,13 @@ def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Read
     error.details.update(best_reading=str(guess), referents=[str(d) for d in referents_of(guess)],
                          avoid=[str(d) for d in avoided_referents_of(guess)],
                          left_out=[u.note() for u in reader.unread])
+
+
+def _named_after(tokens: Sequence[str], full: str, short: str) -> bool:
+    """Whether the longer name is a destination nobody said ("throw away the can": the trash can)."""
+    fw = full.split('_')
+    return full in (TRASH.name, RECYCLING.name) and not any(
+        tokens[i:i + len(fw)] == fw for i in range(len(tokens)))
 
 
 def _nested(d: Descriptor) -> list[Descriptor]:
@@ -1069,6 +1076,7 @@ class _Reader:
         return head + [t for t in sentence[cut + 1:] if t in '.;!?']
 
     def read(self, tokens: list[str]) -> Formula:
+        self.tokens = list(tokens)
         sentences = self._sentences(tokens)
         for sentence in sentences:
             self.first_tail = None
@@ -1167,6 +1175,8 @@ class _Reader:
         every = [n for d in refs + self.mentions for n in _nested(d)]
         longer = {d.name for d in every if not d.relations and '_' in d.name}
         mapping: dict[Descriptor, Descriptor] = {}
+        delivered = {(a.args[0].name, a.args[1].name) for a in atoms_of(formula)
+                     if a.skill == 'release' and len(a.args) == 2}
         for d in every:
             if d.relations or d in mapping or d in self.mentions and d not in refs:
                 continue
@@ -1198,7 +1208,8 @@ class _Reader:
                     self.notes.append(f'took "{d.name}" as the {mapping[d].name.replace("_", " ")}')
                 continue
             full = [n for n in longer if n.endswith('_' + d.name) or _labelled(n, d.name)]
-            if len(full) == 1:
+            if len(full) == 1 and not _named_after(getattr(self, 'tokens', []), full[0], d.name) and \
+                    (d.name, full[0]) not in delivered:   # "put the can in the trash can": two things
                 mapping[d] = Descriptor(full[0])
                 self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
         if not mapping:

@@ -1,8 +1,10 @@
-"""Leftovers found reading the offline translator's known failures: counts, route choices, take-backs.
+"""Silent misreadings of the offline translator, found probing the kinds the issue lists.
 
 Each was silently wrong before: "the hall one time" was read as "the hall two times" (the
 "the basement one" rule took "one" for a pronoun), "A then B, or C then D" as A, then B or C,
-then D, and "Forget everything." after a request as a goal at a place called "forget".
+then D, "Forget everything." after a request as a goal at a place called "forget", and "throw
+away the can" as picking up the trash can (the can renamed as the one longer name ending in
+"can", a destination nobody said).
 """
 from __future__ import annotations
 
@@ -34,6 +36,14 @@ RIGHT: list[tuple[str, str]] = [
     # taking back everything, then asking anew
     ('go to the den, then the hall. forget all that, just go to the garage', 'F near[garage]'),
     ('go to the den. forget it, go to the hall instead', 'F near[hall]'),
+    # a thing and the destination whose name ends in it are two things
+    ('throw away the can', 'F (near[can] & F (pick[can] & F (near[trash_can] & F release[can, trash_can])))'),
+    ('put the can in the trash can',
+     'F (near[can] & F (pick[can] & F (near[trash_can] & F release[can, trash_can])))'),
+    ('recycle the can',
+     'F (near[can] & F (pick[can] & F (near[recycling_bin] & F release[can, recycling_bin])))'),
+    # (a shorthand for a place named before is still that place)
+    ('go to the kitchen island, then the island', 'F (near[kitchen_island] & F near[kitchen_island])'),
 ]
 
 # Everything taken back: nothing to do, said so (never a goal at "forget", never the old request).

@@ -4,14 +4,24 @@ Each was silently wrong before: "the hall one time" was read as "the hall two ti
 "the basement one" rule took "one" for a pronoun), "A then B, or C then D" as A, then B or C,
 then D, "Forget everything." after a request as a goal at a place called "forget", and "throw
 away the can" as picking up the trash can (the can renamed as the one longer name ending in
-"can", a destination nobody said).
+"can", a destination nobody said), and "then return to the second item I mentioned", after the
+goals themselves were listed, as a place called "second item".
 """
 from __future__ import annotations
+
+import itertools
 
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
 from translation_cases import T, check_translation
+
+
+def _all_then(last: str) -> str:
+    """The den, the hall and the garage in any order, then ``last``."""
+    return ' | '.join(f'F (near[{a}] & F (near[{b}] & F (near[{c}] & F near[{last}])))'
+                      for a, b, c in itertools.permutations(('den', 'hall', 'garage')))
+
 
 RIGHT: list[tuple[str, str]] = [
     # a count of one after a count of two: each goal its own count
@@ -42,6 +52,17 @@ RIGHT: list[tuple[str, str]] = [
      'F (near[can] & F (pick[can] & F (near[trash_can] & F release[can, trash_can])))'),
     ('recycle the can',
      'F (near[can] & F (pick[can] & F (near[recycling_bin] & F release[can, recycling_bin])))'),
+    # a position in the list of goals said before
+    ('go to the den, the hall and the garage, then return to the second item I mentioned',
+     _all_then('hall')),
+    ('go to the den then the hall, then go to the first item on the list',
+     'F (near[den] & F (near[hall] & F near[den]))'),
+    ('go to the den, then the hall and then the garage, then back to the first one I mentioned',
+     'F (near[den] & F (near[hall] & F (near[garage] & F near[den])))'),
+    ('go to the den, the hall and the garage, then go to the last place I mentioned', _all_then('garage')),
+    # ("ignore the last thing" is still a correction)
+    ('Go to the pharmacy then the shop, and avoid the ward. Actually, ignore the last thing - avoid the cafe '
+     'instead.', 'F (near[pharmacy] & F near[shop]) & G !near[cafe]'),
     # (a shorthand for a place named before is still that place)
     ('go to the kitchen island, then the island', 'F (near[kitchen_island] & F near[kitchen_island])'),
 ]
@@ -60,6 +81,12 @@ NOTHING_LEFT = [
     'um, hmm.',
 ]
 
+# A position in a list that is not there: said, never a place called "second item".
+NO_LIST = [
+    'go to the second item on the list',
+    'go to the den, the hall and the garage, then go to the fourth item I mentioned',
+]
+
 
 @pytest.mark.parametrize('instruction,gold', RIGHT)
 def test_readings(instruction: str, gold: str) -> None:
@@ -72,3 +99,9 @@ def test_nothing_left_to_do_is_refused_clearly(instruction: str) -> None:
         T.translate(instruction)
     message = str(e.value)
     assert 'taken back' in message or 'nothing is left to do' in message, message
+
+
+@pytest.mark.parametrize('instruction', NO_LIST)
+def test_a_position_in_no_list_is_refused(instruction: str) -> None:
+    with pytest.raises(TranslationError, match='list'):
+        T.translate(instruction)

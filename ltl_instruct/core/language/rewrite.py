@@ -356,6 +356,83 @@ def _say_kind_again(tokens: list[str]) -> list[str]:
     return out
 
 
+# What may follow "the second item" and say it is one of those listed before ("... I mentioned").
+_LISTED_TAILS: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('i', 'mentioned'), ('i', 'said'), ('i', 'listed'), ('i', 'named'), ('i', 'gave', 'you'),
+    ('you', 'visited'), ('you', 'went', 'to'), ('on', 'the', 'list'), ('from', 'the', 'list'),
+    ('in', 'the', 'list'), ('on', 'that', 'list'), ('from', 'before'), ('from', 'earlier'),
+    ('i', 'just', 'mentioned'), ('i', 'just', 'said'), ('mentioned',), ('listed',),
+    ('i', 'mentioned', 'earlier'), ('i', 'mentioned', 'before'), ('i', 'mentioned', 'first'),
+), key=lambda t: -len(t)))
+
+
+def _refer_to_goals_listed(tokens: list[str], notes: list[str]) -> list[str]:
+    """Resolve "the second item I mentioned" to the second of the places listed before it.
+
+    "go to the den, the hall and the garage, then return to the second item I mentioned": the
+    list is the goals themselves (no scene list before), so the reference is to them. Only a
+    position noun after the ordinal ("item", "one", "place"...) with nothing left unread; a
+    position past the list's end is a :class:`TranslationError`.
+    """
+    parser = PhraseParser()
+    for r in range(1, len(tokens) - 1):
+        if tokens[r - 1] != 'the' or not (tokens[r] in ORDINALS or tokens[r] in ('last', 'middle')) or \
+                tokens[r + 1] not in _POSITION_NOUNS:
+            continue
+        end = r + 2
+        tail = next((t for t in _LISTED_TAILS if tuple(tokens[end:end + len(t)]) == t), ())
+        end += len(tail)
+        if tokens[r + 1] != 'item' and not tail or r > 1 and tokens[r - 2] in _RETRACT_VERBS | _CANCEL:
+            continue   # "the second one" alone: the list readers' part; "ignore the last thing": a correction
+        if end < len(tokens) and tokens[end] not in PUNCT and \
+                tokens[end] not in ('and', 'then', 'please', 'again', 'too'):
+            continue
+        listed = _last_list_before(parser, tokens, r - 1)
+        if len(listed) < 2:
+            if tail or tokens[r + 1] == 'item':
+                said = ' '.join(tokens[r - 1:end])   # "the first item on the list" is no place's name
+                raise TranslationError(f'"{said}": found no list of places before it', details={'part': said})
+            continue
+        n = len(listed) if tokens[r] == 'last' else (len(listed) + 1) // 2 if tokens[r] == 'middle' \
+            else ORDINALS[tokens[r]]
+        said = ' '.join(tokens[r - 1:end])
+        if tokens[r] == 'middle' and len(listed) % 2 == 0 or n > len(listed):
+            raise TranslationError(f'"{said}": the list before it has {len(listed)} places',
+                                   details={'part': said})
+        np = listed[n - 1]
+        notes.append(f'"{said}" read as "{" ".join(tokens[np[0]:np[1]])}"')
+        return _refer_to_goals_listed(tokens[:r - 1] + tokens[np[0]:np[1]] + tokens[end:], notes)
+    return tokens
+
+
+def _last_list_before(parser: 'PhraseParser', tokens: list[str], stop: int) -> list[tuple[int, int]]:
+    """Spans of the noun phrases of the last list ("the den, the hall and the garage") before ``stop``."""
+    best: list[tuple[int, int]] = []
+    i = 0
+    while i < stop:
+        if tokens[i] not in ('the', 'a', 'an', 'my', 'our', 'your'):
+            i += 1
+            continue
+        spans: list[tuple[int, int]] = []
+        j = i
+        while j < stop and tokens[j] in ('the', 'a', 'an', 'my', 'our', 'your'):
+            np = parser.parse(tokens[:stop], j)
+            if np is None or np.end <= j or np.descriptor.relations:
+                break
+            spans.append((j, np.end))
+            j = np.end
+            k = j
+            while k < stop and tokens[k] in (',', 'and', 'then'):
+                k += 1
+            if k == j:
+                break
+            j = k
+        if len(spans) >= 2:
+            best = spans
+        i = max(i + 1, spans[-1][1] if spans else i + 1)
+    return best
+
+
 def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     """Replace references by list position ("the second one") with the phrase they point to.
 
@@ -365,6 +442,7 @@ def resolve_list_references(tokens: list[str], notes: list[str]) -> list[str]:
     tokens = _say_kind_again(_say_positions(tokens))
     found = _find_list(tokens)
     if found is None:
+        tokens = _refer_to_goals_listed(tokens, notes)
         for k in range(len(tokens) - 2):
             if k > 0 and tokens[k - 1] in ('do', 'handle', 'finish', 'complete', 'from', 'of', 'avoid',
                                            'visit', 'to', 'near', 'check') and tokens[k] == 'the' and \

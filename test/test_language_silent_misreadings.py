@@ -5,7 +5,8 @@ Each was silently wrong before: "the hall one time" was read as "the hall two ti
 then D, "Forget everything." after a request as a goal at a place called "forget", and "throw
 away the can" as picking up the trash can (the can renamed as the one longer name ending in
 "can", a destination nobody said), and "then return to the second item I mentioned", after the
-goals themselves were listed, as a place called "second item".
+goals themselves were listed, as a place called "second item"; "route around the ramp" as a goal
+at the ramp; "the order matters" as any order.
 """
 from __future__ import annotations
 
@@ -63,6 +64,23 @@ RIGHT: list[tuple[str, str]] = [
     # ("ignore the last thing" is still a correction)
     ('Go to the pharmacy then the shop, and avoid the ward. Actually, ignore the last thing - avoid the cafe '
      'instead.', 'F (near[pharmacy] & F near[shop]) & G !near[cafe]'),
+    # "the order matters": a sequence (it was read as any order); "the order picker" is a thing
+    ('visit the den and the hall, the order matters', 'F (near[den] & F near[hall])'),
+    ('Go to the attic, then the cellar, that order matters to me.', 'F (near[attic] & F near[cellar])'),
+    ('visit the den and the hall in the order given', 'F (near[den] & F near[hall])'),
+    ('visit the den and the hall in any order', 'F near[den] & F near[hall]'),
+    ('go to the den and keep clear of the order picker', 'F near[den] & G !near[order_picker]'),
+    ('go to the order desk', 'F near[order_desk]'),
+    # routing around a thing is keeping away from it (it was read as a goal)
+    ('go to dock 9 and route around the loading ramp', 'F near[dock_9] & G !near[loading_ramp]'),
+    ('go to dock 9, detour around the loading ramp', 'F near[dock_9] & G !near[loading_ramp]'),
+    ('route around the ramp on the way to dock 9', '!near[ramp] U near[dock_9]'),
+    ('no entry to the hazmat cage until you have visited the safety station',
+     '!near[hazmat_cage] U near[safety_station]'),
+    # a numbered place said without "the" after finish, end, park
+    ('go to the den, then finish at dock 8', 'F (near[den] & F near[dock_8])'),
+    ('go to the den then park at dock 1', 'F (near[den] & F near[dock_1])'),
+    ('park in bay 4', 'F near[bay_4]'),
     # (a shorthand for a place named before is still that place)
     ('go to the kitchen island, then the island', 'F (near[kitchen_island] & F near[kitchen_island])'),
 ]

@@ -30,7 +30,6 @@ REMARKS = [
     ('Head to the kennel, they get noisy at night.', 'F near[kennel]'),
     ('Take the mop to the closet and never go near the nursery, there is a baby napping in there.',
      'F (near[mop] & F (pick[mop] & F (near[closet] & F release[mop, closet]))) & G !near[nursery]'),
-    ('Go to the attic, then the cellar, that order matters to me.', 'F (near[attic] & F near[cellar])'),
 ]
 
 

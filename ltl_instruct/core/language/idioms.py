@@ -475,6 +475,18 @@ RULES: tuple[Rule, ...] = (
          rf'^(?P<x>(?:the|my|our) {_NP}) (?:comes|goes|is|should be|has to be|must be) (?P<w>last|first) '
          r'(?:,|:) (?P<r>.+)$', _comes_last),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
+    Rule('route around the loading ramp: keep away from it',
+         r'\b(?:route|detour|navigate|drive|steer|work your way|find a way|path) (?:around|round) '
+         r'(?=(?:the|my|your|our|any) )', 'avoid '),
+    Rule('no entry to the hazmat cage: no going into it',
+         r'\bno (?:entry|access|entering|admittance) (?:to|into|in|inside) (?=(?:the|my|your|our|any) )',
+         'no going into '),
+    Rule('visit the den and the hall, the order matters: in this order',
+         r'(?:, )?\b(?:and )?(?:the |that |this )?order (?:matters|is important|counts|is key)'
+         r'(?: to (?:me|us))?\b(?! (?:not|less|little))',
+         ', in this order'),
+    Rule('then finish at dock 8, park in bay 4: a numbered place said without "the"',
+         r'\b(?:(?:finish|end)(?: up)?|park) (?:at|in|by) (?=[a-z]+ (?:\d+[a-z]?|[a-h])(?: |$))', 'go to '),
     Rule('go via the main lifts down to pharmacy',
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '
          rf'|across |on )?'

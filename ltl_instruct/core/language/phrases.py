@@ -108,6 +108,12 @@ something anything everything nothing someone anyone anymore forever staying kee
 followed remain forth altogether
 '''.split()) - {'one'}
 
+# Words after "the order" that make it the order of the steps ("the order given", "the order matters").
+_ORDER_SAID = frozenset({
+    'given', 'listed', 'said', 'shown', 'mentioned', 'stated', 'named', 'written', 'matters', 'doesnt',
+    'isnt', 'counts', 'changes', 'stays', 'does', 'is', 'was', 'of', 'in', 'from', 'above', 'below',
+    'specified', 'provided', 'indicated', 'presented', 'important', 'required', 'needed', 'described'})
+
 # "the roof of the library" -> library_roof: parts named before their whole.
 PART_WORDS = frozenset('''
 roof top side front back door entrance exit corner end edge middle center centre bottom base foot gate
@@ -273,6 +279,10 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return nxt not in PUNCT and nxt not in STOPWORDS and nxt != '' and nxt not in ('one',)
     if w == 'one':
         return nxt not in ('times', 'time', 'more')
+    if w == 'order' and not have_name and i > 0 and tokens[i - 1] in DETERMINERS and \
+            tokens[i - 2:i - 1] not in (['in'], ['any'], ['same']) and nxt.isalpha() and \
+            nxt not in STOPWORDS and nxt not in _ORDER_SAID:
+        return True   # "the order picker", "the order desk": a thing; "in the order given" is no name
     if w == 'can':   # "the soda can", "the can" are things; "you can go" is not
         after_det = i > 0 and tokens[i - 1] in CAN_DETERMINERS
         return (have_name or after_det) and nxt not in ('you', 'i', 'we', 'go', 'be', 'not', 'wait', 'come',

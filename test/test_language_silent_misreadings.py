@@ -81,6 +81,20 @@ RIGHT: list[tuple[str, str]] = [
     ('go to the den, then finish at dock 8', 'F (near[den] & F near[dock_8])'),
     ('go to the den then park at dock 1', 'F (near[den] & F near[dock_1])'),
     ('park in bay 4', 'F near[bay_4]'),
+    # the whole request said again ("let me rethink that"): it had been merged with the first saying
+    ('Go to the piano and then the window. Let me rethink that. Go to the window first, then the piano.',
+     'F (near[window] & F near[piano])'),
+    ('Go to the piano and then the window. No wait, let me rethink that: the window first, then the piano, '
+     'and then the fireplace.', 'F (near[window] & F (near[piano] & F near[fireplace]))'),
+    ('go to the den, avoid the hall. start over: go to the garage', 'F near[garage]'),
+    # "mind you don't ...": a rule (it was refused); how long for, or over what time, asks for nothing
+    ("go to the ironing board, and mind you don't go near the laundry basket",
+     'F near[ironing_board] & G !near[laundry_basket]'),
+    ('go to the den and mind you stay away from the hall', 'F near[den] & G !near[hall]'),
+    ("I'd love it if you'd park yourself by the front window for a little while.", 'F near[front_window]'),
+    ('Would you go to the front door three times over the next hour?',
+     'F (near[front_door] & F (!near[front_door] & F (near[front_door] & F (!near[front_door] & '
+     'F near[front_door]))))'),
     # (a shorthand for a place named before is still that place)
     ('go to the kitchen island, then the island', 'F (near[kitchen_island] & F near[kitchen_island])'),
 ]

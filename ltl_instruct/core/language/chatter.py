@@ -90,7 +90,14 @@ _DURATIONS: tuple[tuple[str, ...], ...] = tuple(
     ('for',) + amount + (unit,)
     for amount in (('a', 'few'), ('a', 'couple', 'of'), ('some',), ('two',), ('three',), ('five',), ('ten',),
                    ('a', 'few', 'more'))
-    for unit in ('minutes', 'seconds', 'moments', 'mins', 'secs', 'hours'))
+    for unit in ('minutes', 'seconds', 'moments', 'mins', 'secs', 'hours')) + (
+    ('for', 'a', 'while'), ('for', 'a', 'little', 'while'), ('for', 'a', 'short', 'while'),
+    ('for', 'a', 'bit'), ('for', 'a', 'little', 'bit'), ('for', 'a', 'minute'), ('for', 'a', 'moment'),
+    ('for', 'a', 'second'), ('for', 'a', 'sec'), ('for', 'an', 'hour'),
+    ('for', 'half', 'an', 'hour')) + tuple(
+    (prep, 'the', 'next') + unit for prep in ('over', 'in', 'during', 'within')
+    for unit in (('hour',), ('few', 'hours'), ('couple', 'of', 'hours'), ('half', 'hour'), ('day',),
+                 ('few', 'minutes'), ('ten', 'minutes'), ('twenty', 'minutes'), ('thirty', 'minutes')))
 # When in the day ("over the course of the night shift").
 _SPANS: tuple[tuple[str, ...], ...] = tuple(
     ('over', 'the', 'course', 'of', 'the') + span

@@ -475,6 +475,8 @@ RULES: tuple[Rule, ...] = (
          rf'^(?P<x>(?:the|my|our) {_NP}) (?:comes|goes|is|should be|has to be|must be) (?P<w>last|first) '
          r'(?:,|:) (?P<r>.+)$', _comes_last),
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
+    Rule('and mind you do not go near the laundry basket: do not',
+         r'\bmind (?:that )?you (?=(?:do not|never|dont|stay|keep)\b)', ''),
     Rule('route around the loading ramp: keep away from it',
          r'\b(?:route|detour|navigate|drive|steer|work your way|find a way|path) (?:around|round) '
          r'(?=(?:the|my|your|our|any) )', 'avoid '),

@@ -1278,6 +1278,16 @@ _ALL_SAID = tuple(sorted((
 ), key=lambda m: -len(m)))
 
 
+# What says the whole request comes again ("let me rethink that: ...", "let me start again.").
+_START_AGAIN: tuple[tuple[str, ...], ...] = tuple(sorted((
+    ('let', 'me', 'rethink', 'that'), ('let', 'me', 'rethink', 'this'), ('let', 'me', 'rethink'),
+    ('let', 'me', 'start', 'again'), ('let', 'me', 'start', 'over'), ('let', 'me', 'try', 'again'),
+    ('let', 'me', 'try', 'that', 'again'), ('let', 'me', 'say', 'that', 'again'), ('start', 'again'),
+    ('starting', 'again'), ('start', 'over'), ('starting', 'over'), ('from', 'the', 'top'), ('new', 'plan'),
+    ('let', 'me', 'think', 'again'), ('let', 'me', 'redo', 'that'),
+), key=lambda m: -len(m)))
+
+
 def _taken_back_at_end(tokens: list[str]) -> Optional[str]:
     """Return the words that take the whole request back at its end ("... Forget everything."), or None.
 
@@ -1314,6 +1324,19 @@ def _retract_all(tokens: list[str], notes: list[str]) -> list[str]:
     if gone is not None:
         raise TranslationError(f'everything was taken back ("{gone}"): there is nothing to do',
                                details={'part': gone})
+    for i in range(len(tokens)):
+        # "Go to the piano and then the window. Let me rethink that. The window first, then ...": all again
+        said = next((m for m in _START_AGAIN if tuple(tokens[i:i + len(m)]) == m), None)
+        if said is None or i == 0 or not (tokens[i - 1] in PUNCT or
+                                          tokens[i - 1] in ('no', 'wait', 'ok', 'okay')):
+            continue
+        k = i + len(said)
+        while k < len(tokens) and tokens[k] in PUNCT:
+            k += 1
+        rest = tokens[k:]
+        if len([w for w in rest if w not in PUNCT]) >= 2 and k > i + len(said):
+            notes.append(f'took back everything said before "{" ".join(said)}"')
+            return _retract_all(rest, notes)
     for i, t in enumerate(tokens):
         if t not in _RETRACT_VERBS or i == 0 or \
                 tokens[i - 1] not in PUNCT | {'no', 'actually', 'so', 'oh', 'okay', 'ok', 'just'}:

@@ -95,6 +95,16 @@ RIGHT: list[tuple[str, str]] = [
     ('Would you go to the front door three times over the next hour?',
      'F (near[front_door] & F (!near[front_door] & F (near[front_door] & F (!near[front_door] & '
      'F near[front_door]))))'),
+    # a third stop kept ("the student union" is a place; "quick as you can" had been read as a permission)
+    ('Hit the biology building, then the engineering annex, then the student union, and stay off the quad '
+     'lawn the whole way.',
+     'F (near[biology_building] & F (near[engineering_annex] & F near[student_union])) & G !near[quad_lawn]'),
+    ('Drop by the host stand, then the coat check, then the front door, quick as you can',
+     'F (near[host_stand] & F (near[coat_check] & F near[front_door]))'),
+    # a request said as a gerund ("would you mind taking ..."): it had been left out, the delivery lost
+    ('Would you mind taking the blue vase over to the hallway table? While you are carrying it, please do '
+     'not go near the dog basket.', 'F (near[blue_vase] & F (pick[blue_vase] & (!near[dog_basket] U '
+     '(near[hallway_table] & F release[blue_vase, hallway_table]))))'),
     # (a shorthand for a place named before is still that place)
     ('go to the kitchen island, then the island', 'F (near[kitchen_island] & F near[kitchen_island])'),
 ]

@@ -149,7 +149,9 @@ COURTESY: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('thank', 'you', 'so', 'much'), ('as', 'quick', 'as', 'you', 'can'),
     ('as', 'quickly', 'as', 'you', 'can'),
     ('as', 'fast', 'as', 'you', 'can'), ('as', 'quickly', 'as', 'possible'), ('as', 'fast', 'as', 'possible'),
-    ('thank', 'you', 'ever', 'so', 'much'),
+    ('thank', 'you', 'ever', 'so', 'much'), ('thanks', 'ever', 'so', 'much'), ('quick', 'as', 'you', 'can'),
+    ('fast', 'as', 'you', 'can'), ('quickly', 'as', 'you', 'can'), ('soon', 'as', 'you', 'can'),
+    ('quick', 'as', 'possible'), ('fast', 'as', 'possible'), ('soon', 'as', 'possible'),
     ('if', 'you', 'please'), ('i', 'would', 'be', 'much', 'obliged'), ('i', 'would', 'be', 'grateful'),
     ('much', 'obliged'), ('though',), ('anyway',), ('anyways',), ('that', 'is', 'where', 'i', 'need', 'you'),
     ('that', 'is', 'where', 'i', 'want', 'you'), ('that', 'is', 'where', 'you', 'need', 'to', 'go'),
@@ -776,6 +778,8 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     if not k or k >= len(tokens):
         return False
     verb = tokens[k]
+    if k + 1 == len(tokens) and not verb.endswith(('s', 'ed', 'ing')) and verb not in _SAID_ALONE:
+        return False   # "then the student union": a place named for people, no verb ("the guests left")
     if verb in PLACE_HEADS or '_' in verb or tokens[k - 1] in PERSON_NOUNS and \
             k + 1 < len(tokens) and tokens[k + 1] in PLACE_HEADS and verb not in DETERMINERS:
         return False   # "the staff room", "the guest lounge", "the customer service desk": a place
@@ -789,6 +793,12 @@ def is_person_statement(tokens: Sequence[str]) -> bool:
     return verb not in REQUEST_WORDS and verb not in ('need', 'needs', 'want', 'wants', 'would', 'd', 'like',
                                                       'will', 'must', 'should', 'have', 'has')
 
+
+# Verbs said last after a person ("the guests left", "my son woke"): a statement, not a place's name.
+_SAID_ALONE = frozenset({'left', 'went', 'came', 'got', 'said', 'ate', 'slept', 'sat', 'stood', 'fell', 'ran',
+                         'woke', 'spoke', 'lost', 'forgot', 'paid', 'quit', 'won', 'knows', 'knew', 'saw',
+                         'heard', 'rang', 'called', 'complained', 'agreed', 'refused', 'can', 'will', 'did',
+                         'do', 'might', 'may', 'must', 'should', 'would', 'could', 'shall'})
 
 # Verbs of what somebody else wants or is like, in a remark after the request ("marco gets chatty").
 _OTHERS_WANT = frozenset({'wants', 'want', 'needs', 'need'})

@@ -80,7 +80,9 @@ clear away off limits bounds forbidden prohibited banned restricted dangerous da
 careful steer staying keeping dodge dodging bypass bypassing skip skipping evade evading avoid avoiding
 avoidance except excluding unless without remain remaining wait waiting hold holding stop stopping stay keep
 out outside beyond around toward towards careful risky blocked closed reverse backwards
-'''.split())
+bring bringing take taking carry carrying deliver delivering fetch fetching put putting throw throwing
+grab grabbing
+'''.split())   # (a delivery left out would drop a goal: refused instead)
 
 
 def may_degrade(tokens: Sequence[str]) -> bool:

@@ -250,6 +250,13 @@ def _comes_last(m: 're.Match[str]') -> str:
     return f'{rest} , and go to {m.group("x")} {m.group("w")}'
 
 
+def _gerund_verb(m: 're.Match[str]') -> str:
+    """The verb of a gerund that opens a request ("taking" -> "take ", "putting" -> "put ")."""
+    stem = m.group('v')
+    base = {'tak': 'take', 'mov': 'move', 'putt': 'put', 'grabb': 'grab', 'gett': 'get'}.get(stem, stem)
+    return base + ' '
+
+
 def _same_head(m: 're.Match[str]') -> str:
     """Name "one" by the noun it stands for: "the second floor ice machine or the third floor one".
 
@@ -477,6 +484,10 @@ RULES: tuple[Rule, ...] = (
     Rule('park up at your charging dock', r'\bpark up\b', 'park'),
     Rule('and mind you do not go near the laundry basket: do not',
          r'\bmind (?:that )?you (?=(?:do not|never|dont|stay|keep)\b)', ''),
+    Rule('(would you mind) taking the blue vase over to the table: take it',
+         r'^(?P<v>tak|bring|carry|fetch|putt|mov|grabb|deliver)ing '
+         r'(?=(?:the|my|your|our|a|an|this|that|these|those) [^,;:]*\b(?:to|into|onto|on|in) '
+         r'(?:the|my|your|our|a|an|this|that) [^,;:]*$)', _gerund_verb),   # (a whole request, said so)
     Rule('route around the loading ramp: keep away from it',
          r'\b(?:route|detour|navigate|drive|steer|work your way|find a way|path) (?:around|round) '
          r'(?=(?:the|my|your|our|any) )', 'avoid '),

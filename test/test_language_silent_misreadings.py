@@ -105,6 +105,21 @@ RIGHT: list[tuple[str, str]] = [
     ('Would you mind taking the blue vase over to the hallway table? While you are carrying it, please do '
      'not go near the dog basket.', 'F (near[blue_vase] & F (pick[blue_vase] & (!near[dog_basket] U '
      '(near[hallway_table] & F release[blue_vase, hallway_table]))))'),
+    # the speaker's own plan or wish after the request asks for nothing (it had become a goal: "meet", "yet")
+    ('Could you please head over to the upright piano for me? I will meet you there in a minute.',
+     'F near[upright_piano]'),
+    ('Would you please go to the hallway radiator? I would like to know whether it is warmed up yet.',
+     'F near[hallway_radiator]'),
+    ('Could you take off and land on the kitchen island, please? I would like to see how you manage it.',
+     'F near[kitchen_island]'),
+    ('Could you pick up the car keys and fly them up to the second floor balcony, please? I am out there and '
+     'I have locked myself out.', 'F (near[car_keys] & F (pick[car_keys] & F (near[second_floor_balcony] & '
+     'F release[car_keys, second_floor_balcony])))'),
+    # (a wish that asks the robot for something still does)
+    ('go to the den. I would like to see the garage too.', 'F (near[den] & F near[garage])'),
+    ('go to the den. I want to be sure you never go near the pond.', 'F near[den] & G !near[pond]'),
+    ('Could you find my wallet? I think it is on the shelf next to the door.',
+     'F near[wallet::isabove(shelf::isnextto(door))]'),
     # (a shorthand for a place named before is still that place)
     ('go to the kitchen island, then the island', 'F (near[kitchen_island] & F near[kitchen_island])'),
 ]

@@ -757,6 +757,45 @@ def is_reason(tail: Sequence[str]) -> bool:
     return not _STRONG & set(tail)
 
 
+# How a remark of the speaker's own opens ("I'll meet you there", "I'd like to know whether ...").
+_OWN_REMARK_LEADS: tuple[tuple[str, ...], ...] = tuple(sorted(
+    [('i', 'will', v) for v in ('meet', 'be', 'see', 'catch', 'join', 'wait', 'follow', 'check', 'come',
+                                'call', 'let', 'sort', 'deal', 'handle', 'take', 'grab', 'pick', 'text',
+                                'ring')] +
+    [lead + (v,) for lead in (('i', 'would', 'like', 'to'), ('i', 'want', 'to'), ('i', 'need', 'to'),
+                              ('i', 'just', 'want', 'to'), ('i', 'just', 'need', 'to'), ('we', 'want', 'to'),
+                              ('we', 'need', 'to'), ('i', 'would', 'love', 'to'))
+     for v in ('know', 'see', 'check', 'find', 'hear', 'make', 'be', 'confirm', 'test', 'understand')] +
+    [('i', 'am', 'out'), ('i', 'am', 'in'), ('i', 'am', 'at'), ('i', 'am', 'upstairs'),
+     ('i', 'am', 'downstairs'), ('i', 'am', 'outside'), ('i', 'am', 'stuck'), ('i', 'am', 'locked'),
+     ('i', 'have', 'locked'),
+     # ("I think it is on the shelf" says where a thing is: not listed)
+     ('i', 'hope'), ('i', 'wonder'), ('i', 'am', 'curious'), ('i', 'am', 'hoping'), ('i', 'am', 'worried'),
+     # (with "I'd like to" left out before: "know whether it is warm", "see how you manage")
+     ('know', 'whether'), ('know', 'if'), ('know', 'how'), ('see', 'how'), ('see', 'whether'),
+     ('see', 'if'), ('find', 'out')],
+    key=lambda t: -len(t)))
+
+
+_OWN_REMARK_RULES = frozenset({'never', 'avoid', 'away', 'not', 'only', 'first', 'then', 'before', 'after',
+                               'until', 'twice', 'once', 'times', 'stay', 'keep', 'off', 'limits'})
+
+
+def is_own_remark(tokens: Sequence[str]) -> bool:
+    """Whether a sentence after the request is the speaker's own plan or wish ("I'll meet you there").
+
+    Never one that asks the robot for something: "you" with a verb of going, or a rule word.
+    """
+    words = [t for t in tokens if t not in PUNCT]
+    if not any(tuple(words[:len(m)]) == m for m in _OWN_REMARK_LEADS):
+        return False
+    if _OWN_REMARK_RULES & set(words):
+        return False   # ("I want to be sure you never go near the pond": a rule)
+    return not any(words[k] == 'you' and words[k + 1:k + 2] and words[k + 1] in (
+        'to', 'go', 'at', 'in', 'by', 'near', 'bring', 'take', 'visit', 'head', 'fly', 'stay', 'keep')
+        for k in range(len(words)))
+
+
 def is_person_statement(tokens: Sequence[str]) -> bool:
     """Whether a clause is said about people, not asked of the robot ("a lady says ...", "I can't leave").
 

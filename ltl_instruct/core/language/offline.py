@@ -1084,6 +1084,12 @@ class _Reader:
                 # "... . Harold bought it the year we married.": the person's story, after the request
                 self.notes.append(f'left out "{" ".join(sentence)}" (tells a story, asks for nothing)')
                 continue
+            if (self.task.chain or self.task.constraints) and chatter.is_own_remark(sentence):
+                # "... . I'll meet you there in a minute.", "I'd like to know whether it's warm": what the
+                # speaker will do or wants to know, after the request
+                self.notes.append(f'left out "{" ".join(sentence)}" (the speaker\'s own plan, asks for '
+                                  'nothing)')
+                continue
             if (self.task.chain or self.task.constraints) and _is_consequence(sentence):
                 # "Don't go near the pool. You'll get soaked.": a warning after the request
                 self.notes.append(f'left out "{" ".join(sentence)}" (says why, asks for nothing)')

@@ -120,6 +120,9 @@ RIGHT: list[tuple[str, str]] = [
     ('go to the den. I want to be sure you never go near the pond.', 'F near[den] & G !near[pond]'),
     ('Could you find my wallet? I think it is on the shelf next to the door.',
      'F near[wallet::isabove(shelf::isnextto(door))]'),
+    # "skip X and just go to Y": the skip ends at the new request (the new request had been dropped with X)
+    ('Go to the library, then the gym, then the garage. Actually, skip the gym and just go to the garage '
+     'twice.', 'F (near[library] & F (near[garage] & F (!near[garage] & F near[garage])))'),
     # (a shorthand for a place named before is still that place)
     ('go to the kitchen island, then the island', 'F (near[kitchen_island] & F near[kitchen_island])'),
 ]

@@ -2566,8 +2566,9 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             if restated is not None:
                 return restated
         k = seg.index(',') if ',' in seg else len(seg)
-        k = next((j for j in range(k) if seg[j] in ('and', 'then') and j + 1 < len(seg) and seg[j + 1] in
-                  _VERBS | {'do'}), k)
+        k = next((j for j in range(k) if seg[j] in ('and', 'then') and j + 1 < len(seg) and (
+            seg[j + 1] in _VERBS | {'do'} or seg[j + 1] in ('just', 'simply', 'only', 'instead') and
+            seg[j + 2:j + 3] and seg[j + 2] in _VERBS | {'do', 'hit'})), k)   # "skip the gym and just go ..."
         target, rest = seg[:k], seg[k + 1:]
         if target[:1] == ['about'] and len(target) > 1:
             target = target[1:]   # "forget about the oven"

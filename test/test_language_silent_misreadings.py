@@ -142,6 +142,9 @@ NOTHING_LEFT = [
 ]
 
 # A position in a list that is not there: said, never a place called "second item".
+# What is said of a thing ("the cola stays put") is no place to go (it had become "cola_stays_put").
+STAYS_PUT = ['put the crisps pallet in bay 8; the cola stays put.']
+
 NO_LIST = [
     'go to the second item on the list',
     'go to the den, the hall and the garage, then go to the fourth item I mentioned',
@@ -165,3 +168,12 @@ def test_nothing_left_to_do_is_refused_clearly(instruction: str) -> None:
 def test_a_position_in_no_list_is_refused(instruction: str) -> None:
     with pytest.raises(TranslationError, match='list'):
         T.translate(instruction)
+
+
+@pytest.mark.parametrize('instruction', STAYS_PUT)
+def test_what_is_said_of_a_thing_is_no_goal(instruction: str) -> None:
+    try:
+        got = T.translate(instruction).formula
+    except TranslationError:
+        return
+    assert 'stays' not in str(got), got

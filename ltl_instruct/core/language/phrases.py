@@ -290,6 +290,10 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
                                                         'also', 'still', 'always', 'never', 'just')
     if w in ('once', 'twice', 'thrice') or have_name and w in ('anywhere', 'everywhere', 'nowhere'):
         return False   # ("the glass harp anywhere along the way": "anywhere" ends the name)
+    if w in ('stays', 'remains') and have_name and nxt in ('put', 'here', 'there', 'where', 'on', 'off', 'in',
+                                                           'inside', 'outside', 'behind', 'as', 'untouched',
+                                                           'closed', 'shut', 'open', '', ',', '.'):
+        return False   # "the cola stays put", "the lamp stays on": the thing, then what is said of it
     if w in ('comes', 'goes') and have_name and nxt in ('first', 'last', 'next', 'second', 'third', 'before',
                                                         'after', 'later', 'earlier', 'at', 'in', 'into',
                                                         'only'):

@@ -73,26 +73,32 @@ def _skills(node) -> list[tuple[str, bool]]:
     return [(r['skill'], r['ok']) for r in node.result_pub.results]
 
 
+def _ask_pick_and_place(sim, stamp, at_toy, at_basket) -> None:
+    sim.on_skill_request(_request(stamp, 'pick', ['green_plush_toy'], at_toy))
+    sim.on_skill_request(_request(stamp, 'release', ['green_plush_toy', 'basket'], at_basket))
+
+
+def _done_once(sim) -> None:
+    _run(sim)
+    assert _skills(sim) == [('pick', True), ('release', True)], sim.result_pub.results
+
+
 def test_skill_requests_in_order_are_carried_out_at_their_stops(sim):
     stamp = 1_000
     plan, at_toy, at_basket = _path(stamp)
     sim.on_plan(plan)
-    sim.on_skill_request(_request(stamp, 'pick', ['green_plush_toy'], at_toy))
-    sim.on_skill_request(_request(stamp, 'release', ['green_plush_toy', 'basket'], at_basket))
-    _run(sim)
-    assert _skills(sim) == [('pick', True), ('release', True)], sim.result_pub.results
+    _ask_pick_and_place(sim, stamp, at_toy, at_basket)
+    _done_once(sim)
 
 
 def test_skill_requests_that_come_before_their_plan_wait_for_it(sim):
     stamp = 2_000
     plan, at_toy, at_basket = _path(stamp)
-    sim.on_skill_request(_request(stamp, 'pick', ['green_plush_toy'], at_toy))
-    sim.on_skill_request(_request(stamp, 'release', ['green_plush_toy', 'basket'], at_basket))
+    _ask_pick_and_place(sim, stamp, at_toy, at_basket)
     _run(sim, seconds=0.3)            # nothing is tried before the plan is here
     assert sim.result_pub.results == []
     sim.on_plan(plan)
-    _run(sim)
-    assert _skills(sim) == [('pick', True), ('release', True)], sim.result_pub.results
+    _done_once(sim)
 
 
 def test_a_request_for_a_replaced_plan_is_dropped(sim):
@@ -102,10 +108,8 @@ def test_a_request_for_a_replaced_plan_is_dropped(sim):
     sim.on_plan(plan_old)
     sim.on_plan(plan_new)
     sim.on_skill_request(_request(old, 'pick', ['green_plush_toy'], 0))   # late, for the old plan
-    sim.on_skill_request(_request(new, 'pick', ['green_plush_toy'], at_toy))
-    sim.on_skill_request(_request(new, 'release', ['green_plush_toy', 'basket'], at_basket))
-    _run(sim)
-    assert _skills(sim) == [('pick', True), ('release', True)], sim.result_pub.results
+    _ask_pick_and_place(sim, new, at_toy, at_basket)
+    _done_once(sim)
 
 
 def test_two_stops_already_passed_are_both_carried_out_in_order(sim):

@@ -251,7 +251,7 @@ def _comes_last(m: 're.Match[str]') -> str:
 
 
 def _gerund_verb(m: 're.Match[str]') -> str:
-    """The verb of a gerund that opens a request ("taking" -> "take ", "putting" -> "put ")."""
+    """Return the verb of a gerund that opens a request ("taking" -> "take ", "putting" -> "put ")."""
     stem = m.group('v')
     base = {'tak': 'take', 'mov': 'move', 'putt': 'put', 'grabb': 'grab', 'gett': 'get'}.get(stem, stem)
     return base + ' '

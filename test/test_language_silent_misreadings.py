@@ -123,6 +123,10 @@ RIGHT: list[tuple[str, str]] = [
     # "skip X and just go to Y": the skip ends at the new request (the new request had been dropped with X)
     ('Go to the library, then the gym, then the garage. Actually, skip the gym and just go to the garage '
      'twice.', 'F (near[library] & F (near[garage] & F (!near[garage] & F near[garage])))'),
+    # what the thing avoided does, said last, asks for nothing (refused before)
+    ('Get to table 18 but keep away from the kitchen doors, they swing.',
+     'F near[table_18] & G !near[kitchen_doors]'),
+    ('go to the den, avoid the stove, it burns', 'F near[den] & G !near[stove]'),
     # (a shorthand for a place named before is still that place)
     ('go to the kitchen island, then the island', 'F (near[kitchen_island] & F near[kitchen_island])'),
 ]

@@ -434,7 +434,9 @@ _REASON_VERBS = frozenset({'complain', 'complains', 'hate', 'hates', 'mind', 'mi
                            'need', 'needs', 'spook', 'spooks', 'scare', 'scares', 'panic', 'panics', 'freak',
                            'freaks', 'run', 'runs', 'chew', 'chews', 'knock', 'knocks', 'jump', 'jumps',
                            'love', 'loves', 'like', 'likes', 'raid', 'raids', 'eat', 'eats', 'steal',
-                           'steals', 'smell', 'smells', 'attract', 'attracts'})
+                           'steals', 'smell', 'smells', 'attract', 'attracts', 'swing', 'swings', 'slam',
+                           'slams', 'bang', 'bangs', 'burn', 'burns', 'break', 'breaks', 'tip', 'tips',
+                           'wobble', 'wobbles', 'squeak', 'squeaks', 'drip', 'drips', 'sting', 'stings'})
 # "in one of her moods", "in a huff": how someone is, not where
 _MOODS = frozenset({'mood', 'moods', 'temper', 'huff', 'strop', 'sulk', 'funk', 'state'})
 # Words after "is/are" that say where something is ("they are next to the door"), not why.
@@ -991,8 +993,11 @@ class _Reader:
                 if joiner and end < len(tail) and tail[end] in ('to', 'on', 'onto', 'into', 'in'):
                     return sentence   # "bring my hoodie, my backpack and my shoes to my bed": a list
             return self._noted_cut(sentence, cut)
-        if first in ('he', 'she', 'they', 'it') and tail[1] in ('is', 'are', 'was', 'were', 'has', 'have',
-                                                                'keeps', 'gets', 'bites', 'barks'):
+        if first in ('he', 'she', 'they', 'it') and (tail[1] in ('is', 'are', 'was', 'were', 'has', 'have',
+                                                                 'keeps', 'gets', 'bites', 'barks') or
+                                                     len(tail) == 2 and tail[1] in _REASON_VERBS and
+                                                     tail[1] not in ('go', 'goes', 'get', 'gets')):
+            # ("..., they swing", "..., it burns": what the thing does, said last)
             if tail[2:3] == ['in'] and _MOODS & set(tail) and not _rule_in(tail):
                 return self._noted_cut(sentence, cut)   # "..., she's in one of her moods today"
             if tail[2:3] and tail[2] in DETS | _PLACE_PREPS | {'fine', 'ok', 'okay', 'your', 'important',

@@ -2570,6 +2570,8 @@ def _correct(prev: list[str], marker: str, seg: list[str], notes: list[str]) -> 
             seg[j + 1] in _VERBS | {'do'} or seg[j + 1] in ('just', 'simply', 'only', 'instead') and
             seg[j + 2:j + 3] and seg[j + 2] in _VERBS | {'do', 'hit'})), k)   # "skip the gym and just go ..."
         target, rest = seg[:k], seg[k + 1:]
+        while len(target) > 1 and target[-1] in ('completely', 'entirely', 'altogether', 'totally'):
+            target = target[:-1]   # "skip the middle one completely"
         if target[:1] == ['about'] and len(target) > 1:
             target = target[1:]   # "forget about the oven"
         if seg and seg[0] in _VERBS and seg[0] not in ('drop', 'leave') and marker in (

@@ -357,7 +357,12 @@ def test_a_failed_skill_is_reported_and_replanned_then_given_up(graph):
 
 def test_leaving_the_plan_into_an_avoided_region_is_reported_as_a_violation(graph):
     g, client, _ = graph
-    iid = client.send(formula='F near[whiteboard] & G !near[front_door]')
+    # a goal far from where the robot stands: it must not be reached before the push below
+    here = client.received.odom[-1][1] if client.received.odom else np.zeros(3)
+    scene = resolve_scene('apartment')
+    goal = max(('whiteboard', 'stove', 'nightstand', 'fridge'),
+               key=lambda o: float(np.linalg.norm(np.asarray(scene.object_by_id(o).center[:2]) - here[:2])))
+    iid = client.send(formula=f'F near[{goal}] & G !near[front_door]')
     assert client.wait_terminal(iid, timeout=30.0)['status'] == 'planned'
     # odometry says the robot is at the front door (as if it had been pushed there)
     msg = conv.odometry_msg(Pose((0.6, 5.0, 0.0), 0.0))

@@ -101,6 +101,9 @@ RIGHT: list[tuple[str, str]] = [
      'F (near[biology_building] & F (near[engineering_annex] & F near[student_union])) & G !near[quad_lawn]'),
     ('Drop by the host stand, then the coat check, then the front door, quick as you can',
      'F (near[host_stand] & F (near[coat_check] & F near[front_door]))'),
+    # (the mechanism: a "you can" with no verb after it permits nothing)
+    ('go to the den, then the hall, then the garage, as best you can',
+     'F (near[den] & F (near[hall] & F near[garage]))'),
     # a request said as a gerund ("would you mind taking ..."): it had been left out, the delivery lost
     ('Would you mind taking the blue vase over to the hallway table? While you are carrying it, please do '
      'not go near the dog basket.', 'F (near[blue_vase] & F (pick[blue_vase] & (!near[dog_basket] U '

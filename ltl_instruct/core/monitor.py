@@ -192,16 +192,14 @@ class ExecutionMonitor:
         if not spacing > 0:
             raise InvalidInputError(f'spacing must be positive, got {spacing}')
         events = list(events)
+        points = [a + (b - a) * (k / n) for a, b in zip(corners, corners[1:])
+                  for n in [max(1, int(np.ceil(float(np.linalg.norm(b - a)) / spacing)))]
+                  for k in range(1, n + 1)]
         first_state = self.state
         report: Optional[MonitorReport] = None
-        for i, (a, b) in enumerate(zip(corners, corners[1:])):
-            last_leg = i == len(corners) - 2
-            n = max(1, int(np.ceil(float(np.linalg.norm(b - a)) / spacing)))
-            for k in range(1, n + 1):
-                report = self.update(a + (b - a) * (k / n), events if last_leg and k == n else ())
-                if report.verdict is not Verdict.PROGRESSING:
-                    break
-            if report is not None and report.verdict is not Verdict.PROGRESSING:
+        for j, p in enumerate(points):
+            report = self.update(p, events if j == len(points) - 1 else ())
+            if report.verdict is not Verdict.PROGRESSING:
                 break
         assert report is not None
         if report.previous_state != first_state:   # say what the whole move did

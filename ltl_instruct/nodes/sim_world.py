@@ -61,7 +61,7 @@ class SimWorldNode(Node):
         # skill requests of the followed plan: (path index, request); -1: where the robot is now
         self._pending: list[tuple[int, dict[str, Any]]] = []
         # requests that came before their plan (another topic: DDS does not order them): by plan stamp
-        self._early: dict[int, list[dict[str, Any]]] = {}
+        self._early: dict[int, list[tuple[int, dict[str, Any]]]] = {}
         self._skill_busy_until = 0.0
         self._last_tick = time.monotonic()
         self._classes_sent: Optional[dict[str, str]] = None
@@ -129,8 +129,8 @@ class SimWorldNode(Node):
             return
         self.world.robot.follow(points)
         self.get_logger().info(f'following a plan of {len(points)} poses')
-        for req in early:
-            self._queue(req)
+        for index, req in early:
+            self._queue(index, req)
 
     def on_skill_request(self, msg: String) -> None:
         """Queue a pick or release at a path index of its plan.
@@ -142,7 +142,7 @@ class SimWorldNode(Node):
         try:
             req = conv.parse_json_payload(msg.data, conv.SKILL_REQUEST)
             skill = req['skill']
-            int(req['path_index'])
+            index = int(req['path_index'])
             if skill not in ('pick', 'release') or not isinstance(req.get('args'), list):
                 raise ValueError(f'bad skill request {skill!r}')
             stamp = None if req.get('plan_stamp') is None else int(req['plan_stamp'])
@@ -150,16 +150,15 @@ class SimWorldNode(Node):
             self.get_logger().warning(f'skill request rejected: {e}')
             return
         if stamp is None or stamp == self._plan_key:
-            self._queue(req)
+            self._queue(index, req)
         elif self._plan_key is None or stamp > self._plan_key:
             if stamp not in self._early and len(self._early) >= _EARLY_PLANS:
                 del self._early[min(self._early)]
-            self._early.setdefault(stamp, []).append(req)
+            self._early.setdefault(stamp, []).append((index, req))
         else:
             self.get_logger().warning(f'{req["id"]}: {skill} request for a plan already replaced: dropped')
 
-    def _queue(self, req: dict[str, Any]) -> None:
-        index = int(req['path_index'])
+    def _queue(self, index: int, req: dict[str, Any]) -> None:
         if not self.world.robot.add_stop(index):   # already passed: carried out where the robot is
             self.world.robot.pause()
             index = -1

@@ -777,8 +777,7 @@ _OWN_REMARK_LEADS: tuple[tuple[str, ...], ...] = tuple(sorted(
     key=lambda t: -len(t)))
 
 
-_OWN_REMARK_RULES = frozenset({'never', 'avoid', 'away', 'not', 'only', 'first', 'then', 'before', 'after',
-                               'until', 'twice', 'once', 'times', 'stay', 'keep', 'off', 'limits'})
+_OWN_REMARK_FIRST = frozenset(m[0] for m in _OWN_REMARK_LEADS)
 
 
 def is_own_remark(tokens: Sequence[str]) -> bool:
@@ -787,9 +786,10 @@ def is_own_remark(tokens: Sequence[str]) -> bool:
     Never one that asks the robot for something: "you" with a verb of going, or a rule word.
     """
     words = [t for t in tokens if t not in PUNCT]
-    if not any(tuple(words[:len(m)]) == m for m in _OWN_REMARK_LEADS):
+    if not words or words[0] not in _OWN_REMARK_FIRST or \
+            not any(tuple(words[:len(m)]) == m for m in _OWN_REMARK_LEADS):
         return False
-    if _OWN_REMARK_RULES & set(words):
+    if has_constraint_word(words):
         return False   # ("I want to be sure you never go near the pond": a rule)
     return not any(words[k] == 'you' and words[k + 1:k + 2] and words[k + 1] in (
         'to', 'go', 'at', 'in', 'by', 'near', 'bring', 'take', 'visit', 'head', 'fly', 'stay', 'keep')

@@ -239,7 +239,7 @@ def _attach_best_reading(error: TranslationError, guess: Formula, reader: '_Read
                          left_out=[u.note() for u in reader.unread])
 
 
-def _named_after(tokens: Sequence[str], full: str, short: str) -> bool:
+def _unsaid_destination(tokens: Sequence[str], full: str) -> bool:
     """Whether the longer name is a destination nobody said ("throw away the can": the trash can)."""
     fw = full.split('_')
     return full in (TRASH.name, RECYCLING.name) and not any(
@@ -425,6 +425,7 @@ def _is_consequence(tail: Sequence[str]) -> bool:
     return verb in _CONSEQUENCES or verb not in _COMMANDS
 
 
+_NO_VERB_CAN = re.compile(r' you (?:can|may)(?= [,.;:!?] | $)')
 # Words of an order in a request: a reason after it may repeat the order ("..., chef wants a word first").
 _ORDER_WORDS = frozenset({'until', 'till', 'before', 'first', 'then', 'after'})
 # Verbs after a noun-phrase subject that make a trailing part a reason ("the neighbours complain").
@@ -752,6 +753,7 @@ class _Reader:
         # a clause that may not degrade and cannot be read is kept as first_error (the instruction
         # is refused) and left out, and reading goes on: the rest is the refusal's best reading
         self.first_error: Optional[TranslationError] = None
+        self.tokens: list[str] = []   # the instruction as read (set by read)
         self.once_scope = once_scope
         self.after_scope = after_scope
         self.no_revisits = False   # "visit each place only once", "no revisiting"
@@ -1219,7 +1221,7 @@ class _Reader:
                     self.notes.append(f'took "{d.name}" as the {mapping[d].name.replace("_", " ")}')
                 continue
             full = [n for n in longer if n.endswith('_' + d.name) or _labelled(n, d.name)]
-            if len(full) == 1 and not _named_after(getattr(self, 'tokens', []), full[0], d.name) and \
+            if len(full) == 1 and not _unsaid_destination(self.tokens, full[0]) and \
                     (d.name, full[0]) not in delivered:   # "put the can in the trash can": two things
                 mapping[d] = Descriptor(full[0])
                 self.notes.append(f'took "{d.name}" as the {full[0].replace("_", " ")} named before')
@@ -3397,7 +3399,8 @@ class _Reader:
 
     @staticmethod
     def _is_permission(tokens: list[str]) -> bool:
-        s = ' ' + ' '.join(tokens) + ' '
+        # ("..., then the garage, as best you can": a "you can" with no verb after it permits nothing)
+        s = _NO_VERB_CAN.sub(' ', ' ' + ' '.join(tokens) + ' ')
         return any(p in s for p in (' you can ', ' you may ', ' stay put ', ' be done ', ' free to ',
                                     ' you are allowed ', ' it is okay to ', ' it is fine to ', ' or stop ',
                                     ' stay there ', ' can then ', ' may then ', ' or stay ', ' can now ',

@@ -1286,6 +1286,9 @@ _START_AGAIN: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('starting', 'again'), ('start', 'over'), ('starting', 'over'), ('from', 'the', 'top'), ('new', 'plan'),
     ('let', 'me', 'think', 'again'), ('let', 'me', 'redo', 'that'),
 ), key=lambda m: -len(m)))
+# Where a take-back of everything may start, and what may come just before it.
+_TAKE_BACK_FIRST = frozenset(m[0] for m in _START_AGAIN) | _RETRACT_VERBS
+_BEFORE_TAKE_BACK = PUNCT | {'no', 'wait', 'actually', 'so', 'oh', 'okay', 'ok', 'just'}
 
 
 def _taken_back_at_end(tokens: list[str]) -> Optional[str]:
@@ -1324,39 +1327,29 @@ def _retract_all(tokens: list[str], notes: list[str]) -> list[str]:
     if gone is not None:
         raise TranslationError(f'everything was taken back ("{gone}"): there is nothing to do',
                                details={'part': gone})
-    for i in range(len(tokens)):
-        # "Go to the piano and then the window. Let me rethink that. The window first, then ...": all again
-        said = next((m for m in _START_AGAIN if tuple(tokens[i:i + len(m)]) == m), None)
-        if said is None or i == 0 or not (tokens[i - 1] in PUNCT or
-                                          tokens[i - 1] in ('no', 'wait', 'ok', 'okay')):
+    for i in range(1, len(tokens)):
+        if tokens[i] not in _TAKE_BACK_FIRST or tokens[i - 1] not in _BEFORE_TAKE_BACK:
             continue
-        k = i + len(said)
-        while k < len(tokens) and tokens[k] in PUNCT:
+        again = next((m for m in _START_AGAIN if tuple(tokens[i:i + len(m)]) == m), None)
+        if again is not None:   # "... . Let me rethink that. The window first, then ...": all again
+            k = i + len(again)
+        else:                   # "... . Please ignore all of that and simply go to C"
+            said = next((m for m in _ALL_SAID if tuple(tokens[i + 1:i + 1 + len(m)]) == m), None) \
+                if tokens[i] in _RETRACT_VERBS else None
+            if said is None:
+                continue
+            k = i + 1 + len(said)
+            while k < len(tokens) and tokens[k] in ('before', 'earlier', 'above', 'so', 'far', 'then'):
+                k += 1
+        phrase = ' '.join(tokens[i:k])
+        if k >= len(tokens) or tokens[k] not in (',', ';', ':', '.', '!', '?', 'and', '-'):
+            continue
+        while k < len(tokens) and (tokens[k] in PUNCT or tokens[k] in ('and', 'simply', 'instead', 'rather')):
             k += 1
         rest = tokens[k:]
-        if len([w for w in rest if w not in PUNCT]) >= 2 and k > i + len(said):
-            notes.append(f'took back everything said before "{" ".join(said)}"')
+        if len([w for w in rest if w not in PUNCT]) >= 2:
+            notes.append(f'took back everything said before "{phrase}"')
             return _retract_all(rest, notes)
-    for i, t in enumerate(tokens):
-        if t not in _RETRACT_VERBS or i == 0 or \
-                tokens[i - 1] not in PUNCT | {'no', 'actually', 'so', 'oh', 'okay', 'ok', 'just'}:
-            continue
-        said = next((m for m in _ALL_SAID if tuple(tokens[i + 1:i + 1 + len(m)]) == m), None)
-        if said is None:
-            continue
-        k = i + 1 + len(said)
-        while k < len(tokens) and tokens[k] in ('before', 'earlier', 'above', 'so', 'far', 'then'):
-            k += 1
-        if k >= len(tokens) or tokens[k] not in (',', ';', ':', '.', 'and', '-'):
-            continue
-        k += 1
-        while k < len(tokens) and tokens[k] in (',', 'and', 'simply', 'instead', 'rather'):
-            k += 1
-        rest = tokens[k:]
-        if len([w for w in rest if w not in PUNCT]) < 2:
-            continue
-        notes.append(f'took back everything said before "{" ".join(tokens[i:i + 1 + len(said)])}"')
-        return rest
     return tokens
 
 

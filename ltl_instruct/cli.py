@@ -22,6 +22,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
                 'parse a task formula; show its automaton and English subgoals'),
     'translate': ('ltl_instruct.commands.translate',
                   'translate English instructions into task formulas'),
+    'translator': ('ltl_instruct.commands.translator',
+                   'train the learned translator (tagger and decoder) from generated and public data'),
     'eval-translation': ('ltl_instruct.commands.eval_translation',
                          'score a translator on a dataset (WERs, temporal alignment)'),
     'ground': ('ltl_instruct.commands.ground',

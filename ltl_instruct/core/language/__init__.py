@@ -13,7 +13,7 @@ from ltl_instruct.core.errors import ErrorCode, TranslationError
 from ltl_instruct.core.language.base import Translation, Translator  # noqa: F401
 from ltl_instruct.core.language.verification import Verification, verification_for  # noqa: F401
 
-BACKENDS = ('offline', 'llm', 'learned')
+BACKENDS = ('offline', 'combined', 'neural', 'llm', 'learned')
 
 
 def make_translator(backend: str = 'offline', **options: Any) -> Translator:
@@ -27,7 +27,10 @@ def make_translator(backend: str = 'offline', **options: Any) -> Translator:
         (options of :class:`~ltl_instruct.core.language.llm.LlmTranslator`: ``base_url``,
         ``model``, ``api_key``, ``examples_path``, ``k``, ``retries``, ``timeout_s``...), or
         ``'learned'`` (option ``model_path``; the backend of
-        ``ltl_instruct.core.language.learned``).
+        ``ltl_instruct.core.language.learned``), ``'neural'`` (the learned translator of
+        ``ltl_instruct.core.language.neural``; options ``model_path``, ``beam``, ``flag_below``,
+        ``landmarks``) or ``'combined'`` (rules and learned translator, ``core/language/combined.py``;
+        the offline options plus ``model_path``).
 
     Raises
     ------
@@ -41,6 +44,8 @@ def make_translator(backend: str = 'offline', **options: Any) -> Translator:
         except TypeError as e:
             raise TranslationError(f'bad option for the offline translator: {e}',
                                    ErrorCode.INVALID_INPUT) from e
+    if backend in ('combined', 'neural'):
+        return _learned_translator(backend, options)
     if backend == 'llm':
         from ltl_instruct.core.language.llm import LlmTranslator
         try:
@@ -61,3 +66,15 @@ def make_translator(backend: str = 'offline', **options: Any) -> Translator:
         return translator
     raise TranslationError(f'unknown translator backend {backend!r}; one of {", ".join(BACKENDS)}',
                            ErrorCode.INVALID_INPUT)
+
+
+def _learned_translator(backend: str, options: dict[str, Any]) -> Translator:
+    """The ``'neural'`` backend (the learned translator alone) or ``'combined'`` (rules and model)."""
+    try:
+        if backend == 'neural':
+            from ltl_instruct.core.language.neural.translator import NeuralTranslator
+            return NeuralTranslator(**options)
+        from ltl_instruct.core.language.combined import CombinedTranslator
+        return CombinedTranslator(**options)
+    except TypeError as e:
+        raise TranslationError(f'bad option for the {backend} translator: {e}', ErrorCode.INVALID_INPUT) from e

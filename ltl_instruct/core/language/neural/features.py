@@ -1,0 +1,115 @@
+"""Between text and the networks: mentions as word-piece tags, and tags back to mentions.
+
+The tagger labels every word piece ``O`` (outside), ``B`` (first piece of a mention) or ``I``
+(inside one). Each piece of a mention also carries its slot number (1-based; 0 outside), which
+the decoder reads. Tags predicted for a new instruction become mentions again here, and each
+mention's words become a descriptor (``the sofa behind the pillar`` -> ``sofa::isbehind(pillar)``)
+through the same noun-phrase reader the rules use (``phrases.PhraseParser``: one home for the
+relation words). Mentions naming the same descriptor share a slot.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Optional, Sequence
+
+from ltl_instruct.core.language.neural.encoder import Pieces
+from ltl_instruct.core.language.neural.examples import Mention, TaggedExample
+from ltl_instruct.core.language.neural.grammar import MAX_SLOTS
+
+TAG_O, TAG_B, TAG_I = 0, 1, 2
+N_TAGS = 3
+
+
+def piece_tags(pieces: Pieces, mentions: Sequence[Mention]) -> tuple[list[int], list[int]]:
+    """Tag and slot number of every piece, from gold mentions."""
+    tags = [TAG_O] * len(pieces.ids)
+    slots = [0] * len(pieces.ids)
+    for m in mentions:
+        k = int(m.slot[1:])
+        if k > MAX_SLOTS:
+            continue
+        first = True
+        for i, (a, b) in enumerate(pieces.offsets):
+            if b > a and a >= m.start and b <= m.end:
+                tags[i] = TAG_B if first else TAG_I
+                slots[i] = k
+                first = False
+    return tags, slots
+
+
+@dataclass(frozen=True)
+class FoundMention:
+    """A mention the tagger found: its span, words, descriptor text and slot."""
+
+    start: int
+    end: int
+    text: str
+    descriptor: str
+    slot: str
+
+
+def spans_from_tags(pieces: Pieces, tags: Sequence[int]) -> list[tuple[int, int]]:
+    """Character spans of the mentions in a tag sequence (an ``I`` without ``B`` starts one)."""
+    spans: list[list[int]] = []
+    prev = TAG_O
+    for (a, b), tag in zip(pieces.offsets, tags):
+        if b <= a:
+            prev = TAG_O
+            continue
+        if tag == TAG_B or (tag == TAG_I and prev == TAG_O):
+            spans.append([a, b])
+        elif tag == TAG_I:
+            spans[-1][1] = b
+        prev = tag
+    return [(a, b) for a, b in spans]
+
+
+_NAME_RE = re.compile(r'[^a-z0-9]+')
+
+
+def descriptor_of(words: str, landmarks: Sequence[str] = (), digits: bool = False) -> Optional[str]:
+    """Descriptor text of a mention's words, or None when they name nothing."""
+    from ltl_instruct.core.language.phrases import PhraseParser
+    from ltl_instruct.core.language.text import tokenize
+    tokens = tokenize(words)
+    if not tokens:
+        return None
+    phrase = PhraseParser(landmarks=landmarks, digits=digits).parse(tokens, 0)
+    if phrase is not None and phrase.end >= len(tokens) - 1:
+        return str(phrase.descriptor)
+    name = _NAME_RE.sub('_', ' '.join(t for t in tokens if t not in _ARTICLES).lower()).strip('_')
+    if not name or not name[0].isalpha():
+        return None
+    return name
+
+
+_ARTICLES = frozenset({'the', 'a', 'an', 'this', 'that', 'my', 'your', 'our'})
+
+
+def mentions_from_tags(text: str, pieces: Pieces, tags: Sequence[int], landmarks: Sequence[str] = (),
+                       digits: bool = False) -> list[FoundMention]:
+    """Mentions of a tagged text; the same descriptor gets the same slot, numbered by first mention."""
+    out: list[FoundMention] = []
+    slot_of: dict[str, str] = {}
+    for a, b in spans_from_tags(pieces, tags):
+        words = text[a:b]
+        d = descriptor_of(words, landmarks, digits)
+        if d is None:
+            continue
+        if d not in slot_of:
+            if len(slot_of) >= MAX_SLOTS:
+                continue
+            slot_of[d] = f's{len(slot_of) + 1}'
+        out.append(FoundMention(a, b, words, d, slot_of[d]))
+    return out
+
+
+def slot_numbers(pieces: Pieces, mentions: Sequence[FoundMention]) -> list[int]:
+    """Slot number of every piece (0 outside mentions), for found mentions."""
+    return piece_tags(pieces, [Mention(m.start, m.end, m.slot) for m in mentions])[1]
+
+
+def example_tags(ex: TaggedExample, pieces: Pieces) -> tuple[list[int], list[int]]:
+    """Gold tags and slot numbers of a training example."""
+    return piece_tags(pieces, ex.mentions)

@@ -1,0 +1,137 @@
+"""The learned translator backend: tag mentions, decode a lifted formula, check it, ground it.
+
+``NeuralTranslator.translate(text)``:
+
+1. one pass of the frozen encoder over the text;
+2. the tagger's mentions become descriptors (``features.mentions_from_tags``); mentions of the
+   same descriptor share a slot;
+3. beam search over lifted formulas (grammar-constrained: every hypothesis parses);
+4. the first hypothesis that is satisfiable and uses every slot wins; if none uses every slot,
+   the first satisfiable one (a correction or an aside may name a thing the task does not use);
+5. slots are replaced by their descriptors.
+
+The result carries ``extra['confidence']`` (probability of the chosen hypothesis among the
+finished ones), ``extra['alternatives']`` (the next readings) and ``extra['flagged']`` when the
+model is unsure (confidence under ``flag_below``) or had to skip hypotheses.
+"""
+from __future__ import annotations
+
+import json
+import math
+import threading
+from pathlib import Path
+from typing import Optional, Sequence
+
+import torch
+
+from ltl_instruct.core.errors import ErrorCode, LtlInstructError, TranslationError
+from ltl_instruct.core.language.base import Translation
+from ltl_instruct.core.language.neural.decode import Hypothesis, beam_search
+from ltl_instruct.core.language.neural.encoder import (
+    WordPieces, load_encoder, pad_batch, packaged_model_dir,
+)
+from ltl_instruct.core.language.neural.features import FoundMention, mentions_from_tags, slot_numbers
+from ltl_instruct.core.language.neural.grammar import from_prefix, slots_used
+from ltl_instruct.core.language.neural.model import NetConfig, TranslatorNet
+from ltl_instruct.core.language.neural.training import BUNDLE_CONFIG, BUNDLE_WEIGHTS
+from ltl_instruct.core.spec import Descriptor, Formula, format_formula, parse_formula, rename_descriptors
+
+MAX_CHARS = 2000
+SHIPPED_BUNDLE = Path(__file__).resolve().parents[3] / 'data' / 'translator'
+
+
+class NeuralTranslator:
+    """Translator backend ``'neural'`` (see the module docstring)."""
+
+    name = 'neural'
+
+    def __init__(self, model_path: Optional[str | Path] = None, encoder_path: Optional[str | Path] = None,
+                 beam: int = 5, flag_below: float = 0.6, landmarks: Sequence[str] = (),
+                 digits: bool = False) -> None:
+        bundle = Path(model_path) if model_path else SHIPPED_BUNDLE
+        try:
+            config = json.loads((bundle / BUNDLE_CONFIG).read_text(encoding='utf-8'))
+            self.net = TranslatorNet(NetConfig(**config['net']))
+            state = torch.load(bundle / BUNDLE_WEIGHTS, map_location='cpu', weights_only=True)
+            self.net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in state.items()})
+            encoder_dir = Path(encoder_path) if encoder_path else packaged_model_dir()
+            self.encoder = load_encoder(encoder_dir)
+            self.pieces = WordPieces(encoder_dir)
+        except (OSError, KeyError, TypeError, ValueError, RuntimeError, ImportError) as e:
+            raise TranslationError(f'cannot load the learned translator from {bundle}: {e}',
+                                   ErrorCode.MODEL_ERROR) from e
+        self.net.eval()
+        self.beam = beam
+        self.flag_below = flag_below
+        self.landmarks = tuple(landmarks)
+        self.digits = digits
+        self._lock = threading.Lock()   # torch modules are not re-entrant across threads
+
+    def read(self, text: str) -> tuple[list[FoundMention], list[Hypothesis]]:
+        """Mentions and finished beam hypotheses (best first) for one instruction."""
+        if not isinstance(text, str) or not text.strip():
+            raise TranslationError('empty instruction', ErrorCode.INVALID_INPUT)
+        if len(text) > MAX_CHARS:
+            raise TranslationError(f'instruction longer than {MAX_CHARS} characters', ErrorCode.LIMIT_EXCEEDED)
+        pieces = self.pieces(text)
+        ids, mask = pad_batch([pieces])
+        with self._lock, torch.inference_mode():
+            h = self.encoder(ids, mask)
+            tags = self.net.tagger(h).argmax(-1)[0].tolist()
+            mentions = mentions_from_tags(text, pieces, tags, self.landmarks, self.digits)
+            slots = torch.tensor([slot_numbers(pieces, mentions)])
+            n_slots = len({m.slot for m in mentions})
+            hyps = beam_search(self.net.decoder, h, mask, slots, n_slots, beam=self.beam)
+        return mentions, hyps
+
+    def translate(self, instruction: str) -> Translation:
+        """Translate one instruction (see the module docstring)."""
+        mentions, hyps = self.read(instruction)
+        if not mentions:
+            raise TranslationError('no place or thing was found in the instruction', ErrorCode.TRANSLATION_ERROR)
+        descriptors = {m.slot: m.descriptor for m in mentions}
+        readings = _readings(hyps, descriptors)
+        if not readings:
+            raise TranslationError('the learned translator found no satisfiable reading',
+                                   ErrorCode.TRANSLATION_ERROR)
+        total = sum(math.exp(h.logprob) for h in hyps) or 1.0
+        best, complete = readings[0]
+        confidence = math.exp(best[1]) / total
+        notes = []
+        flagged = confidence < self.flag_below or not complete
+        if not complete:
+            unused = sorted(set(descriptors.values()) - {str(d) for d in _referent_names(best[0])})
+            notes.append(f'the learned translator left out: {", ".join(unused)}')
+        if confidence < self.flag_below:
+            notes.append(f'the learned translator is unsure of this reading ({confidence:.2f})')
+        alternatives = [format_formula(f) for (f, _), _ in readings[1:3]]
+        return Translation(instruction, best[0], self.name, tuple(notes), {
+            'confidence': round(confidence, 4), 'flagged': flagged, 'alternatives': alternatives,
+            'mentions': [{'text': m.text, 'descriptor': m.descriptor, 'slot': m.slot} for m in mentions]})
+
+
+def _referent_names(f: Formula) -> list[str]:
+    from ltl_instruct.core.spec import referents_of
+    return [str(d) for d in referents_of(f)]
+
+
+def _ground(tokens: Sequence[str], descriptors: dict[str, str]) -> Formula:
+    lifted = from_prefix(tokens)
+    mapping = {Descriptor(s): parse_formula(f'near[{d}]').args[0]  # type: ignore[attr-defined]
+               for s, d in descriptors.items()}
+    return rename_descriptors(lifted, mapping)
+
+
+def _readings(hyps: Sequence[Hypothesis], descriptors: dict[str, str]) -> list[tuple[tuple[Formula, float], bool]]:
+    """Satisfiable grounded readings, those using every slot first, each with its log-probability."""
+    from ltl_instruct.core.automaton import is_satisfiable
+    full, partial = [], []
+    for hyp in hyps:
+        try:
+            f = _ground(hyp.tokens, descriptors)
+            if not is_satisfiable(f):
+                continue
+        except LtlInstructError:
+            continue
+        (full if slots_used(hyp.tokens) == set(descriptors) else partial).append(((f, hyp.logprob), True))
+    return full + [((f, p), False) for (f, p), _ in partial]

@@ -15,6 +15,9 @@ For each example the translator's formula is compared with the gold one:
   referent is an error. ``referent_wer_strict`` counts every refusal as all errors.
 - **avoidance WER**: the same on the descriptors under an explicit negation.
 - **spatial WER**: the same on the descriptors that carry spatial relations.
+- **wrong and unflagged**: the share of examples whose translation was returned (not
+  refused), is not equivalent to the gold formula, and was not flagged by the backend
+  (``Translation.extra['flagged']``): the silent errors. A refusal counts as flagged.
 
 Automata of repeated formulas are compiled once (the public sets repeat a few
 hundred formulas thousands of times).
@@ -77,13 +80,15 @@ class ExampleResult:
     equivalent: bool
     aligned: bool
     seconds: float
+    flagged: bool = False   # refused, or returned with extra['flagged'] set
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""
         return {'source': self.example.source, 'instruction': self.example.instruction,
                 'gold': str(self.example.formula),
                 'predicted': None if self.predicted is None else str(self.predicted),
-                'error': self.error, 'equivalent': self.equivalent, 'temporal_alignment': self.aligned}
+                'error': self.error, 'equivalent': self.equivalent, 'temporal_alignment': self.aligned,
+                'flagged': self.flagged}
 
 
 @dataclass
@@ -94,6 +99,7 @@ class Scores:
     errors: int = 0
     equivalent: int = 0
     aligned: int = 0
+    wrong_unflagged: int = 0   # returned, not equivalent, and not flagged by the backend
     ref_edits: int = 0
     ref_words: int = 0
     strict_ref_edits: int = 0   # refusals counted as all errors, best readings ignored
@@ -114,6 +120,7 @@ class Scores:
             'examples': self.count, 'translation_errors': self.errors,
             'equivalence_accuracy': rate(self.equivalent, self.count),
             'temporal_alignment': rate(self.aligned, self.count),
+            'wrong_unflagged_share': rate(self.wrong_unflagged, self.count),
             'refusals_with_best_reading': self.best_readings,
             'referent_wer': rate(self.ref_edits, self.ref_words),
             'referent_wer_strict': rate(self.strict_ref_edits, self.ref_words),
@@ -152,6 +159,7 @@ def evaluate(translator: Translator, examples: Sequence[Example],
         gold_avoid = list(avoided_referents_of(ex.formula))
         if isinstance(got, LtlInstructError):
             scores.errors += 1
+            flagged = True
             pred: Optional[Formula] = None
             error: Optional[str] = got.message
             guess = best_reading_of(got, ex.instruction)
@@ -161,6 +169,7 @@ def evaluate(translator: Translator, examples: Sequence[Example],
             pred_avoid: list[Descriptor] = [] if partial is None else list(avoided_referents_of(partial))
         else:
             pred, error = got.formula, None
+            flagged = bool(got.extra.get('flagged'))
             pred_refs = list(referents_of(pred))
             pred_avoid = list(avoided_referents_of(pred))
         scores.ref_edits += edit_distance([str(d) for d in gold_refs], [str(d) for d in pred_refs])
@@ -184,7 +193,8 @@ def evaluate(translator: Translator, examples: Sequence[Example],
                 error = f'equivalence check failed: {e.message}'
         scores.equivalent += eq
         scores.aligned += aligned
-        scores.results.append(ExampleResult(ex, pred, error, eq, aligned, elapsed))
+        scores.wrong_unflagged += pred is not None and not eq and not flagged
+        scores.results.append(ExampleResult(ex, pred, error, eq, aligned, elapsed, flagged))
         if progress is not None:
             progress(k)
     return scores

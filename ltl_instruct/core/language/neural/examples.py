@@ -46,7 +46,7 @@ class TaggedExample:
     source: str = ''
 
     def formula(self) -> Formula:
-        """The grounded formula: the lifted one with each slot replaced by its descriptor."""
+        """Return the grounded formula: the lifted one with each slot replaced by its descriptor."""
         lifted = parse_formula(self.lifted)
         mapping = {Descriptor(s): _descriptor(d) for s, d in self.slots.items()}
         return rename_descriptors(lifted, mapping)

@@ -68,7 +68,7 @@ def to_prefix(f: Formula) -> list[str]:
 
 
 def from_prefix(tokens: Sequence[str]) -> Formula:
-    """The formula of a complete prefix sequence (raises ``TranslationError`` if incomplete)."""
+    """Build the formula of a complete prefix sequence (raises ``TranslationError`` if incomplete)."""
     pos = len(tokens)
     values: list[object] = []   # built right to left: operands are on top when an operator comes
     for tok in reversed(tokens):
@@ -122,7 +122,7 @@ class GrammarState:
 
     @classmethod
     def start(cls, max_len: int = 48) -> 'GrammarState':
-        """The state before the first token: one formula needed."""
+        """Return the state before the first token: one formula needed."""
         return cls([FORMULA], 0, max_len)
 
     @property
@@ -149,7 +149,7 @@ class GrammarState:
         return out
 
     def push(self, token_id: int) -> 'GrammarState':
-        """The state after one more token."""
+        """Return the state after one more token."""
         needs = self.needs[:-1] + list(reversed(_PUSHES[token_id]))
         return GrammarState(needs, self.length + 1, self.max_len)
 
@@ -160,7 +160,7 @@ def slots_used(tokens: Sequence[str]) -> set[str]:
 
 
 def check_prefix(tokens: Sequence[str], n_slots: Optional[int] = None) -> bool:
-    """True when a token sequence is a complete, grammatical lifted formula."""
+    """Tell whether a token sequence is a complete, grammatical lifted formula."""
     state = GrammarState.start(max_len=3 * len(tokens) + 2)   # constants cost 1, not 2
     for tok in tokens:
         if tok not in TOKEN_ID or TOKEN_ID[tok] not in state.allowed(n_slots or MAX_SLOTS):

@@ -47,16 +47,16 @@ class TrainConfig:
     time_budget_s: training stops after this many seconds (the epoch in progress ends early).
     """
 
-    generated: int = 60000
+    generated: int = 40000
     public_sets: tuple[str, ...] = ('drone', 'cleanup', 'pick_and_place', 'lifted', 'providence',
                                     'cleanup_l2l')
     public_repeat: int = 2
-    epochs: int = 8
+    epochs: int = 6
     batch: int = 64
     lr: float = 2e-3
     seed: int = 0
     threads: int = 2
-    time_budget_s: float = 80 * 60
+    time_budget_s: float = 60 * 60
     net: NetConfig = field(default_factory=NetConfig)
 
 
@@ -71,7 +71,7 @@ class Encoded:
 
 
 def training_examples(cfg: TrainConfig, log: Callable[[str], None] = print) -> list[TaggedExample]:
-    """Generated examples plus the public training splits (repeated ``public_repeat`` times)."""
+    """Return generated examples plus the public training splits (repeated ``public_repeat`` times)."""
     from ltl_instruct.core.language.neural.generator import generate
     from ltl_instruct.core.language.neural import public
     examples = list(generate(cfg.generated, seed=cfg.seed))
@@ -121,7 +121,7 @@ def _pad(seqs: Sequence[torch.Tensor], value: float) -> torch.Tensor:
 
 
 def batch_tensors(items: Sequence[Encoded]) -> tuple[torch.Tensor, ...]:
-    """Padded ``states, mask, tags, slots, targets`` of a batch (padding ignored by the losses)."""
+    """Pad a batch into ``states, mask, tags, slots, targets`` of a batch (padding ignored by the losses)."""
     h = _pad([e.states.float() for e in items], 0.0)
     mask = _pad([torch.ones(len(e.tags), dtype=torch.long) for e in items], 0)
     tags = _pad([e.tags for e in items], -100)
@@ -149,8 +149,13 @@ def loss_of(net: TranslatorNet, batch: Sequence[Encoded]) -> tuple[torch.Tensor,
 
 
 def fit(net: TranslatorNet, data: Sequence[Encoded], cfg: TrainConfig,
-        log: Callable[[str], None] = print) -> dict[str, float]:
-    """Train both networks; returns the last epoch's mean losses and the seconds spent."""
+        log: Callable[[str], None] = print,
+        after_epoch: Optional[Callable[[int, dict[str, float]], None]] = None) -> dict[str, float]:
+    """Train both networks; returns the last epoch's mean losses and the seconds spent.
+
+    ``after_epoch(epoch, stats)`` runs after each epoch (the trainer saves the bundle there, so
+    a run cut short still leaves its last finished epoch).
+    """
     rng = random.Random(cfg.seed)
     opt = torch.optim.Adam(net.parameters(), lr=cfg.lr)
     started = time.perf_counter()
@@ -173,6 +178,9 @@ def fit(net: TranslatorNet, data: Sequence[Encoded], cfg: TrainConfig,
             if time.perf_counter() - started > cfg.time_budget_s:
                 break
         stats = {'tag_loss': totals[0] / max(n, 1), 'decoder_loss': totals[1] / max(n, 1)}
+        if after_epoch is not None:
+            net.eval()
+            after_epoch(epoch + 1, stats)
         log(f'epoch {epoch + 1}: tag loss {stats["tag_loss"]:.4f}, decoder loss {stats["decoder_loss"]:.4f}, '
             f'{time.perf_counter() - started:.0f} s')
         if time.perf_counter() - started > cfg.time_budget_s:
@@ -203,8 +211,9 @@ def train(cfg: TrainConfig, out_dir: Path, encoder_dir: Optional[Path] = None,
     data = encode_examples(examples, encoder, WordPieces(encoder_dir), log)
     log(f'{len(data)} training examples fit the decoder')
     net = TranslatorNet(cfg.net)
-    stats = fit(net, data, cfg, log)
-    facts = {'train_config': {k: v for k, v in asdict(cfg).items() if k != 'net'},
-             'examples': len(data), **stats}
+    base = {'train_config': {k: v for k, v in asdict(cfg).items() if k != 'net'}, 'examples': len(data)}
+    stats = fit(net, data, cfg, log,
+                after_epoch=lambda epoch, st: save_bundle(net, out_dir, {**base, 'epochs_done': epoch, **st}))
+    facts = {**base, **stats}
     save_bundle(net, out_dir, facts)
     return facts

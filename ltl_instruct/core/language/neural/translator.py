@@ -72,7 +72,8 @@ class NeuralTranslator:
         if not isinstance(text, str) or not text.strip():
             raise TranslationError('empty instruction', ErrorCode.INVALID_INPUT)
         if len(text) > MAX_CHARS:
-            raise TranslationError(f'instruction longer than {MAX_CHARS} characters', ErrorCode.LIMIT_EXCEEDED)
+            raise TranslationError(f'instruction longer than {MAX_CHARS} characters',
+                                   ErrorCode.LIMIT_EXCEEDED)
         pieces = self.pieces(text)
         ids, mask = pad_batch([pieces])
         with self._lock, torch.inference_mode():
@@ -88,7 +89,8 @@ class NeuralTranslator:
         """Translate one instruction (see the module docstring)."""
         mentions, hyps = self.read(instruction)
         if not mentions:
-            raise TranslationError('no place or thing was found in the instruction', ErrorCode.TRANSLATION_ERROR)
+            raise TranslationError('no place or thing was found in the instruction',
+                                   ErrorCode.TRANSLATION_ERROR)
         descriptors = {m.slot: m.descriptor for m in mentions}
         readings = _readings(hyps, descriptors)
         if not readings:
@@ -122,7 +124,10 @@ def _ground(tokens: Sequence[str], descriptors: dict[str, str]) -> Formula:
     return rename_descriptors(lifted, mapping)
 
 
-def _readings(hyps: Sequence[Hypothesis], descriptors: dict[str, str]) -> list[tuple[tuple[Formula, float], bool]]:
+Reading = tuple[tuple[Formula, float], bool]
+
+
+def _readings(hyps: Sequence[Hypothesis], descriptors: dict[str, str]) -> list[Reading]:
     """Satisfiable grounded readings, those using every slot first, each with its log-probability."""
     from ltl_instruct.core.automaton import is_satisfiable
     full, partial = [], []

@@ -7,10 +7,8 @@ tagger and decoder on a few hundred sentences, save the bundle, load it through
 """
 from __future__ import annotations
 
-import json
 import random
 import shutil
-from pathlib import Path
 
 import pytest
 import torch
@@ -129,52 +127,24 @@ def _examples(n: int, seed: int) -> list[TaggedExample]:
 
 @pytest.fixture(scope='module')
 def small_bundle(tmp_path_factory):
-    """A small random BERT (the packaged tokenizer) and a translator trained on it."""
-    from safetensors.torch import save_file
-    from ltl_instruct.core.language.neural.encoder import BertEncoder, EncoderConfig
+    """A small random BERT (saved by transformers, with the packaged tokenizer) and a translator on it."""
+    transformers = pytest.importorskip('transformers')
     torch.manual_seed(0)
     root = tmp_path_factory.mktemp('neural')
     enc_dir = root / 'encoder'
-    enc_dir.mkdir()
+    config = transformers.BertConfig(vocab_size=30522, hidden_size=32, num_hidden_layers=2,
+                                     num_attention_heads=2, intermediate_size=64, max_position_embeddings=128)
+    transformers.BertModel(config).save_pretrained(str(enc_dir), safe_serialization=True)
     shutil.copy(packaged_model_dir() / 'tokenizer.json', enc_dir / 'tokenizer.json')
-    config = {'vocab_size': 30522, 'hidden_size': 32, 'num_hidden_layers': 2, 'num_attention_heads': 2,
-              'intermediate_size': 64, 'max_position_embeddings': 128, 'type_vocab_size': 2}
-    (enc_dir / 'config.json').write_text(json.dumps(config))
-    enc = BertEncoder(EncoderConfig.from_json(enc_dir / 'config.json'))
-    save_file({f'bert.{k}': v.contiguous() for k, v in _bert_names(enc.state_dict()).items()},
-              str(enc_dir / 'model.safetensors'))
     encoder = load_encoder(enc_dir)
     data = training.encode_examples(_examples(240, 0), encoder, WordPieces(enc_dir), log=lambda s: None)
-    cfg = training.TrainConfig(epochs=12, batch=16, lr=3e-3, net=NetConfig(encoder_dim=32, tagger_hidden=32,
-                                                                          hidden=64, token_dim=16))
+    small = NetConfig(encoder_dim=32, tagger_hidden=32, hidden=64, token_dim=16)
+    cfg = training.TrainConfig(epochs=12, batch=16, lr=3e-3, net=small)
     net = TranslatorNet(cfg.net)
     stats = training.fit(net, data, cfg, log=lambda s: None)
     bundle = root / 'bundle'
     training.save_bundle(net, bundle, {'examples': len(data)})
     return enc_dir, bundle, stats
-
-
-def _bert_names(state):
-    """Our parameter names back to BERT's (the inverse of the loader's renaming)."""
-    out = {}
-    for k, v in state.items():
-        name = k
-        for ours, theirs in (('word.', 'embeddings.word_embeddings.'), ('position.', 'embeddings.position_embeddings.'),
-                             ('token_type.', 'embeddings.token_type_embeddings.'), ('norm.', 'embeddings.LayerNorm.')):
-            if name.startswith(ours):
-                name = theirs + name[len(ours):]
-        if name.startswith('layers.'):
-            _, n, rest = name.split('.', 2)
-            for ours, theirs in (('query.', 'attention.self.query.'), ('key.', 'attention.self.key.'),
-                                 ('value.', 'attention.self.value.'), ('attn_out.', 'attention.output.dense.'),
-                                 ('attn_norm.', 'attention.output.LayerNorm.'), ('inter.', 'intermediate.dense.'),
-                                 ('out.', 'output.dense.'), ('out_norm.', 'output.LayerNorm.')):
-                if rest.startswith(ours):
-                    rest = theirs + rest[len(ours):]
-                    break
-            name = f'encoder.layer.{n}.{rest}'
-        out[name] = v
-    return out
 
 
 def test_training_lowers_both_losses(small_bundle):

@@ -58,7 +58,7 @@ def run(args: argparse.Namespace) -> int:
     if args.numbers is None:
         args.numbers = 'digits' if 'drone-planning' in ds.name else 'words'
     options = _options(args)
-    if args.backend == 'offline' and ds.landmarks:
+    if args.backend in ('offline', 'combined', 'neural') and ds.landmarks:
         options['landmarks'] = ds.landmarks   # lifted propositions are names given in advance
     translator = make_translator(args.backend, **options)
     examples = ds.examples

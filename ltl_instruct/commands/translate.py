@@ -30,7 +30,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--input', help='JSON lines file, one {"instruction": ...} per line')
     parser.add_argument('--output', help='JSON lines file to write (default: standard output)')
     parser.add_argument('--interactive', action='store_true', help='verification dialog on the terminal')
-    parser.add_argument('--model-path', help='learned backend: trained parser bundle')
+    parser.add_argument('--model-path', help='learned backend: trained parser bundle; neural and combined: '
+                                             'translator bundle (default: the one shipped)')
     parser.add_argument('--base-url', help='llm backend: OpenAI-compatible endpoint ending in /v1')
     parser.add_argument('--model', help='llm backend: model name')
     parser.add_argument('--examples', help='llm backend: example pool (JSON lines)')
@@ -49,11 +50,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _options(args: argparse.Namespace) -> dict[str, Any]:
+    rules = {'avoid_scope': args.avoid_scope, 'once_scope': getattr(args, 'once_scope', 'run'),
+             'after_scope': getattr(args, 'after_scope', None) or 'goal',
+             'numbers': getattr(args, 'numbers', None) or 'words'}
     if args.backend == 'offline':
-        return {'avoid_scope': args.avoid_scope, 'once_scope': getattr(args, 'once_scope', 'run'),
-                'after_scope': getattr(args, 'after_scope', None) or 'goal',
-                'numbers': getattr(args, 'numbers', None) or 'words'}
-    if args.backend == 'learned':
+        return rules
+    if args.backend == 'combined':
+        return {**rules, 'model_path': args.model_path}
+    if args.backend in ('learned', 'neural'):
         return {'model_path': args.model_path}
     opts: dict[str, Any] = {'timeout_s': args.timeout}
     for key, value in (('base_url', args.base_url), ('model', args.model), ('examples_path', args.examples)):
@@ -79,6 +83,10 @@ def record(t: Translation) -> dict[str, Any]:
     warnings = warnings_of(t)
     if warnings:
         out['warnings'] = list(warnings)   # parts it could not read (guessed at or left out)
+    # the combined and learned backends: whether a person must check this reading, and the others
+    for key in ('flagged', 'alternatives', 'confidence'):
+        if t.extra.get(key) is not None:
+            out[key] = t.extra[key]
     return out
 
 

@@ -20,12 +20,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     sub = parser.add_subparsers(dest='action', metavar='ACTION', required=True)
     train = sub.add_parser('train', help='regenerate the data and train; write the bundle to --out')
     train.add_argument('--out', required=True, help='folder to write config.json and weights.pt to')
-    train.add_argument('--generated', type=int, default=None, help='generated examples (default 60000)')
-    train.add_argument('--epochs', type=int, default=None, help='epochs (default 8)')
+    train.add_argument('--generated', type=int, default=None, help='generated examples (default 40000)')
+    train.add_argument('--epochs', type=int, default=None, help='epochs (default 6)')
     train.add_argument('--sets', default=None,
                        help='public sets whose training splits are added, comma-separated (default all; '
                             '"none" for none)')
-    train.add_argument('--time-limit', type=float, default=None, help='seconds of training (default 4800)')
+    train.add_argument('--time-limit', type=float, default=None,
+                       help='seconds of training, after encoding (default 3600)')
     train.add_argument('--seed', type=int, default=0, help='random seed (default 0)')
     train.add_argument('--threads', type=int, default=2, help='torch CPU threads (default 2)')
     train.add_argument('--json', action='store_true', help='print the training facts as JSON')

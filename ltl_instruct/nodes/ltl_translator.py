@@ -34,8 +34,11 @@ from ltl_instruct.core.spec import avoided_referents_of, parse_formula, referent
 from ltl_instruct.nodes.common import ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node
 
 PARAMS = (
-    ParamSpec('backend', 'offline', 'translator backend', choices=('offline', 'llm', 'learned')),
-    ParamSpec('model_path', '', 'model directory or file for the llm/learned backends ("" = default)'),
+    ParamSpec('backend', 'combined', 'translator backend: combined (rules and learned model, the default), '
+              'offline (rules only), neural (learned model only), llm, learned (trajectory parser)',
+              choices=('combined', 'offline', 'neural', 'llm', 'learned')),
+    ParamSpec('model_path', '', 'model directory or file for the combined/neural/llm/learned backends '
+              '("" = default)'),
     ParamSpec('require_confirmation', False,
               'wait for verification/reply before publishing the task spec'),
     ParamSpec('confirmation_timeout', 120.0, 'how long to wait for verification/reply [s]', 1.0, 3600.0),

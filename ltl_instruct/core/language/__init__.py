@@ -69,7 +69,7 @@ def make_translator(backend: str = 'offline', **options: Any) -> Translator:
 
 
 def _learned_translator(backend: str, options: dict[str, Any]) -> Translator:
-    """The ``'neural'`` backend (the learned translator alone) or ``'combined'`` (rules and model)."""
+    """Build the ``'neural'`` backend (the learned translator alone) or ``'combined'`` (rules and model)."""
     try:
         if backend == 'neural':
             from ltl_instruct.core.language.neural.translator import NeuralTranslator
@@ -77,4 +77,5 @@ def _learned_translator(backend: str, options: dict[str, Any]) -> Translator:
         from ltl_instruct.core.language.combined import CombinedTranslator
         return CombinedTranslator(**options)
     except TypeError as e:
-        raise TranslationError(f'bad option for the {backend} translator: {e}', ErrorCode.INVALID_INPUT) from e
+        raise TranslationError(f'bad option for the {backend} translator: {e}',
+                               ErrorCode.INVALID_INPUT) from e

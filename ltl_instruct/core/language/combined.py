@@ -6,8 +6,9 @@ Policy (measured on the public sets' held-out splits; see the README, "translate
   reading, not flagged;
 - both read it and disagree: the rules' reading, **flagged**, with the model's reading offered
   as the alternative (the dialog shows both);
-- the rules refuse and the model reads it: the model's reading, **flagged**, with what the
-  rules could not place as a warning;
+- the rules refuse and the model reads it with confidence at least ``takeover`` (the share of
+  the beam's probability on its reading): the model's reading, **flagged**, with what the rules
+  could not place as a warning; below that, the rules' refusal stands (a guess is not a task);
 - the model is missing or fails, the rules read it: the rules' reading, not flagged (as before
   the model existed);
 - both refuse: the rules' error.
@@ -26,7 +27,7 @@ from ltl_instruct.core.spec import Formula, format_formula, referents_of, rename
 
 
 def same_task(a: Formula, b: Formula) -> bool:
-    """True when two formulas are equivalent, or become so once b's referents take a's names by position."""
+    """Tell whether two formulas are the same task, once b's referents take a's names by position."""
     from ltl_instruct.core.automaton import equivalent
     try:
         if equivalent(a, b):
@@ -45,9 +46,10 @@ class CombinedTranslator:
     name = 'combined'
 
     def __init__(self, model_path: Optional[str] = None, landmarks: Sequence[str] = (),
-                 **rule_options: Any) -> None:
+                 takeover: float = 0.5, **rule_options: Any) -> None:
         from ltl_instruct.core.language.offline import OfflineTranslator
         self.rules = OfflineTranslator(landmarks=landmarks, **rule_options)
+        self.takeover = takeover
         self.model: Optional[Translator] = None
         self.model_error = ''
         try:
@@ -73,7 +75,7 @@ class CombinedTranslator:
                 model = None
         if rules is not None:
             return self._with_rules(rules, model)
-        if model is not None and refusal is not None:
+        if model is not None and refusal is not None and model.extra.get('confidence', 0.0) >= self.takeover:
             return self._from_model(model, refusal)
         assert refusal is not None
         raise refusal

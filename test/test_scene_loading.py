@@ -79,7 +79,8 @@ def test_file_size_is_bounded(tmp_path, monkeypatch):
 
 
 def test_aliases_are_bounded(tmp_path):
-    lines = ['a0: &a0 [1, 1]'] + [f'a{i}: &a{i} [' + ', '.join([f'*a{i - 1}'] * 10) + ']' for i in range(1, 12)]
+    lines = ['a0: &a0 [1, 1]'] + [f'a{i}: &a{i} [' + ', '.join([f'*a{i - 1}'] * 10) + ']'
+                                  for i in range(1, 12)]
     p = _write(tmp_path, '\n'.join(lines) + '\n')
     with pytest.raises(SceneError) as e:
         load_scene(p)

@@ -86,7 +86,7 @@ def check_counts(instruction: str) -> None:
     for m in _COUNT_RE.finditer(instruction):
         text = m.group('n').replace('\u2212', '-')
         digits = text.replace(',', '')
-        if re.fullmatch(r'[-+]?\d+', digits) and ',' in text and not re.fullmatch(r'[-+]?\d{1,3}(,\d{3})+', text):
+        if ',' in text and not re.fullmatch(r'[-+]?\d{1,3}(,\d{3})+(?:\.\d+)?', text):
             continue   # "rooms 1,2 times": a list, not a thousands separator
         if re.fullmatch(r'[-+]?\d+', digits):
             check_count(int(digits))

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import json
 import math
-import re
 from typing import Any, Mapping, Optional, Sequence
 
 import numpy as np
@@ -29,18 +28,19 @@ from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
 from std_msgs.msg import Header, String
 from visualization_msgs.msg import Marker, MarkerArray
 
-from ltl_instruct.core.errors import InvalidInputError, LimitExceededError
+from ltl_instruct.core.errors import InvalidInputError
 from ltl_instruct.core.grounding.rsm import ReferentMap
+from ltl_instruct.core.payloads import (  # noqa: F401  (the payload parsing lives in the core; re-exported)
+    INSTRUCTION, MAX_PAYLOAD_BYTES, SCHEMA_VERSION, parse_json_payload, read_instruction, salvage_id,
+    safe_id as _safe_id,
+)
 from ltl_instruct.core.planning import PlanningWorld
 from ltl_instruct.core.world.robot import OccupancyRaster, Pose
 from ltl_instruct.core.world.scene import Box
 
-SCHEMA_VERSION = 1
-MAX_PAYLOAD_BYTES = 1_000_000
 FRAME_ID = 'map'
 
 # schema names of the JSON payloads (design.md "Nodes and topics")
-INSTRUCTION = 'ltl_instruct/instruction'
 TASK_SPEC = 'ltl_instruct/task_spec'
 VERIFICATION_REQUEST = 'ltl_instruct/verification_request'
 VERIFICATION_REPLY = 'ltl_instruct/verification_reply'
@@ -80,54 +80,6 @@ def payload(schema: str, instruction_id: str, **fields: Any) -> dict[str, Any]:
 def json_msg(data: Mapping[str, Any]) -> String:
     """Return a ``std_msgs/String`` holding ``data`` as compact JSON (non-finite floats -> null)."""
     return String(data=json.dumps(_finite_json(dict(data)), separators=(',', ':'), allow_nan=False))
-
-
-def parse_json_payload(text: str, schema: Optional[str] = None,
-                       max_bytes: int = MAX_PAYLOAD_BYTES) -> dict[str, Any]:
-    """Parse a JSON payload and check its schema name, version and ``id``.
-
-    Raises
-    ------
-    LimitExceededError
-        If the text is longer than ``max_bytes``.
-    InvalidInputError
-        On invalid JSON, a non-object, a wrong schema or version, or a missing ``id``.
-    """
-    if len(text) > max_bytes:
-        raise LimitExceededError(f'payload of {len(text)} bytes exceeds the limit of {max_bytes}')
-    try:
-        data = json.loads(text)
-    except (ValueError, RecursionError) as e:
-        raise InvalidInputError(f'not valid JSON: {str(e)[:200]}') from None
-    if not isinstance(data, dict):
-        raise InvalidInputError(f'expected a JSON object, got {type(data).__name__}')
-    if schema is not None and data.get('schema') != schema:
-        raise InvalidInputError(f'expected schema {schema!r}, got {str(data.get("schema"))[:80]!r}',
-                                details={'id': _safe_id(data.get('id'))})
-    if schema is not None and data.get('version') != SCHEMA_VERSION:
-        raise InvalidInputError(f'unsupported {schema} version {data.get("version")!r} '
-                                f'(expected {SCHEMA_VERSION})', details={'id': _safe_id(data.get('id'))})
-    if not isinstance(data.get('id'), str) or not data['id'] or len(data['id']) > 200:
-        raise InvalidInputError('payload has no valid "id" (non-empty text up to 200 characters)')
-    return data
-
-
-def _safe_id(value: Any) -> str:
-    return value[:200] if isinstance(value, str) else ''
-
-
-_ID_PATTERN = re.compile(r'"id"\s*:\s*"([A-Za-z0-9_.:#/@+-]{1,200})"')
-
-
-def salvage_id(text: str) -> str:
-    """Return the ``id`` of a payload that failed validation, when one can be read, else ''."""
-    try:
-        data = json.loads(text[:MAX_PAYLOAD_BYTES])
-    except (ValueError, RecursionError):
-        # truncated or broken JSON: the id may still be readable
-        m = _ID_PATTERN.search(text[:10000])
-        return m.group(1) if m else ''
-    return _safe_id(data.get('id')) if isinstance(data, dict) else ''
 
 
 # ---------------------------------------------------------------------------- time

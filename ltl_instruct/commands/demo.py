@@ -56,6 +56,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     """Run the demo; 0 when the task was satisfied, 1 when it failed, 2 on bad input."""
     scene = resolve_scene(args.scene)
+    if args.out != DEFAULT_OUT:   # a path that cannot be written fails now, not after the run
+        from ltl_instruct.core.planning.plot import check_output_path
+        check_output_path(args.out)
     if not 0.1 <= args.speed <= 50.0:
         raise InvalidInputError('--speed must be within [0.1, 50]')
     instruction = args.instruction
@@ -201,7 +204,10 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     import matplotlib.pyplot as plt
     from matplotlib.patches import FancyBboxPatch, Rectangle
 
-    out.parent.mkdir(parents=True, exist_ok=True)
+    from ltl_instruct.core.planning.plot import check_output_path, save_png
+    if out == DEFAULT_OUT:   # the default folder is made; a path given is used as given
+        out.parent.mkdir(parents=True, exist_ok=True)
+    check_output_path(out)
     lo, hi = np.asarray(scene.bounds_min), np.asarray(scene.bounds_max)
     width = 11.0
     fig, ax = plt.subplots(figsize=(width, width * (hi[1] - lo[1]) / (hi[0] - lo[0]) + 1.2))
@@ -273,9 +279,7 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     ax.plot([], [], color='0.25', lw=6, label='walls / obstacles')
     ax.legend(loc='upper center', bbox_to_anchor=(0.5, -0.08), ncol=4, fontsize=8, frameon=False)
     fig.tight_layout()
-    fig.savefig(out, dpi=130)
-    plt.close(fig)
-    return out
+    return save_png(fig, out, dpi=130)
 
 
 if __name__ == '__main__':

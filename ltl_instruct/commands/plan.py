@@ -16,14 +16,16 @@ from ltl_instruct.core.automaton import compile_automaton
 from ltl_instruct.core.errors import ErrorCode, GroundingError, InvalidInputError, LtlInstructError
 from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap
 from ltl_instruct.core.spec import Formula, avoided_referents_of, parse_formula, referents_of
-from ltl_instruct.core.world.scene import Scene, load_scene, slug
+from ltl_instruct.core.world.builtin import resolve_scene
+from ltl_instruct.core.world.scene import Scene, slug
 
 HELP = 'plan a verified path for a formula in a scene'
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Declare the command's arguments."""
-    parser.add_argument('--scene', required=True, help='scene file (YAML or JSON, spec/scene.md)')
+    parser.add_argument('--scene', required=True,
+                        help='scene file (YAML or JSON, spec/scene.md), or the name of a built-in scene')
     parser.add_argument('--formula', required=True, help='task formula (spec/formula.md)')
     parser.add_argument('--start', help='start position x,y[,z] [m] (default: the scene robot\'s start)')
     parser.add_argument('--json', action='store_true', help='print the plan as one JSON object')
@@ -112,7 +114,10 @@ def run(args: argparse.Namespace) -> int:
 
     if len(args.formula) > 10_000:
         raise InvalidInputError('the formula is longer than 10,000 characters')
-    scene = load_scene(args.scene)
+    if args.png:   # before planning: a path that cannot be written fails now, not after minutes
+        from ltl_instruct.core.planning.plot import check_output_path
+        check_output_path(args.png)
+    scene = resolve_scene(args.scene)
     formula = parse_formula(args.formula)
     start = parse_start(args.start, scene)
     settings = PlannerSettings(near_threshold=args.near, fmt=FmtSettings(

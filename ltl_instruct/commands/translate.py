@@ -136,29 +136,35 @@ def _batch(translator: Any, path: str, out_path: Optional[str]) -> int:
         lines = list(iter_instructions(path))
     except OSError as e:
         raise InvalidInputError(f'cannot read {path}: {e}') from e
-    out = open(out_path, 'w', encoding='utf-8') if out_path else sys.stdout
+    try:
+        out = open(out_path, 'w', encoding='utf-8') if out_path else sys.stdout
+    except OSError as e:
+        raise InvalidInputError(f'cannot write {out_path}: {e.strerror or e}') from None
     failures = 0
     try:
-        for _, obj in lines:
-            if 'error' in obj:
-                rec: dict[str, Any] = {'instruction': None, 'error': obj['error']}
-                failures += 1
-            else:
-                try:
-                    rec = record(translator.translate(obj['instruction']))
-                except LtlInstructError as e:
-                    rec = {'instruction': obj['instruction'], 'error': e.to_dict()}
-                    guess = best_reading_of(e, obj['instruction'])
-                    if guess is not None:   # what the rest of the instruction names, formula withheld
-                        partial = record(guess)
-                        rec['referents'], rec['avoid'] = partial['referents'], partial['avoid']
+        try:
+            for _, obj in lines:
+                if 'error' in obj:
+                    rec: dict[str, Any] = {'instruction': None, 'error': obj['error']}
                     failures += 1
-                for key, value in obj.items():
-                    rec.setdefault(key, value)
-            out.write(json.dumps(rec) + '\n')
-    finally:
-        if out_path:
-            out.close()
+                else:
+                    try:
+                        rec = record(translator.translate(obj['instruction']))
+                    except LtlInstructError as e:
+                        rec = {'instruction': obj['instruction'], 'error': e.to_dict()}
+                        guess = best_reading_of(e, obj['instruction'])
+                        if guess is not None:   # what the rest of the instruction names, formula withheld
+                            partial = record(guess)
+                            rec['referents'], rec['avoid'] = partial['referents'], partial['avoid']
+                        failures += 1
+                    for key, value in obj.items():
+                        rec.setdefault(key, value)
+                out.write(json.dumps(rec) + '\n')
+        finally:
+            if out_path:
+                out.close()
+    except OSError as e:   # a full disk, /dev/full: the write fails with a message, not a traceback
+        raise InvalidInputError(f'cannot write {out_path or "standard output"}: {e.strerror or e}') from None
     return 1 if failures else 0
 
 

@@ -27,7 +27,7 @@ from std_msgs.msg import String
 from ltl_instruct import conversions as conv
 from ltl_instruct.core.automaton.english import describe_task
 from ltl_instruct.core.errors import (
-    ErrorCode, InvalidInputError, LimitExceededError, LtlInstructError, TranslationError,
+    ErrorCode, LimitExceededError, LtlInstructError, TranslationError,
 )
 from ltl_instruct.core.language.verification import reading_lines, warnings_of
 from ltl_instruct.core.spec import avoided_referents_of, parse_formula, referents_of
@@ -110,26 +110,7 @@ class LtlTranslatorNode(Node):
 
     def _read_instruction(self, fallback_id: str, text: str) -> tuple[str, str, Optional[str]]:
         """``(id, text, formula or None)`` of an instruction message."""
-        limit = self.params['max_instruction_chars']
-        stripped = text.strip()
-        if stripped.startswith('{'):
-            data = conv.parse_json_payload(stripped, conv.INSTRUCTION)
-            body, formula = data.get('text', ''), data.get('formula')
-            if not isinstance(body, str) or (formula is not None and not isinstance(formula, str)):
-                raise InvalidInputError('instruction "text" and "formula" must be strings',
-                                        details={'id': data['id']})
-            if not body.strip() and not formula:
-                raise InvalidInputError('instruction has neither "text" nor "formula"',
-                                        details={'id': data['id']})
-            if len(body) > limit or (formula and len(formula) > limit):
-                raise LimitExceededError(f'instruction longer than {limit} characters',
-                                         details={'id': data['id']})
-            return data['id'], body, formula
-        if len(text) > limit:
-            raise LimitExceededError(f'instruction of {len(text)} characters exceeds the limit of {limit}')
-        if not stripped:
-            raise InvalidInputError('empty instruction')
-        return fallback_id, text, None
+        return conv.read_instruction(text, fallback_id, self.params['max_instruction_chars'])
 
     def _serve(self, fallback_id: str, text: str, received: float) -> None:
         iid = fallback_id

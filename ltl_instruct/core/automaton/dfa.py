@@ -19,13 +19,20 @@ from typing import AbstractSet, Any, Iterable, Optional, Sequence
 
 from ltl_instruct.core.automaton.guards import GUARD_FALSE, GUARD_TRUE, Cube, Guard
 from ltl_instruct.core.automaton.progression import (
-    accepts_empty, assign_atoms, canonical_state, resolve_later, step_atoms, step_formula, to_nnf,
+    WorkBudget, accepts_empty, assign_atoms, canonical_state, resolve_later, step_atoms, step_formula,
+    to_nnf,
 )
 from ltl_instruct.core.errors import LimitExceededError, UnsatisfiableError
 from ltl_instruct.core.spec.ast import FALSE, Atom, Formula, Not, atoms_of, iter_subformulas
 from ltl_instruct.core.spec.parser import parse_formula
 
 DEFAULT_MAX_STATES = 2000
+DEFAULT_MAX_CUBES = 50_000
+"""Most edge-guard terms (cubes) one compilation may produce, over all states."""
+DEFAULT_MAX_STATE_CUBES = 512
+"""Most alternatives (DNF cubes) one automaton state may have."""
+DEFAULT_TIME_LIMIT_S = 5.0
+"""Seconds one compilation may take before it gives up with ``TIMEOUT``."""
 
 
 @dataclass(frozen=True)
@@ -69,7 +76,8 @@ def _current_atoms(f: Formula) -> list[Atom]:
     return list(order)
 
 
-def _expand(state: Formula, step_cache: dict, next_cache: dict) -> dict[Formula, list[Cube]]:
+def _expand(state: Formula, step_cache: dict, next_cache: dict,
+            budget: WorkBudget) -> dict[Formula, list[Cube]]:
     """Successor formula -> cubes of letters leading there from ``state``.
 
     A Shannon expansion of the state's step formula: each branch fixes one atom and
@@ -81,10 +89,12 @@ def _expand(state: Formula, step_cache: dict, next_cache: dict) -> dict[Formula,
     events_in_play = [a for a in atoms_of(state) if a.is_event]
 
     def rec(f: Formula, values: dict[Atom, bool], forced_false: frozenset[Atom]) -> None:
+        budget.check()
         if not step_atoms(f):
+            budget.add_cubes()
             nxt = next_cache.get(f)
             if nxt is None:
-                nxt = next_cache[f] = canonical_state(resolve_later(f))
+                nxt = next_cache[f] = canonical_state(resolve_later(f), budget)
             out.setdefault(nxt, []).append(
                 Cube(frozenset(a for a, v in values.items() if v),
                      frozenset(a for a, v in values.items() if not v and a not in forced_false)))
@@ -244,18 +254,37 @@ class Automaton:
         }
 
 
-def compile_automaton(formula: Formula | str, max_states: int = DEFAULT_MAX_STATES) -> Automaton:
+def compile_automaton(formula: Formula | str, max_states: int = DEFAULT_MAX_STATES,
+                      max_cubes: int = DEFAULT_MAX_CUBES,
+                      time_limit_s: Optional[float] = DEFAULT_TIME_LIMIT_S) -> Automaton:
     """Compile a formula (AST or text) into an :class:`Automaton`.
+
+    Parameters
+    ----------
+    formula: the task, as an AST or text.
+    max_states: most automaton states.
+    max_cubes: most edge-guard terms over the whole compilation.
+    time_limit_s: seconds the compilation may take (None: no deadline).
 
     Raises
     ------
     FormulaSyntaxError
         If ``formula`` is text that does not parse.
     LimitExceededError
-        If more than ``max_states`` states are reached.
+        ``LIMIT_EXCEEDED`` if more than ``max_states`` states, more than ``max_cubes``
+        guard terms or more than :data:`DEFAULT_MAX_STATE_CUBES` alternatives in one
+        state are needed, or the normal form is too large; ``TIMEOUT`` past ``time_limit_s``.
     """
     f = parse_formula(formula) if isinstance(formula, str) else formula
-    init = canonical_state(to_nnf(f))
+    try:
+        return _compile(f, max_states, WorkBudget(time_limit_s, max_cubes, DEFAULT_MAX_STATE_CUBES))
+    except RecursionError:  # a last guard: formulas built in code may nest deeper than parsed ones
+        raise LimitExceededError('the formula nests too deeply to compile; simplify the task',
+                                 details={'limit': 'recursion'}) from None
+
+
+def _compile(f: Formula, max_states: int, budget: WorkBudget) -> Automaton:
+    init = canonical_state(to_nnf(f), budget)
     index: dict[Formula, int] = {init: 0}
     states: list[Formula] = [init]
     raw: list[dict[int, list[Cube]]] = []
@@ -263,7 +292,7 @@ def compile_automaton(formula: Formula | str, max_states: int = DEFAULT_MAX_STAT
     next_cache: dict = {}
     i = 0
     while i < len(states):
-        succ = _expand(states[i], step_cache, next_cache)
+        succ = _expand(states[i], step_cache, next_cache, budget)
         row: dict[int, list[Cube]] = {}
         for nxt, cubes in succ.items():
             j = index.get(nxt)
@@ -277,6 +306,7 @@ def compile_automaton(formula: Formula | str, max_states: int = DEFAULT_MAX_STAT
             row.setdefault(j, []).extend(cubes)
         raw.append(row)
         i += 1
+    budget.check()
     return _merge_dead_states(f, states, raw)
 
 

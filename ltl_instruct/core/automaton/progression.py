@@ -17,10 +17,12 @@ negation sits only on atoms, so that states compare structurally.
 """
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import AbstractSet, Callable
 
+from ltl_instruct.core.errors import ErrorCode, LimitExceededError
 from ltl_instruct.core.spec.ast import (
     FALSE, TRUE, Always, And, Atom, Const, Eventually, Formula, Iff, Implies, Next, Not, Or,
     Release, Until, WeakNext, WeakUntil, _hash_init, conj, disj,
@@ -30,52 +32,131 @@ EVENTUALLY_TRUE = Eventually(TRUE)   # the trace goes on (at least one more step
 ALWAYS_FALSE = Always(FALSE)         # the trace ends here
 
 
-def to_nnf(f: Formula, negate: bool = False) -> Formula:
+MAX_NNF_SIZE = 20_000
+"""Most nodes the negation normal form of a formula may have, counted as a tree.
+
+``a <-> b`` becomes ``a & b | !a & !b``, so each ``<->`` doubles its operands: a
+chain of n equivalences grows as 2^n. Larger inputs get ``LIMIT_EXCEEDED`` before
+any work is done.
+"""
+
+
+def nnf_size(f: Formula, limit: int = MAX_NNF_SIZE) -> int:
+    """Tree size of the negation normal form of ``f`` (capped at ``limit + 1``), computed iteratively."""
+    size: dict[int, int] = {}
+    stack: list[tuple[Formula, bool]] = [(f, False)]
+    while stack:
+        node, ready = stack.pop()
+        if id(node) in size:
+            continue
+        kids = node.children()
+        if not ready and any(id(k) not in size for k in kids):
+            stack.append((node, True))
+            stack.extend((k, False) for k in kids if id(k) not in size)
+            continue
+        total = 1 + sum(size[id(k)] for k in kids)
+        if isinstance(node, Iff):  # (a & b) | (!a & !b): both operands twice
+            total = 3 + 2 * (size[id(node.left)] + size[id(node.right)])
+        elif isinstance(node, WeakUntil):  # !(a W b) == !b U (!a & !b): b twice
+            total += size[id(node.right)] + 1
+        size[id(node)] = min(total, limit + 1)
+    return size[id(f)]
+
+
+def _nnf_deps(f: Formula, negate: bool) -> list[tuple[Formula, bool]]:
+    """Return the (sub-formula, negate) pairs the NNF of ``(f, negate)`` is built from."""
+    if isinstance(f, Not):
+        return [(f.operand, not negate)]
+    if isinstance(f, (And, Or)):
+        return [(o, negate) for o in f.operands]
+    if isinstance(f, Implies):
+        return [(f.left, not negate), (f.right, negate)]
+    if isinstance(f, Iff):
+        return [(f.left, False), (f.left, True), (f.right, False), (f.right, True)]
+    if isinstance(f, (Next, WeakNext, Eventually, Always)):
+        return [(f.operand, negate)]
+    if isinstance(f, (Until, Release, WeakUntil)):
+        return [(f.left, negate), (f.right, negate)]
+    return []
+
+
+def to_nnf(f: Formula, negate: bool = False, max_size: int = MAX_NNF_SIZE) -> Formula:
     """Negation normal form over ``F G X WX U R W & |`` with ``->``/``<->`` expanded.
+
+    Works with an explicit stack (no recursion) and shares the normal form of a
+    sub-formula that occurs twice, so deep formulas normalise without
+    ``RecursionError``.
 
     Parameters
     ----------
     f: formula to normalise.
     negate: return the NNF of ``!f`` instead.
+    max_size: most nodes the normal form may have (see :data:`MAX_NNF_SIZE`).
+
+    Raises
+    ------
+    LimitExceededError
+        When the normal form would have more than ``max_size`` nodes.
     """
+    size = nnf_size(f, max_size)
+    if size > max_size:
+        raise LimitExceededError(
+            f'the formula expands to more than {max_size} nodes when its "->", "<->" and "W" '
+            'are written out (each "<->" doubles its operands); simplify the task',
+            details={'limit': 'max_nnf_size', 'value': max_size})
+    memo: dict[tuple[Formula, bool], Formula] = {}
+    stack: list[tuple[Formula, bool, bool]] = [(f, negate, False)]
+    while stack:
+        node, neg_, ready = stack.pop()
+        if (node, neg_) in memo:
+            continue
+        deps = _nnf_deps(node, neg_)
+        if not ready:
+            missing = [d for d in deps if d not in memo]
+            if missing:
+                stack.append((node, neg_, True))
+                stack.extend((g, n, False) for g, n in missing)
+                continue
+        memo[(node, neg_)] = _nnf_node(node, neg_, [memo[d] for d in deps])
+    return memo[(f, negate)]
+
+
+def _nnf_node(f: Formula, negate: bool, parts: list[Formula]) -> Formula:
+    """NNF of one node from the NNFs of its dependencies (in :func:`_nnf_deps` order)."""
     if isinstance(f, Const):
         return TRUE if f.value != negate else FALSE
     if isinstance(f, Atom):
         return Not(f) if negate else f
     if isinstance(f, Not):
-        return to_nnf(f.operand, not negate)
+        return parts[0]
     if isinstance(f, And):
-        parts = [to_nnf(o, negate) for o in f.operands]
         return disj(*parts) if negate else conj(*parts)
     if isinstance(f, Or):
-        parts = [to_nnf(o, negate) for o in f.operands]
         return conj(*parts) if negate else disj(*parts)
     if isinstance(f, Implies):  # a -> b == !a | b
-        return to_nnf(Or((Not(f.left), f.right)), negate)
+        return conj(*parts) if negate else disj(*parts)
     if isinstance(f, Iff):      # (a & b) | (!a & !b)
-        a, b = f.left, f.right
-        return to_nnf(Or((And((a, b)), And((Not(a), Not(b))))), negate)
+        a, na, b, nb = parts
+        if negate:
+            return conj(disj(na, nb), disj(a, b))
+        return disj(conj(a, b), conj(na, nb))
     if isinstance(f, Next):
-        return WeakNext(to_nnf(f.operand, True)) if negate else Next(to_nnf(f.operand))
+        return WeakNext(parts[0]) if negate else Next(parts[0])
     if isinstance(f, WeakNext):
-        return Next(to_nnf(f.operand, True)) if negate else WeakNext(to_nnf(f.operand))
+        return Next(parts[0]) if negate else WeakNext(parts[0])
     if isinstance(f, Eventually):
-        return Always(to_nnf(f.operand, True)) if negate else Eventually(to_nnf(f.operand))
+        return Always(parts[0]) if negate else Eventually(parts[0])
     if isinstance(f, Always):
-        return Eventually(to_nnf(f.operand, True)) if negate else Always(to_nnf(f.operand))
+        return Eventually(parts[0]) if negate else Always(parts[0])
     if isinstance(f, Until):     # !(a U b) == !a R !b
-        if negate:
-            return Release(to_nnf(f.left, True), to_nnf(f.right, True))
-        return Until(to_nnf(f.left), to_nnf(f.right))
+        return Release(*parts) if negate else Until(*parts)
     if isinstance(f, Release):   # !(a R b) == !a U !b
-        if negate:
-            return Until(to_nnf(f.left, True), to_nnf(f.right, True))
-        return Release(to_nnf(f.left), to_nnf(f.right))
+        return Until(*parts) if negate else Release(*parts)
     if isinstance(f, WeakUntil):  # !(a W b) == !b U (!a & !b)
         if negate:
-            nb = to_nnf(f.right, True)
-            return Until(nb, conj(to_nnf(f.left, True), nb))
-        return WeakUntil(to_nnf(f.left), to_nnf(f.right))
+            na, nb = parts
+            return Until(nb, conj(na, nb))
+        return WeakUntil(*parts)
     raise TypeError(f'not a formula node: {f!r}')
 
 
@@ -240,20 +321,74 @@ def _is_eventuality(f: Formula) -> bool:
     return isinstance(f, (Eventually, Until, Next, Atom, Not))
 
 
-def canonical_state(f: Formula) -> Formula:
+class WorkBudget:
+    """Bounds on the work of one automaton compilation: a deadline and a cube count.
+
+    Shared by the state canonicaliser and the edge expansion; :meth:`check` raises a
+    typed error instead of letting a hostile formula (``a0 <-> a1 <-> ... <-> a13``,
+    ``a0 U a1 U ... U a19``) run for minutes and fill memory.
+
+    Parameters
+    ----------
+    time_limit_s: seconds the compilation may take (None: no deadline).
+    max_cubes: cubes (edge-guard terms) the whole compilation may produce.
+    max_state_cubes: cubes the disjunctive normal form of one state may have.
+    """
+
+    def __init__(self, time_limit_s: float | None = 5.0, max_cubes: int = 50_000,
+                 max_state_cubes: int = 512) -> None:
+        self.time_limit_s = time_limit_s
+        self.deadline = None if time_limit_s is None else time.monotonic() + time_limit_s
+        self.max_cubes = max_cubes
+        self.max_state_cubes = max_state_cubes
+        self.cubes = 0
+        self._calls = 0
+
+    def check(self) -> None:
+        """Raise ``TIMEOUT`` once the deadline has passed (the clock is read every 64 calls)."""
+        self._calls += 1
+        if self._calls & 63:
+            return
+        if self.deadline is not None and time.monotonic() > self.deadline:
+            raise LimitExceededError(
+                f'building the automaton took longer than {self.time_limit_s:g} s; '
+                'simplify the task', code=ErrorCode.TIMEOUT,
+                details={'limit': 'time_limit_s', 'value': self.time_limit_s})
+
+    def add_cubes(self, n: int = 1) -> None:
+        """Count ``n`` more edge cubes; raise ``LIMIT_EXCEEDED`` past ``max_cubes``."""
+        self.cubes += n
+        if self.cubes > self.max_cubes:
+            raise LimitExceededError(
+                f'the automaton needs more than {self.max_cubes} guard terms; simplify the task',
+                details={'limit': 'max_cubes', 'value': self.max_cubes})
+        self.check()
+
+    def state_cubes(self, n: int) -> None:
+        """Check the size of one state's normal form."""
+        if n > self.max_state_cubes:
+            raise LimitExceededError(
+                f'an automaton state needs more than {self.max_state_cubes} alternatives; '
+                'simplify the task',
+                details={'limit': 'max_state_cubes', 'value': self.max_state_cubes})
+        self.check()
+
+
+def canonical_state(f: Formula, budget: WorkBudget | None = None) -> Formula:
     """Canonical DNF of a state formula over its elementary (temporal or literal) parts.
 
     Progression alone can build ever-deeper ``&``/``|`` nestings of the same few
     obligations (e.g. for ``(a U b) U c``), so states would never repeat. Writing
     every state as a set of cubes of elementary sub-formulas, with subsumed and
     contradictory cubes dropped, keeps the state space finite and merges
-    syntactically different but identical obligations.
+    syntactically different but identical obligations. ``budget`` bounds the
+    number of cubes and the time (see :class:`WorkBudget`).
     """
-    cubes = _dnf(f)
+    cubes = _dnf(f, budget or WorkBudget(time_limit_s=None))
     return disj(*(conj(*c) for c in cubes))
 
 
-def _dnf(f: Formula) -> list[frozenset[Formula]]:
+def _dnf(f: Formula, budget: WorkBudget) -> list[frozenset[Formula]]:
     if f == TRUE:
         return [frozenset()]
     if f == FALSE:
@@ -261,13 +396,15 @@ def _dnf(f: Formula) -> list[frozenset[Formula]]:
     if isinstance(f, Or):
         out: list[frozenset[Formula]] = []
         for o in f.operands:
-            out.extend(_dnf(o))
-        return _absorb(out)
+            out.extend(_dnf(o, budget))
+            budget.state_cubes(len(out))
+        return _absorb(out, budget)
     if isinstance(f, And):
         acc: list[frozenset[Formula]] = [frozenset()]
         for o in f.operands:
-            part = _dnf(o)
-            acc = _absorb([a | b for a in acc for b in part if _consistent(a | b)])
+            part = _dnf(o, budget)
+            budget.state_cubes(len(acc) * len(part))
+            acc = _absorb([a | b for a in acc for b in part if _consistent(a | b)], budget)
             if not acc:
                 return []
         return acc
@@ -284,16 +421,20 @@ def _consistent(cube: frozenset[Formula]) -> bool:
     return True
 
 
-def _absorb(cubes: list[frozenset[Formula]]) -> list[frozenset[Formula]]:
+def _absorb(cubes: list[frozenset[Formula]], budget: WorkBudget) -> list[frozenset[Formula]]:
     uniq = sorted(set(cubes), key=lambda c: (len(c), sorted(map(str, c))))
     kept: list[frozenset[Formula]] = []
     for c in uniq:
         if not any(k <= c for k in kept):
             kept.append(c)
     if len(kept) > 1:  # semantic absorption: drop a cube that implies another one
-        kept = [c for i, c in enumerate(kept)
-                if not any(j != i and _cube_implies(c, d) and not (j > i and _cube_implies(d, c))
-                           for j, d in enumerate(kept))]
+        out = []
+        for i, c in enumerate(kept):
+            budget.check()  # quadratic in the cubes: keep to the deadline
+            if not any(j != i and _cube_implies(c, d) and not (j > i and _cube_implies(d, c))
+                       for j, d in enumerate(kept)):
+                out.append(c)
+        kept = out
     return kept
 
 

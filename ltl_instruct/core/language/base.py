@@ -9,7 +9,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Protocol, runtime_checkable
 
-from ltl_instruct.core.spec import Formula, avoided_referents_of, referents_of
+from ltl_instruct.core.errors import LimitExceededError
+from ltl_instruct.core.spec import Formula, avoided_referents_of, atoms_of, parse_formula, referents_of
+from ltl_instruct.core.spec.parser import DEFAULT_LIMITS
 
 
 @dataclass(frozen=True)
@@ -51,3 +53,22 @@ class Translator(Protocol):
     def translate(self, instruction: str) -> Translation:
         """Translate one instruction."""
         ...
+
+
+def check_translation_limits(formula: Formula) -> Formula:
+    """Return ``formula`` if its text is within the parser's limits, else raise ``LIMIT_EXCEEDED``.
+
+    A translation is sent on as text and parsed again downstream, so a formula the
+    parser would refuse (more than 64 atoms, too deep, too long) is refused here,
+    not printed.
+    """
+    n_atoms = len(atoms_of(formula))
+    if n_atoms > DEFAULT_LIMITS.max_atoms:
+        raise LimitExceededError(
+            f'the translation has {n_atoms} distinct atoms; the limit is {DEFAULT_LIMITS.max_atoms}',
+            details={'limit': 'max_atoms', 'value': DEFAULT_LIMITS.max_atoms, 'atoms': n_atoms})
+    try:
+        parse_formula(str(formula))
+    except LimitExceededError as e:
+        raise LimitExceededError(f'the translation is too large: {e.message}', details=e.details) from None
+    return formula

@@ -33,7 +33,7 @@ from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError, LtlInstructError, TranslationError
 from ltl_instruct.core.language import chatter, fallback, orders
-from ltl_instruct.core.language.base import Translation
+from ltl_instruct.core.language.base import Translation, check_translation_limits
 from ltl_instruct.core.language.idioms import levels_as_floors, rewrite_idioms
 from ltl_instruct.core.language.lexicon import (
     AVOID_BY_FIRST_WORD as _AVOID_BY_FIRST, AVOID_FILLER, CLAUSE_OPENING_WORDS, CLAUSE_STARTERS,
@@ -51,7 +51,8 @@ from ltl_instruct.core.language.reactions import RuleReader
 from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
 from ltl_instruct.core.language.spelling import Speller
 from ltl_instruct.core.language.task import (  # noqa: F401  (the count builders are part of this API)
-    Step, Task as _Task, at_least, at_most, conjoin as _and, disjoin as _or, exactly, near_atom as _near,
+    Step, Task as _Task, at_least, at_most, check_count, conjoin as _and, disjoin as _or, exactly,
+    near_atom as _near,
     never_all as _never, render, until_avoid as _until_avoid,
 )
 from ltl_instruct.core.language.text import (
@@ -64,6 +65,34 @@ from ltl_instruct.core.spec import (
 )
 
 MAX_INSTRUCTION_CHARS = 2000
+
+# a number written before a count unit: "50 times", "-3 times", "2.5 times", "1,000 visits"
+_COUNT_RE = re.compile(
+    r'(?:(?<=\s)|^|(?<=[(,;:]))(?P<n>[-+\u2212]?\d[\d,]*(?:\.\d+)?)\s*'
+    r'(?:(?:separate|different|distinct)\s+)?(?:x\b|times?\b|occasions?\b|visits?\b|instances?\b|passes\b)',
+    re.IGNORECASE)
+
+
+def check_counts(instruction: str) -> None:
+    """Refuse counts an instruction names that are not whole numbers from 0 to ``MAX_COUNT``.
+
+    Raises
+    ------
+    LimitExceededError
+        A count larger than :data:`~ltl_instruct.core.language.task.MAX_COUNT` ("50 times").
+    TranslationError
+        A negative or fractional count ("-3 times", "2.5 times").
+    """
+    for m in _COUNT_RE.finditer(instruction):
+        text = m.group('n').replace('\u2212', '-')
+        digits = text.replace(',', '')
+        if ',' in text and not re.fullmatch(r'[-+]?\d{1,3}(,\d{3})+(?:\.\d+)?', text):
+            continue   # "rooms 1,2 times": a list, not a thousands separator
+        if re.fullmatch(r'[-+]?\d+', digits):
+            check_count(int(digits))
+        else:
+            raise TranslationError(f'a count must be a whole number of times, not {text!r} '
+                                   f'("{m.group(0)}")', details={'count': text})
 
 
 # Words that put an avoidance over the whole run, whatever scope the sentence opened with.
@@ -172,6 +201,7 @@ class OfflineTranslator:
         if len(instruction) > MAX_INSTRUCTION_CHARS:
             raise LimitExceededError(f'the instruction is {len(instruction)} characters long; '
                                      f'the limit is {MAX_INSTRUCTION_CHARS}')
+        check_counts(instruction)
         started = time.perf_counter()
         notes: list[str] = []
         try:
@@ -198,6 +228,7 @@ class OfflineTranslator:
             raise LtlInstructError(f'the offline translator failed on this instruction ({type(e).__name__}: '
                                    f'{e}); please report it', ErrorCode.INTERNAL_ERROR,
                                    {'instruction': instruction}) from e
+        check_translation_limits(formula)
         elapsed = time.perf_counter() - started
         extra: dict[str, object] = {'seconds': elapsed, 'tokens': ' '.join(tokens)}
         if reader.unread:

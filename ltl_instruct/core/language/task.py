@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from itertools import permutations
 from typing import Optional, Sequence
 
-from ltl_instruct.core.errors import TranslationError
+from ltl_instruct.core.errors import LimitExceededError, TranslationError
 from ltl_instruct.core.spec import (
     Always, And, Atom, Descriptor, Eventually, Formula, Not, Or, Until, WeakUntil,
 )
@@ -48,8 +48,38 @@ def never_all(ds: Sequence[Descriptor]) -> list[Formula]:
     return [Always(Not(near_atom(d))) for d in ds]
 
 
+MAX_COUNT = 20
+"""The largest count an instruction may name ("visit the kitchen 20 times").
+
+Each visit nests the formula four levels deeper; larger counts are refused with
+``LIMIT_EXCEEDED`` rather than building formulas no stage downstream can handle.
+"""
+
+
+def check_count(n: object, what: str = 'count') -> int:
+    """Return ``n`` if it is a whole number from 0 to :data:`MAX_COUNT`, else raise a typed error.
+
+    Raises
+    ------
+    LimitExceededError
+        ``n`` is larger than :data:`MAX_COUNT`.
+    TranslationError
+        ``n`` is negative or not a whole number.
+    """
+    if isinstance(n, bool) or not isinstance(n, int):
+        raise TranslationError(f'a {what} must be a whole number of times, not {n!r}',
+                               details={'count': str(n)})
+    if n < 0:
+        raise TranslationError(f'a {what} cannot be negative ({n} times)', details={'count': n})
+    if n > MAX_COUNT:
+        raise LimitExceededError(f'the {what} {n} is larger than the maximum of {MAX_COUNT} times',
+                                 details={'limit': 'max_count', 'value': MAX_COUNT, 'count': n})
+    return n
+
+
 def at_least(x: Formula, n: int, tail: Optional[Formula] = None) -> Formula:
     """``n`` separate visits of ``x`` (then ``tail``): ``F (x & F (!x & F (x ...)))``."""
+    check_count(n)
     body: Optional[Formula] = tail
     for k in range(n):
         body = Eventually(conjoin(x, body)) if body is not None else Eventually(x)
@@ -61,6 +91,7 @@ def at_least(x: Formula, n: int, tail: Optional[Formula] = None) -> Formula:
 
 def at_most(x: Formula, n: int) -> Formula:
     """At most ``n`` separate visits of ``x`` (the development set's convention for n = 1)."""
+    check_count(n)
     body: Formula = Always(Not(x))
     for k in range(n):
         inner = WeakUntil(x, body if k == 0 else And((Not(x), body)))
@@ -70,6 +101,7 @@ def at_most(x: Formula, n: int) -> Formula:
 
 def exactly(x: Formula, n: int) -> Formula:
     """Exactly ``n`` separate visits of ``x``."""
+    check_count(n)
     body: Formula = Until(Not(x), And((x, WeakUntil(x, Always(Not(x))))))
     for _ in range(n - 1):
         body = Until(Not(x), And((x, Until(x, And((Not(x), body))))))

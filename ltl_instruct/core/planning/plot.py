@@ -10,9 +10,11 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Optional, Sequence, Union
+from typing import Any, Optional, Sequence, Union
 
 import numpy as np
+
+from ltl_instruct.core.errors import InvalidInputError
 
 from ltl_instruct.core.planning.occupancy import PlanningWorld
 from ltl_instruct.core.planning.regions import TaskProgressionMap
@@ -131,10 +133,36 @@ def render_plan(plan: TaskPlan, world: PlanningWorld, out: Union[str, Path],
     for a in flat[k:]:
         a.axis('off')
     fig.tight_layout()
+    return save_png(fig, out, dpi=110)
+
+
+def check_output_path(out: Union[str, Path]) -> Path:
+    """Return ``out`` as a path if a file can be written there, else raise ``INVALID_INPUT``.
+
+    The path is used as given: no suffix is added and no directory is created, so
+    the folder must exist already.
+    """
     path = Path(out)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    if not str(out) or path.is_dir():
+        raise InvalidInputError(f'cannot write {str(out)!r}: not a file path', details={'file': str(out)})
+    parent = path.parent
+    if not parent.is_dir():
+        raise InvalidInputError(f'cannot write {path}: the folder {parent} does not exist',
+                                details={'file': str(path)})
+    return path
+
+
+def save_png(fig: Any, out: Union[str, Path], dpi: int) -> Path:
+    """Write ``fig`` as PNG to exactly ``out`` and close it; a failed write is ``INVALID_INPUT``."""
+    import matplotlib.pyplot as plt
+    path = check_output_path(out)
+    try:
+        fig.savefig(path, dpi=dpi, format='png')   # format given: matplotlib adds no suffix
+    except OSError as e:
+        raise InvalidInputError(f'cannot write {path}: {e.strerror or e}',
+                                details={'file': str(path)}) from None
+    finally:
+        plt.close(fig)
     return path
 
 

@@ -33,11 +33,15 @@ class ParseLimits:
     max_length: characters of formula text.
     max_depth: nesting depth of operators, parentheses and descriptors.
     max_atoms: distinct atoms.
+    max_descriptor_depth: nesting of descriptors inside descriptors
+        (``a::isabove(b::isabove(c))`` is 2); descriptors are printed and described
+        recursively, so this bound keeps them far from Python's recursion limit.
     """
 
     max_length: int = 20_000
     max_depth: int = 200
     max_atoms: int = 64
+    max_descriptor_depth: int = 32
 
 
 DEFAULT_LIMITS = ParseLimits()
@@ -109,6 +113,8 @@ class _Parser:
         self.tokens = tokenize(text)
         self.i = 0
         self.depth = 0
+        self.unary_depth = 0
+        self.descriptor_depth = 0
         self.atoms: set[Atom] = set()
 
     # -- helpers
@@ -204,7 +210,16 @@ class _Parser:
                 raise LimitExceededError(
                     f'more than {self.limits.max_depth} unary operators in a row',
                     details={'limit': 'max_depth', 'value': self.limits.max_depth})
+        # unary operators nest too: "!!(!!(...))" may hold at most max_depth of them on any
+        # path, so the AST stays within about twice max_depth for the stages after the parser
+        if ops and self.unary_depth + len(ops) > self.limits.max_depth:
+            raise LimitExceededError(
+                f'formula nests more than {self.limits.max_depth} unary operators '
+                f'(at column {_line_col(self.text, t.pos)[1]})',
+                details={'limit': 'max_depth', 'value': self.limits.max_depth})
+        self.unary_depth += len(ops)
         f = self.primary()
+        self.unary_depth -= len(ops)
         for op in reversed(ops):
             f = {'!': Not, 'F': Eventually, 'G': Always, 'X': Next}[op](f)
         return f
@@ -286,6 +301,12 @@ class _Parser:
     def descriptor(self) -> Descriptor:
         self.enter()
         t = self.tok
+        self.descriptor_depth += 1
+        if self.descriptor_depth > self.limits.max_descriptor_depth + 1:
+            raise LimitExceededError(
+                f'descriptors nest deeper than {self.limits.max_descriptor_depth} levels '
+                f'(at column {_line_col(self.text, t.pos)[1]})',
+                details={'limit': 'max_descriptor_depth', 'value': self.limits.max_descriptor_depth})
         if t.kind == 'upper':  # e.g. near[X]: upper-case single letters are operators
             raise self.error(f'invalid name {t.text!r}', 'a lower-case snake_case name')
         self.check_name(t)
@@ -310,6 +331,7 @@ class _Parser:
                                  f'{arity} argument{"s" if arity > 1 else ""}', c)
             relations.append(Relation(c.text, tuple(args)))
         self.leave()
+        self.descriptor_depth -= 1
         return Descriptor(t.text, tuple(relations))
 
 

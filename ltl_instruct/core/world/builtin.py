@@ -7,6 +7,7 @@ as 3D obstacles and named landmarks.
 """
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import Union
 
@@ -41,11 +42,18 @@ def builtin_scene_path(name: str) -> Path:
 def resolve_scene(name_or_path: Union[str, Path]) -> Scene:
     """Load a built-in scene by name, or a scene file by path.
 
-    A value naming an existing file (or ending in ``.yaml``/``.yml``/``.json``) is read
-    as a file; anything else is looked up among the built-in scenes.
+    Every command and node that takes a scene goes through here. A value that exists
+    on disk, ends in ``.yaml``/``.yml``/``.json`` or holds a path separator is read as
+    a file (a FIFO or folder is refused there); anything else is looked up among the
+    built-in scenes.
+
+    Raises
+    ------
+    SceneError
+        An unknown built-in name (the message lists the known ones) or a bad file.
     """
     text = str(name_or_path)
     p = Path(text)
-    if p.suffix in ('.yaml', '.yml', '.json') or p.is_file():
+    if p.suffix in ('.yaml', '.yml', '.json') or os.sep in text or '/' in text or p.exists():
         return load_scene(p)
     return load_scene(builtin_scene_path(text))

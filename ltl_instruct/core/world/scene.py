@@ -7,7 +7,9 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import re
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping, Optional, Sequence, Union
@@ -15,9 +17,18 @@ from typing import Any, Mapping, Optional, Sequence, Union
 import numpy as np
 import yaml
 
-from ltl_instruct.core.errors import SceneError
+from ltl_instruct.core.errors import ErrorCode, SceneError
 
 ROBOT_KINDS = ('ground', 'drone')
+
+MAX_SCENE_BYTES = 5_000_000
+"""Largest scene file read [bytes]."""
+MAX_SCENE_EXTENT_M = 10_000.0
+"""Largest extent of a scene's bounds along any axis [m], and the largest absolute coordinate."""
+MAX_YAML_ALIASES = 100
+"""Most YAML aliases (``*name``) a scene file may use."""
+MAX_YAML_NODES = 200_000
+"""Most YAML nodes (values, lists, mappings) a scene file may hold."""
 
 
 @dataclass(frozen=True)
@@ -199,19 +210,50 @@ class _Ctx:
             raise self.fail(where, f'expected a list of {n} numbers, got {v!r}')
         out = []
         for x in v:
-            if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
-                raise self.fail(where, f'expected finite numbers, got {v!r}')
-            if positive and x <= 0:
-                raise self.fail(where, f'sizes must be positive, got {v!r}')
-            out.append(float(x))
+            f = self._finite(x)
+            if f is None:
+                raise self.fail(where, f'expected finite numbers, got {_short(v)}')
+            if abs(f) > MAX_SCENE_EXTENT_M:
+                raise self.fail(where, f'{_short(x)} m is beyond the largest scene coordinate '
+                                       f'({MAX_SCENE_EXTENT_M:g} m)')
+            if positive and f <= 0:
+                raise self.fail(where, f'sizes must be positive, got {_short(v)}')
+            out.append(f)
         return tuple(out)
 
     def num(self, v: Any, where: str, positive: bool = False) -> float:
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-            raise self.fail(where, f'expected a finite number, got {v!r}')
-        if positive and v <= 0:
-            raise self.fail(where, f'expected a positive number, got {v!r}')
-        return float(v)
+        f = self._finite(v)
+        if f is None:
+            raise self.fail(where, f'expected a finite number, got {_short(v)}')
+        if abs(f) > MAX_SCENE_EXTENT_M:
+            raise self.fail(where, f'{_short(v)} is beyond the largest scene value ({MAX_SCENE_EXTENT_M:g})')
+        if positive and f <= 0:
+            raise self.fail(where, f'expected a positive number, got {_short(v)}')
+        return f
+
+    @staticmethod
+    def _finite(x: Any) -> Optional[float]:
+        """``x`` as a finite float, or None (not a number, a boolean, NaN, inf, or too big for a float)."""
+        if isinstance(x, bool) or not isinstance(x, (int, float)):
+            return None
+        try:
+            f = float(x)
+        except OverflowError:   # an integer with hundreds of digits
+            return None
+        return f if math.isfinite(f) else None
+
+    def seq(self, v: Any, where: str) -> list:
+        """``v`` as a list (None or absent: empty); anything else names the key."""
+        if v is None:
+            return []
+        if not isinstance(v, list):
+            raise self.fail(where, f'expected a list, got {type(v).__name__} {_short(v)}')
+        return v
+
+
+def _short(v: Any) -> str:
+    text = repr(v)
+    return text if len(text) <= 80 else text[:77] + '...'
 
 
 def scene_from_dict(data: Any, source: str = '<memory>') -> Scene:
@@ -233,6 +275,9 @@ def scene_from_dict(data: Any, source: str = '<memory>') -> Scene:
     bmax = c.vec(b['max'], 'bounds.max')
     if any(lo >= hi for lo, hi in zip(bmin, bmax)):
         raise c.fail('bounds', f'min {bmin} must be below max {bmax} on every axis')
+    if any(hi - lo > MAX_SCENE_EXTENT_M for lo, hi in zip(bmin, bmax)):
+        raise c.fail('bounds', f'the scene spans more than {MAX_SCENE_EXTENT_M:g} m along an axis '
+                               f'(min {bmin}, max {bmax})')
     r = c.keys(d.get('robot', {}), _ROBOT_KEYS, 'robot')
     kind = r.get('kind', 'ground')
     if kind not in ROBOT_KINDS:
@@ -249,14 +294,12 @@ def scene_from_dict(data: Any, source: str = '<memory>') -> Scene:
         if kind != 'drone':
             raise c.fail('altitude', 'only a drone has an altitude band')
     obstacles = []
-    for i, ob in enumerate(d.get('obstacles') or []):
+    for i, ob in enumerate(c.seq(d.get('obstacles'), 'obstacles')):
         o = c.keys(ob, _OBSTACLE_KEYS, f'obstacles[{i}]', required=('center', 'size'))
         obstacles.append(Box(c.vec(o['center'], f'obstacles[{i}].center'),
                              c.vec(o['size'], f'obstacles[{i}].size', positive=True)))
     objects: list[SceneObject] = []
-    raw_objects = d.get('objects') or []
-    if not isinstance(raw_objects, list):
-        raise c.fail('objects', 'expected a list')
+    raw_objects = c.seq(d.get('objects'), 'objects')
     slugs = [slug(str(ob.get('label', ''))) if isinstance(ob, Mapping) else '' for ob in raw_objects]
     counts: dict[str, int] = {}
     for s in slugs:
@@ -282,16 +325,91 @@ def scene_from_dict(data: Any, source: str = '<memory>') -> Scene:
     return Scene(name, bmin, bmax, robot, tuple(obstacles), tuple(objects), altitude, source)
 
 
-def load_scene(path: Union[str, Path]) -> Scene:
-    """Load a scene from a YAML or JSON file (see ``spec/scene.md``)."""
-    p = Path(path)
+class _SceneLoader(yaml.SafeLoader):
+    """YAML 1.1 safe loader with YAML 1.2 booleans and bounded aliases and nodes.
+
+    Only ``true``/``false`` (any case) are booleans: ``on``, ``off``, ``yes``, ``no``,
+    ``y``, ``n`` stay text, so the spec's ``on: table`` is the key ``'on'``, not ``True``.
+    """
+
+    def __init__(self, stream: str) -> None:
+        super().__init__(stream)
+        self._aliases = 0
+        self._nodes = 0
+
+    def compose_node(self, parent: Any, index: Any) -> Any:
+        """Count nodes and aliases while composing (a "billion laughs" file stops early)."""
+        if self.check_event(yaml.AliasEvent):
+            self._aliases += 1
+            if self._aliases > MAX_YAML_ALIASES:
+                raise yaml.YAMLError(f'more than {MAX_YAML_ALIASES} aliases')
+        self._nodes += 1
+        if self._nodes > MAX_YAML_NODES:
+            raise yaml.YAMLError(f'more than {MAX_YAML_NODES} values')
+        return super().compose_node(parent, index)
+
+
+_SceneLoader.yaml_implicit_resolvers = {
+    first: [(tag, regexp) for tag, regexp in resolvers if tag != 'tag:yaml.org,2002:bool']
+    for first, resolvers in yaml.SafeLoader.yaml_implicit_resolvers.items()}
+_SceneLoader.add_implicit_resolver(
+    'tag:yaml.org,2002:bool', re.compile(r'^(?:true|True|TRUE|false|False|FALSE)$'), list('tTfF'))
+
+
+def parse_scene_yaml(text: str) -> Any:
+    """Parse scene YAML: only ``true``/``false`` are booleans; aliases and size are bounded."""
+    return yaml.load(text, Loader=_SceneLoader)  # noqa: S506 - a SafeLoader subclass
+
+
+def _read_scene_text(p: Path) -> str:
+    """Read a scene file: a regular file of at most :data:`MAX_SCENE_BYTES`, UTF-8."""
     try:
-        text = p.read_text(encoding='utf-8')
+        # O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below
+        fd = os.open(p, os.O_RDONLY | getattr(os, 'O_NONBLOCK', 0))
     except OSError as e:
-        raise SceneError(f'{p}: cannot read scene file: {e}', details={'file': str(p)}) from e
+        raise SceneError(f'{p}: cannot read scene file: {e.strerror or e}', details={'file': str(p)}) from e
     try:
-        data = json.loads(text) if p.suffix == '.json' else yaml.safe_load(text)
-    except (ValueError, yaml.YAMLError) as e:
-        raise SceneError(f'{p}: not valid {"JSON" if p.suffix == ".json" else "YAML"}: {e}',
-                         details={'file': str(p)}) from e
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise SceneError(f'{p}: not a regular file (a scene must be a YAML or JSON file)',
+                             details={'file': str(p)})
+        if st.st_size > MAX_SCENE_BYTES:
+            raise SceneError(f'{p}: scene file of {st.st_size} bytes exceeds the limit of {MAX_SCENE_BYTES}',
+                             ErrorCode.LIMIT_EXCEEDED, details={'file': str(p), 'limit': MAX_SCENE_BYTES})
+        with os.fdopen(fd, 'rb') as f:
+            fd = -1
+            raw = f.read(MAX_SCENE_BYTES + 1)
+    except OSError as e:
+        raise SceneError(f'{p}: cannot read scene file: {e.strerror or e}', details={'file': str(p)}) from e
+    finally:
+        if fd >= 0:
+            os.close(fd)
+    if len(raw) > MAX_SCENE_BYTES:
+        raise SceneError(f'{p}: scene file exceeds the limit of {MAX_SCENE_BYTES} bytes',
+                         ErrorCode.LIMIT_EXCEEDED, details={'file': str(p), 'limit': MAX_SCENE_BYTES})
+    try:
+        return raw.decode('utf-8')
+    except UnicodeDecodeError as e:
+        raise SceneError(f'{p}: not UTF-8 text: byte 0x{raw[e.start]:02x} at offset {e.start} '
+                         f'cannot be decoded', details={'file': str(p), 'offset': e.start}) from None
+
+
+def load_scene(path: Union[str, Path]) -> Scene:
+    """Load a scene from a YAML or JSON file (see ``spec/scene.md``).
+
+    Raises
+    ------
+    SceneError
+        A file that is missing, not a regular file (a FIFO, a directory), larger than
+        :data:`MAX_SCENE_BYTES` (code ``LIMIT_EXCEEDED``), not UTF-8 (the message names
+        the byte offset), not valid YAML/JSON, or not a valid scene (the message names
+        the key).
+    """
+    p = Path(path)
+    text = _read_scene_text(p)
+    try:
+        data = json.loads(text) if p.suffix == '.json' else parse_scene_yaml(text)
+    except (ValueError, yaml.YAMLError, RecursionError) as e:
+        raise SceneError(f'{p}: not valid {"JSON" if p.suffix == ".json" else "YAML"}: '
+                         f'{str(e)[:300] or type(e).__name__}', details={'file': str(p)}) from None
     return scene_from_dict(data, str(p))

@@ -25,7 +25,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help='dev.jsonl, an efficient-eng-2-ltl .jsonl or lifted.csv')
     parser.add_argument('--kind', choices=('dev', 'efficient-eng', 'lifted'),
                         help='data set kind (default: guess)')
-    parser.add_argument('--backend', default='offline', choices=BACKENDS)
+    parser.add_argument('--backend', default='combined', choices=BACKENDS)
     parser.add_argument('--json', action='store_true', help='print one JSON object')
     parser.add_argument('--limit', type=int, default=0, help='score a random sample of this many (0: all)')
     parser.add_argument('--seed', type=int, default=0, help='seed of the sample')
@@ -67,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
     scores = evaluate(translator, examples)
     summary = {'data': args.data, 'backend': args.backend, 'skipped_lines': len(ds.skipped),
                **scores.summary()}
-    if args.backend == 'offline':
+    if args.backend in ('offline', 'combined'):
         summary['avoid_scope'] = args.avoid_scope
         summary['once_scope'] = args.once_scope
         summary['after_scope'] = args.after_scope

@@ -25,7 +25,8 @@ HELP = 'translate English instructions into task formulas'
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Declare the command's arguments."""
     parser.add_argument('instruction', nargs='?', help='the instruction (omit with --input or --interactive)')
-    parser.add_argument('--backend', default='offline', choices=BACKENDS, help='translator backend')
+    parser.add_argument('--backend', default='combined', choices=BACKENDS,
+                        help='translator backend (default combined: rules and learned model)')
     parser.add_argument('--json', action='store_true', help='print one JSON object')
     parser.add_argument('--input', help='JSON lines file, one {"instruction": ...} per line')
     parser.add_argument('--output', help='JSON lines file to write (default: standard output)')

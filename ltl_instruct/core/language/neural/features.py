@@ -87,6 +87,30 @@ def descriptor_of(words: str, landmarks: Sequence[str] = (), digits: bool = Fals
 _ARTICLES = frozenset({'the', 'a', 'an', 'this', 'that', 'my', 'your', 'our'})
 
 
+def _name_words(name: str) -> set[str]:
+    """Words of a snake_case name, number words as digits ("landmark_one" and "landmark_1" agree)."""
+    from ltl_instruct.core.language.text import NUMBER_WORDS
+    return {str(NUMBER_WORDS[w]) if w in NUMBER_WORDS else w for w in name.split('_') if w}
+
+
+def snap_to_landmark(descriptor: str, landmarks: Sequence[str]) -> str:
+    """The landmark a plain name means when the map's names are known ("green area" -> green_room).
+
+    The landmark sharing the most words with the name, if it shares at least half of its own
+    words and no other landmark shares as many; otherwise the name as said. Descriptors with
+    relations are kept as they are.
+    """
+    if not landmarks or descriptor in landmarks or '::' in descriptor:
+        return descriptor
+    words = _name_words(descriptor)
+    scored = sorted(((len(words & _name_words(lm)) / len(_name_words(lm) or {''}), lm) for lm in landmarks),
+                    reverse=True)
+    best, name = scored[0]
+    if best >= 0.5 and (len(scored) == 1 or scored[1][0] < best):
+        return name
+    return descriptor
+
+
 def mentions_from_tags(text: str, pieces: Pieces, tags: Sequence[int], landmarks: Sequence[str] = (),
                        digits: bool = False) -> list[FoundMention]:
     """Mentions of a tagged text; the same descriptor gets the same slot, numbered by first mention."""
@@ -97,6 +121,7 @@ def mentions_from_tags(text: str, pieces: Pieces, tags: Sequence[int], landmarks
         d = descriptor_of(words, landmarks, digits)
         if d is None:
             continue
+        d = snap_to_landmark(d, landmarks)
         if d not in slot_of:
             if len(slot_of) >= MAX_SLOTS:
                 continue

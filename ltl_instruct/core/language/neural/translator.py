@@ -128,15 +128,34 @@ Reading = tuple[tuple[Formula, float], bool]
 
 
 def _readings(hyps: Sequence[Hypothesis], descriptors: dict[str, str]) -> list[Reading]:
-    """Satisfiable grounded readings, those using every slot first, each with its log-probability."""
+    """The best satisfiable reading using every slot (else the best satisfiable one), then the others.
+
+    Automata are built only until the reading is found (a beam's last hypotheses can be long
+    formulas, slow to compile); the others follow unchecked, as alternatives to show.
+    """
     from ltl_instruct.core.automaton import is_satisfiable
-    full, partial = [], []
-    for hyp in hyps:
+    chosen: Optional[tuple[int, Reading]] = None
+    fallback: Optional[tuple[int, Reading]] = None
+    for i, hyp in enumerate(hyps):
         try:
             f = _ground(hyp.tokens, descriptors)
             if not is_satisfiable(f):
                 continue
         except LtlInstructError:
             continue
-        (full if slots_used(hyp.tokens) == set(descriptors) else partial).append(((f, hyp.logprob), True))
-    return full + [((f, p), False) for (f, p), _ in partial]
+        if slots_used(hyp.tokens) == set(descriptors):
+            chosen = (i, ((f, hyp.logprob), True))
+            break
+        if fallback is None:
+            fallback = (i, ((f, hyp.logprob), False))
+    best = chosen or fallback
+    if best is None:
+        return []
+    others = []
+    for i, hyp in enumerate(hyps):
+        if i != best[0]:
+            try:
+                others.append(((_ground(hyp.tokens, descriptors), hyp.logprob), False))
+            except LtlInstructError:
+                continue
+    return [best[1]] + others

@@ -1,0 +1,71 @@
+"""The shipped learned translator and the combined default, on the readings issue 17 names.
+
+These load the bundle in ``ltl_instruct/data/translator`` (made by ``ltl-instruct translator
+train``) and the packaged MiniLM encoder, as a user's ``translate`` does.
+"""
+from __future__ import annotations
+
+import pytest
+
+from ltl_instruct.core.errors import LtlInstructError
+from ltl_instruct.core.language import make_translator
+
+
+@pytest.fixture(scope='module')
+def neural():
+    return make_translator('neural')
+
+
+@pytest.fixture(scope='module')
+def combined():
+    return make_translator('combined')
+
+
+@pytest.mark.parametrize('text, formula', [
+    ('bring me over to the printer', 'F near[printer]'),
+    ('I have to finish my essay, can you find the lamp', 'F near[lamp]'),
+    ('Go to the kitchen. On top of that, never enter the hall', 'F near[kitchen] & G !near[hall]'),
+    ('go to the kitchen, otherwise go to the garage', 'F (near[kitchen] | near[garage])'),
+    ('Find Bookstore and then find Marston Hall', 'F (near[bookstore] & F near[marston_hall])'),
+    ('pick up the green plush toy and put it in the basket',
+     'F (near[green_plush_toy] & F (pick[green_plush_toy] & F (near[basket] & '
+     'F release[green_plush_toy, basket])))'),
+])
+def test_the_model_reads_what_the_rules_misread(neural, text, formula):
+    assert str(neural.translate(text).formula) == formula
+
+
+@pytest.mark.parametrize('text', [
+    'Go to the kitchen. On top of that, never enter the hall',
+    'go to the kitchen, otherwise go to the garage',
+    'I have to finish my essay, can you find the lamp',
+])
+def test_combined_flags_a_rules_misreading_and_offers_the_model_reading(combined, neural, text):
+    t = combined.translate(text)
+    assert t.extra['flagged'] and t.extra['agreement'] is False
+    assert str(neural.translate(text).formula) in t.extra['alternatives']
+    assert any('reads this differently' in w for w in t.extra['unread'])
+
+
+def test_combined_takes_over_a_refusal_flagged(combined):
+    t = combined.translate('bring me over to the printer')
+    assert str(t.formula) == 'F near[printer]'
+    assert t.extra['flagged'] and 'rules could not read' in t.extra['unread'][0]
+
+
+def test_combined_agreement_is_not_flagged(combined):
+    t = combined.translate('go to the sofa, then the door')
+    assert str(t.formula) == 'F (near[sofa] & F near[door])'
+    assert t.extra['agreement'] is True and not t.extra['flagged']
+
+
+@pytest.mark.parametrize('text', ['visit the kitchen -3 times', 'visit the kitchen 50 times', 'qwzx vvv'])
+def test_rules_refusals_of_counts_and_gibberish_stand(combined, text):
+    with pytest.raises(LtlInstructError):
+        combined.translate(text)
+
+
+def test_snaps_names_to_the_landmarks_given():
+    t = make_translator('neural', landmarks=('blue_room', 'green_room', 'red_room', 'yellow_room'))
+    assert str(t.translate('go to the green area but stay out of the blue one').formula).startswith(
+        'F near[green_room]')

@@ -88,9 +88,10 @@ class LtlTranslatorNode(Node):
 
     # ------------------------------------------------------------------ work
     def close(self) -> None:
-        """Stop the worker thread."""
+        """Stop the worker thread and wait for it (a model still loading finishes first)."""
         self._closing.set()
         self._jobs.put(None)
+        self._worker.join(timeout=10.0)
 
     def _work(self) -> None:
         # build the translator before the first instruction comes (imports, tables, models),

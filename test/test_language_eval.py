@@ -163,6 +163,15 @@ def test_interactive_dialog_typed_formula_and_cancel() -> None:
     assert any('near[oven]' in s for s in said)
 
 
+def test_interactive_dialog_keeps_a_typed_formula_when_accepted() -> None:
+    # the dialog used to translate the instruction again after a typed formula, so "yes" took the fridge
+    replies = iter(['go to the fridge', 'formula: F near[oven]', 'yes'])
+    said: list[str] = []
+    assert interactive(make_translator(), lambda _: next(replies), said.append) == 0
+    assert json.loads(said[-1])['formula'] == 'F near[oven]'
+    assert sum('Task formula: F near[oven]' in s for s in said) == 1   # shown once
+
+
 @pytest.mark.skipif(not (SHARED / 'spatial-temporal-dev' / 'dev.jsonl').is_file(), reason='no ../shared')
 def test_development_set_scores() -> None:
     ds = read_dataset(SHARED / 'spatial-temporal-dev' / 'dev.jsonl')

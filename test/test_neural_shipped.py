@@ -69,3 +69,26 @@ def test_snaps_names_to_the_landmarks_given():
     t = make_translator('neural', landmarks=('blue_room', 'green_room', 'red_room', 'yellow_room'))
     assert str(t.translate('go to the green area but stay out of the blue one').formula).startswith(
         'F near[green_room]')
+
+
+def test_the_dialog_offers_the_model_reading_and_takes_it(combined):
+    import json
+    from ltl_instruct.commands.translate import interactive
+    from ltl_instruct.core.language.verification import classify_reply
+    assert classify_reply('alternative 1').kind == 'alternative'
+    assert classify_reply('take alt 2').index == 2
+    assert classify_reply('go to the alternative entrance').kind == 'correction'
+    replies = iter(['go to the kitchen, otherwise go to the garage', 'alternative 1', 'yes'])
+    said: list[str] = []
+    assert interactive(combined, lambda _: next(replies), said.append) == 0
+    assert 'Alternative 1: F (near[kitchen] | near[garage])' in said[0]
+    assert 'reads this differently' in said[0]
+    assert json.loads(said[-1])['formula'] == 'F (near[kitchen] | near[garage])'
+
+
+def test_a_bad_alternative_number_is_refused(combined):
+    from ltl_instruct.commands.translate import interactive
+    replies = iter(['go to the kitchen, otherwise go to the garage', 'alternative 9', 'no'])
+    said: list[str] = []
+    assert interactive(combined, lambda _: next(replies), said.append) == 1
+    assert 'there is no alternative 9' in said

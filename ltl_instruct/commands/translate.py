@@ -17,7 +17,10 @@ from typing import Any, Callable, Optional
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
 from ltl_instruct.core.language import BACKENDS, Translation, make_translator, verification_for
 from ltl_instruct.core.language.datasets import iter_instructions
-from ltl_instruct.core.language.verification import best_reading_of, classify_reply, warnings_of
+from ltl_instruct.core.language.verification import (
+    Reply, alternatives_of, best_reading_of, classify_reply, warnings_of,
+)
+from ltl_instruct.core.spec import parse_formula
 
 HELP = 'translate English instructions into task formulas'
 
@@ -182,9 +185,12 @@ def interactive(translator: Any, ask: Callable[[str], str], say: Callable[[str],
     correction_rounds = 0
     t: Optional[Translation] = None
     pending_correction = ''
+    person_formula = False   # the person typed or chose the formula: nothing to translate again
     while correction_rounds < 10:
         try:
-            if t is not None and pending_correction and translator.name == 'llm':
+            if person_formula:
+                pass
+            elif t is not None and pending_correction and translator.name == 'llm':
                 t = translator.translate(instruction, correction=pending_correction, previous=t)
             elif pending_correction:
                 t = translator.translate(f'{instruction}. {pending_correction}')
@@ -214,12 +220,20 @@ def interactive(translator: Any, ask: Callable[[str], str], say: Callable[[str],
         if reply.kind == 'no':
             say('cancelled')
             return 1
+        if reply.kind == 'alternative' and t is not None:
+            alternatives = alternatives_of(t)
+            if not 1 <= reply.index <= len(alternatives):
+                say(f'there is no alternative {reply.index}')
+                continue
+            chosen = alternatives[reply.index - 1]
+            reply = Reply('formula', chosen, parse_formula(chosen))
         if reply.kind == 'formula' and reply.formula is not None:
             t = Translation(instruction, reply.formula, 'person')
-            say(verification_for(t).text())
             pending_correction = ''
+            person_formula = True   # shown at the top of the loop, not translated again
             correction_rounds += 1
             continue
+        person_formula = False
         pending_correction = reply.text
         correction_rounds += 1
     raise LtlInstructError('too many corrections; start again', ErrorCode.VERIFICATION_FAILED)

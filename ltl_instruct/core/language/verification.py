@@ -9,6 +9,7 @@ They answer yes, or correct it in words, or type a formula directly;
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any, Optional, Sequence
 
@@ -44,6 +45,7 @@ class Verification:
     satisfiable: bool
     reading: tuple[str, ...] = ()
     warnings: tuple[str, ...] = ()
+    alternatives: tuple[str, ...] = ()   # other readings of the same words (combined backend)
 
     def text(self) -> str:
         """Lines to show the person."""
@@ -54,14 +56,18 @@ class Verification:
             lines.append('Avoid: ' + '; '.join(self.avoid))
         lines.extend(self.subgoals)
         lines.extend(reading_lines(self.reading, self.warnings))
-        lines.append('Is this right? Answer yes, correct it in words, or type a formula (prefix "formula:").')
+        lines.extend(f'Alternative {k}: {a}' for k, a in enumerate(self.alternatives, 1))
+        take = ', "alternative N" to take another reading' if self.alternatives else ''
+        lines.append(f'Is this right? Answer yes, correct it in words{take}, '
+                     'or type a formula (prefix "formula:").')
         return '\n'.join(lines)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""
         return {'formula': self.formula, 'referents': list(self.referents), 'avoid': list(self.avoid),
                 'subgoals': list(self.subgoals), 'satisfiable': self.satisfiable,
-                'reading': list(self.reading), 'warnings': list(self.warnings)}
+                'reading': list(self.reading), 'warnings': list(self.warnings),
+                'alternatives': list(self.alternatives)}
 
 
 def reading_lines(notes: Sequence[str], warnings: Sequence[str] = ()) -> list[str]:
@@ -99,19 +105,30 @@ def verification_for(translation: Translation | Formula) -> Verification:
     formula = translation.formula if isinstance(translation, Translation) else translation
     reading = translation.notes if isinstance(translation, Translation) else ()
     warnings = warnings_of(translation) if isinstance(translation, Translation) else ()
+    alternatives = alternatives_of(translation) if isinstance(translation, Translation) else ()
     desc = describe_task(formula)
     return Verification(desc.formula, desc.referents, desc.avoid,
                         tuple(desc.subgoals) + tuple(desc.throughout) + tuple(desc.notes), desc.satisfiable,
-                        tuple(reading), warnings)
+                        tuple(reading), warnings, alternatives)
+
+
+def alternatives_of(translation: Translation) -> tuple[str, ...]:
+    """Return the other readings a translation offers (``extra['alternatives']``), if any."""
+    alts = translation.extra.get('alternatives', ()) if isinstance(translation.extra, dict) else ()
+    return tuple(str(a) for a in alts)
+
+
+_ALTERNATIVE_RE = re.compile(r'(?:take |use )?(?:the )?alt(?:ernative)?\s*#?([1-9])')
 
 
 @dataclass(frozen=True)
 class Reply:
-    """A person's answer: ``kind`` is ``yes``, ``no``, ``formula`` or ``correction``."""
+    """A person's answer: ``kind`` is ``yes``, ``no``, ``formula``, ``alternative`` or ``correction``."""
 
     kind: str
     text: str = ''
     formula: Optional[Formula] = None
+    index: int = 0   # 1-based, for ``alternative``
 
 
 def classify_reply(reply: str) -> Reply:
@@ -127,6 +144,9 @@ def classify_reply(reply: str) -> Reply:
         return Reply('yes')
     if low in NO:
         return Reply('no')
+    alt = _ALTERNATIVE_RE.fullmatch(low)
+    if alt:
+        return Reply('alternative', text, index=int(alt.group(1)))
     body = text[len('formula:'):].strip() if low.startswith('formula:') else text
     if low.startswith('formula:') or any(c in body for c in '[]&|'):
         try:

@@ -94,7 +94,7 @@ def _name_words(name: str) -> set[str]:
 
 
 def snap_to_landmark(descriptor: str, landmarks: Sequence[str]) -> str:
-    """The landmark a plain name means when the map's names are known ("green area" -> green_room).
+    """Return the landmark a plain name means, when the map's names are known ("green area" -> green_room).
 
     The landmark sharing the most words with the name, if it shares at least half of its own
     words and no other landmark shares as many; otherwise the name as said. Descriptors with

@@ -128,7 +128,7 @@ Reading = tuple[tuple[Formula, float], bool]
 
 
 def _readings(hyps: Sequence[Hypothesis], descriptors: dict[str, str]) -> list[Reading]:
-    """The best satisfiable reading using every slot (else the best satisfiable one), then the others.
+    """Return the best satisfiable reading using every slot (else the best satisfiable one), then the others.
 
     Automata are built only until the reading is found (a beam's last hypotheses can be long
     formulas, slow to compile); the others follow unchecked, as alternatives to show.

@@ -194,6 +194,9 @@ def run(args: argparse.Namespace) -> int:
         stop['now'] = True
 
     signal.signal(signal.SIGTERM, on_signal)
+    # a shell's background job starts with SIGINT ignored, and Python then never raises
+    # KeyboardInterrupt: Ctrl-C (or kill -INT) must stop the graph however bringup was started
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     graph.start()
     print(f'started {", ".join(nodes)} (parameters: {params}); Ctrl-C stops them', flush=True)
     status = 0

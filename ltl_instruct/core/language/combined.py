@@ -95,8 +95,8 @@ class CombinedTranslator:
         """Tell whether the model may stand in for a refusal: confident, every name made of words."""
         if model.extra.get('confidence', 0.0) < self.takeover:
             return False
-        from ltl_instruct.core.language.offline import _speller
-        speller = _speller()
+        from ltl_instruct.core.language.offline import rules_speller
+        speller = rules_speller()
         landmarks = set(self.landmarks)
         for mention in model.extra.get('mentions', ()):
             words = re.findall(r'[a-z]+', mention['text'].lower())

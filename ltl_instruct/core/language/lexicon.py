@@ -111,7 +111,7 @@ RUN_ON_NOT_AFTER = frozenset({'and', 'or', 'but', 'then', 'that', 'so', 'if', 'w
                               'until', 'before', 'after', 'while', 'unless', 'whenever'})
 
 # Words of place names that a speller would take for slips ("porta potty" is no "portal"). Read by no
-# name: every word set of this module is the speller's lexicon (offline._speller).
+# name: every word set of this module is the speller's lexicon (offline.rules_speller).
 NAME_WORDS = frozenset({'porta', 'potty', 'portaloo', 'loo', 'cubby', 'mudroom'})
 
 STRONG_VERBS = frozenset({'go', 'visit', 'reach', 'head', 'navigate', 'travel', 'proceed', 'move'})

@@ -192,7 +192,7 @@ class OfflineTranslator:
         self.after_scope = after_scope
         self.numbers = numbers
         self.landmarks = tuple(landmarks)
-        _speller()   # the word list is read once, here, not inside the first translation
+        rules_speller()   # the word list is read once, here, not inside the first translation
 
     def translate(self, instruction: str) -> Translation:
         """Translate one instruction (raises :class:`TranslationError` naming what it cannot place)."""
@@ -514,7 +514,7 @@ _SPELLER: Optional[Speller] = None
 _WISH_FIRST = frozenset(w[0] for w in chatter.WISHES)
 
 
-def _speller() -> Speller:
+def rules_speller() -> Speller:
     """Return the speller, its lexicon the word lists of the rules (built once)."""
     global _SPELLER
     if _SPELLER is None:
@@ -592,7 +592,7 @@ def _is_word(w: str, listed: bool = False) -> bool:
     With ``listed``, only a listed word counts (not one derived from a listed word, such as
     "quantumly"): words are left out only on that firmer ground.
     """
-    sp = _speller()
+    sp = rules_speller()
     if listed:
         return w in sp.words or w in sp.lexicon or w.isdigit() or not sp.words
     return sp.known(w) or w.isdigit()
@@ -621,7 +621,7 @@ _AFTER_HEARD_NUMBER = frozenset({'and', 'then', 'or', 'please', 'first', 'next',
 def _correct_spelling(tokens: list[str], notes: list[str], landmarks: Sequence[str],
                       names: frozenset[str] = frozenset()) -> list[str]:
     """Correct typing slips in words the rules do not know; each correction is noted."""
-    speller = _speller()
+    speller = rules_speller()
     known = {w for name in landmarks for w in name.replace('_', ' ').split()} | names
     out = list(tokens)
     # names said in the instruction: a listed word anywhere, an unlisted one only before (the first

@@ -92,3 +92,10 @@ def test_a_bad_alternative_number_is_refused(combined):
     said: list[str] = []
     assert interactive(combined, lambda _: next(replies), said.append) == 1
     assert 'there is no alternative 9' in said
+
+
+def test_a_reading_cut_at_the_encoder_length_is_flagged(neural):
+    long = 'go to the kitchen, then the hall, ' * 20 + 'and finally the garage'
+    t = neural.translate(long)
+    assert t.extra['flagged'] and any('read only the first' in n for n in t.notes)
+    assert not neural.translate('go to the kitchen, then the hall').extra['flagged']

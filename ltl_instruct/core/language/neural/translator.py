@@ -67,8 +67,8 @@ class NeuralTranslator:
         self.digits = digits
         self._lock = threading.Lock()   # torch modules are not re-entrant across threads
 
-    def read(self, text: str) -> tuple[list[FoundMention], list[Hypothesis]]:
-        """Mentions and finished beam hypotheses (best first) for one instruction."""
+    def read(self, text: str) -> tuple[list[FoundMention], list[Hypothesis], int]:
+        """Mentions, finished beam hypotheses (best first) and how many characters were read."""
         if not isinstance(text, str) or not text.strip():
             raise TranslationError('empty instruction', ErrorCode.INVALID_INPUT)
         if len(text) > MAX_CHARS:
@@ -83,15 +83,16 @@ class NeuralTranslator:
             slots = torch.tensor([slot_numbers(pieces, mentions)])
             n_slots = len({m.slot for m in mentions})
             hyps = beam_search(self.net.decoder, h, mask, slots, n_slots, beam=self.beam)
-        return mentions, hyps
+        return mentions, hyps, max(b for _, b in pieces.offsets)   # the encoder reads at most MAX_WORDPIECES
 
     def translate(self, instruction: str) -> Translation:
         """Translate one instruction (see the module docstring)."""
-        mentions, hyps = self.read(instruction)
+        mentions, hyps, read_to = self.read(instruction)
         if not mentions:
             raise TranslationError('no place or thing was found in the instruction',
                                    ErrorCode.TRANSLATION_ERROR)
         descriptors = {m.slot: m.descriptor for m in mentions}
+        unread_tail = instruction[read_to:].strip()
         readings = _readings(hyps, descriptors)
         if not readings:
             raise TranslationError('the learned translator found no satisfiable reading',
@@ -100,7 +101,10 @@ class NeuralTranslator:
         best, complete = readings[0]
         confidence = math.exp(best[1]) / total
         notes = []
-        flagged = confidence < self.flag_below or not complete
+        flagged = confidence < self.flag_below or not complete or bool(unread_tail)
+        if unread_tail:
+            notes.append(f'the learned translator read only the first {read_to} characters; '
+                         f'not read: "{unread_tail[:60]}..."')
         if not complete:
             unused = sorted(set(descriptors.values()) - {str(d) for d in _referent_names(best[0])})
             notes.append(f'the learned translator left out: {", ".join(unused)}')

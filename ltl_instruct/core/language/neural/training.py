@@ -140,7 +140,12 @@ def _batches(data: Sequence[Encoded], size: int, rng: random.Random) -> list[lis
 
 def loss_of(net: TranslatorNet, batch: Sequence[Encoded]) -> tuple[torch.Tensor, torch.Tensor]:
     """Tagging and decoding losses of one batch."""
-    h, mask, tags, slots, targets = batch_tensors(batch)
+    return losses(net, *batch_tensors(batch))
+
+
+def losses(net: TranslatorNet, h: torch.Tensor, mask: torch.Tensor, tags: torch.Tensor, slots: torch.Tensor,
+           targets: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+    """Tagging and decoding losses from encoder states (frozen or being fine-tuned)."""
     ce = nn.functional.cross_entropy
     tag_loss = ce(net.tagger(h).reshape(-1, 3), tags.reshape(-1), ignore_index=-100)
     logits = net.decoder(h, mask, slots, targets.clamp(min=0))

@@ -67,6 +67,19 @@ class NeuralTranslator:
         self.digits = digits
         self._lock = threading.Lock()   # torch modules are not re-entrant across threads
 
+    @classmethod
+    def from_parts(cls, net: TranslatorNet, encoder: torch.nn.Module, pieces: WordPieces,
+                   **options: object) -> 'NeuralTranslator':
+        """Build a translator from networks in memory (a benchmark's freshly trained ones)."""
+        self = cls.__new__(cls)
+        self.net, self.encoder, self.pieces = net.eval(), encoder.eval(), pieces
+        self.beam = int(options.get('beam', 5))  # type: ignore[arg-type]
+        self.flag_below = float(options.get('flag_below', 0.6))  # type: ignore[arg-type]
+        self.landmarks = tuple(options.get('landmarks', ()))  # type: ignore[arg-type]
+        self.digits = bool(options.get('digits', False))
+        self._lock = threading.Lock()
+        return self
+
     def read(self, text: str) -> tuple[list[FoundMention], list[Hypothesis], int]:
         """Mentions, finished beam hypotheses (best first) and how many characters were read."""
         if not isinstance(text, str) or not text.strip():

@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from ltl_instruct.core.spec import Descriptor, Formula, parse_formula, rename_descriptors
+from ltl_instruct.core.spec import Descriptor, Formula, parse_descriptor, parse_formula, rename_descriptors
 
 SLOT_RE = re.compile(r'^s[1-9][0-9]*$')
 
@@ -48,13 +48,8 @@ class TaggedExample:
     def formula(self) -> Formula:
         """Return the grounded formula: the lifted one with each slot replaced by its descriptor."""
         lifted = parse_formula(self.lifted)
-        mapping = {Descriptor(s): _descriptor(d) for s, d in self.slots.items()}
+        mapping = {Descriptor(s): parse_descriptor(d) for s, d in self.slots.items()}
         return rename_descriptors(lifted, mapping)
-
-
-def _descriptor(text: str) -> Descriptor:
-    atom = parse_formula(f'near[{text}]')
-    return atom.args[0]  # type: ignore[attr-defined]
 
 
 def check_example(ex: TaggedExample) -> None:

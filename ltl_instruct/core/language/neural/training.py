@@ -205,6 +205,15 @@ def save_bundle(net: TranslatorNet, out_dir: Path, facts: dict) -> None:
                                          encoding='utf-8')
 
 
+def load_bundle(bundle: Path) -> TranslatorNet:
+    """Read the networks of a bundle written by :func:`save_bundle` (float32, eval mode)."""
+    config = json.loads((bundle / BUNDLE_CONFIG).read_text(encoding='utf-8'))
+    net = TranslatorNet(NetConfig(**config['net']))
+    state = torch.load(bundle / BUNDLE_WEIGHTS, map_location='cpu', weights_only=True)
+    net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in state.items()})
+    return net.eval()
+
+
 def train(cfg: TrainConfig, out_dir: Path, encoder_dir: Optional[Path] = None,
           log: Callable[[str], None] = print) -> dict:
     """Build the data, train, write the bundle to ``out_dir``; returns the facts written."""

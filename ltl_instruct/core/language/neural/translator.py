@@ -16,7 +16,6 @@ model is unsure (confidence under ``flag_below``) or had to skip hypotheses.
 """
 from __future__ import annotations
 
-import json
 import math
 import threading
 from pathlib import Path
@@ -32,9 +31,11 @@ from ltl_instruct.core.language.neural.encoder import (
 )
 from ltl_instruct.core.language.neural.features import FoundMention, mentions_from_tags, slot_numbers
 from ltl_instruct.core.language.neural.grammar import from_prefix, slots_used
-from ltl_instruct.core.language.neural.model import NetConfig, TranslatorNet
-from ltl_instruct.core.language.neural.training import BUNDLE_CONFIG, BUNDLE_WEIGHTS
-from ltl_instruct.core.spec import Descriptor, Formula, format_formula, parse_formula, rename_descriptors
+from ltl_instruct.core.language.neural.model import TranslatorNet
+from ltl_instruct.core.language.neural.training import load_bundle
+from ltl_instruct.core.spec import (
+    Descriptor, Formula, format_formula, parse_descriptor, referents_of, rename_descriptors,
+)
 
 MAX_CHARS = 2000
 SHIPPED_BUNDLE = Path(__file__).resolve().parents[3] / 'data' / 'translator'
@@ -50,35 +51,31 @@ class NeuralTranslator:
                  digits: bool = False) -> None:
         bundle = Path(model_path) if model_path else SHIPPED_BUNDLE
         try:
-            config = json.loads((bundle / BUNDLE_CONFIG).read_text(encoding='utf-8'))
-            self.net = TranslatorNet(NetConfig(**config['net']))
-            state = torch.load(bundle / BUNDLE_WEIGHTS, map_location='cpu', weights_only=True)
-            self.net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in state.items()})
+            net = load_bundle(bundle)
             encoder_dir = Path(encoder_path) if encoder_path else packaged_model_dir()
-            self.encoder = load_encoder(encoder_dir)
-            self.pieces = WordPieces(encoder_dir)
+            encoder, pieces = load_encoder(encoder_dir), WordPieces(encoder_dir)
         except (OSError, KeyError, TypeError, ValueError, RuntimeError, ImportError) as e:
             raise TranslationError(f'cannot load the learned translator from {bundle}: {e}',
                                    ErrorCode.MODEL_ERROR) from e
-        self.net.eval()
+        self._assemble(net, encoder, pieces, beam, flag_below, landmarks, digits)
+
+    @classmethod
+    def from_parts(cls, net: TranslatorNet, encoder: torch.nn.Module, pieces: WordPieces, beam: int = 5,
+                   flag_below: float = 0.6, landmarks: Sequence[str] = (),
+                   digits: bool = False) -> 'NeuralTranslator':
+        """Build a translator from networks in memory (a benchmark's freshly trained ones)."""
+        self = cls.__new__(cls)
+        self._assemble(net, encoder, pieces, beam, flag_below, landmarks, digits)
+        return self
+
+    def _assemble(self, net: TranslatorNet, encoder: torch.nn.Module, pieces: WordPieces, beam: int,
+                  flag_below: float, landmarks: Sequence[str], digits: bool) -> None:
+        self.net, self.encoder, self.pieces = net.eval(), encoder.eval(), pieces
         self.beam = beam
         self.flag_below = flag_below
         self.landmarks = tuple(landmarks)
         self.digits = digits
         self._lock = threading.Lock()   # torch modules are not re-entrant across threads
-
-    @classmethod
-    def from_parts(cls, net: TranslatorNet, encoder: torch.nn.Module, pieces: WordPieces,
-                   **options: object) -> 'NeuralTranslator':
-        """Build a translator from networks in memory (a benchmark's freshly trained ones)."""
-        self = cls.__new__(cls)
-        self.net, self.encoder, self.pieces = net.eval(), encoder.eval(), pieces
-        self.beam = int(options.get('beam', 5))  # type: ignore[arg-type]
-        self.flag_below = float(options.get('flag_below', 0.6))  # type: ignore[arg-type]
-        self.landmarks = tuple(options.get('landmarks', ()))  # type: ignore[arg-type]
-        self.digits = bool(options.get('digits', False))
-        self._lock = threading.Lock()
-        return self
 
     def read(self, text: str) -> tuple[list[FoundMention], list[Hypothesis], int]:
         """Mentions, finished beam hypotheses (best first) and how many characters were read."""
@@ -130,14 +127,12 @@ class NeuralTranslator:
 
 
 def _referent_names(f: Formula) -> list[str]:
-    from ltl_instruct.core.spec import referents_of
     return [str(d) for d in referents_of(f)]
 
 
 def _ground(tokens: Sequence[str], descriptors: dict[str, str]) -> Formula:
     lifted = from_prefix(tokens)
-    mapping = {Descriptor(s): parse_formula(f'near[{d}]').args[0]  # type: ignore[attr-defined]
-               for s, d in descriptors.items()}
+    mapping = {Descriptor(s): parse_descriptor(d) for s, d in descriptors.items()}
     return rename_descriptors(lifted, mapping)
 
 

@@ -18,7 +18,13 @@ Figures (issue 3 targets):
 - path length / fine-grid optimum per segment (8-connected, 5 cm cells, same
   constraints; drones: 26-connected 10 cm cells) (target median <= 1.05);
 - FMT* against OMPL's RRT* given the same time per segment, in the same run (raw planner
-  paths, no shortcutting, so the planners themselves are compared).
+  paths, no shortcutting, so the planners themselves are compared);
+- goal depth: how far inside its goal region [m] each navigation step ends (issue 21: a
+  controller that stops a little short must still complete the task), least and median
+  over every endpoint.
+
+``--builtin`` runs representative tasks (sequence, avoidance, until...) on the built-in
+scenes (``apartment``, ``city_block``) instead of the generated suite.
 """
 from __future__ import annotations
 
@@ -31,7 +37,7 @@ import sys
 import time
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Optional, Union
 
 import numpy as np
 from scipy import ndimage
@@ -44,8 +50,10 @@ from ltl_instruct.core.planning import (
 )
 from ltl_instruct.core.planning.grid import grid_optimum
 from ltl_instruct.core.planning.occupancy import PlanningWorld
+from ltl_instruct.core.planning.regions import RegionSet, key_cubes
 from ltl_instruct.core.spec import parse_formula, referents_of
-from ltl_instruct.core.world.scene import Scene, scene_from_dict, slug
+from ltl_instruct.core.world.builtin import builtin_scene_path
+from ltl_instruct.core.world.scene import Scene, load_scene, scene_from_dict, slug
 
 GROUND_LABELS = ['sofa', 'table', 'lamp', 'plant', 'desk', 'shelf', 'tv', 'bed', 'fridge', 'piano']
 DRONE_LABELS = ['tower', 'mast', 'crane', 'chimney', 'billboard', 'water tank']
@@ -193,9 +201,9 @@ def _reachable(d: dict) -> bool:
 
 @dataclass(frozen=True)
 class Task:
-    """One benchmark task: a scene, a formula, its pattern and whether it is satisfiable."""
+    """One benchmark task: a scene (generated as a dict, or built in), a formula, its pattern, satisfiable."""
 
-    scene: dict
+    scene: Union[dict, Scene]
     formula: str
     pattern: str
     satisfiable: bool
@@ -253,6 +261,62 @@ def drone_tasks(scene: dict, rng: random.Random) -> list[Task]:
         ('unsat-empty-goal', f'F (near[{a}] & near[{b}])', False),
     ]
     return [Task(scene, f, p, s) for p, f, s in t]
+
+
+BUILTIN_TASKS = {
+    'apartment': [
+        ('visit', 'F near[fridge]'),
+        ('ordered-visit', 'F (near[bed] & F (near[fridge] & F near[desk]))'),
+        ('global-avoidance', 'F near[computer] & G !near[door]'),
+        ('scoped-avoidance', 'F (near[tv] & F near[stove]) & G (near[tv] -> G !near[table])'),
+        ('avoid-until', '!near[rug] U near[bookshelf]'),
+        ('avoid-until-then', '(!near[pillar] U near[lamp]) & F near[pillar]'),
+        ('either-or', 'F near[printer] | F near[nightstand]'),
+        ('pick-and-place', 'F (pick[red_ball] & F release[red_ball, coffee_table])'),
+    ],
+    'city_block': [
+        ('visit', 'F near[fountain]'),
+        ('ordered-visit', 'F (near[bank] & F near[statue])'),
+        ('global-avoidance', 'F near[library] & G !near[tower]'),
+        ('avoid-until', '!near[fountain] U near[bus_stop]'),
+    ],
+}
+
+
+def builtin_suite() -> list[Task]:
+    """Representative tasks on the built-in scenes (all satisfiable)."""
+    tasks = []
+    for name, patterns in BUILTIN_TASKS.items():
+        scene = load_scene(builtin_scene_path(name))
+        tasks += [Task(scene, f, p, True) for p, f in patterns]
+    return tasks
+
+
+def goal_depths(plan: Any) -> list[float]:
+    """How deep [m] each navigation step ends inside its goal's near regions.
+
+    For the goal cubes the endpoint satisfies: the least depth (threshold - distance to
+    the box) over the cube's near atoms, the best cube counting. Steps whose goal has no
+    near atom to be near (only regions to leave) give nothing.
+    """
+    out = []
+    for step in plan.steps:
+        req = step.request
+        if step.kind != 'navigate' or req is None:
+            continue
+        regions = RegionSet(req.regions, req.dims)
+        end = np.asarray(step.end, dtype=float)[None]
+        letter = regions.letter_and_margin(tuple(step.end))[0]
+        best = None
+        for pos, neg in key_cubes(req.goal):
+            if not pos or not pos <= letter or neg & letter:
+                continue
+            depth = min(regions.by_key[k].radius - float(regions.by_key[k].distance(end, req.dims)[0])
+                        for k in pos)
+            best = depth if best is None else max(best, depth)
+        if best is not None:
+            out.append(best)
+    return out
 
 
 def referent_map(scene: Scene, formula) -> ReferentMap:
@@ -317,7 +381,7 @@ def run(tasks: list[Task], samples: int, grid_limit: int, drone_grid_limit: int,
     drone_grid_done = 0
     rrt_done = 0
     for i, task in enumerate(tasks):
-        scene = scene_from_dict(task.scene)
+        scene = task.scene if isinstance(task.scene, Scene) else scene_from_dict(task.scene)
         world = world_from_scene(scene)
         formula = parse_formula(task.formula)
         row: dict[str, Any] = {'scene': scene.name, 'kind': scene.robot.kind, 'pattern': task.pattern,
@@ -327,7 +391,8 @@ def run(tasks: list[Task], samples: int, grid_limit: int, drone_grid_limit: int,
             aut = compile_automaton(formula)
             plan = plan_task(aut, referent_map(scene, formula), world, scene.robot.start, settings)
             row.update(planned=True, verified=plan.verification.ok, seconds=time.perf_counter() - t0,
-                       length=plan.length, steps=len(plan.steps), segments=plan.stats['segments_solved'])
+                       length=plan.length, steps=len(plan.steps), segments=plan.stats['segments_solved'],
+                       goal_depths=goal_depths(plan))
             ratios = []
             for step in plan.steps:
                 if step.kind != 'navigate' or step.request is None or step.length <= 0.05:
@@ -371,6 +436,7 @@ def summarise(rows: list[dict[str, Any]], samples: int) -> dict[str, Any]:
     rrt = [c for r in rows for c in r.get('rrt', [])]
     both = [c for c in rrt if c['fmt_ok'] and c['rrt_ok']]
     patterns = sorted({r['pattern'] for r in rows})
+    depths = [x for r in rows for x in r.get('goal_depths', [])]
     return {
         'tasks': len(rows), 'satisfiable': len(sat), 'unsatisfiable': len(unsat), 'samples': samples,
         'patterns': patterns,
@@ -398,6 +464,11 @@ def summarise(rows: list[dict[str, Any]], samples: int) -> dict[str, Any]:
         'rrt_over_fmt_shortcut_length_median': _median([
             c['rrt_short_length'] / c['fmt_short_length'] for c in rrt
             if c['fmt_short_ok'] and c['rrt_short_ok'] and c['fmt_short_length'] > 0]),
+        'goal_depth_min': min(depths) if depths else float('nan'), 'goal_depth_median': _median(depths),
+        'goal_endpoints': len(depths),
+        'total_length_solved': sum(r['length'] for r in solved),
+        'rows': [{k: r.get(k) for k in ('scene', 'pattern', 'formula', 'planned', 'seconds', 'length',
+                                        'goal_depths')} for r in rows],
     }
 
 
@@ -422,6 +493,9 @@ def print_summary(s: dict[str, Any]) -> None:
           f"{s['rrt_over_fmt_length_median']:.3f}; FMT* time median {s['fmt_time_median_s']:.3f} s")
     print(f"  both shortcut as in plans: RRT* success {s['rrt_short_success_pct']:.1f} %, RRT*/FMT* length "
           f"median {s['rrt_over_fmt_shortcut_length_median']:.3f}")
+    print(f"goal depth of navigation endpoints: least {s['goal_depth_min']:.4f} m, median "
+          f"{s['goal_depth_median']:.4f} m over {s['goal_endpoints']} endpoints; total path length of "
+          f"solved tasks {s['total_length_solved']:.1f} m")
     for f in s['failed_sat']:
         print(f"  not solved: {f['scene']} {f['pattern']}: {f['formula']} "
               f"[{f.get('code')}] {f.get('message')}")
@@ -441,13 +515,16 @@ def main(argv: list[str]) -> int:
                     help='drone segments compared with the 3D grid (about 7 s each)')
     ap.add_argument('--rrt-limit', type=int, default=150, help='ground segments compared with RRT*')
     ap.add_argument('--quick', action='store_true', help='2 ground + 1 drone scenes, fewer comparisons')
+    ap.add_argument('--builtin', action='store_true', help='representative tasks on the built-in scenes')
     ap.add_argument('--json', default='out/bench_planning.json', help='where to write the figures')
     ap.add_argument('--verbose', action='store_true', help='one line per task')
     args = ap.parse_args(argv)
     if args.quick:
         args.ground, args.drone, args.grid_limit, args.drone_grid_limit, args.rrt_limit = 2, 1, 20, 3, 10
     t0 = time.perf_counter()
-    tasks = build_suite(args.seed, args.ground, args.drone)
+    if args.builtin:   # the city block is too large for a 10 cm 3D grid
+        args.drone_grid_limit = 0
+    tasks = builtin_suite() if args.builtin else build_suite(args.seed, args.ground, args.drone)
     summary = run(tasks, args.samples, args.grid_limit, args.drone_grid_limit, args.rrt_limit, args.verbose)
     summary['wall_s'] = round(time.perf_counter() - t0, 1)
     print_summary(summary)

@@ -52,6 +52,7 @@ from ltl_instruct.core.planning.grid import grid_optimum
 from ltl_instruct.core.planning.occupancy import PlanningWorld
 from ltl_instruct.core.planning.regions import RegionSet, key_cubes
 from ltl_instruct.core.spec import parse_formula, referents_of
+from ltl_instruct.core.world import near
 from ltl_instruct.core.world.builtin import builtin_scene_path
 from ltl_instruct.core.world.scene import Scene, load_scene, scene_from_dict, slug
 
@@ -66,9 +67,7 @@ def _far_from(p: np.ndarray, others: list[np.ndarray], d: float) -> bool:
 
 
 def _box_gap(p: np.ndarray, box: dict) -> float:
-    c = np.asarray(box['center'][:2])
-    h = np.asarray(box['size'][:2]) / 2
-    return float(np.linalg.norm(np.maximum(np.abs(p[:2] - c) - h, 0.0)))
+    return float(near.box_distance(p, np.asarray([box['center']]), np.asarray([box['size']]), 2)[0])
 
 
 def _connected(scene: Scene, world: PlanningWorld, cell: float = 0.1) -> np.ndarray:

@@ -22,6 +22,7 @@ import numpy as np
 
 from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file, scene_overrides
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
+from ltl_instruct.core.world import near
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.core.world.scene import Scene
 
@@ -197,12 +198,40 @@ def _print_report(report: dict[str, Any]) -> None:
     print(f'Node logs:    {report.get("logs")}')
 
 
+def _avoided(formula: str) -> set[str]:
+    """Return the descriptors a formula avoids (none for a formula that does not parse)."""
+    from ltl_instruct.core.spec import avoided_referents_of, parse_formula
+    try:
+        return {str(d) for d in avoided_referents_of(parse_formula(formula))} if formula else set()
+    except LtlInstructError:
+        return set()
+
+
+def _draw_regions(ax: Any, report: dict[str, Any], hi: np.ndarray) -> None:
+    """Draw where each referent's near[x] holds (avoided ones red), as the planner evaluates it."""
+    threshold = float(report.get('near_threshold', near.DEFAULT_NEAR_THRESHOLD))
+    avoid = _avoided(report.get('formula') or '')
+    groundings = (report.get('referent_map') or {}).get('groundings') or {}
+    for descriptor, g in groundings.items():
+        colour = '#d62728' if descriptor in avoid else '#2ca02c'
+        for inst in g.get('instances', []):
+            c = np.asarray(inst['center'][:2], dtype=float)
+            size = np.asarray(inst.get('size', [0, 0, 0])[:2], dtype=float)
+            ring = near.outline_xy(c, size, threshold)
+            ax.fill(ring[:, 0], ring[:, 1], facecolor=colour, alpha=0.16, edgecolor=colour, lw=1.2, zorder=4)
+            label_y = c[1] + size[1] / 2 + threshold + 0.15
+            if label_y > hi[1] - 0.3:
+                label_y = c[1] - size[1] / 2 - threshold - 0.4
+            ax.annotate(descriptor, (c[0], label_y), fontsize=7.5, ha='center', color=colour,
+                        weight='bold', zorder=7)
+
+
 def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     """Draw the map, the referent regions, the plan and the driven path into ``out``."""
     import matplotlib
     matplotlib.use('Agg')
     import matplotlib.pyplot as plt
-    from matplotlib.patches import FancyBboxPatch, Rectangle
+    from matplotlib.patches import Rectangle
 
     from ltl_instruct.core.planning.plot import check_output_path, save_png
     if out == DEFAULT_OUT:   # the default folder is made; a path given is used as given
@@ -221,29 +250,7 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
             ax.add_patch(Rectangle(o.box.lo[:2], *o.size[:2], facecolor=face, edgecolor='0.4', lw=0.6,
                                    zorder=3))
         ax.annotate(o.id, o.center[:2], fontsize=6.5, ha='center', va='center', color='0.15', zorder=6)
-    threshold = float(report.get('near_threshold', 1.0))
-    avoid = set()
-    spec_formula = report.get('formula') or ''
-    from ltl_instruct.core.spec import avoided_referents_of, parse_formula
-    try:
-        avoid = {str(d) for d in avoided_referents_of(parse_formula(spec_formula))} if spec_formula else set()
-    except LtlInstructError:
-        avoid = set()
-    groundings = (report.get('referent_map') or {}).get('groundings') or {}
-    for descriptor, g in groundings.items():
-        colour = '#d62728' if descriptor in avoid else '#2ca02c'
-        for inst in g.get('instances', []):
-            # where near[x] holds: the instance's box grown by the nearness threshold
-            c = np.asarray(inst['center'][:2], dtype=float)
-            size = np.asarray(inst.get('size', [0, 0, 0])[:2], dtype=float)
-            ax.add_patch(FancyBboxPatch(tuple(c - size / 2), size[0], size[1],
-                                        boxstyle=f'round,pad={threshold},rounding_size={threshold}',
-                                        facecolor=colour, alpha=0.16, edgecolor=colour, lw=1.2, zorder=4))
-            label_y = c[1] + size[1] / 2 + threshold + 0.15
-            if label_y > hi[1] - 0.3:
-                label_y = c[1] - size[1] / 2 - threshold - 0.4
-            ax.annotate(descriptor, (c[0], label_y), fontsize=7.5, ha='center', color=colour,
-                        weight='bold', zorder=7)
+    _draw_regions(ax, report, hi)
     driven = report.get('driven')
     if driven is not None and len(driven):
         ax.plot(driven[:, 0], driven[:, 1], '-', color='#ff7f0e', lw=4.0, alpha=0.7,

@@ -16,6 +16,7 @@ from ltl_instruct.core.automaton import compile_automaton
 from ltl_instruct.core.errors import ErrorCode, GroundingError, InvalidInputError, LtlInstructError
 from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap
 from ltl_instruct.core.spec import Formula, avoided_referents_of, parse_formula, referents_of
+from ltl_instruct.core.world import near
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.core.world.scene import Scene, slug
 
@@ -30,8 +31,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--start', help='start position x,y[,z] [m] (default: the scene robot\'s start)')
     parser.add_argument('--json', action='store_true', help='print the plan as one JSON object')
     parser.add_argument('--png', help='write a picture of the plan to this PNG file')
-    parser.add_argument('--near', type=float, default=1.0,
-                        help='nearness threshold of near[x] [m] (default 1.0)')
+    parser.add_argument('--near', type=float, default=near.DEFAULT_NEAR_THRESHOLD,
+                        help=f'nearness threshold of near[x] [m] (default {near.DEFAULT_NEAR_THRESHOLD})')
     parser.add_argument('--samples', type=int, default=5000, help='FMT* samples per segment (default 5000)')
     parser.add_argument('--radius-multiplier', type=float, default=1.1, help='FMT* radius multiplier')
     parser.add_argument('--no-heuristics', action='store_true', help='turn FMT* heuristics off')

@@ -10,7 +10,8 @@ verdict is
 
 ``near[x]`` is true within ``near_threshold`` [m] of the box of an instance that the
 descriptor ``x`` resolved to in the referent map (in the plane for a ground robot,
-``dims=2``; in 3D for a drone). This module never imports rclpy.
+``dims=2``; in 3D for a drone), measured by :mod:`ltl_instruct.core.world.near` as the
+planner and the plan check measure it. This module never imports rclpy.
 """
 from __future__ import annotations
 
@@ -25,6 +26,7 @@ from ltl_instruct.core.automaton import Automaton
 from ltl_instruct.core.errors import InvalidInputError
 from ltl_instruct.core.grounding.rsm import Instance, ReferentMap
 from ltl_instruct.core.spec import Atom
+from ltl_instruct.core.world import near
 
 
 class Verdict(str, enum.Enum):
@@ -69,12 +71,6 @@ class MonitorReport:
                 'blamed_atoms': list(self.blamed_atoms)}
 
 
-def near_atom_holds(instances: Sequence[Instance], position: np.ndarray, threshold: float,
-                    dims: int) -> bool:
-    """Whether ``position`` [m] (shape (3,)) lies within ``threshold`` [m] of any instance box."""
-    return any(float(inst.distance(position, dims=dims)[0]) <= threshold for inst in instances)
-
-
 @dataclass(frozen=True)
 class LetterMaker:
     """Turns a position and the events of a step into a letter over an automaton's atoms.
@@ -89,18 +85,17 @@ class LetterMaker:
 
     atoms: tuple[Atom, ...]
     referent_map: ReferentMap
-    near_threshold: float = 1.0
+    near_threshold: float = near.DEFAULT_NEAR_THRESHOLD
     dims: int = 2
     _near: tuple[tuple[Atom, tuple[Instance, ...]], ...] = field(init=False, default=())
 
     def __post_init__(self) -> None:
-        if not (self.near_threshold >= 0.0 and math.isfinite(self.near_threshold)):
-            raise InvalidInputError(f'near_threshold must be >= 0, got {self.near_threshold}')
+        near.check_threshold(self.near_threshold)
         if self.dims not in (2, 3):
             raise InvalidInputError(f'dims must be 2 or 3, got {self.dims}')
-        near = tuple((a, self.referent_map.instances(str(a.args[0])))
-                     for a in self.atoms if a.skill == 'near')
-        object.__setattr__(self, '_near', near)
+        instances = tuple((a, self.referent_map.instances(str(a.args[0])))
+                          for a in self.atoms if a.skill == 'near')
+        object.__setattr__(self, '_near', instances)
 
     def letter(self, position: Sequence[float], events: Iterable[Atom] = ()) -> frozenset[Atom]:
         """Atoms true at ``position`` [m] (shape (3,)), plus the given event atoms.
@@ -114,7 +109,7 @@ class LetterMaker:
         if p.shape != (3,) or not np.all(np.isfinite(p)):
             raise InvalidInputError(f'a position must be 3 finite numbers, got {position!r}')
         true = {a for a, insts in self._near
-                if near_atom_holds(insts, p, self.near_threshold, self.dims)}
+                if near.near_instances(insts, p, self.dims, self.near_threshold)[0]}
         ev = [e for e in events if e in self.atoms]
         if len(ev) > 1:
             raise InvalidInputError('at most one pick or release per step: '

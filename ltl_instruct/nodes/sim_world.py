@@ -24,6 +24,7 @@ from std_msgs.msg import String
 
 from ltl_instruct import conversions as conv
 from ltl_instruct.core.errors import LtlInstructError
+from ltl_instruct.core.world import near
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.core.world.robot import SimulatedWorld, obstacle_points, rasterize_scene
 from ltl_instruct.nodes.common import (
@@ -43,7 +44,8 @@ PARAMS = (
     ParamSpec('camera_width', 160, 'camera image width [px]', 16, 1920),
     ParamSpec('camera_height', 120, 'camera image height [px]', 12, 1080),
     ParamSpec('camera_range', 12.0, 'farthest depth the camera returns [m]', 0.5, 500.0),
-    ParamSpec('reach', 1.0, 'how far from an object the robot may pick or release [m]', 0.1, 5.0),
+    ParamSpec('reach', near.DEFAULT_NEAR_THRESHOLD,
+              'how far from an object the robot may pick or release [m]', 0.1, 5.0),
     ParamSpec('skill_duration', 0.5, 'simulated time a pick or release takes [s]', 0.0, 30.0),
 )
 

@@ -41,12 +41,13 @@ from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructEr
 from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, PlanTrace, Verdict
 from ltl_instruct.core.spec import Atom, parse_formula
+from ltl_instruct.core.world import near
 from ltl_instruct.nodes.common import (
     ODOM_DEPTH, ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node,
 )
 
 PARAMS = (
-    ParamSpec('near_threshold', 1.0, 'nearness radius of near[x] [m]', 0.05, 50.0),
+    ParamSpec('near_threshold', near.DEFAULT_NEAR_THRESHOLD, 'nearness radius of near[x] [m]', 0.05, 50.0),
     ParamSpec('robot_kind', 'ground', 'ground (2D planning) or drone (3D)', choices=('ground', 'drone')),
     ParamSpec('grounding_timeout', 10.0, 'how long a task spec waits for its referent map [s]', 0.5, 600.0),
     ParamSpec('segment_timeout', 10.0, 'how long to wait for one plan_segment [s]', 0.5, 600.0),

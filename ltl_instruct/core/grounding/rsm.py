@@ -11,6 +11,8 @@ from typing import Any, Mapping, Optional
 
 import numpy as np
 
+from ltl_instruct.core.world import near
+
 
 class Outcome(str, enum.Enum):
     """How resolving one descriptor ended."""
@@ -43,12 +45,8 @@ class Instance:
     observations: int = 0
 
     def distance(self, points: np.ndarray, dims: int = 3) -> np.ndarray:
-        """Distance [m] from points (N, >=dims) to this instance's box (0 inside)."""
-        p = np.atleast_2d(np.asarray(points, dtype=float))[:, :dims]
-        c = np.asarray(self.center, dtype=float)[:dims]
-        h = np.asarray(self.size, dtype=float)[:dims] / 2.0
-        d = np.maximum(np.abs(p - c) - h, 0.0)
-        return np.linalg.norm(d, axis=1)
+        """Distance [m] from points (N, >=dims) to this instance's box (0 inside), shape (N,)."""
+        return near.box_distance(points, np.asarray([self.center]), np.asarray([self.size]), dims)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""

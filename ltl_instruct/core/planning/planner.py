@@ -43,8 +43,7 @@ from ltl_instruct.core.planning.segment import SegmentRequest, SegmentResult, So
 from ltl_instruct.core.planning.taskplan import NAVIGATE, SKILL, PlanStep, TaskPlan
 from ltl_instruct.core.planning.verify import verify_plan
 from ltl_instruct.core.spec.ast import Atom
-
-DEFAULT_NEAR_THRESHOLD = 1.0
+from ltl_instruct.core.world.near import DEFAULT_NEAR_THRESHOLD, check_threshold
 
 
 @dataclass(frozen=True)
@@ -54,7 +53,7 @@ class PlannerSettings:
     Attributes
     ----------
     near_threshold: ``near[x]`` holds within this distance [m] of an instance's box
-        (LIMP uses about 1 m on the ground; the same default serves drones).
+        (:data:`~ltl_instruct.core.world.near.DEFAULT_NEAR_THRESHOLD` by default).
     fmt: motion-planner settings for every segment.
     max_segments: segment solves before the search gives up (``TIMEOUT``).
     time_budget: wall-clock budget of the whole search [s] (``TIMEOUT``).
@@ -71,9 +70,7 @@ class PlannerSettings:
     verify_spacing: float = 0.05
 
     def __post_init__(self) -> None:
-        if not (isinstance(self.near_threshold, (int, float)) and math.isfinite(self.near_threshold)
-                and self.near_threshold > 0):
-            raise InvalidInputError(f'near_threshold must be a positive number, got {self.near_threshold!r}')
+        check_threshold(self.near_threshold)
         if not (isinstance(self.max_segments, int) and self.max_segments >= 1):
             raise InvalidInputError('max_segments must be a positive integer')
         if not (isinstance(self.time_budget, (int, float)) and self.time_budget > 0):

@@ -1,7 +1,7 @@
 """Atom regions and task progression maps (TPSM), evaluated exactly from guards.
 
 ``near[x]`` holds where the robot centre is within the nearness threshold of the box of
-any instance ``x`` resolved to (distance to the box, so 0 inside it). An
+any instance ``x`` resolved to (:mod:`ltl_instruct.core.world.near` measures it). An
 :class:`AtomRegion` holds those instances; a :class:`RegionSet` evaluates the atoms at
 points, vectorised (N points) or one point at a time with a *margin*: the distance by
 which the point may move before any atom changes value (the planner's edge checks use
@@ -25,6 +25,7 @@ from ltl_instruct.core.automaton.guards import Cube, Guard
 from ltl_instruct.core.errors import InvalidInputError
 from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.spec.ast import Atom
+from ltl_instruct.core.world import near
 
 GOAL, NEUTRAL, AVOID = 1, 0, -1
 
@@ -57,13 +58,7 @@ class AtomRegion:
 
     def distance(self, points: np.ndarray, dims: int) -> np.ndarray:
         """Distance [m] from points (N, >=dims) to the nearest instance box, shape (N,); inf if none."""
-        p = np.atleast_2d(points)[:, :dims]
-        if not self.centers:
-            return np.full(len(p), np.inf)
-        c = np.asarray(self.centers, dtype=float)[:, :dims]
-        h = np.asarray(self.sizes, dtype=float)[:, :dims] / 2.0
-        gap = np.maximum(np.abs(p[:, None, :] - c[None]) - h[None], 0.0)
-        return np.sqrt((gap ** 2).sum(axis=2)).min(axis=1)
+        return near.box_distance(points, np.asarray(self.centers), np.asarray(self.sizes), dims)
 
     def only(self, index: int) -> 'AtomRegion':
         """Return the same region restricted to one instance."""
@@ -156,33 +151,16 @@ class RegionSet:
         self.regions = tuple(regions)
         self.dims = dims
         self.by_key = {r.key: r for r in self.regions}
-        # flattened instance boxes for the scalar path: (key index, lo, hi, radius)
-        self._flat: list[tuple[int, tuple[float, ...], tuple[float, ...], float]] = []
-        for i, r in enumerate(self.regions):
-            for c, s in zip(r.centers, r.sizes):
-                lo = tuple(c[k] - s[k] / 2.0 for k in range(dims))
-                hi = tuple(c[k] + s[k] / 2.0 for k in range(dims))
-                self._flat.append((i, lo, hi, r.radius))
+        # instance box corners per region, for the scalar path
+        self._corners = tuple(near.box_corners(r.centers, r.sizes, dims) for r in self.regions)
 
     def valuation(self, points: np.ndarray) -> dict[str, np.ndarray]:
         """Atom key -> whether it holds at each point (N, >=dims), each shape (N,)."""
-        return {r.key: r.distance(points, self.dims) <= r.radius for r in self.regions}
+        return {r.key: near.is_near(r.distance(points, self.dims), r.radius) for r in self.regions}
 
     def nearest(self, p: Sequence[float]) -> list[float]:
         """Distance [m] from point ``p`` to each region's nearest instance box (inf: no instance)."""
-        d = self.dims
-        nearest = [math.inf] * len(self.regions)
-        for i, lo, hi, _ in self._flat:
-            s = 0.0
-            for k in range(d):
-                x = p[k]
-                if x < lo[k]:
-                    s += (lo[k] - x) ** 2
-                elif x > hi[k]:
-                    s += (x - hi[k]) ** 2
-            if s < nearest[i] * nearest[i]:
-                nearest[i] = math.sqrt(s)
-        return nearest
+        return [near.point_distance(p, corners) for corners in self._corners]
 
     def letter_and_margin(self, p: Sequence[float]) -> tuple[frozenset[str], float]:
         """Return the true keys at ``p``, and how far [m] ``p`` may move before any changes."""
@@ -191,7 +169,7 @@ class RegionSet:
         margin = math.inf
         for i, r in enumerate(self.regions):
             dist = nearest[i]
-            if dist <= r.radius:
+            if near.is_near(dist, r.radius):
                 true.append(r.key)
             if dist != math.inf:
                 margin = min(margin, abs(dist - r.radius))

@@ -31,6 +31,7 @@ from ltl_instruct.core.planning.regions import (
     AtomRegion, KeyCube, RegionSet, TaskProgressionMap, eval_guard_vectorised, eval_key_cubes, guard_keys,
     key_cubes,
 )
+from ltl_instruct.core.world import near
 
 TARGET_KEY = '__target__'
 MAX_REGIONS = 256
@@ -373,8 +374,8 @@ class SegmentProblem:
                 continue
             region = min(candidates, key=lambda r: len(r.centers))
             for c, s in zip(region.centers, region.sizes):
-                lo = np.maximum(np.asarray(c[:dims]) - np.asarray(s[:dims]) / 2 - region.radius, self.lo)
-                hi = np.minimum(np.asarray(c[:dims]) + np.asarray(s[:dims]) / 2 + region.radius, self.hi)
+                lo, hi = near.region_box(c, s, region.radius, dims)
+                lo, hi = np.maximum(lo, self.lo), np.minimum(hi, self.hi)
                 if np.all(lo <= hi):
                     boxes.append((lo, hi))
         if not boxes:
@@ -425,9 +426,7 @@ class SegmentProblem:
                 if region is None:
                     continue
                 for c, sz in zip(region.centers, region.sizes):
-                    lo = np.asarray(c[:dims]) - np.asarray(sz[:dims]) / 2
-                    hi = np.asarray(c[:dims]) + np.asarray(sz[:dims]) / 2
-                    q = np.clip(a, lo, hi)
+                    q = near.nearest_box_point(a, c, sz)
                     d = float(np.linalg.norm(a - q))
                     r = region.radius * (1.0 - 1e-6)
                     out.append(a.copy() if d <= r else q + (a - q) * (r / d))

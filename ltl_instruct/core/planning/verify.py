@@ -1,7 +1,8 @@
 """The independent check every plan passes before it is returned.
 
 It shares no region code with the planner: atoms are evaluated here from the referent
-map's instances (:meth:`Instance.distance`), obstacles from the world's boxes as given
+map's instances (with :mod:`ltl_instruct.core.world.near`, the one definition of
+``near`` that the planner and the monitor use too), obstacles from the world's boxes as given
 (Euclidean clearance to the robot radius, not the planner's inflated boxes), on the
 path resampled at ``spacing`` (5 cm by default). The trace is the letter at the start,
 then one letter per path sample (the first sample of a step is where the previous one
@@ -22,6 +23,7 @@ from ltl_instruct.core.planning.segment import resample
 from ltl_instruct.core.planning.taskplan import NAVIGATE, PlanStep, Verification
 from ltl_instruct.core.spec.ast import Atom
 from ltl_instruct.core.spec.parser import parse_formula
+from ltl_instruct.core.world import near
 
 
 def _atom_truth(atoms: Sequence[Atom], referent_map: ReferentMap, points: np.ndarray, dims: int,
@@ -31,18 +33,12 @@ def _atom_truth(atoms: Sequence[Atom], referent_map: ReferentMap, points: np.nda
     for a in atoms:
         if a.skill != 'near':
             continue
-        inst = referent_map.instances(str(a.args[0]))
-        if not inst:
-            out[a] = np.zeros(len(points), dtype=bool)
-            continue
-        dist = np.min([i.distance(points, dims) for i in inst], axis=0)
-        out[a] = dist <= threshold
+        out[a] = near.near_instances(referent_map.instances(str(a.args[0])), points, dims, threshold)
     return out
 
 
 def _near(referent_map: ReferentMap, descriptor: str, point: np.ndarray, dims: int, threshold: float) -> bool:
-    inst = referent_map.instances(descriptor)
-    return bool(inst) and min(float(i.distance(point[None], dims)[0]) for i in inst) <= threshold
+    return bool(near.near_instances(referent_map.instances(descriptor), point[None], dims, threshold)[0])
 
 
 def _collision(world: PlanningWorld, points: np.ndarray) -> np.ndarray:

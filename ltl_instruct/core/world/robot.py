@@ -18,6 +18,7 @@ from typing import Optional, Sequence
 import numpy as np
 
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
+from ltl_instruct.core.world import near
 from ltl_instruct.core.world.scene import Scene, SceneObject
 
 
@@ -267,11 +268,12 @@ class SimulatedWorld:
     ----------
     scene: the world.
     max_speed: robot speed [m/s].
-    reach: how far from an object's box [m] the robot may pick it or release onto it.
+    reach: how far from an object's box [m] the robot may pick it or release onto it (by
+        default the nearness threshold: where the task says the robot is near it).
     max_pick_size: objects larger than this on any axis [m] cannot be picked.
     """
 
-    def __init__(self, scene: Scene, max_speed: float = 1.0, reach: float = 1.0,
+    def __init__(self, scene: Scene, max_speed: float = 1.0, reach: float = near.DEFAULT_NEAR_THRESHOLD,
                  max_pick_size: float = 1.0) -> None:
         self.scene = scene
         self.robot = KinematicRobot(scene.robot.start, max_speed=max_speed,
@@ -302,9 +304,8 @@ class SimulatedWorld:
 
     def _distance_to(self, o: SceneObject, point: np.ndarray) -> float:
         dims = 3 if self.scene.robot.kind == 'drone' else 2
-        if o.box is None:
-            return float(np.linalg.norm(np.asarray(o.center)[:dims] - point[:dims]))
-        return float(o.box.distance(point, dims=dims)[0])
+        size = o.size if o.size is not None else (0.0, 0.0, 0.0)
+        return float(near.box_distance(point, np.asarray([o.center]), np.asarray([size]), dims)[0])
 
     def find_object(self, object_id: str = '', near_point: Optional[Sequence[float]] = None,
                     name: str = '') -> Optional[SceneObject]:
@@ -337,7 +338,7 @@ class SimulatedWorld:
             return SkillOutcome('pick', obj.id, '', False, ErrorCode.SKILL_FAILED.value,
                                 f'{obj.id} is too large to pick ({max(obj.size):.2f} m)')
         d = self._distance_to(obj, self.robot.pose.xyz)
-        if d > self.reach:
+        if not near.is_near(d, self.reach):
             return SkillOutcome('pick', obj.id, '', False, ErrorCode.SKILL_FAILED.value,
                                 f'{obj.id} is out of reach ({d:.2f} m > {self.reach:.2f} m)')
         self.carried = obj.id
@@ -359,7 +360,7 @@ class SimulatedWorld:
             return SkillOutcome('release', oid, '', False, ErrorCode.UNKNOWN_REFERENT.value,
                                 'no such release target in the simulated world')
         d = self._distance_to(target, self.robot.pose.xyz)
-        if d > self.reach:
+        if not near.is_near(d, self.reach):
             return SkillOutcome('release', oid, target.id, False, ErrorCode.SKILL_FAILED.value,
                                 f'{target.id} is out of reach ({d:.2f} m > {self.reach:.2f} m)')
         top = target.center[2] + (target.size[2] / 2.0 if target.size is not None else 0.0)

@@ -18,6 +18,7 @@ import numpy as np
 import yaml
 
 from ltl_instruct.core.errors import ErrorCode, SceneError
+from ltl_instruct.core.world import near
 
 ROBOT_KINDS = ('ground', 'drone')
 
@@ -60,9 +61,7 @@ class Box:
 
     def distance(self, points: np.ndarray, dims: int = 3) -> np.ndarray:
         """Euclidean distance [m] from points (N, >=dims) to the box (0 inside)."""
-        p = np.atleast_2d(points)[:, :dims]
-        d = np.maximum(np.maximum(self.lo[:dims] - p, p - self.hi[:dims]), 0.0)
-        return np.linalg.norm(d, axis=1)
+        return near.box_distance(points, np.asarray([self.center]), np.asarray([self.size]), dims)
 
 
 @dataclass(frozen=True)

@@ -67,7 +67,7 @@ def test_no_plan_exits_1_with_a_typed_error(scene_file, capsys):
     ['--formula', 'F near[[sofa'],
     ['--formula', 'F near[unicorn]'],
     ['--formula', 'F near[sofa]', '--start', 'nan,1'],
-    ['--formula', 'F near[sofa]', '--start', '6,2.5'],
+    ['--formula', 'F near[sofa]', '--start', '30,2.5'],   # far outside (one in the thin wall is moved out)
     ['--formula', 'F near[sofa]', '--start', '1,2,3,4'],
     ['--formula', 'F near[sofa]', '--near', '-1'],
     ['--formula', 'F ' * 6000 + 'near[sofa]'],

@@ -136,10 +136,12 @@ def test_start_that_violates_the_task_or_collides_is_refused():
     with pytest.raises(PlanningError) as e:
         _plan('F near[sofa] & G !near[door]', near_door)
     assert e.value.code == ErrorCode.START_OCCUPIED
-    in_wall = dict(ROOM, robot={'kind': 'ground', 'start': [10, 3, 0], 'radius': 0.3})
+    # no free point within start_shift (0.5 m) of the middle of a 2 m thick block
+    block = dict(ROOM, obstacles=ROOM['obstacles'] + [{'center': [6, 6, 1], 'size': [2, 2, 2]}],
+                 robot={'kind': 'ground', 'start': [6, 6, 0], 'radius': 0.3})
     with pytest.raises(PlanningError) as e:
-        _plan('F near[sofa]', in_wall)
-    assert e.value.code == ErrorCode.START_OCCUPIED
+        _plan('F near[sofa]', block)
+    assert e.value.code == ErrorCode.START_OCCUPIED and '0.5 m' in e.value.message
     scene = scene_from_dict(ROOM)
     aut = compile_automaton('F near[sofa]')
     for bad in ([float('nan'), 1.0], ['a', 'b'], [1.0]):

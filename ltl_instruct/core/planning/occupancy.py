@@ -22,6 +22,7 @@ import numpy as np
 from scipy import ndimage
 
 from ltl_instruct.core.errors import InvalidInputError
+from ltl_instruct.core.world import near
 from ltl_instruct.core.world.scene import Box, Scene
 
 MAX_LOOKUP_CELLS = 40_000_000
@@ -185,23 +186,32 @@ class PlanningWorld:
             if not (self.bounds_min[k] <= x <= self.bounds_max[k]):
                 return -1.0
             best = min(best, x - self.bounds_min[k], self.bounds_max[k] - x)
-        for lo, hi in self._boxes:
-            s = 0.0
-            for k in range(d):
-                x = p[k]
-                if x < lo[k]:
-                    s += (lo[k] - x) ** 2
-                elif x > hi[k]:
-                    s += (x - hi[k]) ** 2
-            if s == 0.0:
-                return -1.0
-            if s < best * best:
-                best = math.sqrt(s)
+        to_box = near.point_distance(p, self._boxes)   # the boxes' faces count as inside
+        if to_box == 0.0:
+            return -1.0
+        best = min(best, to_box)
         if self.lookup is not None:
             if self.lookup.is_blocked(np.asarray(p[:d], dtype=float)[None])[0]:
                 return -1.0
             best = 0.0  # free, but no certified radius: the caller samples finely
         return best
+
+    def nearest_free(self, p: Sequence[float], max_distance: float,
+                     step: float = 0.01) -> Optional[np.ndarray]:
+        """Return the free point nearest ``p`` [m] within ``max_distance`` [m] (to ``step``), or None.
+
+        ``p`` itself when it is free; else the first free point on circles (2D) or spheres
+        (3D) of radius ``step``, ``2 step``... around it, each sampled about ``step`` apart.
+        """
+        c = np.asarray(p, dtype=float)[:self.dims]
+        if self.is_free(c[None])[0]:
+            return c
+        for r in np.arange(step, max_distance + step / 2, step):
+            ring = c + r * _directions(self.dims, max(8, int(math.ceil(2 * math.pi * r / step))))
+            free = np.flatnonzero(self.is_free(ring))
+            if len(free):
+                return ring[free[0]]
+        return None
 
     def _boxes_over(self, lo: Sequence[float], hi: Sequence[float]) -> Sequence[int]:
         """Return indices of the boxes that may overlap the (x, y) rectangle lo..hi (a superset)."""
@@ -246,6 +256,18 @@ class PlanningWorld:
             if t0 <= t1:
                 return True
         return False
+
+
+def _directions(dims: int, around: int) -> np.ndarray:
+    """Return unit vectors, evenly spread: ``around`` on a circle (2D), or about as dense on a sphere (3D)."""
+    if dims == 2:
+        a = np.arange(around) * (2 * math.pi / around)
+        return np.column_stack([np.cos(a), np.sin(a)])
+    n = max(2, around * around // 3)   # a Fibonacci sphere: spacing about that of the circle
+    z = 1.0 - (np.arange(n) + 0.5) * (2.0 / n)
+    a = np.arange(n) * math.pi * (3.0 - math.sqrt(5.0))
+    rho = np.sqrt(1.0 - z * z)
+    return np.column_stack([rho * np.cos(a), rho * np.sin(a), z])
 
 
 # --------------------------------------------------------------------------- factories

@@ -17,6 +17,13 @@ process it is FMT*; a ROS node plugs in one that sends the request over DDS. The
 result of every segment is re-run through the automaton before it is used, and the
 whole plan is checked by :func:`~ltl_instruct.core.planning.verify.verify_plan`
 before it is returned.
+
+Every segment asks for the margins of the settings: each goal region entered
+``goal_margin`` deep (the path goes on past the edge, in the state the edge led to),
+each region to avoid passed ``avoid_margin`` outside. A segment keeps less only where
+the free space leaves no path that keeps them, and the plan's warnings say so. A start
+inside an inflated obstacle (a robot touching a wall) is moved to the nearest free point
+within ``start_shift``, with a warning.
 """
 from __future__ import annotations
 
@@ -43,7 +50,9 @@ from ltl_instruct.core.planning.segment import SegmentRequest, SegmentResult, So
 from ltl_instruct.core.planning.taskplan import NAVIGATE, SKILL, PlanStep, TaskPlan
 from ltl_instruct.core.planning.verify import verify_plan
 from ltl_instruct.core.spec.ast import Atom
-from ltl_instruct.core.world.near import DEFAULT_NEAR_THRESHOLD, check_threshold
+from ltl_instruct.core.world.near import (
+    DEFAULT_AVOID_MARGIN, DEFAULT_GOAL_MARGIN, DEFAULT_NEAR_THRESHOLD, check_margin, check_threshold,
+)
 
 
 @dataclass(frozen=True)
@@ -54,6 +63,11 @@ class PlannerSettings:
     ----------
     near_threshold: ``near[x]`` holds within this distance [m] of an instance's box
         (:data:`~ltl_instruct.core.world.near.DEFAULT_NEAR_THRESHOLD` by default).
+    goal_margin: how deep [m] each goal region is entered (where the region allows).
+    avoid_margin: how far [m] outside each region to avoid the path stays (where free
+        space allows).
+    start_shift: how far [m] a start inside an obstacle may be moved to free space
+        (farther: ``START_OCCUPIED``).
     fmt: motion-planner settings for every segment.
     max_segments: segment solves before the search gives up (``TIMEOUT``).
     time_budget: wall-clock budget of the whole search [s] (``TIMEOUT``).
@@ -68,9 +82,15 @@ class PlannerSettings:
     time_budget: float = 60.0
     max_alternatives: int = 4
     verify_spacing: float = 0.05
+    goal_margin: float = DEFAULT_GOAL_MARGIN
+    avoid_margin: float = DEFAULT_AVOID_MARGIN
+    start_shift: float = 0.5
 
     def __post_init__(self) -> None:
         check_threshold(self.near_threshold)
+        check_margin(self.goal_margin, 'goal_margin')
+        check_margin(self.avoid_margin, 'avoid_margin')
+        check_margin(self.start_shift, 'start_shift')
         if not (isinstance(self.max_segments, int) and self.max_segments >= 1):
             raise InvalidInputError('max_segments must be a positive integer')
         if not (isinstance(self.time_budget, (int, float)) and self.time_budget > 0):
@@ -142,8 +162,11 @@ class _Search:
         regions = tuple(self.region_of[k] if k in self.region_of else AtomRegion(k, (), (), 0.0)
                         for k in sorted(keys))
         rid = f'{self.request_id}/{self.solves}'
+        hold = navigation_guard(self.aut.self_loop(transition[1]))   # where the path may go on into the goal
+        s = self.settings
         return SegmentRequest(rid, tuple(float(x) for x in start[:self.dims]), self.dims, regions, goal,
-                              allowed, self.settings.fmt, target, None, None, transition)
+                              allowed, s.fmt, target, None, None, transition, hold, s.goal_margin,
+                              s.avoid_margin)
 
     def budget_left(self) -> bool:
         if self.solves >= self.settings.max_segments or \
@@ -231,13 +254,14 @@ class _Search:
                 f'{req.describe()}: the returned path does not start at the robot', ErrorCode.NO_VALID_PATH))
             return None
         states = self.run_states(state, w)
-        if any(s != state for s in states[:-1]) or states[-1] != dst:
+        if not _one_transition(states, state, dst):
             self.failures.append(PlanningError(
                 f'{req.describe()}: the returned path does not take the automaton to {dst} '
                 f'(it went {state} -> {states[-1]})', ErrorCode.NO_VALID_PATH))
             return None
         return PlanStep(NAVIGATE, state, dst, w, '', str(goal), str(allowed), req,
-                        float(np.linalg.norm(np.diff(w, axis=0), axis=1).sum()), time.monotonic() - t)
+                        float(np.linalg.norm(np.diff(w, axis=0), axis=1).sum()), time.monotonic() - t,
+                        result.goal_margin, result.avoid_margin, result.warnings)
 
     def search(self, state: int, pos: np.ndarray, holding: Optional[str],
                visited: frozenset) -> Optional[list[PlanStep]]:
@@ -288,6 +312,12 @@ class _Search:
             return None
         steps.append(PlanStep(SKILL, state, after, here[None].copy(), cand.event.key))
         return steps
+
+
+def _one_transition(states: Sequence[int], state: int, dst: int) -> bool:
+    """Whether a run stays in ``state``, then (at the goal's edge) moves to ``dst`` and stays there."""
+    k = next((i for i, s in enumerate(states) if s != state), len(states))
+    return states[-1] == dst and all(s == dst for s in states[k:])
 
 
 def _failure_error(search: _Search, formula: str) -> LtlInstructError:
@@ -343,7 +373,8 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
     UnsatisfiableError
         (``UNSATISFIABLE``) if no trace satisfies the formula.
     PlanningError
-        ``START_OCCUPIED`` (start in collision or already violating the task),
+        ``START_OCCUPIED`` (start in collision with no free point within
+        ``settings.start_shift``, or already violating the task),
         ``GOAL_OCCUPIED`` (every goal region blocked), ``NO_VALID_PATH``, ``TIMEOUT``, or
         ``VERIFICATION_FAILED``; the message says which transition and why.
     InvalidInputError
@@ -362,10 +393,7 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
     if not automaton.is_satisfiable:
         raise UnsatisfiableError(f'the task "{formula}" can never be completed: no sequence of steps '
                                  'satisfies it', details={'formula': formula})
-    if not world.is_free(p0[None])[0]:
-        where = ', '.join(f'{x:.2f}' for x in p0)
-        raise PlanningError(f'the start ({where}) is in collision or outside the map',
-                            ErrorCode.START_OCCUPIED, details={'start': p0.tolist()})
+    p0, warnings = _free_start(world, p0, settings.start_shift)
     fmt = settings.fmt
     solver: SolveFn = solve if solve is not None else (lambda req: solve_segment(req, world, fmt))
     search = _Search(automaton, referent_map, world, settings, solver, request_id)
@@ -389,7 +417,31 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
                             ErrorCode.VERIFICATION_FAILED, details={'verification': verification.to_dict()})
     stats = {'segments_solved': search.solves, 'segment_failures': len(search.failures),
              'seconds': round(time.monotonic() - t0, 4)}
-    return TaskPlan(formula, p0, dims, tuple(steps), 'planned' if steps else 'satisfied', verification, stats)
+    warnings += [w for s in steps for w in s.warnings]
+    nearness = {'near_threshold': settings.near_threshold, 'goal_margin': settings.goal_margin,
+                'avoid_margin': settings.avoid_margin}
+    return TaskPlan(formula, p0, dims, tuple(steps), 'planned' if steps else 'satisfied', verification, stats,
+                    tuple(warnings), nearness)
+
+
+def _free_start(world: PlanningWorld, p0: np.ndarray, shift: float) -> tuple[np.ndarray, list[str]]:
+    """Return the start, moved to the nearest free point when it is in an obstacle, and a warning.
+
+    Raises
+    ------
+    PlanningError
+        ``START_OCCUPIED`` when no free point lies within ``shift`` [m].
+    """
+    where = ', '.join(f'{x:.2f}' for x in p0)
+    free = world.nearest_free(p0, shift)
+    if free is None:
+        raise PlanningError(f'the start ({where}) is in collision or outside the map, with no free point '
+                            f'within {shift} m', ErrorCode.START_OCCUPIED, details={'start': p0.tolist()})
+    if np.array_equal(free, p0):
+        return p0, []
+    moved = float(np.linalg.norm(free - p0))
+    return free, [f'the start ({where}) is in an obstacle grown by the robot radius or outside the map: '
+                  f'the plan starts {moved:.2f} m away at ({", ".join(f"{x:.2f}" for x in free)})']
 
 
 def referent_regions(automaton: Automaton, referent_map: ReferentMap,

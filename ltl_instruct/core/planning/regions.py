@@ -151,16 +151,21 @@ class RegionSet:
         self.regions = tuple(regions)
         self.dims = dims
         self.by_key = {r.key: r for r in self.regions}
-        # instance box corners per region, for the scalar path
-        self._corners = tuple(near.box_corners(r.centers, r.sizes, dims) for r in self.regions)
+        # regions of the same boxes (an atom and its margins) share one distance
+        boxes: dict[tuple, int] = {}
+        self._box_of = [boxes.setdefault((r.centers, r.sizes), len(boxes)) for r in self.regions]
+        self._unique = [next(r for r in self.regions if (r.centers, r.sizes) == k) for k in boxes]
+        self._corners = tuple(near.box_corners(r.centers, r.sizes, dims) for r in self._unique)
 
     def valuation(self, points: np.ndarray) -> dict[str, np.ndarray]:
         """Atom key -> whether it holds at each point (N, >=dims), each shape (N,)."""
-        return {r.key: near.is_near(r.distance(points, self.dims), r.radius) for r in self.regions}
+        dist = [r.distance(points, self.dims) for r in self._unique]
+        return {r.key: near.is_near(dist[b], r.radius) for r, b in zip(self.regions, self._box_of)}
 
     def nearest(self, p: Sequence[float]) -> list[float]:
         """Distance [m] from point ``p`` to each region's nearest instance box (inf: no instance)."""
-        return [near.point_distance(p, corners) for corners in self._corners]
+        dist = [near.point_distance(p, corners) for corners in self._corners]
+        return [dist[b] for b in self._box_of]
 
     def letter_and_margin(self, p: Sequence[float]) -> tuple[frozenset[str], float]:
         """Return the true keys at ``p``, and how far [m] ``p`` may move before any changes."""

@@ -13,13 +13,24 @@ regions, a point's margin (its distance to the nearest region boundary) certifie
 ball in which no atom changes, so the check steps over that ball; near a boundary it
 steps by ``check_resolution`` (1 cm by default), so no avoid region thicker than that
 can be jumped.
+
+Margins (issue 21: plans a controller can finish). With ``goal_margin`` > 0 the path
+goes on past the goal region's edge, where the automaton takes the transition, until it
+is ``goal_margin`` deep (the goal's near atoms at ``threshold - goal_margin``); that tail
+keeps to ``hold``, the next state's self-loop, so the automaton stays where the
+transition took it. With ``avoid_margin`` > 0 every atom a guard needs false is kept
+false at ``threshold + avoid_margin``. Both are evaluated as extra regions of the same
+boxes with those radii, so the edge checks stay exact. When the goal region's free part
+is too thin, the margin is capped at the deepest goal point found; when no path keeps a
+margin but a plain one exists, the margin is dropped. Either way the result says which
+margins it kept and warns.
 """
 from __future__ import annotations
 
 import math
 import time
 from dataclasses import dataclass, field, replace
-from typing import Any, Callable, Mapping, Optional, Sequence
+from typing import Any, Callable, Iterable, Mapping, Optional, Sequence
 
 import numpy as np
 
@@ -34,6 +45,8 @@ from ltl_instruct.core.planning.regions import (
 from ltl_instruct.core.world import near
 
 TARGET_KEY = '__target__'
+DEEP = '@deep'   # suffix of a goal atom's region shrunk by the goal margin
+WIDE = '@wide'   # suffix of an atom's region grown by the avoid margin
 MAX_REGIONS = 256
 MAX_INSTANCES = 4096
 MAX_CUBES = 4096
@@ -79,6 +92,10 @@ class SegmentRequest:
     target: optional ``(atom key, instance index)``: the goal also needs that instance.
     bounds_min, bounds_max: optional limits [m] (within the world's).
     transition: ``(state, next state)`` of the automaton, for messages.
+    hold: letters that keep the automaton in the next state (its self-loop): where the
+        path may go on after the goal's edge to reach ``goal_margin``; None: within the goal.
+    goal_margin: how deep [m] the path ends inside the goal region (0: at its edge).
+    avoid_margin: how far [m] outside the regions a guard needs false the path stays.
     """
 
     id: str
@@ -92,6 +109,9 @@ class SegmentRequest:
     bounds_min: Optional[tuple[float, ...]] = None
     bounds_max: Optional[tuple[float, ...]] = None
     transition: tuple[int, int] = (-1, -1)
+    hold: Optional[Guard] = None
+    goal_margin: float = 0.0
+    avoid_margin: float = 0.0
 
     def describe(self) -> str:
         """``transition 0 -> 1 (goal: near[a], allowed: !near[b])`` for messages."""
@@ -114,6 +134,9 @@ class SegmentRequest:
         }
         if self.bounds_min is not None and self.bounds_max is not None:
             d['bounds'] = {'min': list(self.bounds_min), 'max': list(self.bounds_max)}
+        if self.hold is not None:
+            d['hold'] = self.hold.to_dict()
+        d.update(goal_margin=self.goal_margin, avoid_margin=self.avoid_margin)
         return d
 
     @staticmethod
@@ -141,9 +164,12 @@ class SegmentRequest:
             raise InvalidInputError(f'segment request: more than {MAX_INSTANCES} instances')
         goal = _guard_from(d.get('goal'), 'goal')
         allowed = _guard_from(d.get('allowed'), 'allowed')
+        hold = _guard_from(d['hold'], 'hold') if d.get('hold') is not None else None
+        margins = [near.check_margin(d.get(k, 0.0), f'segment request: {k}')
+                   for k in ('goal_margin', 'avoid_margin')]
         known = {r.key for r in regions}
-        missing = sorted(k for k in guard_keys(goal) | guard_keys(allowed)
-                         if k not in known and not k.startswith(('pick[', 'release[')))
+        mentioned = guard_keys(goal) | guard_keys(allowed) | (guard_keys(hold) if hold is not None else set())
+        missing = sorted(k for k in mentioned if k not in known and not k.startswith(('pick[', 'release[')))
         if missing:
             raise InvalidInputError(f'segment request: no region for {", ".join(missing)}')
         settings_d = d.get('settings') or {}
@@ -173,7 +199,7 @@ class SegmentRequest:
         if not isinstance(rid, str) or len(rid) > 400:
             raise InvalidInputError('segment request: id must be text (at most 400 characters)')
         return SegmentRequest(rid, start, dims, regions, goal, allowed, settings, target, bmin, bmax,
-                              (int(tr[0]), int(tr[1])))
+                              (int(tr[0]), int(tr[1])), hold, margins[0], margins[1])
 
 
 def _bad_region(r: Any) -> AtomRegion:
@@ -194,6 +220,9 @@ class SegmentResult:
     error: the typed failure, or None.
     seconds: wall-clock time of the whole solve [s].
     planner_seconds: time inside OMPL [s].
+    goal_margin, avoid_margin: the margins [m] the path keeps (those asked for, or less
+        where the warnings say why).
+    warnings: margins not kept, for people.
     """
 
     request_id: str
@@ -203,6 +232,9 @@ class SegmentResult:
     error: Optional[LtlInstructError] = None
     seconds: float = 0.0
     planner_seconds: float = 0.0
+    goal_margin: float = 0.0
+    avoid_margin: float = 0.0
+    warnings: tuple[str, ...] = ()
 
     @property
     def ok(self) -> bool:
@@ -215,6 +247,8 @@ class SegmentResult:
                              'seconds': self.seconds, 'planner_seconds': self.planner_seconds}
         if self.waypoints is not None:
             d['waypoints'] = np.round(self.waypoints, 6).tolist()
+            d.update(goal_margin=self.goal_margin, avoid_margin=self.avoid_margin,
+                     warnings=list(self.warnings))
         if self.error is not None:
             d['error'] = self.error.to_dict()
         return d
@@ -234,6 +268,17 @@ class SegmentResult:
             w = np.vstack([w, w])
         dense = resample(w, spacing) if spacing > 0 else w
         return SegmentResult(request_id, w, as_xyz(dense), path_length(w))
+
+    def with_margins_of(self, d: Any) -> 'SegmentResult':
+        """Return this result with the margins and warnings of a received ``to_dict`` (checked)."""
+        if not isinstance(d, Mapping):
+            return self
+        gm = near.check_margin(d.get('goal_margin', 0.0), 'segment result: goal_margin')
+        am = near.check_margin(d.get('avoid_margin', 0.0), 'segment result: avoid_margin')
+        warnings = d.get('warnings') or []
+        if not isinstance(warnings, list) or not all(isinstance(w, str) for w in warnings):
+            raise InvalidInputError('segment result: warnings must be a list of text')
+        return replace(self, goal_margin=gm, avoid_margin=am, warnings=tuple(w[:500] for w in warnings[:20]))
 
 
 # --------------------------------------------------------------------------- path helpers
@@ -263,8 +308,43 @@ def resample(points: np.ndarray, spacing: float) -> np.ndarray:
     return np.vstack(out)
 
 
+def _rename(cubes: Sequence[KeyCube], pos: Mapping[str, str], neg: Mapping[str, str]) -> tuple[KeyCube, ...]:
+    """Return key cubes with true keys renamed by ``pos`` and false keys by ``neg`` (others kept)."""
+    return tuple((frozenset(pos.get(k, k) for k in p), frozenset(neg.get(k, k) for k in n)) for p, n in cubes)
+
+
+def _meet(a: Sequence[KeyCube], b: Sequence[KeyCube]) -> tuple[KeyCube, ...]:
+    """Return the conjunction of two guards given as key cubes (contradictory cubes dropped)."""
+    out = []
+    for pa, na in a:
+        for pb, nb in b:
+            pos, neg = pa | pb, na | nb
+            if not pos & neg:
+                out.append((pos, neg))
+    return tuple(out)
+
+
+def _margin_regions(regions: Sequence[AtomRegion], keys: Iterable[str], suffix: str,
+                    change: float) -> tuple[list[AtomRegion], dict[str, str]]:
+    """Return the regions of the same boxes with the radius changed by ``change`` [m], and the renaming."""
+    by_key = {r.key: r for r in regions}
+    if change == 0:
+        return [], {}
+    out = [replace(by_key[k], key=k + suffix, radius=max(by_key[k].radius + change, 0.0))
+           for k in sorted(set(keys)) if k in by_key]
+    return out, {r.key[:-len(suffix)]: r.key for r in out}
+
+
 class SegmentProblem:
-    """The validity, goal and edge checks of one request in one world (shared by FMT*, RRT*, grid)."""
+    """The validity, goal and edge checks of one request in one world (shared by FMT*, RRT*, grid).
+
+    Key cubes (guards over region keys): ``plain_goal_cubes`` is where the automaton takes
+    the transition; ``entry_cubes`` the same with the atoms it needs false kept at the
+    avoid margin; ``goal_cubes`` where the path ends (goal atoms ``goal_margin`` deep, and
+    ``hold`` when the path goes on past the edge); ``allowed_cubes`` and ``hold_cubes``
+    where the path may be before and after the edge. Without margins they are the
+    request's guards.
+    """
 
     def __init__(self, request: SegmentRequest, world: PlanningWorld) -> None:
         if request.dims != world.dims:
@@ -272,18 +352,15 @@ class SegmentProblem:
         self.request = request
         self.world = world
         regions = list(request.regions)
-        goal_cubes: tuple[KeyCube, ...] = key_cubes(request.goal)
+        plain: tuple[KeyCube, ...] = key_cubes(request.goal)
         if request.target is not None:
             key, index = request.target
             region = next((r for r in regions if r.key == key), None)
             if region is None or not 0 <= index < len(region.centers):
                 raise InvalidInputError(f'target {request.target} names no instance')
             regions.append(replace(region.only(index), key=TARGET_KEY))
-            goal_cubes = tuple((pos | {TARGET_KEY}, neg) for pos, neg in goal_cubes)
-        self.regions = RegionSet(regions, world.dims)
-        self.goal_cubes = goal_cubes
-        self.allowed_cubes = key_cubes(request.allowed)
-        self.valid_cubes = self.goal_cubes + self.allowed_cubes
+            plain = tuple((pos | {TARGET_KEY}, neg) for pos, neg in plain)
+        self._set_cubes(regions, plain)
         lo = np.asarray(world.bounds_min, dtype=float)
         hi = np.asarray(world.bounds_max, dtype=float)
         if request.bounds_min is not None and request.bounds_max is not None:
@@ -291,7 +368,26 @@ class SegmentProblem:
             hi = np.minimum(hi, request.bounds_max)
         self.lo, self.hi = lo, hi
         self.resolution = request.settings.check_resolution
-        self._radius_of = {r.key: r.radius for r in regions}
+        self._radius_of = {r.key: r.radius for r in self.regions.regions}
+
+    def _set_cubes(self, regions: list[AtomRegion], plain: tuple[KeyCube, ...]) -> None:
+        """Build the regions and cube sets; atoms the goal needs true are never kept away from."""
+        r = self.request
+        allowed = key_cubes(r.allowed)
+        hold = key_cubes(r.hold) if r.hold is not None else None
+        goal_keys = {k for pos, _ in plain for k in pos}
+        avoided = {k for cubes in (plain, allowed, hold or ()) for _, neg in cubes for k in neg} - goal_keys
+        deep_regions, deep = _margin_regions(regions, goal_keys, DEEP, -r.goal_margin)
+        wide_regions, wide = _margin_regions(regions, avoided, WIDE, r.avoid_margin)
+        self.regions = RegionSet(regions + deep_regions + wide_regions, self.world.dims)
+        self.plain_goal_cubes = plain
+        self.entry_cubes = _rename(plain, {}, wide)
+        self.allowed_cubes = _rename(allowed, {}, wide)
+        self.hold_cubes = _rename(hold, {}, wide) if hold is not None else self.entry_cubes
+        self.goal_cubes = _rename(plain, deep, wide)
+        if r.goal_margin > 0 and hold is not None:
+            self.goal_cubes = _meet(self.goal_cubes, self.hold_cubes)
+        self.valid_cubes = self.allowed_cubes + self.entry_cubes
 
     # -- points
     def letter(self, p: Sequence[float]) -> frozenset[str]:
@@ -309,8 +405,12 @@ class SegmentProblem:
         return eval_key_cubes(self.valid_cubes, self.letter(p))
 
     def in_goal(self, p: Sequence[float]) -> bool:
-        """Whether the letter at ``p`` satisfies the goal."""
+        """Whether the path may end at ``p`` (the goal, with its margins)."""
         return eval_key_cubes(self.goal_cubes, self.letter(p))
+
+    def in_plain_goal(self, p: Sequence[float]) -> bool:
+        """Whether the automaton takes the transition at ``p`` (the goal without margins)."""
+        return eval_key_cubes(self.plain_goal_cubes, self.letter(p))
 
     def goal_lower_bound(self, p: Sequence[float]) -> float:
         """Return a lower bound of the distance [m] from ``p`` to the goal region."""
@@ -354,13 +454,38 @@ class SegmentProblem:
     # -- vectorised
     def classify(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Return ``(valid, goal)`` flags for points (N, dims), each shape (N,)."""
+        flags = self._flags(points)
+        return flags['free'] & flags['valid'], flags['free'] & flags['goal']
+
+    def _flags(self, points: np.ndarray) -> dict[str, np.ndarray]:
+        """Return per point (N, dims): free, and whether each cube set holds; each shape (N,)."""
         p = np.atleast_2d(np.asarray(points, dtype=float))
         val = self.regions.valuation(p)
-        goal = eval_guard_vectorised(self.goal_cubes, val, len(p))
-        allowed = eval_guard_vectorised(self.allowed_cubes, val, len(p))
         inb = np.all((p[:, :self.world.dims] >= self.lo) & (p[:, :self.world.dims] <= self.hi), axis=1)
-        free = self.world.is_free(p) & inb
-        return free & (goal | allowed), free & goal
+        cubes = {'valid': self.valid_cubes, 'goal': self.goal_cubes, 'plain': self.plain_goal_cubes,
+                 'entry': self.entry_cubes, 'allowed': self.allowed_cubes, 'hold': self.hold_cubes}
+        out = {name: eval_guard_vectorised(c, val, len(p)) for name, c in cubes.items()}
+        out['free'] = self.world.is_free(p) & inb
+        return out
+
+    def goal_depth(self, points: np.ndarray) -> np.ndarray:
+        """How deep [m] points (N, dims) lie in the goal: per cube the least depth of its true atoms.
+
+        The best cube the point satisfies counts; shape (N,); ``-inf`` outside the goal,
+        ``inf`` for a goal with no atom to be near.
+        """
+        p = np.atleast_2d(np.asarray(points, dtype=float))
+        by_key = self.regions.by_key
+        val = self.regions.valuation(p)
+        best = np.full(len(p), -np.inf)
+        for pos, neg in self.plain_goal_cubes:
+            depth = np.full(len(p), np.inf)
+            for k in pos:
+                region = by_key[k]
+                depth = np.minimum(depth, near.depth(region.distance(p, self.world.dims), region.radius))
+            inside = eval_guard_vectorised(((pos, neg),), val, len(p))
+            best = np.where(inside, np.maximum(best, depth), best)
+        return best
 
     def sample_goal(self, count: int, seed: int, batches: int = 24, batch: int = 4096) -> np.ndarray:
         """Up to ``count`` valid goal points (M, dims), by rejection sampling near the goal atoms."""
@@ -399,21 +524,30 @@ class SegmentProblem:
         return np.vstack(found)[:count]
 
     def first_goal_prefix(self, points: np.ndarray) -> Optional[np.ndarray]:
-        """Cut the densified path at its first goal point.
+        """Cut the densified path where it may end: at its first goal point after the edge.
 
-        Returns None if it never reaches the goal, or if a point before the goal is
-        invalid (the sampled check found what the edge checks could not: a sliver of an
-        avoid region thinner than ``check_resolution``).
+        The automaton takes the transition at the first point in the plain goal (the
+        edge); points before it must be allowed, the edge must be an entry point, and
+        with a goal margin the points after it must hold the next state until the path
+        is deep enough. Returns None if it never gets there, or if a point is out of
+        place (the sampled check found what the edge checks could not: a sliver of a
+        region thinner than ``check_resolution``, or a path that leaves the goal early).
         """
         dense = resample(points, self.resolution)
-        valid, goal = self.classify(dense)
-        hits = np.flatnonzero(goal[1:]) + 1
-        if len(hits) == 0:
+        f = self._flags(dense)
+        edges = np.flatnonzero(f['plain'][1:]) + 1
+        if len(edges) == 0:
             return None
-        g = int(hits[0])
-        if not valid[1:g].all():
+        k = int(edges[0])
+        if not (f['free'] & f['allowed'])[1:k].all() or not (f['free'][k] and f['entry'][k]):
             return None
-        return dense[:g + 1]
+        if f['goal'][k]:
+            return dense[:k + 1]
+        ends = np.flatnonzero(f['goal'][k + 1:]) + k + 1
+        if len(ends) == 0:
+            return None
+        e = int(ends[0])
+        return dense[:e + 1] if (f['free'] & f['hold'])[k + 1:e + 1].all() else None
 
     def goal_projections(self, p: Sequence[float]) -> list[np.ndarray]:
         """Return the nearest points to ``p`` of the near-balls of every goal cube's true atoms."""
@@ -517,12 +651,68 @@ def solve_segment(request: SegmentRequest, world: PlanningWorld,
                   settings: Optional[FmtSettings] = None) -> SegmentResult:
     """Plan one segment in process with FMT* (or RRT*); never raises for a planning failure.
 
-    ``settings`` overrides ``request.settings`` when given. Bad input (a request that
-    does not fit the world) raises :class:`InvalidInputError`.
+    ``settings`` overrides ``request.settings`` when given. The margins are kept where
+    a path can keep them; a segment that has a path without them never fails because
+    of them: the result keeps less (capped at the deepest free goal point, or dropped)
+    and says so in its warnings. Bad input (a request that does not fit the world)
+    raises :class:`InvalidInputError`.
     """
     t0 = time.monotonic()
     if settings is not None:
         request = replace(request, settings=settings)
+    result = _solve_once(request, world)
+    if not result.ok and (request.goal_margin > 0 or request.avoid_margin > 0):
+        result = _solve_with_less_margin(request, world)
+    return replace(result, seconds=time.monotonic() - t0)
+
+
+def _solve_with_less_margin(request: SegmentRequest, world: PlanningWorld) -> SegmentResult:
+    """Solve without margins; if that works, keep as much margin as a path allows, and warn."""
+    result = _solve_once(replace(request, goal_margin=0.0, avoid_margin=0.0), world)
+    if not result.ok:
+        return result   # the segment fails whatever the margins: its own failure
+    for gm, am in _fallback_margins(request, world):
+        better = _solve_once(replace(request, goal_margin=gm, avoid_margin=am), world)
+        if better.ok:
+            result = better
+            break
+    return replace(result, warnings=_margin_warnings(request, result))
+
+
+def _fallback_margins(request: SegmentRequest, world: PlanningWorld) -> list[tuple[float, float]]:
+    """Return the (goal, avoid) margins [m] to try, most first, after the requested ones failed.
+
+    The goal margin is capped at the deepest free goal point sampled (less 1 cm, so the
+    deep region keeps some room): a thin goal region is entered as deep as it allows.
+    """
+    plain = SegmentProblem(replace(request, goal_margin=0.0, avoid_margin=0.0), world)
+    samples = plain.sample_goal(max(request.settings.goal_samples, 512), request.settings.seed)
+    deepest = float(plain.goal_depth(samples).max()) if len(samples) else 0.0
+    cap = round(min(request.goal_margin, max(deepest - 0.01, 0.0)), 4)
+    tried = {(request.goal_margin, request.avoid_margin), (0.0, 0.0)}
+    out = []
+    for pair in ((cap, request.avoid_margin), (cap, 0.0), (0.0, request.avoid_margin)):
+        if pair not in tried:
+            tried.add(pair)
+            out.append(pair)
+    return out
+
+
+def _margin_warnings(request: SegmentRequest, result: SegmentResult) -> tuple[str, ...]:
+    """Say which margins a result keeps less of than the request asked for."""
+    out = []
+    if result.goal_margin < request.goal_margin:
+        out.append(f'{request.describe()}: the goal region is entered {result.goal_margin:.2f} m deep, not '
+                   f'{request.goal_margin:.2f} m (goal_margin): no reachable free part of it is deeper')
+    if result.avoid_margin < request.avoid_margin:
+        out.append(f'{request.describe()}: regions to avoid are passed closer than '
+                   f'{request.avoid_margin:.2f} m (avoid_margin): free space leaves no path that keeps it')
+    return tuple(out)
+
+
+def _solve_once(request: SegmentRequest, world: PlanningWorld) -> SegmentResult:
+    """Plan one segment with the request's margins exactly; a typed failure if none is found."""
+    t0 = time.monotonic()
     s = request.settings
     problem = SegmentProblem(request, world)
     start = tuple(float(x) for x in request.start[:world.dims])
@@ -540,7 +730,7 @@ def solve_segment(request: SegmentRequest, world: PlanningWorld,
         return fail(ErrorCode.START_OCCUPIED,
                     f'the start ({fmt_start}) is in collision or outside the map '
                     f'(obstacles grown by the robot radius {world.robot_radius} m)')
-    if problem.in_goal(start):
+    if problem.in_plain_goal(start):   # the transition happens where the robot is: nothing to drive
         w = np.array([start, start])
         return SegmentResult(request.id, w, as_xyz(w), 0.0, None, time.monotonic() - t0)
     if not eval_key_cubes(problem.allowed_cubes, problem.letter(start)):
@@ -569,4 +759,4 @@ def solve_segment(request: SegmentRequest, world: PlanningWorld,
         path = problem.shortcut(path, pool=samples)
     dense = resample(path, s.path_spacing) if s.path_spacing > 0 else path
     return SegmentResult(request.id, path, as_xyz(dense), path_length(path), None, time.monotonic() - t0,
-                         outcome.seconds)
+                         outcome.seconds, request.goal_margin, request.avoid_margin)

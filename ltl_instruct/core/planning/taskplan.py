@@ -32,6 +32,10 @@ class PlanStep:
     request: the segment request a navigate step answered (regions and guards).
     length: path length [m] (0 for a skill).
     seconds: time spent planning this step [s].
+    goal_margin, avoid_margin: the margins [m] a navigate step keeps (the plan check
+        holds it to them): how deep it ends in its goal, how far it stays from regions
+        to avoid.
+    warnings: why a navigate step keeps less margin than asked for.
     """
 
     kind: str
@@ -44,6 +48,9 @@ class PlanStep:
     request: Optional[SegmentRequest] = None
     length: float = 0.0
     seconds: float = 0.0
+    goal_margin: float = 0.0
+    avoid_margin: float = 0.0
+    warnings: tuple[str, ...] = ()
 
     @property
     def end(self) -> np.ndarray:
@@ -56,7 +63,8 @@ class PlanStep:
                              'state_after': self.state_after}
         if self.kind == NAVIGATE:
             d.update(waypoints=np.round(self.waypoints, 4).tolist(), length=round(self.length, 4),
-                     goal=self.goal, allowed=self.allowed)
+                     goal=self.goal, allowed=self.allowed, goal_margin=self.goal_margin,
+                     avoid_margin=self.avoid_margin)
         else:
             d.update(skill=self.skill, position=np.round(self.waypoints[-1], 4).tolist())
         return d
@@ -77,6 +85,10 @@ class Verification:
     max_spacing: largest gap [m] between consecutive path samples.
     final_state: automaton state at the end of the trace.
     reason: why it failed ('' when ok).
+    margins_ok: every navigate step ends as deep in its goal, and stays as far from the
+        regions its automaton edges need false, as it says it does.
+    goal_depths: per navigate step, how deep [m] its end lies in its goal region (the
+        least over the goal's near atoms; None for a goal with no atom to be near).
     """
 
     ok: bool
@@ -88,13 +100,16 @@ class Verification:
     max_spacing: float
     final_state: int
     reason: str = ''
+    margins_ok: bool = True
+    goal_depths: tuple[Optional[float], ...] = ()
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""
         return {'ok': self.ok, 'accepted': self.accepted, 'collision_free': self.collision_free,
                 'skills_ok': self.skills_ok, 'continuous': self.continuous,
                 'num_samples': self.num_samples, 'max_spacing': round(self.max_spacing, 5),
-                'final_state': self.final_state, 'reason': self.reason}
+                'final_state': self.final_state, 'reason': self.reason, 'margins_ok': self.margins_ok,
+                'goal_depths': [None if d is None else round(d, 4) for d in self.goal_depths]}
 
 
 @dataclass(frozen=True, eq=False)
@@ -110,6 +125,9 @@ class TaskPlan:
     status: ``planned``, or ``satisfied`` when nothing needs doing.
     verification: the independent check (always run before a plan is returned).
     stats: counters (segments solved, failures, seconds).
+    warnings: what the plan does less well than asked, for people (a start moved out of
+        an obstacle, a margin not kept).
+    nearness: the ``near_threshold``, ``goal_margin`` and ``avoid_margin`` [m] it was made with.
     """
 
     formula: str
@@ -119,6 +137,8 @@ class TaskPlan:
     status: str
     verification: Verification
     stats: dict[str, Any] = field(default_factory=dict)
+    warnings: tuple[str, ...] = ()
+    nearness: dict[str, float] = field(default_factory=dict)
 
     @property
     def length(self) -> float:
@@ -146,4 +166,5 @@ class TaskPlan:
                 'start': np.round(self.start, 4).tolist(), 'dims': self.dims,
                 'length': round(self.length, 4), 'automaton_states': self.states,
                 'steps': [s.to_dict() for s in self.steps],
-                'verification': self.verification.to_dict(), 'stats': dict(self.stats)}
+                'verification': self.verification.to_dict(), 'stats': dict(self.stats),
+                'warnings': list(self.warnings), 'nearness': dict(self.nearness)}

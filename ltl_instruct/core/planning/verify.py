@@ -8,14 +8,21 @@ path resampled at ``spacing`` (5 cm by default). The trace is the letter at the 
 then one letter per path sample (the first sample of a step is where the previous one
 ended, so it is not read twice), and for a skill the atoms at the robot's position
 plus the skill's event atom. The automaton must accept it.
+
+Margins: every navigate step must end at least as deep in its goal as it says it does
+(its ``goal_margin``: the least of threshold - distance over the near atoms of the goal
+cube it ends in), and every sample must stay its ``avoid_margin`` outside the regions
+that the automaton edge it takes needs false (the step's own goal atoms excepted: the
+path is heading into them). The depth of every goal is reported.
 """
 from __future__ import annotations
 
-from typing import Optional, Sequence
+from typing import Iterable, Optional, Sequence
 
 import numpy as np
 
 from ltl_instruct.core.automaton import Automaton
+from ltl_instruct.core.automaton.guards import Guard
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.planning.occupancy import PlanningWorld
@@ -26,15 +33,23 @@ from ltl_instruct.core.spec.parser import parse_formula
 from ltl_instruct.core.world import near
 
 
+MARGIN_TOLERANCE = 1e-3
+"""How far [m] a sample may lie inside an avoid margin: edges are checked every 1 cm near a
+boundary, and a straight 1 cm chord of a region of radius >= 0.1 m dips less than this into it."""
+
+
+def _atom_distances(atoms: Iterable[Atom], referent_map: ReferentMap, points: np.ndarray,
+                    dims: int) -> dict[Atom, np.ndarray]:
+    """Near-atom -> distance [m] from each point (N, dims) to its nearest instance box (referent map)."""
+    return {a: near.instances_distance(referent_map.instances(str(a.args[0])), points, dims)
+            for a in atoms if a.skill == 'near'}
+
+
 def _atom_truth(atoms: Sequence[Atom], referent_map: ReferentMap, points: np.ndarray, dims: int,
                 threshold: float) -> dict[Atom, np.ndarray]:
     """Near-atom -> truth at each point (N, dims), from the referent map."""
-    out = {}
-    for a in atoms:
-        if a.skill != 'near':
-            continue
-        out[a] = near.near_instances(referent_map.instances(str(a.args[0])), points, dims, threshold)
-    return out
+    dist = _atom_distances(atoms, referent_map, points, dims)
+    return {a: near.is_near(d, threshold) for a, d in dist.items()}
 
 
 def _near(referent_map: ReferentMap, descriptor: str, point: np.ndarray, dims: int, threshold: float) -> bool:
@@ -81,6 +96,7 @@ def verify_plan(steps: Sequence[PlanStep], start: np.ndarray, automaton: Automat
     skills_ok = True
     holding: Optional[str] = None
     max_gap = 0.0
+    navigated: list[tuple[int, PlanStep, int, np.ndarray]] = []   # (index, step, its first letter, samples)
     if initial_state is None:
         start_truth = _atom_truth(atoms, referent_map, pos[None], dims, near_threshold)
         letters.append(frozenset(a for a, v in start_truth.items() if v[0]))
@@ -95,6 +111,7 @@ def verify_plan(steps: Sequence[PlanStep], start: np.ndarray, automaton: Automat
             if len(dense) > 1:
                 max_gap = max(max_gap, float(np.linalg.norm(np.diff(dense, axis=0), axis=1).max()))
             pts = dense[1:]
+            navigated.append((n, step, len(letters), pts))
             truth = _atom_truth(atoms, referent_map, pts, dims, near_threshold)
             for i in range(len(pts)):
                 letters.append(frozenset(a for a, v in truth.items() if v[i]))
@@ -148,9 +165,75 @@ def verify_plan(steps: Sequence[PlanStep], start: np.ndarray, automaton: Automat
             reasons.append(f'the trace ends in state {run[-1]}, which is not accepting')
     if max_gap > spacing + 1e-9:
         reasons.append(f'path samples {max_gap:.3f} m apart, more than {spacing} m')
-    ok = accepted and collision_free and skills_ok and continuous and max_gap <= spacing + 1e-9
+    margin_reasons, depths = _check_margins(navigated, letters, run, automaton, referent_map, dims,
+                                            near_threshold)
+    reasons += margin_reasons
+    ok = accepted and collision_free and skills_ok and continuous and max_gap <= spacing + 1e-9 \
+        and not margin_reasons
     return Verification(ok, accepted, collision_free, skills_ok, continuous, len(letters), max_gap,
-                        run[-1], '; '.join(reasons))
+                        run[-1], '; '.join(reasons), not margin_reasons, depths)
+
+
+def _check_margins(navigated: Sequence[tuple[int, PlanStep, int, np.ndarray]],
+                   letters: Sequence[frozenset], run: Sequence[int], automaton: Automaton,
+                   referent_map: ReferentMap, dims: int,
+                   threshold: float) -> tuple[list[str], tuple[Optional[float], ...]]:
+    """Check every navigate step's margins; return what is wrong and the depth of each goal."""
+    reasons: list[str] = []
+    depths: list[Optional[float]] = []
+    for n, step, first, pts in navigated:
+        goal = step.request.goal if step.request is not None else \
+            _edge_guard(automaton, step.state_before, step.state_after)
+        dist = _atom_distances(set(automaton.atoms) | goal.atoms, referent_map, pts, dims)
+        depth = _goal_depth(goal, {a: float(d[-1]) for a, d in dist.items()}, threshold)
+        depths.append(depth)
+        if depth is not None and depth < step.goal_margin - 1e-6:
+            reasons.append(f'step {n} ends {depth:.3f} m deep in its goal, not its goal margin '
+                           f'{step.goal_margin} m')
+        if step.avoid_margin <= 0:
+            continue
+        heading = {a for c in goal.cubes for a in c.pos}
+        for j in range(len(pts)):
+            edge = _edge_guard(automaton, run[first + j], run[first + j + 1])
+            close = [a.key for a in _needed_false(edge, letters[first + j]) - heading
+                     if a in dist and dist[a][j] < threshold + step.avoid_margin - MARGIN_TOLERANCE]
+            if close:
+                reasons.append(f'step {n} passes within its avoid margin {step.avoid_margin} m of '
+                               f'{", ".join(sorted(close))} at {np.round(pts[j], 3).tolist()}')
+                break
+    return reasons, tuple(depths)
+
+
+def _edge_guard(automaton: Automaton, state: int, dst: int) -> Guard:
+    """Return the guard of the edge ``state`` -> ``dst`` (false when there is none)."""
+    return next((e.guard for e in automaton.edges_from(state) if e.dst == dst), Guard(()))
+
+
+def _needed_false(guard: Guard, letter: frozenset) -> frozenset:
+    """Return the atoms every cube of ``guard`` that ``letter`` satisfies needs false."""
+    needed: Optional[frozenset] = None
+    for c in guard.cubes:
+        if c.pos <= letter and not (c.neg & letter):
+            needed = c.neg if needed is None else needed & c.neg
+    return needed or frozenset()
+
+
+def _goal_depth(goal: Guard, distance: dict[Atom, float], threshold: float) -> Optional[float]:
+    """How deep [m] a point lies in a goal: of the cubes it satisfies, the best least depth of its near atoms.
+
+    ``distance`` holds the point's distance [m] to every near atom's boxes; a cube with an
+    event atom, or no near atom to be near, gives nothing.
+    """
+    best: Optional[float] = None
+    for c in goal.cubes:
+        if not c.pos or not all(a in distance for a in c.pos | c.neg):
+            continue
+        if not all(near.is_near(distance[a], threshold) for a in c.pos) \
+                or any(near.is_near(distance[a], threshold) for a in c.neg):
+            continue
+        depth = min(float(near.depth(distance[a], threshold)) for a in c.pos)
+        best = depth if best is None else max(best, depth)
+    return best
 
 
 def _event_of(key: str, atoms: Sequence[Atom]) -> Optional[Atom]:

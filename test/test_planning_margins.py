@@ -7,6 +7,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from ltl_instruct.cli import main
 from ltl_instruct.core.automaton import compile_automaton
 from ltl_instruct.core.automaton.guards import Cube, Guard
 from ltl_instruct.core.errors import InvalidInputError
@@ -141,6 +142,16 @@ def test_start_touching_a_wall_is_moved_to_free_space_with_a_warning():
     assert 0.1 <= np.linalg.norm(plan.start - touching) <= 0.17
     assert any('start' in w for w in plan.warnings)
     assert plan.to_dict()['warnings'] == list(plan.warnings)
+
+
+def test_plan_command_reports_the_moved_start_and_takes_the_margins(capsys):
+    rc = main(['plan', '--scene', 'apartment', '--formula', 'F near[armchair]', '--start', '0.35,1.5',
+               '--samples', '1000', '--goal-margin', '0.3', '--avoid-margin', '0', '--json'])
+    out = json.loads(capsys.readouterr().out)
+    assert rc == 0 and any('start' in w for w in out['warnings'])
+    assert out['nearness'] == {'near_threshold': 1.0, 'goal_margin': 0.3, 'avoid_margin': 0.0}
+    assert min(out['verification']['goal_depths']) >= 0.3 - 1e-4
+    assert main(['plan', '--scene', 'apartment', '--formula', 'F near[armchair]', '--goal-margin', '-1']) == 2
 
 
 def test_the_check_holds_each_step_to_the_margins_it_claims():

@@ -21,6 +21,7 @@ from typing import Any, Optional
 import numpy as np
 
 from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file, scene_overrides
+from ltl_instruct.commands.plan import add_margin_arguments
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
 from ltl_instruct.core.world import near
 from ltl_instruct.core.world.builtin import resolve_scene
@@ -52,6 +53,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--log-dir', type=Path, default=None,
                         help='node logs (default: a temporary folder, named in the report)')
     parser.add_argument('--json', action='store_true', help='print the report as JSON')
+    add_margin_arguments(parser)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -62,6 +64,8 @@ def run(args: argparse.Namespace) -> int:
         check_output_path(args.out)
     if not 0.1 <= args.speed <= 50.0:
         raise InvalidInputError('--speed must be within [0.1, 50]')
+    margins = {'goal_margin': near.check_margin(args.goal_margin, '--goal-margin'),
+               'avoid_margin': near.check_margin(args.avoid_margin, '--avoid-margin')}
     instruction = args.instruction
     if instruction is None and args.formula is None:
         instruction = DEFAULT_INSTRUCTIONS.get(scene.name, DEFAULT_INSTRUCTIONS['apartment'])
@@ -73,6 +77,7 @@ def run(args: argparse.Namespace) -> int:
     os.environ.pop('ROS_LOCALHOST_ONLY', None)
     overrides = scene_overrides(args.scene)
     overrides['sim_world']['time_scale'] = float(args.speed)
+    overrides['task_progression'].update(margins)
     overrides['ltl_translator'] = {'require_confirmation': bool(args.interactive)}
     if scene.robot.kind == 'drone':
         overrides['sim_world']['max_speed'] = 4.0
@@ -183,6 +188,8 @@ def _print_report(report: dict[str, Any]) -> None:
             length = float(np.sum(np.linalg.norm(np.diff(plan, axis=0), axis=1)))
             skills = term.get('num_skills', 0)
             print(f'Plan:         {len(plan)} poses, {length:.1f} m, {skills} skill step(s)')
+        for warning in term.get('warnings') or []:
+            print(f'Warning:      {warning}')
         for r in report.get('skills', []):
             what = f'{r["skill"]}[{", ".join(r.get("args", []))}]'
             outcome = 'done' if r.get('ok') else f'FAILED ({(r.get("error") or {}).get("message")})'
@@ -208,8 +215,13 @@ def _avoided(formula: str) -> set[str]:
 
 
 def _draw_regions(ax: Any, report: dict[str, Any], hi: np.ndarray) -> None:
-    """Draw where each referent's near[x] holds (avoided ones red), as the planner evaluates it."""
-    threshold = float(report.get('near_threshold', near.DEFAULT_NEAR_THRESHOLD))
+    """Draw where each referent's near[x] holds (avoided ones red), as the planner evaluates it.
+
+    Dashed inside a goal referent's region: where the plan's goal margin has it end.
+    """
+    nearness = (report.get('task_plan') or {}).get('nearness') or {}
+    threshold = float(nearness.get('near_threshold', near.DEFAULT_NEAR_THRESHOLD))
+    goal_margin = float(nearness.get('goal_margin', 0.0))
     avoid = _avoided(report.get('formula') or '')
     groundings = (report.get('referent_map') or {}).get('groundings') or {}
     for descriptor, g in groundings.items():
@@ -219,6 +231,9 @@ def _draw_regions(ax: Any, report: dict[str, Any], hi: np.ndarray) -> None:
             size = np.asarray(inst.get('size', [0, 0, 0])[:2], dtype=float)
             ring = near.outline_xy(c, size, threshold)
             ax.fill(ring[:, 0], ring[:, 1], facecolor=colour, alpha=0.16, edgecolor=colour, lw=1.2, zorder=4)
+            if descriptor not in avoid and 0 < goal_margin < threshold:
+                inner = near.outline_xy(c, size, threshold - goal_margin)
+                ax.plot(inner[:, 0], inner[:, 1], '--', color=colour, lw=0.8, zorder=4)
             label_y = c[1] + size[1] / 2 + threshold + 0.15
             if label_y > hi[1] - 0.3:
                 label_y = c[1] - size[1] / 2 - threshold - 0.4
@@ -270,6 +285,7 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     ax.plot(start[0], start[1], 's', color='k', ms=8, label='start', zorder=10)
     ax.plot([], [], 's', color='#2ca02c', alpha=0.4, label='goal referents (within reach)')
     ax.plot([], [], 's', color='#d62728', alpha=0.4, label='avoided referents')
+    ax.plot([], [], '--', color='#2ca02c', lw=0.8, label='goal margin: the plan ends inside')
     ax.set_xlim(lo[0], hi[0])
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect('equal')

@@ -33,11 +33,23 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--png', help='write a picture of the plan to this PNG file')
     parser.add_argument('--near', type=float, default=near.DEFAULT_NEAR_THRESHOLD,
                         help=f'nearness threshold of near[x] [m] (default {near.DEFAULT_NEAR_THRESHOLD})')
+    add_margin_arguments(parser)
     parser.add_argument('--samples', type=int, default=5000, help='FMT* samples per segment (default 5000)')
     parser.add_argument('--radius-multiplier', type=float, default=1.1, help='FMT* radius multiplier')
     parser.add_argument('--no-heuristics', action='store_true', help='turn FMT* heuristics off')
     parser.add_argument('--time-limit', type=float, default=5.0, help='seconds per segment (default 5)')
     parser.add_argument('--seed', type=int, default=0, help='sampler seed (same seed, same path)')
+
+
+def add_margin_arguments(parser: argparse.ArgumentParser) -> None:
+    """Declare ``--goal-margin`` and ``--avoid-margin`` (``plan`` and ``demo``)."""
+    parser.add_argument('--goal-margin', type=float, default=near.DEFAULT_GOAL_MARGIN,
+                        help='enter each goal region this deep [m], so that a controller stopping a '
+                             f'little short still completes the task (default {near.DEFAULT_GOAL_MARGIN}; '
+                             'less, with a warning, where the region is thinner)')
+    parser.add_argument('--avoid-margin', type=float, default=near.DEFAULT_AVOID_MARGIN,
+                        help='pass regions to avoid this far outside [m] where free space allows '
+                             f'(default {near.DEFAULT_AVOID_MARGIN})')
 
 
 def label_referent_map(formula: Formula, scene: Scene) -> ReferentMap:
@@ -121,9 +133,10 @@ def run(args: argparse.Namespace) -> int:
     scene = resolve_scene(args.scene)
     formula = parse_formula(args.formula)
     start = parse_start(args.start, scene)
-    settings = PlannerSettings(near_threshold=args.near, fmt=FmtSettings(
-        num_samples=args.samples, radius_multiplier=args.radius_multiplier, heuristics=not args.no_heuristics,
-        time_limit=args.time_limit, seed=args.seed))
+    fmt = FmtSettings(num_samples=args.samples, radius_multiplier=args.radius_multiplier,
+                      heuristics=not args.no_heuristics, time_limit=args.time_limit, seed=args.seed)
+    settings = PlannerSettings(near_threshold=args.near, goal_margin=args.goal_margin,
+                               avoid_margin=args.avoid_margin, fmt=fmt)
     world = world_from_scene(scene)
     rmap = scene_referent_map(formula, scene)
     automaton = compile_automaton(formula)
@@ -159,6 +172,12 @@ def run(args: argparse.Namespace) -> int:
                   f'{s.state_before} -> {s.state_after}')
     print(f'verified: {"yes" if v.ok else "NO: " + v.reason} ({v.num_samples} samples, '
           f'max spacing {v.max_spacing:.3f} m)')
+    depths = [d for d in v.goal_depths if d is not None]
+    if depths:
+        print(f'margins:  every goal entered at least {min(depths):.2f} m deep (goal margin '
+              f'{args.goal_margin} m, avoid margin {args.avoid_margin} m)')
+    for warning in plan.warnings:
+        print(f'WARNING: {warning}')
     if args.png:
         print(f'picture:  {out["png"]}')
     sys.stdout.flush()

@@ -48,6 +48,11 @@ from ltl_instruct.nodes.common import (
 
 PARAMS = (
     ParamSpec('near_threshold', near.DEFAULT_NEAR_THRESHOLD, 'nearness radius of near[x] [m]', 0.05, 50.0),
+    ParamSpec('goal_margin', near.DEFAULT_GOAL_MARGIN,
+              'each goal region is entered this deep [m] (less, with a warning, where it is thinner)',
+              0.0, near.MAX_MARGIN),
+    ParamSpec('avoid_margin', near.DEFAULT_AVOID_MARGIN, 'regions to avoid are passed this far outside [m] '
+              '(less, with a warning, where free space does not allow it)', 0.0, near.MAX_MARGIN),
     ParamSpec('robot_kind', 'ground', 'ground (2D planning) or drone (3D)', choices=('ground', 'drone')),
     ParamSpec('grounding_timeout', 10.0, 'how long a task spec waits for its referent map [s]', 0.5, 600.0),
     ParamSpec('segment_timeout', 10.0, 'how long to wait for one plan_segment [s]', 0.5, 600.0),
@@ -479,9 +484,10 @@ class TaskProgressionNode(Node):
                           replans: int) -> None:
         """Plan (from ``state``, or the initial state when None), then publish everything and monitor."""
         world = self._world_or_error()
-        settings = planning.PlannerSettings(near_threshold=self.params['near_threshold'],
-                                            max_segments=self.params['max_segments'],
-                                            time_budget=self.params['time_budget'])
+        p = self.params
+        settings = planning.PlannerSettings(near_threshold=p['near_threshold'], goal_margin=p['goal_margin'],
+                                            avoid_margin=p['avoid_margin'], max_segments=p['max_segments'],
+                                            time_budget=p['time_budget'])
         t0 = time.monotonic()
         plan = planning.plan_task(automaton, rmap, world, start, settings,
                                   solve=lambda request: self._remote_solve(iid, request, world.dims),
@@ -513,7 +519,8 @@ class TaskProgressionNode(Node):
                 conv.SKILL_REQUEST, iid, plan_stamp=stamp, **skill)))
         fields = dict(formula=str(automaton.formula), timing=timing, plan_stamp=stamp,
                       num_poses=int(len(path)), length_m=round(plan.length, 3), num_skills=len(skills),
-                      automaton_states=plan.states, verification=plan.verification.to_dict())
+                      automaton_states=plan.states, verification=plan.verification.to_dict(),
+                      warnings=list(plan.warnings))
         if first:
             self.publish_status(iid, 'planned', True, **fields)
         else:
@@ -542,7 +549,8 @@ class TaskProgressionNode(Node):
                     if not status.get('ok') or points is None or len(points) == 0:
                         err = _error_from_dict(status.get('error') or {}, ErrorCode.NO_VALID_PATH)
                         return planning.SegmentResult.failure(request.id, err)
-                    return planning.SegmentResult.from_waypoints(request.id, points[:, :dims], spacing=0.0)
+                    result = planning.SegmentResult.from_waypoints(request.id, points[:, :dims], spacing=0.0)
+                    return result.with_margins_of(status.get('result'))
                 left = deadline - time.monotonic()
                 if left <= 0:
                     break

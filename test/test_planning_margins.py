@@ -80,6 +80,16 @@ def test_every_goal_endpoint_lies_goal_margin_inside_its_region(scene_name, text
             assert _distance(rmap, avoided, path, world.dims).min() >= near.DEFAULT_NEAR_THRESHOLD + AM - TOL
 
 
+def test_a_region_to_leave_is_left_goal_margin_far():
+    scene = resolve_scene('apartment')
+    plan, aut, rmap, world = _plan(scene, 'F (near[armchair] & F !near[armchair])')
+    assert plan.verification.ok and not plan.warnings
+    enter, leave = [s.end for s in plan.steps if s.kind == 'navigate']
+    assert float(_distance(rmap, 'armchair', enter[None], 2)[0]) <= near.DEFAULT_NEAR_THRESHOLD - GM + TOL
+    assert float(_distance(rmap, 'armchair', leave[None], 2)[0]) >= near.DEFAULT_NEAR_THRESHOLD + GM - TOL
+    assert min(plan.verification.goal_depths) >= GM - TOL
+
+
 def _segment(start=(1.0, 3.0), b_boxes=(), b_radius=0.6, obstacles=(),
              **kw) -> tuple[SegmentRequest, PlanningWorld]:
     goal = Guard((Cube(frozenset({A}), frozenset({B})),))

@@ -46,6 +46,7 @@ from ltl_instruct.core.world import near
 
 TARGET_KEY = '__target__'
 DEEP = '@deep'   # suffix of a goal atom's region shrunk by the goal margin
+LEFT = '@left'   # suffix of the region being left, grown by the goal margin
 WIDE = '@wide'   # suffix of an atom's region grown by the avoid margin
 MAX_REGIONS = 256
 MAX_INSTANCES = 4096
@@ -371,20 +372,28 @@ class SegmentProblem:
         self._radius_of = {r.key: r.radius for r in self.regions.regions}
 
     def _set_cubes(self, regions: list[AtomRegion], plain: tuple[KeyCube, ...]) -> None:
-        """Build the regions and cube sets; atoms the goal needs true are never kept away from."""
+        """Build the regions and cube sets.
+
+        The goal margin takes the path into the regions the goal needs true, and as far
+        out of those it is leaving (false in the goal, true in the allowed guard). The
+        avoid margin is for the other atoms a guard needs false.
+        """
         r = self.request
         allowed = key_cubes(r.allowed)
         hold = key_cubes(r.hold) if r.hold is not None else None
         goal_keys = {k for pos, _ in plain for k in pos}
-        avoided = {k for cubes in (plain, allowed, hold or ()) for _, neg in cubes for k in neg} - goal_keys
+        self.leaving_keys = {k for _, neg in plain for k in neg} & {k for pos, _ in allowed for k in pos}
+        avoided = {k for cubes in (plain, allowed, hold or ()) for _, neg in cubes for k in neg} \
+            - goal_keys - {k for pos, _ in allowed for k in pos}
         deep_regions, deep = _margin_regions(regions, goal_keys, DEEP, -r.goal_margin)
+        left_regions, left = _margin_regions(regions, self.leaving_keys, LEFT, r.goal_margin)
         wide_regions, wide = _margin_regions(regions, avoided, WIDE, r.avoid_margin)
-        self.regions = RegionSet(regions + deep_regions + wide_regions, self.world.dims)
+        self.regions = RegionSet(regions + deep_regions + left_regions + wide_regions, self.world.dims)
         self.plain_goal_cubes = plain
         self.entry_cubes = _rename(plain, {}, wide)
         self.allowed_cubes = _rename(allowed, {}, wide)
         self.hold_cubes = _rename(hold, {}, wide) if hold is not None else self.entry_cubes
-        self.goal_cubes = _rename(plain, deep, wide)
+        self.goal_cubes = _rename(plain, deep, {**wide, **left})
         if r.goal_margin > 0 and hold is not None:
             self.goal_cubes = _meet(self.goal_cubes, self.hold_cubes)
         self.valid_cubes = self.allowed_cubes + self.entry_cubes
@@ -469,10 +478,11 @@ class SegmentProblem:
         return out
 
     def goal_depth(self, points: np.ndarray) -> np.ndarray:
-        """How deep [m] points (N, dims) lie in the goal: per cube the least depth of its true atoms.
+        """How deep [m] points (N, dims) lie in the goal, per cube the least over its atoms.
 
-        The best cube the point satisfies counts; shape (N,); ``-inf`` outside the goal,
-        ``inf`` for a goal with no atom to be near.
+        An atom the cube needs true counts its depth inside its region; one it is leaving,
+        how far outside. The best cube the point satisfies counts; shape (N,); ``-inf``
+        outside the goal, ``inf`` for a goal with no atom to enter or leave.
         """
         p = np.atleast_2d(np.asarray(points, dtype=float))
         by_key = self.regions.by_key
@@ -480,9 +490,10 @@ class SegmentProblem:
         best = np.full(len(p), -np.inf)
         for pos, neg in self.plain_goal_cubes:
             depth = np.full(len(p), np.inf)
-            for k in pos:
+            for k in pos | (neg & self.leaving_keys):
                 region = by_key[k]
-                depth = np.minimum(depth, near.depth(region.distance(p, self.world.dims), region.radius))
+                inside = near.depth(region.distance(p, self.world.dims), region.radius)
+                depth = np.minimum(depth, inside if k in pos else -inside)
             inside = eval_guard_vectorised(((pos, neg),), val, len(p))
             best = np.where(inside, np.maximum(best, depth), best)
         return best
@@ -702,7 +713,7 @@ def _margin_warnings(request: SegmentRequest, result: SegmentResult) -> tuple[st
     """Say which margins a result keeps less of than the request asked for."""
     out = []
     if result.goal_margin < request.goal_margin:
-        out.append(f'{request.describe()}: the goal region is entered {result.goal_margin:.2f} m deep, not '
+        out.append(f'{request.describe()}: the goal is reached {result.goal_margin:.2f} m deep, not '
                    f'{request.goal_margin:.2f} m (goal_margin): no reachable free part of it is deeper')
     if result.avoid_margin < request.avoid_margin:
         out.append(f'{request.describe()}: regions to avoid are passed closer than '

@@ -87,8 +87,9 @@ class Verification:
     reason: why it failed ('' when ok).
     margins_ok: every navigate step ends as deep in its goal, and stays as far from the
         regions its automaton edges need false, as it says it does.
-    goal_depths: per navigate step, how deep [m] its end lies in its goal region (the
-        least over the goal's near atoms; None for a goal with no atom to be near).
+    goal_depths: per navigate step, how deep [m] its end lies in its goal (the least over
+        the regions the goal needs it in, and how far out of those it is leaving; None for
+        a goal with neither).
     """
 
     ok: bool

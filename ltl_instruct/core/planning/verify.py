@@ -12,12 +12,13 @@ plus the skill's event atom. The automaton must accept it.
 Margins: every navigate step must end at least as deep in its goal as it says it does
 (its ``goal_margin``: the least of threshold - distance over the near atoms of the goal
 cube it ends in), and every sample must stay its ``avoid_margin`` outside the regions
-that the automaton edge it takes needs false (the step's own goal atoms excepted: the
-path is heading into them). The depth of every goal is reported.
+that the automaton edge it takes needs false (except the atoms the step's goal or its
+allowed guard needs true: the path is heading into those, or leaving them). The depth
+of every goal is reported.
 """
 from __future__ import annotations
 
-from typing import Iterable, Optional, Sequence
+from typing import AbstractSet, Iterable, Optional, Sequence
 
 import numpy as np
 
@@ -182,20 +183,22 @@ def _check_margins(navigated: Sequence[tuple[int, PlanStep, int, np.ndarray]],
     reasons: list[str] = []
     depths: list[Optional[float]] = []
     for n, step, first, pts in navigated:
-        goal = step.request.goal if step.request is not None else \
-            _edge_guard(automaton, step.state_before, step.state_after)
+        goal, allowed = (step.request.goal, step.request.allowed) if step.request is not None else \
+            (_edge_guard(automaton, step.state_before, step.state_after),
+             automaton.self_loop(step.state_before))
         dist = _atom_distances(set(automaton.atoms) | goal.atoms, referent_map, pts, dims)
-        depth = _goal_depth(goal, {a: float(d[-1]) for a, d in dist.items()}, threshold)
+        staying = {a for c in allowed.cubes for a in c.pos}   # what the step may leave
+        depth = _goal_depth(goal, {a: float(d[-1]) for a, d in dist.items()}, threshold, staying)
         depths.append(depth)
         if depth is not None and depth < step.goal_margin - 1e-6:
             reasons.append(f'step {n} ends {depth:.3f} m deep in its goal, not its goal margin '
                            f'{step.goal_margin} m')
         if step.avoid_margin <= 0:
             continue
-        heading = {a for c in goal.cubes for a in c.pos}
+        exempt = staying | {a for c in goal.cubes for a in c.pos}
         for j in range(len(pts)):
             edge = _edge_guard(automaton, run[first + j], run[first + j + 1])
-            close = [a.key for a in _needed_false(edge, letters[first + j]) - heading
+            close = [a.key for a in _needed_false(edge, letters[first + j]) - exempt
                      if a in dist and dist[a][j] < threshold + step.avoid_margin - MARGIN_TOLERANCE]
             if close:
                 reasons.append(f'step {n} passes within its avoid margin {step.avoid_margin} m of '
@@ -218,20 +221,24 @@ def _needed_false(guard: Guard, letter: frozenset) -> frozenset:
     return needed or frozenset()
 
 
-def _goal_depth(goal: Guard, distance: dict[Atom, float], threshold: float) -> Optional[float]:
-    """How deep [m] a point lies in a goal: of the cubes it satisfies, the best least depth of its near atoms.
+def _goal_depth(goal: Guard, distance: dict[Atom, float], threshold: float,
+                leaving: AbstractSet[Atom]) -> Optional[float]:
+    """How deep [m] a point lies in a goal: of the cubes it satisfies, the best least depth of their atoms.
 
+    An atom a cube needs true counts how deep inside its region the point is; one it
+    needs false among ``leaving`` (the regions the step starts in), how far outside.
     ``distance`` holds the point's distance [m] to every near atom's boxes; a cube with an
-    event atom, or no near atom to be near, gives nothing.
+    event atom, or no region to enter or leave, gives nothing.
     """
     best: Optional[float] = None
     for c in goal.cubes:
-        if not c.pos or not all(a in distance for a in c.pos | c.neg):
+        ahead = c.pos | (c.neg & leaving)
+        if not ahead or not all(a in distance for a in c.pos | c.neg):
             continue
         if not all(near.is_near(distance[a], threshold) for a in c.pos) \
                 or any(near.is_near(distance[a], threshold) for a in c.neg):
             continue
-        depth = min(float(near.depth(distance[a], threshold)) for a in c.pos)
+        depth = min(float(near.depth(distance[a], threshold)) * (1 if a in c.pos else -1) for a in ahead)
         best = depth if best is None else max(best, depth)
     return best
 

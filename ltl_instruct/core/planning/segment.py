@@ -353,6 +353,7 @@ class SegmentProblem:
         self.request = request
         self.world = world
         regions = list(request.regions)
+        self.region_keys = frozenset(r.key for r in regions)   # the atoms (no target, no margins)
         plain: tuple[KeyCube, ...] = key_cubes(request.goal)
         if request.target is not None:
             key, index = request.target
@@ -498,12 +499,18 @@ class SegmentProblem:
             best = np.where(inside, np.maximum(best, depth), best)
         return best
 
-    def sample_goal(self, count: int, seed: int, batches: int = 24, batch: int = 4096) -> np.ndarray:
-        """Up to ``count`` valid goal points (M, dims), by rejection sampling near the goal atoms."""
+    def sample_goal(self, count: int, seed: int, batches: int = 24,
+                    batch: int = 4096) -> tuple[np.ndarray, bool]:
+        """Return up to ``count`` valid goal points (M, dims), and whether a plain goal point was seen.
+
+        Rejection sampling in the boxes of the plain goal's near regions, so that with
+        margins the points drawn are those the same request without margins draws: when
+        none of them is in the plain goal either, that request is blocked too.
+        """
         rng = np.random.default_rng(seed)
         dims = self.world.dims
         boxes: list[tuple[np.ndarray, np.ndarray]] = []
-        for pos, _ in self.goal_cubes:
+        for pos, _ in self.plain_goal_cubes:
             candidates = [self.regions.by_key[k] for k in pos if k in self.regions.by_key]
             if not candidates:
                 boxes.append((self.lo, self.hi))
@@ -515,24 +522,23 @@ class SegmentProblem:
                 if np.all(lo <= hi):
                     boxes.append((lo, hi))
         if not boxes:
-            return np.zeros((0, dims))
+            return np.zeros((0, dims)), False
         vol = np.array([float(np.prod(np.maximum(h - lo_, 1e-3))) for lo_, h in boxes])
-        found: list[np.ndarray] = []
-        total = 0
+        found: list[np.ndarray] = [np.zeros((0, dims))]
+        total, plain_seen = 0, False
         for _ in range(batches):
             which = rng.choice(len(boxes), size=batch, p=vol / vol.sum())
             lo = np.array([boxes[i][0] for i in which])
             hi = np.array([boxes[i][1] for i in which])
             pts = lo + rng.random((batch, dims)) * (hi - lo)
-            _, goal = self.classify(pts)
-            if goal.any():
-                found.append(pts[goal])
-                total += int(goal.sum())
+            f = self._flags(pts)
+            goal = f['free'] & f['goal']
+            plain_seen = plain_seen or bool((f['free'] & f['plain']).any())
+            found.append(pts[goal])
+            total += int(goal.sum())
             if total >= count:
                 break
-        if not found:
-            return np.zeros((0, dims))
-        return np.vstack(found)[:count]
+        return np.vstack(found)[:count], plain_seen
 
     def first_goal_prefix(self, points: np.ndarray) -> Optional[np.ndarray]:
         """Cut the densified path where it may end: at its first goal point after the edge.
@@ -671,19 +677,19 @@ def solve_segment(request: SegmentRequest, world: PlanningWorld,
     t0 = time.monotonic()
     if settings is not None:
         request = replace(request, settings=settings)
-    result = _solve_once(request, world)
-    if not result.ok and (request.goal_margin > 0 or request.avoid_margin > 0):
+    result, plain_fails_too = _solve_once(request, world)
+    if not result.ok and not plain_fails_too and (request.goal_margin > 0 or request.avoid_margin > 0):
         result = _solve_with_less_margin(request, world)
     return replace(result, seconds=time.monotonic() - t0)
 
 
 def _solve_with_less_margin(request: SegmentRequest, world: PlanningWorld) -> SegmentResult:
     """Solve without margins; if that works, keep as much margin as a path allows, and warn."""
-    result = _solve_once(replace(request, goal_margin=0.0, avoid_margin=0.0), world)
+    result = _solve_once(replace(request, goal_margin=0.0, avoid_margin=0.0), world)[0]
     if not result.ok:
         return result   # the segment fails whatever the margins: its own failure
     for gm, am in _fallback_margins(request, world):
-        better = _solve_once(replace(request, goal_margin=gm, avoid_margin=am), world)
+        better = _solve_once(replace(request, goal_margin=gm, avoid_margin=am), world)[0]
         if better.ok:
             result = better
             break
@@ -697,7 +703,7 @@ def _fallback_margins(request: SegmentRequest, world: PlanningWorld) -> list[tup
     deep region keeps some room): a thin goal region is entered as deep as it allows.
     """
     plain = SegmentProblem(replace(request, goal_margin=0.0, avoid_margin=0.0), world)
-    samples = plain.sample_goal(max(request.settings.goal_samples, 512), request.settings.seed)
+    samples = plain.sample_goal(max(request.settings.goal_samples, 512), request.settings.seed)[0]
     deepest = float(plain.goal_depth(samples).max()) if len(samples) else 0.0
     cap = round(min(request.goal_margin, max(deepest - 0.01, 0.0)), 4)
     tried = {(request.goal_margin, request.avoid_margin), (0.0, 0.0)}
@@ -721,8 +727,13 @@ def _margin_warnings(request: SegmentRequest, result: SegmentResult) -> tuple[st
     return tuple(out)
 
 
-def _solve_once(request: SegmentRequest, world: PlanningWorld) -> SegmentResult:
-    """Plan one segment with the request's margins exactly; a typed failure if none is found."""
+def _solve_once(request: SegmentRequest, world: PlanningWorld) -> tuple[SegmentResult, bool]:
+    """Plan one segment with the request's margins exactly; a typed failure if none is found.
+
+    Also says whether the failure is certain without margins too (a start in collision,
+    or in a plain region to avoid; no plain goal point among the goal samples), so that
+    the request is not solved again for nothing.
+    """
     t0 = time.monotonic()
     s = request.settings
     problem = SegmentProblem(request, world)
@@ -730,27 +741,31 @@ def _solve_once(request: SegmentRequest, world: PlanningWorld) -> SegmentResult:
     where = request.describe()
     fmt_start = ', '.join(f'{x:.2f}' for x in start)
 
-    def fail(code: ErrorCode, why: str, **details: Any) -> SegmentResult:
+    def fail(code: ErrorCode, why: str, plain_too: bool = False,
+             **details: Any) -> tuple[SegmentResult, bool]:
         facts = {'transition': list(request.transition), 'start': list(start), **details}
         err = PlanningError(f'{where}: {why}', code, details=facts)
-        return SegmentResult.failure(request.id, err, time.monotonic() - t0)
+        return SegmentResult.failure(request.id, err, time.monotonic() - t0), plain_too
 
     if len(start) != world.dims or not all(math.isfinite(x) for x in start):
         raise InvalidInputError(f'start must be {world.dims} finite numbers, got {request.start}')
     if not problem.in_bounds(start) or world.clearance(start) < 0:
         return fail(ErrorCode.START_OCCUPIED,
                     f'the start ({fmt_start}) is in collision or outside the map '
-                    f'(obstacles grown by the robot radius {world.robot_radius} m)')
+                    f'(obstacles grown by the robot radius {world.robot_radius} m)', True)
     if problem.in_plain_goal(start):   # the transition happens where the robot is: nothing to drive
         w = np.array([start, start])
-        return SegmentResult(request.id, w, as_xyz(w), 0.0, None, time.monotonic() - t0)
-    if not eval_key_cubes(problem.allowed_cubes, problem.letter(start)):
+        return SegmentResult(request.id, w, as_xyz(w), 0.0, None, time.monotonic() - t0), False
+    letter = problem.letter(start)
+    if not eval_key_cubes(problem.allowed_cubes, letter):
         return fail(ErrorCode.START_OCCUPIED,
                     f'the start ({fmt_start}) lies in a region to avoid (atoms true there: '
-                    f'{", ".join(sorted(problem.letter(start))) or "none"})')
-    samples = problem.sample_goal(s.goal_samples, s.seed)
+                    f'{", ".join(sorted(k for k in letter if k in problem.region_keys)) or "none"})',
+                    not eval_key_cubes(key_cubes(request.allowed), letter))
+    samples, plain_seen = problem.sample_goal(s.goal_samples, s.seed)
     if len(samples) == 0:
-        return fail(ErrorCode.GOAL_OCCUPIED, 'every goal region is blocked: no free point satisfies the goal')
+        return fail(ErrorCode.GOAL_OCCUPIED, 'every goal region is blocked: no free point satisfies the goal',
+                    not plain_seen)
     goal = GoalSpec(problem.in_goal, problem.goal_lower_bound, samples)
     outcome = plan_motion(world.dims, problem.lo, problem.hi, start, problem.state_valid,
                           problem.motion_valid, goal, s)
@@ -770,4 +785,4 @@ def _solve_once(request: SegmentRequest, world: PlanningWorld) -> SegmentResult:
         path = problem.shortcut(path, pool=samples)
     dense = resample(path, s.path_spacing) if s.path_spacing > 0 else path
     return SegmentResult(request.id, path, as_xyz(dense), path_length(path), None, time.monotonic() - t0,
-                         outcome.seconds, request.goal_margin, request.avoid_margin)
+                         outcome.seconds, request.goal_margin, request.avoid_margin), False

@@ -391,7 +391,7 @@ def run(tasks: list[Task], samples: int, grid_limit: int, drone_grid_limit: int,
             plan = plan_task(aut, referent_map(scene, formula), world, scene.robot.start, settings)
             row.update(planned=True, verified=plan.verification.ok, seconds=time.perf_counter() - t0,
                        length=plan.length, steps=len(plan.steps), segments=plan.stats['segments_solved'],
-                       goal_depths=goal_depths(plan))
+                       goal_depths=goal_depths(plan), warnings=list(plan.warnings))
             ratios = []
             for step in plan.steps:
                 if step.kind != 'navigate' or step.request is None or step.length <= 0.05:
@@ -464,10 +464,10 @@ def summarise(rows: list[dict[str, Any]], samples: int) -> dict[str, Any]:
             c['rrt_short_length'] / c['fmt_short_length'] for c in rrt
             if c['fmt_short_ok'] and c['rrt_short_ok'] and c['fmt_short_length'] > 0]),
         'goal_depth_min': min(depths) if depths else float('nan'), 'goal_depth_median': _median(depths),
-        'goal_endpoints': len(depths),
+        'goal_endpoints': len(depths), 'plans_with_warnings': sum(bool(r.get('warnings')) for r in rows),
         'total_length_solved': sum(r['length'] for r in solved),
         'rows': [{k: r.get(k) for k in ('scene', 'pattern', 'formula', 'planned', 'seconds', 'length',
-                                        'goal_depths')} for r in rows],
+                                        'goal_depths', 'warnings')} for r in rows],
     }
 
 
@@ -494,7 +494,8 @@ def print_summary(s: dict[str, Any]) -> None:
           f"median {s['rrt_over_fmt_shortcut_length_median']:.3f}")
     print(f"goal depth of navigation endpoints: least {s['goal_depth_min']:.4f} m, median "
           f"{s['goal_depth_median']:.4f} m over {s['goal_endpoints']} endpoints; total path length of "
-          f"solved tasks {s['total_length_solved']:.1f} m")
+          f"solved tasks {s['total_length_solved']:.1f} m; plans with warnings (a margin not kept) "
+          f"{s['plans_with_warnings']}")
     for f in s['failed_sat']:
         print(f"  not solved: {f['scene']} {f['pattern']}: {f['formula']} "
               f"[{f.get('code')}] {f.get('message')}")

@@ -153,19 +153,17 @@ class SemanticMap:
         cur_hi = self.origin + np.array(self.shape) - 1
         if self.observed.size and np.all(lo >= cur_lo) and np.all(hi <= cur_hi):
             return
-        # grow a side by at least the camera's range (1 m vertically), so that a robot moving
-        # about re-allocates the grid rarely: growth copies the whole grid
+        # grow a side by at least the camera's range (at most 10 m; 1 m vertically), so that a
+        # robot moving about re-allocates the grid rarely (growth copies the whole grid); only
+        # as far as needed when that margin would take the grid past its limit
         vs = self.params.voxel_size
-        pad = np.array([math.ceil(self.params.max_range / vs)] * 2 + [math.ceil(1.0 / vs)])
-        if self.observed.size:
-            new_lo = np.where(lo < cur_lo, np.minimum(lo, cur_lo - pad), cur_lo)
-            new_hi = np.where(hi > cur_hi, np.maximum(hi, cur_hi + pad), cur_hi)
-        else:
-            new_lo, new_hi = lo - pad, hi + pad
-        new_lo = (np.floor_divide(new_lo, _CHUNK)) * _CHUNK
-        new_hi = (np.floor_divide(new_hi, _CHUNK) + 1) * _CHUNK - 1
+        pad = np.array([math.ceil(min(self.params.max_range, 10.0) / vs)] * 2 + [math.ceil(1.0 / vs)])
+        new_lo, new_hi = self._grown(lo, hi, pad)
         shape = tuple(int(v) for v in new_hi - new_lo + 1)
-        if shape[0] * shape[1] * shape[2] > MAX_VOXELS:
+        if math.prod(shape) > MAX_VOXELS:
+            new_lo, new_hi = self._grown(lo, hi, np.zeros(3, dtype=np.int64))
+            shape = tuple(int(v) for v in new_hi - new_lo + 1)
+        if math.prod(shape) > MAX_VOXELS:
             raise LimitExceededError(f'the semantic map would grow to {shape} voxels (limit {MAX_VOXELS})')
         names = ('occupied', 'label', 'label_prob', 'observed', 'hits', 'evidence')
         grown = {n: np.zeros(shape, dtype=getattr(self, n).dtype) for n in names}
@@ -177,6 +175,16 @@ class SemanticMap:
         for n in names:
             setattr(self, n, grown[n])
         self.origin = new_lo
+
+    def _grown(self, lo: np.ndarray, hi: np.ndarray, pad: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Grid bounds that hold the grid and lo..hi, with ``pad`` voxels more on each side grown."""
+        if self.observed.size:
+            cur_lo, cur_hi = self.origin, self.origin + np.array(self.shape) - 1
+            new_lo = np.where(lo < cur_lo, np.minimum(lo, cur_lo - pad), cur_lo)
+            new_hi = np.where(hi > cur_hi, np.maximum(hi, cur_hi + pad), cur_hi)
+        else:
+            new_lo, new_hi = lo - pad, hi + pad
+        return np.floor_divide(new_lo, _CHUNK) * _CHUNK, (np.floor_divide(new_hi, _CHUNK) + 1) * _CHUNK - 1
 
     def _columns_for(self, class_ids: np.ndarray) -> np.ndarray:
         """Score columns of label ids (<= 0 -> column 0), adding columns for new classes."""

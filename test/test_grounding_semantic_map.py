@@ -14,7 +14,8 @@ from ltl_instruct.core.grounding import (
 from ltl_instruct.core.grounding.rsm import Outcome
 from ltl_instruct.core.grounding.semantic_map import SemanticMapParams
 from ltl_instruct.core.grounding.suite import generate_suite, random_scene
-from ltl_instruct.core.grounding.survey import map_from_views, survey_poses
+from ltl_instruct.core.grounding import semantic_map
+from ltl_instruct.core.grounding.survey import map_from_views, survey_params, survey_poses
 from ltl_instruct.core.world.camera import SyntheticCamera
 from ltl_instruct.core.world.robot import Pose
 from ltl_instruct.core.world.scene import scene_from_dict
@@ -137,6 +138,23 @@ def test_bad_params():
         SemanticMapParams(voxel_size=0.0)
     with pytest.raises(InvalidInputError):
         SemanticMapParams(pixel_stride=0)
+
+
+def test_survey_voxels_grow_with_the_scene():
+    assert survey_params(ROOM).voxel_size == pytest.approx(0.1)
+    city = scene_from_dict({'bounds': {'min': [0, 0, 0], 'max': [120, 100, 40]}})
+    assert survey_params(city).voxel_size == pytest.approx(0.5)
+
+
+def test_the_grid_grows_without_its_margin_rather_than_past_its_limit(monkeypatch):
+    cam = SyntheticCamera(ROOM, 80, 60)
+    pose = Pose((0.5, 4.0, 0.0), 0.0)
+    f = cam.render(pose)
+    smap = SemanticMap(cam.classes, SemanticMapParams(max_range=10.0))
+    # the frame's box fits two million voxels; with 10 m of margin around it, it would not
+    monkeypatch.setattr(semantic_map, 'MAX_VOXELS', 2_000_000)
+    smap.integrate(f.depth, f.labels, f.intrinsics, pose)
+    assert np.prod(smap.shape) <= 2_000_000 and smap.instances()
 
 
 def test_generated_suite_from_camera_views():

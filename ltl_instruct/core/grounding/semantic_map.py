@@ -1,22 +1,30 @@
-"""A persistent 3D voxel semantic map built from RGB-D + label frames (after HLSM).
+"""A persistent 3D voxel semantic map built from RGB-D + label frames (after HLSM), and its objects.
 
-Per voxel the map keeps whether it is occupied, its class distribution and whether it
-has ever been observed. Each frame observes the voxels its rays reach: the voxels that
-hold back-projected points get the frame's label distribution, the voxels clearly in
-front of the measured surface become free, and the update rule of HLSM (Blukis et al.)
-keeps everything else:
+Per voxel the map keeps whether it is occupied, its class distribution, whether it has
+ever been observed, how many frames saw a surface in it (``hits``) and its evidence.
+Each frame observes the voxels its rays reach: the voxels that hold back-projected points
+get the frame's label distribution, the voxels clearly in front of the measured surface
+become free, and the update rule of HLSM (Blukis et al.) keeps everything else:
 
     V_t = V^_t * O^_t + V_{t-1} * (1 - O^_t),      O_t = max(O_{t-1}, O^_t)
 
 The class distribution of a voxel is stored compactly as its mode and the mode's
 probability (class 0: occupied by something that is no object: floor, walls), which is
-all that instance extraction reads; this keeps a voxel at 8 bytes whatever the number
+all that instance extraction reads; this keeps a voxel at 9 bytes whatever the number
 of classes, and a frame's update independent of it.
 
-Instances are extracted per class by density clustering of the object voxels (open3d
-DBSCAN); each has a centre and extent (the box of its voxels), a confidence (the mean
-class probability of its voxels) and a number of observations (frames that saw it).
-Frontier voxels are observed free voxels next to unobserved space.
+Evidence is what HLSM calls observability, kept per voxel: +1 for a frame that saw a
+surface in it, -1 for a frame that saw through it (where the object should have been
+seen and was not), clamped to +-``max_evidence`` so that as many frames undo it.
+
+Instances are objects, not pieces of objects: the voxels ever labelled with a class are
+split into connected fragments, and the fragments of one object are fused by overlap,
+unseen gaps and a size prior (:mod:`fusion`). A fragment whose voxels' mean evidence is
+below ``min_evidence`` is dropped whole before fusion: later views saw through it, and
+the few voxels they did not reach are no object of their own. An instance's centre and
+extent are the box of its voxels with positive evidence, its confidence the mean class
+probability of those voxels and its observations the most frames any of them was seen
+in. Frontier voxels are observed free voxels next to unobserved space.
 
 The grid grows as frames reach new space, so a map needs no bounds up front. Units are
 metres in the ``map`` frame; camera conventions are those of :mod:`camera`.
@@ -24,14 +32,18 @@ metres in the ``map`` frame; camera conventions are those of :mod:`camera`.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Mapping, Optional, Sequence
 
 import numpy as np
+from scipy import ndimage
 
 from ltl_instruct.core.errors import InvalidInputError, LimitExceededError
+from ltl_instruct.core.grounding.fusion import Fragment, FusionParams, fragments, fuse
 from ltl_instruct.core.grounding.rsm import Instance
-from ltl_instruct.core.world.camera import CameraIntrinsics, CameraMount, camera_body_pose, optical_pose
+from ltl_instruct.core.world.camera import (
+    CameraIntrinsics, CameraMount, camera_body_pose, optical_pose, rotate,
+)
 from ltl_instruct.core.world.scene import slug
 
 MAX_VOXELS = 60_000_000
@@ -46,10 +58,15 @@ class SemanticMapParams:
     ----------
     voxel_size: edge of a voxel [m].
     max_range: depths beyond this are ignored [m].
-    min_cluster_voxels: smaller clusters are dropped as noise.
+    min_cluster_voxels: instances with fewer supported voxels are dropped as noise.
     min_class_score: least class score for a voxel to count as that class.
     pixel_stride: integrate every n-th pixel in each direction (1: all; 2 keeps a point
         every ~1 cm at 3 m for a 640 px wide 90 degree camera, far denser than the voxels).
+    max_evidence: a voxel's evidence (frames that saw a surface in it minus frames that
+        saw through it) is clamped to +-this, so that as many frames undo it.
+    min_evidence: connected pieces of an object whose voxels' mean evidence is below this
+        are removed: later views saw through where they should have seen them.
+    fusion: how far fragments of one object are fused (:class:`FusionParams`).
     """
 
     voxel_size: float = 0.1
@@ -57,6 +74,9 @@ class SemanticMapParams:
     min_cluster_voxels: int = 4
     min_class_score: float = 0.5
     pixel_stride: int = 2
+    max_evidence: int = 3
+    min_evidence: float = 0.5
+    fusion: FusionParams = FusionParams()
 
     def __post_init__(self) -> None:
         for name in ('voxel_size', 'max_range'):
@@ -65,6 +85,29 @@ class SemanticMapParams:
                 raise InvalidInputError(f'{name} must be a positive number, got {v!r}')
         if self.min_cluster_voxels < 1 or self.pixel_stride < 1:
             raise InvalidInputError('min_cluster_voxels and pixel_stride must be >= 1')
+        if not 1 <= self.max_evidence <= 100 or not math.isfinite(self.min_evidence):
+            raise InvalidInputError('max_evidence must be in 1..100 and min_evidence finite')
+
+
+@dataclass(frozen=True)
+class MapInstance:
+    """An instance with the evidence behind it.
+
+    Attributes
+    ----------
+    instance: id, label, centre and extent [m] (the box of its supported voxels),
+        confidence (mean class probability of those voxels), observations (frames that
+        saw it: the most any of its voxels was seen).
+    voxels: its supported voxels (evidence > 0).
+    fragments: connected pieces fused into it.
+    evidence: mean evidence of every voxel of its pieces, seen-through ones included,
+        in [min_evidence, max_evidence].
+    """
+
+    instance: Instance
+    voxels: int
+    fragments: int
+    evidence: float
 
 
 class SemanticMap:
@@ -89,9 +132,10 @@ class SemanticMap:
         self.label = np.zeros((0, 0, 0), dtype=np.int16)        # mode of the class distribution (column)
         self.label_prob = np.zeros((0, 0, 0), dtype=np.float16)  # probability of the mode
         self.observed = np.zeros((0, 0, 0), dtype=bool)
-        self.hits = np.zeros((0, 0, 0), dtype=np.uint16)
+        self.hits = np.zeros((0, 0, 0), dtype=np.uint16)                # frames that saw a surface here
+        self.evidence = np.zeros((0, 0, 0), dtype=np.int8)              # hits - see-throughs, clamped
         self.frames = 0
-        self._ray_cache: Optional[tuple[Any, np.ndarray]] = None
+        self._ray_cache: dict[tuple[CameraIntrinsics, int], np.ndarray] = {}
 
     # ------------------------------------------------------------------ grid
     @property
@@ -109,21 +153,19 @@ class SemanticMap:
         cur_hi = self.origin + np.array(self.shape) - 1
         if self.observed.size and np.all(lo >= cur_lo) and np.all(hi <= cur_hi):
             return
-        # grow a side by at least the camera's range (1 m vertically), so that a robot moving
-        # about re-allocates the grid rarely: growth copies the whole grid
+        # grow a side by at least the camera's range (at most 10 m; 1 m vertically), so that a
+        # robot moving about re-allocates the grid rarely (growth copies the whole grid); only
+        # as far as needed when that margin would take the grid past its limit
         vs = self.params.voxel_size
-        pad = np.array([math.ceil(self.params.max_range / vs)] * 2 + [math.ceil(1.0 / vs)])
-        if self.observed.size:
-            new_lo = np.where(lo < cur_lo, np.minimum(lo, cur_lo - pad), cur_lo)
-            new_hi = np.where(hi > cur_hi, np.maximum(hi, cur_hi + pad), cur_hi)
-        else:
-            new_lo, new_hi = lo - pad, hi + pad
-        new_lo = (np.floor_divide(new_lo, _CHUNK)) * _CHUNK
-        new_hi = (np.floor_divide(new_hi, _CHUNK) + 1) * _CHUNK - 1
+        pad = np.array([math.ceil(min(self.params.max_range, 10.0) / vs)] * 2 + [math.ceil(1.0 / vs)])
+        new_lo, new_hi = self._grown(lo, hi, pad)
         shape = tuple(int(v) for v in new_hi - new_lo + 1)
-        if shape[0] * shape[1] * shape[2] > MAX_VOXELS:
+        if math.prod(shape) > MAX_VOXELS:
+            new_lo, new_hi = self._grown(lo, hi, np.zeros(3, dtype=np.int64))
+            shape = tuple(int(v) for v in new_hi - new_lo + 1)
+        if math.prod(shape) > MAX_VOXELS:
             raise LimitExceededError(f'the semantic map would grow to {shape} voxels (limit {MAX_VOXELS})')
-        names = ('occupied', 'label', 'label_prob', 'observed', 'hits')
+        names = ('occupied', 'label', 'label_prob', 'observed', 'hits', 'evidence')
         grown = {n: np.zeros(shape, dtype=getattr(self, n).dtype) for n in names}
         if self.observed.size:
             o = self.origin - new_lo
@@ -133,6 +175,16 @@ class SemanticMap:
         for n in names:
             setattr(self, n, grown[n])
         self.origin = new_lo
+
+    def _grown(self, lo: np.ndarray, hi: np.ndarray, pad: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Grid bounds that hold the grid and lo..hi, with ``pad`` voxels more on each side grown."""
+        if self.observed.size:
+            cur_lo, cur_hi = self.origin, self.origin + np.array(self.shape) - 1
+            new_lo = np.where(lo < cur_lo, np.minimum(lo, cur_lo - pad), cur_lo)
+            new_hi = np.where(hi > cur_hi, np.maximum(hi, cur_hi + pad), cur_hi)
+        else:
+            new_lo, new_hi = lo - pad, hi + pad
+        return np.floor_divide(new_lo, _CHUNK) * _CHUNK, (np.floor_divide(new_hi, _CHUNK) + 1) * _CHUNK - 1
 
     def _columns_for(self, class_ids: np.ndarray) -> np.ndarray:
         """Score columns of label ids (<= 0 -> column 0), adding columns for new classes."""
@@ -181,73 +233,115 @@ class SemanticMap:
         if not np.issubdtype(labels.dtype, np.integer) or not np.issubdtype(depth.dtype, np.number):
             raise InvalidInputError('depth must be numeric and labels integer')
         t_opt = optical_pose(camera_body_pose(pose, self.mount))
-        vs = self.params.voxel_size
         s = self.params.pixel_stride
         d = depth[::s, ::s].astype(np.float32)
-        lab = labels[::s, ::s]
-        rays = self._rays(k, s)                                           # (h, w, 3), z = 1
         valid = np.isfinite(d) & (d > 0) & (d <= self.params.max_range)
-        rot = t_opt[:3, :3].astype(np.float32)
-        cam = t_opt[:3, 3]
-        # points in map = (R @ ray) * depth + t; R @ ray per pixel is fixed for the frame
-        dirs = rays[valid] @ rot.T
-        pts = dirs * d[valid][:, None] + cam.astype(np.float32)
+        pts, ids = self._surface_points(depth, labels, k, t_opt, valid)
         self.frames += 1
         if pts.shape[0] == 0:
             return 0
         # the observed space lies in the hull of the camera and the points: grow to its box
-        vox = np.floor(pts * np.float32(1.0 / vs)).astype(np.int64)
-        cam_vox = np.floor(cam / vs).astype(np.int64)
+        vox = np.floor(pts * np.float32(1.0 / self.params.voxel_size)).astype(np.int64)
+        cam_vox = np.floor(t_opt[:3, 3] / self.params.voxel_size).astype(np.int64)
         lo = np.minimum(vox.min(axis=0), cam_vox)
         hi = np.maximum(vox.max(axis=0), cam_vox)
         self._ensure(lo, hi)
-        cols = self._columns_for(np.asarray(lab[valid], dtype=np.int64))
-        ncol = len(self._column_names)
+        cols = self._columns_for(ids)
         sub_lo = lo - self.origin
+        sl = tuple(slice(int(sub_lo[i]), int(sub_lo[i] + hi[i] - lo[i] + 1)) for i in range(3))
+        # free space is judged against the nearest surface around each pixel: a voxel whose centre
+        # projects next to an object's silhouette is not carved by the background one pixel away
+        depth_img = ndimage.minimum_filter(np.where(valid, d, np.float32(-np.inf)), size=3, mode='nearest')
+        free = self._free_space(lo, hi, t_opt, k, depth_img)
+        self._see_through(free, sl, lo, t_opt, k, depth_img)
+        return int(free.sum()) + self._add_surface(vox - lo, cols, sl, hi - lo + 1)
+
+    def _surface_points(self, depth: np.ndarray, labels: np.ndarray, k: CameraIntrinsics, t_opt: np.ndarray,
+                        valid: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Back-projected points [m] (N, 3) of a frame and their label ids (N,).
+
+        Every ``pixel_stride``-th pixel (``valid``: those of them with a depth in range),
+        and every pixel beyond the depth at which strided samples lie more than a voxel
+        apart: a far surface is then still sampled densely enough to fill its voxels
+        without holes (holes cut it into pieces). Each point moves 1 % of a voxel along its
+        ray, into the object it lies on: a surface on a voxel face (a seat at 0.9 m) then
+        fills the voxel behind it, not the one in front, by rounding that would otherwise
+        change from pixel to pixel.
+        """
+        s, vs = self.params.pixel_stride, self.params.voxel_size
+        d = depth[::s, ::s].astype(np.float32)[valid]
+        rays, ids = self._rays(k, s)[valid], labels[::s, ::s][valid]
+        far = np.float32(vs * min(k.fx, k.fy) / s)
+        if s > 1 and d.size and d.max() > far:
+            full = depth.astype(np.float32)
+            with np.errstate(invalid='ignore'):
+                extra = (full > far) & (full <= self.params.max_range)
+            extra[::s, ::s] = False
+            d = np.concatenate([d, full[extra]])
+            rays = np.concatenate([rays, self._rays(k, 1)[extra]])
+            ids = np.concatenate([ids, labels[extra]])
+        rot = t_opt[:3, :3].astype(np.float32)
+        pts = rotate(rays, rot) * (d[:, None] + np.float32(0.01 * vs)) + t_opt[:3, 3].astype(np.float32)
+        return pts, np.asarray(ids, dtype=np.int64)
+
+    def _free_space(self, lo: np.ndarray, hi: np.ndarray, t_opt: np.ndarray, k: CameraIntrinsics,
+                    depth: np.ndarray) -> np.ndarray:
+        """Voxels of the box lo..hi whose centre projects in front of the measured surface."""
+        vs, s = self.params.voxel_size, self.params.pixel_stride
         box = hi - lo + 1
-        sl = tuple(slice(int(sub_lo[i]), int(sub_lo[i] + box[i])) for i in range(3))
-        # -- free space: voxels of the box whose centre projects in front of the surface
         r = t_opt[:3, :3].T                                        # map -> optical
-        tr = -r @ cam
+        tr = -r @ t_opt[:3, 3]
         axes = [((np.arange(box[i]) + lo[i] + 0.5) * vs).astype(np.float32) for i in range(3)]
         shp = [(-1, 1, 1), (1, -1, 1), (1, 1, -1)]
         opt = [sum(np.float32(r[j, i]) * axes[i].reshape(shp[i]) for i in range(3)) + np.float32(tr[j])
                for j in range(3)]                                 # 3 x (bx, by, bz)
         zc = opt[2]
-        h, w = d.shape
+        h, w = depth.shape
         with np.errstate(divide='ignore', invalid='ignore'):
             inv_z = np.float32(1.0) / zc
             u = (opt[0] * inv_z * np.float32(k.fx / s) + np.float32(k.cx / s))
             v = (opt[1] * inv_z * np.float32(k.fy / s) + np.float32(k.cy / s))
             inview = (zc > 1e-3) & (u >= 0) & (u < w) & (v >= 0) & (v < h)
-        dm_img = np.where(valid, d, np.float32(-np.inf))
         dm = np.full(zc.shape, -np.inf, dtype=np.float32)
-        dm[inview] = dm_img[v[inview].astype(np.int64), u[inview].astype(np.int64)]
-        free = zc < dm - np.float32(vs * 0.87)                     # -inf (no return) is never free
-        sub_occ = self.occupied[sl]
-        # an occupied voxel is freed only when all its corners lie in front of the surface: a ray
-        # through its centre may graze past the object surface that fills the voxel's lower half
-        held = np.argwhere(free & sub_occ)
+        dm[inview] = depth[v[inview].astype(np.int64), u[inview].astype(np.int64)]
+        return zc < dm - np.float32(vs * 0.87)                     # -inf (no return) is never free
+
+    def _see_through(self, free: np.ndarray, sl: tuple[slice, ...], lo: np.ndarray, t_opt: np.ndarray,
+                     k: CameraIntrinsics, depth: np.ndarray) -> None:
+        """Mark free space observed; a voxel once hit loses evidence (and its surface) when seen through.
+
+        A surface voxel counts as seen through only when all its corners lie in front of the
+        measured surface: a ray through its centre may graze past the object surface that
+        fills the voxel's lower half. ``free`` keeps only what this frame made free.
+        """
+        sub_ev = self.evidence[sl]
+        held = np.argwhere(free & (self.hits[sl] > 0))
         if held.size:
-            keep = ~self._corners_in_front(held, lo, t_opt, k, s, dm_img)
-            free[tuple(held[keep].T)] = False
-        sub_occ[free] = False
+            through = self._corners_in_front(held, lo, t_opt, k, self.params.pixel_stride, depth)
+            free[tuple(held[~through].T)] = False
+            ix = tuple(held[through].T)
+            sub_ev[ix] = np.maximum(sub_ev[ix] - 1, -self.params.max_evidence)
+        self.occupied[sl][free] = False
         self.observed[sl] |= free
-        # -- occupied: label distribution of the points in each voxel of the box
-        local = vox - lo
+
+    def _add_surface(self, local: np.ndarray, cols: np.ndarray, sl: tuple[slice, ...],
+                     box: np.ndarray) -> int:
+        """Give the voxels that hold points (box indices (N, 3)) their label distribution; count them."""
+        ncol = len(self._column_names)
         flat = (local[:, 0] * box[1] + local[:, 1]) * box[2] + local[:, 2]
         cells, inv = np.unique(flat, return_inverse=True)
         counts = np.bincount(inv * ncol + cols, minlength=cells.size * ncol).reshape(cells.size, ncol)
         mode = np.argmax(counts, axis=1)
         prob = counts[np.arange(cells.size), mode] / counts.sum(axis=1)
         ix = np.unravel_index(cells, tuple(int(b) for b in box))
-        sub_occ[ix] = True
+        self.occupied[sl][ix] = True
         self.label[sl][ix] = mode.astype(np.int16)
         self.label_prob[sl][ix] = prob.astype(np.float16)
         self.observed[sl][ix] = True
-        sub_hits = self.hits[sl]
+        sub_hits, sub_ev = self.hits[sl], self.evidence[sl]
         sub_hits[ix] = np.minimum(sub_hits[ix].astype(np.int64) + 1, 65535).astype(np.uint16)
-        return int(free.sum()) + int(cells.size)
+        sub_ev[ix] = np.minimum(sub_ev[ix] + 1, self.params.max_evidence)
+        return int(cells.size)
 
     def _corners_in_front(self, cells: np.ndarray, lo: np.ndarray, t_opt: np.ndarray, k: CameraIntrinsics,
                           stride: int, depth: np.ndarray) -> np.ndarray:
@@ -257,7 +351,7 @@ class SemanticMap:
         signs = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float)
         corners = centers[:, None, :] + signs[None] * (0.5 * vs)             # (N, 8, 3)
         r = t_opt[:3, :3].T
-        opt = (corners - t_opt[:3, 3]) @ r.T
+        opt = rotate(corners - t_opt[:3, 3], r)
         z = opt[..., 2]
         h, w = depth.shape
         with np.errstate(divide='ignore', invalid='ignore'):
@@ -270,9 +364,11 @@ class SemanticMap:
 
     def _rays(self, k: CameraIntrinsics, stride: int) -> np.ndarray:
         key = (k, stride)
-        if self._ray_cache is None or self._ray_cache[0] != key:
-            self._ray_cache = (key, k.pixel_rays(stride).astype(np.float32))
-        return self._ray_cache[1]
+        if key not in self._ray_cache:
+            if len(self._ray_cache) >= 4:
+                self._ray_cache.clear()
+            self._ray_cache[key] = k.pixel_rays(stride).astype(np.float32)
+        return self._ray_cache[key]
 
     # ------------------------------------------------------------------ queries
     @property
@@ -281,41 +377,59 @@ class SemanticMap:
         return tuple(self._column_names)
 
     def instances(self) -> tuple[Instance, ...]:
-        """Object instances, clustered per class; ids ``det_<label>_<n>``, ordered by position."""
-        import open3d as o3d
+        """Object instances, one per fused object; ids ``det_<label>_<n>``, ordered by position."""
+        return tuple(r.instance for r in self.instance_records())
+
+    def instance_records(self) -> tuple[MapInstance, ...]:
+        """Object instances with their evidence (see the module docstring), ordered as :meth:`instances`."""
         if len(self._column_names) <= 1 or not self.observed.size:
             return ()
+        cells = np.argwhere(self.label > 0)          # a label is only ever given with a hit
+        cells = cells[self.label_prob[tuple(cells.T)] >= self.params.min_class_score]
+        if cells.shape[0] == 0:
+            return ()
+        live = []
+        for frag in fragments(cells, self.label[tuple(cells.T)].astype(np.int64)):
+            ev = self.evidence[tuple(frag.cells.T)]
+            if float(ev.mean()) >= self.params.min_evidence:
+                kept = frag.cells[ev > 0]
+                live.append((Fragment(frag.column, kept, kept.min(axis=0), kept.max(axis=0)), ev))
+        groups = fuse([f for f, _ in live], self._free_share, self.params.fusion)
+        found = [self._record([live[k] for k in g]) for g in groups]
+        return self._named([r for r in found if r.voxels >= self.params.min_cluster_voxels])
+
+    def _record(self, parts: Sequence[tuple[Fragment, np.ndarray]]) -> MapInstance:
+        """One instance from fused fragments (with the evidence of all their voxels); id filled in later."""
         vs = self.params.voxel_size
-        objects = self.occupied & (self.label > 0) & (self.label_prob >= self.params.min_class_score)
-        cand = np.argwhere(objects)
-        cand_label = self.label[tuple(cand.T)]
-        out: list[Instance] = []
-        for col in range(1, len(self._column_names)):
-            idx = cand[cand_label == col]
-            if idx.shape[0] < self.params.min_cluster_voxels:
-                continue
-            centers = self.voxel_centers(idx)
-            pcd = o3d.geometry.PointCloud(o3d.utility.Vector3dVector(centers))
-            cluster = np.asarray(pcd.cluster_dbscan(eps=vs * 1.8, min_points=1, print_progress=False))
-            label = self._column_names[col]
-            found = []
-            for c in range(int(cluster.max(initial=-1)) + 1):
-                members = cluster == c
-                if members.sum() < self.params.min_cluster_voxels:
-                    continue
-                cidx = idx[members]
-                pts = centers[members]
-                lo, hi = pts.min(axis=0) - vs / 2, pts.max(axis=0) + vs / 2
-                conf = float(self.label_prob[tuple(cidx.T)].astype(np.float64).mean())
-                obs = int(self.hits[tuple(cidx.T)].max())
-                found.append(((lo + hi) / 2, hi - lo, conf, obs))
-            found.sort(key=lambda f: (round(float(f[0][0]), 3), round(float(f[0][1]), 3)))
-            for n, (center, size, conf, obs) in enumerate(found, start=1):
-                out.append(Instance(f'det_{slug(label)}_{n}', label,
-                                    tuple(round(float(v), 4) for v in center),  # type: ignore[arg-type]
-                                    tuple(round(float(v), 4) for v in size),  # type: ignore[arg-type]
-                                    round(conf, 4), obs))
+        cells = np.concatenate([f.cells for f, _ in parts])
+        ix = tuple(cells.T)
+        lo = (cells.min(axis=0) + self.origin) * vs
+        hi = (cells.max(axis=0) + self.origin + 1) * vs
+        inst = Instance('', self._column_names[parts[0][0].column],
+                        tuple(round(float(v), 4) for v in (lo + hi) / 2),  # type: ignore[arg-type]
+                        tuple(round(float(v), 4) for v in hi - lo),  # type: ignore[arg-type]
+                        round(float(self.label_prob[ix].astype(np.float64).mean()), 4),
+                        int(self.hits[ix].max()))
+        evidence = float(np.concatenate([ev for _, ev in parts]).astype(np.float64).mean())
+        return MapInstance(inst, int(cells.shape[0]), len(parts), round(evidence, 4))
+
+    @staticmethod
+    def _named(found: Sequence[MapInstance]) -> tuple[MapInstance, ...]:
+        """Give ids ``det_<label>_<n>``, numbered per label by position (x, then y); labels sorted."""
+        out: list[MapInstance] = []
+        for label in sorted({r.instance.label for r in found}):
+            same = sorted((r for r in found if r.instance.label == label),
+                          key=lambda r: (round(r.instance.center[0], 3), round(r.instance.center[1], 3)))
+            out += [replace(r, instance=replace(r.instance, id=f'det_{slug(label)}_{n}'))
+                    for n, r in enumerate(same, start=1)]
         return tuple(out)
+
+    def _free_share(self, lo: np.ndarray, hi: np.ndarray) -> float:
+        """Share of the voxels of the grid box lo..hi (inclusive) observed free; 0 for an empty box."""
+        if np.any(hi < lo):
+            return 0.0
+        sl = tuple(slice(int(lo[i]), int(hi[i]) + 1) for i in range(3))
+        return float(np.mean(self.observed[sl] & ~self.occupied[sl]))
 
     def frontiers(self, z_range: Optional[Sequence[float]] = None) -> np.ndarray:
         """Centres [m] (N, 3) of observed free voxels with an unobserved 6-neighbour.

@@ -44,14 +44,26 @@ def survey_poses(scene: Scene, views: int, eye_height: float = 2.2, radius_fract
     return poses
 
 
+def survey_params(scene: Scene) -> SemanticMapParams:
+    """Map settings for a survey of ``scene``: 0.1 m voxels, coarser in a scene wider than 25 m.
+
+    A wide scene gets about 250 voxels across (in steps of 5 cm: 0.5 m for a 120 m city
+    block), so that it fits the grid as a room does; the range reaches across the scene.
+    """
+    size = np.ptp(np.array([scene.bounds_min, scene.bounds_max], dtype=float), axis=0)
+    voxel = max(0.1, math.ceil(round(float(size[:2].max()) / 250.0 / 0.05, 6)) * 0.05)
+    return SemanticMapParams(voxel_size=voxel, max_range=max(8.0, float(np.linalg.norm(size))))
+
+
 def map_from_views(scene: Scene, views: int, width: int = 320, height: int = 240,
                    params: Optional[SemanticMapParams] = None) -> SemanticMap:
-    """Render ``views`` label + depth frames of ``scene`` and integrate them into a new map."""
-    camera = SyntheticCamera(scene, width, height, max_range=max(20.0, float(np.ptp(
-        np.array([scene.bounds_min, scene.bounds_max]), axis=0).max()) * 1.5))
-    extent = float(np.linalg.norm(np.asarray(scene.bounds_max) - np.asarray(scene.bounds_min)))
-    p = params or SemanticMapParams(max_range=max(8.0, extent))
-    smap = SemanticMap(camera.classes, p)
+    """Render ``views`` label + depth frames of ``scene`` and integrate them into a new map.
+
+    ``params`` default to :func:`survey_params` of the scene.
+    """
+    size = np.ptp(np.array([scene.bounds_min, scene.bounds_max], dtype=float), axis=0)
+    camera = SyntheticCamera(scene, width, height, max_range=max(20.0, float(size.max()) * 1.5))
+    smap = SemanticMap(camera.classes, params or survey_params(scene))
     for pose in survey_poses(scene, views):
         frame = camera.render(pose)
         smap.integrate(frame.depth, frame.labels, frame.intrinsics, frame.t_map_body)

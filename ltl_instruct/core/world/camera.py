@@ -88,6 +88,17 @@ class CameraIntrinsics:
         return np.stack([uu, vv, np.ones_like(uu)], axis=-1)
 
 
+def rotate(v: np.ndarray, rot: np.ndarray) -> np.ndarray:
+    """``v @ rot.T`` for vectors v (..., 3) and a rotation (3, 3), as three multiply-adds.
+
+    A (N, 3) x (3, 3) product gains nothing from BLAS, and with the CPU shared with other
+    work BLAS's threads wait for each other: 36 ms instead of 0.4 ms for the points of a
+    640x480 frame on a loaded 2-core machine.
+    """
+    rot = rot.astype(v.dtype)
+    return v[..., 0:1] * rot[:, 0] + v[..., 1:2] * rot[:, 1] + v[..., 2:3] * rot[:, 2]
+
+
 @dataclass(frozen=True)
 class CameraMount:
     """Where the camera sits on the robot: ``height`` [m] above its position, ``pitch`` [rad] down."""
@@ -272,7 +283,7 @@ class SyntheticCamera:
         t_body = camera_body_pose(pose, self.mount)
         t_opt = optical_pose(t_body)
         k = self.intrinsics
-        dirs = self._rays_optical @ t_opt[:3, :3].T              # z_opt = 1 per unit of t
+        dirs = rotate(self._rays_optical, t_opt[:3, :3])          # z_opt = 1 per unit of t
         origins = np.broadcast_to(t_opt[:3, 3], dirs.shape)
         rays = o3d.core.Tensor(np.hstack([origins, dirs]).astype(np.float32))
         hit = self._raycaster.cast_rays(rays)

@@ -63,6 +63,25 @@ def test_formula_shapes(sample):
             assert re.match(r'F near\[(s\d)\] & \(!near\[\1\] U near\[s\d\]\)', ex.lifted)
 
 
+def test_lists_and_retractions_name_more_than_the_task_uses(sample):
+    """Leave the list items not chosen, and the names taken back, mentioned but unused."""
+    seen = set()
+    for ex in sample:
+        names = ex.source.split(':', 1)[1].split('+')
+        if len(names) != 1 or names[0] not in ('list_second', 'list_ends', 'drop_correction',
+                                               'avoid_retract'):
+            continue
+        seen.add(names[0])
+        used = set(re.findall(r'\bs\d+\b', ex.lifted))
+        if names[0] == 'list_second':
+            assert ex.lifted == 'F near[s2]' and set(ex.slots) == {'s1', 's2', 's3'}
+        elif names[0] == 'list_ends':
+            assert ex.lifted == 'F near[s1] & F near[s3] & G !near[s2]'
+        else:
+            assert used < set(ex.slots)
+    assert seen
+
+
 def test_mentions_parse_to_their_descriptors(sample):
     """Give each plain mention the descriptor that the offline phrase parser reads from it."""
     total = agree = 0

@@ -97,7 +97,7 @@ def test_unknown_set_or_split() -> None:
         P.read_split('nope', 'train', ROOT)
     if ROOT is not None:
         with pytest.raises(InvalidInputError):
-            P.read_split('drone', 'dev', ROOT)
+            P.read_split('drone', 'dev', ROOT)   # train, valid or test
 
 
 # ------------------------------------------------------------------ with the data sets
@@ -163,3 +163,16 @@ def test_benchmark_runs_on_a_sample() -> None:
     from bench.translation_public import run_set
     r = run_set('providence', 'offline', limit=10)
     assert r['n'] == 10 and 0.0 <= r['equivalence'] <= 1.0 and r['wrong_unflagged'] is not None
+
+
+@needs_data
+@pytest.mark.parametrize('name', P.SETS)
+def test_validation_split_is_never_trained_on(name: str) -> None:
+    splits = {s: P.read_split(name, s) for s in ('train', 'valid', 'test')}
+    sources = {s: {e.source for e in ds.examples} for s, ds in splits.items()}
+    assert sources['valid'] and not sources['valid'] & (sources['train'] | sources['test'])
+    items, _ = P._read(name, ROOT)
+    assert sum(map(len, sources.values())) == len(items)
+    valid_keys = {P.normalise(e.instruction) for e in splits['valid'].examples}
+    trained = {P.normalise(ex.text) for ex in P.tagged_examples(name)[0]}
+    assert not trained & valid_keys

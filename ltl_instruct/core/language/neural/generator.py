@@ -26,7 +26,7 @@ from ltl_instruct.core.language.neural.examples import Mention, TaggedExample
 PHRASINGS_PATH = Path(__file__).with_name('phrasings.yaml')
 
 _PLACEHOLDER = re.compile(r'\{(\w*)\}')
-_THING_KEYS = ('A', 'B', 'C', 'W')
+_THING_KEYS = ('A', 'B', 'C', 'D', 'W')
 _PUNCT_TABLE = str.maketrans('', '', ',.;:!?')
 _ENTITY_RE = re.compile(r'\be(\d+)\b')
 
@@ -38,7 +38,14 @@ _STEP_WEIGHTS = {'visit': 10, 'revisit': 1, 'either': 2, 'twice': 1.2, 'three_ti
 _RULE_WEIGHTS = {'unordered': 1.5, 'unordered3': 0.7, 'sequence_list': 0.8, 'before': 1.5, 'not_until': 1.2,
                  'stay_until': 0.8, 'weak_first': 0.5, 'avoid_global': 3, 'avoid_onway': 1.2,
                  'avoid_after': 1, 'xor': 1, 'at_most_once': 0.8, 'exactly_once': 0.8, 'exactly_twice': 0.6,
-                 'whenever': 1, 'if_then': 0.8, 'patrol': 0.8, 'patrol1': 0.6, 'route_twice': 0.4}
+                 'whenever': 1, 'if_then': 0.8, 'patrol': 0.8, 'patrol1': 0.6, 'route_twice': 0.4,
+                 'before_that': 1, 'swap_order': 0.6, 'either_order': 0.4, 'drop_correction': 0.6,
+                 'count_correction': 0.3, 'avoid_retract': 0.5, 'avoid_cancel': 0.4, 'list_first': 0.4,
+                 'list_second': 0.5, 'list_third': 0.4, 'list_before_last': 0.2, 'list_reverse': 0.3,
+                 'list_ends': 0.3, 'list_middle_avoid': 0.2, 'list_deliver': 0.3, 'list_deliver_first': 0.2,
+                 'deliver_either': 0.5, 'deliver_either_dest': 0.5, 'deliver_two': 0.6, 'deliver_too': 0.4,
+                 'deliver_twice_limit': 0.2, 'avoid_leg': 0.8, 'avoid_until_then': 0.5,
+                 'avoid_until_reached': 0.6, 'not_until_both': 0.4, 'either_avoid': 0.3}
 # Steps fit for a drone.
 _DRONE_STEPS = ('visit', 'visit', 'visit', 'revisit', 'either', 'twice', 'three_times', 'after_avoid',
                 'correction')
@@ -107,6 +114,7 @@ class _Tables:
                              'bare': tuple(_compile(t, rw) for t in spec.get('bare', ()))}
                       for name, spec in raw['steps'].items()}
         self.rules = {name: {'formula': spec['formula'],
+                             'things': dict(spec.get('things', {})),
                              'text': tuple(_compile(t, rw) for t in spec['text'])}
                       for name, spec in raw['rules'].items()}
         self.requesters = tuple(raw['requesters'])
@@ -350,7 +358,7 @@ class Generator:
             tpl = rng.choice(spec['bare'])
             bare = True
         else:   # a step after the first continues the sentence: no "I need you at X" there
-            tpl = rng.choice(spec['mid'] if prev else spec['text'])
+            tpl = rng.choice(spec['mid'] if prev and spec['mid'] else spec['text'])
             bare = False
         ids: dict[str, int] = {}
         for key, role in spec['things']:
@@ -402,12 +410,22 @@ class Generator:
         return segs, _chain_formula(links), names, requestable
 
     def _rule(self, name: str) -> tuple[list[Segment], str, bool]:
+        """Render one rule; its ``things`` say each placeholder's role as in a step (default 'place').
+
+        A placeholder of the text that the formula leaves out (a list item not chosen, a
+        corrected name) is a thing too, named without a relation.
+        """
         spec = self.t.rules[name]
         ids: dict[str, int] = {}
         tpl = self.rng.choice(spec['text'])
-        for key in ('A', 'B', 'C'):
-            if '{' + key + '}' in spec['formula']:
-                ids[key] = self._thing('place', plain=key in tpl.plain or self.rng.random() < 0.5)
+        said = {val for is_ph, val in tpl.parts if is_ph}
+        for key in _THING_KEYS:
+            in_formula = '{' + key + '}' in spec['formula']
+            if not in_formula and key not in said:
+                continue
+            role = spec['things'].get(key, 'place')
+            plain = role.endswith('!') or not in_formula or key in tpl.plain or self.rng.random() < 0.5
+            ids[key] = self._thing(role.rstrip('!'), plain=plain)
         return self._render(tpl, ids), self._formula(spec['formula'], ids), tpl.requestable
 
     # ---- one example ---------------------------------------------------------------------

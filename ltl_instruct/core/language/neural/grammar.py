@@ -25,7 +25,9 @@ BINARY = ('&', '|', 'U', 'W', 'R', '->', '<->')
 CONSTANTS = ('true', 'false')
 SKILLS = {'near': 1, 'pick': 1, 'release': 2}
 SLOTS = tuple(f's{k}' for k in range(1, MAX_SLOTS + 1))
-TOKENS: tuple[str, ...] = UNARY + BINARY + CONSTANTS + tuple(SKILLS) + SLOTS
+# things a task implies without naming them ("throw away the cup": the cup goes in the trash can)
+IMPLIED = ('trash_can',)
+TOKENS: tuple[str, ...] = UNARY + BINARY + CONSTANTS + tuple(SKILLS) + SLOTS + IMPLIED
 TOKEN_ID = {t: i for i, t in enumerate(TOKENS)}
 BOS = len(TOKENS)            # start symbol fed to the decoder (never emitted)
 VOCAB_SIZE = len(TOKENS) + 1
@@ -45,7 +47,7 @@ def to_prefix(f: Formula) -> list[str]:
     while stack:
         g = stack.pop()
         if isinstance(g, Atom):
-            if g.skill not in SKILLS or any(str(d) not in SLOTS for d in g.args):
+            if g.skill not in SKILLS or any(str(d) not in SLOTS + IMPLIED for d in g.args):
                 raise TranslationError(f'not a lifted atom: {g}')
             out.append(g.skill)
             out.extend(str(d) for d in g.args)
@@ -73,7 +75,7 @@ def from_prefix(tokens: Sequence[str]) -> Formula:
     values: list[object] = []   # built right to left: operands are on top when an operator comes
     for tok in reversed(tokens):
         pos -= 1
-        if tok in SLOTS:
+        if tok in SLOTS or tok in IMPLIED:
             values.append(Descriptor(tok))
         elif tok in SKILLS:
             n = SKILLS[tok]
@@ -136,12 +138,12 @@ class GrammarState:
             return []
         kind = self.needs[-1]
         if kind == SLOT:
-            return [TOKEN_ID[s] for s in SLOTS[:max(n_slots, 1)]]
+            return [TOKEN_ID[s] for s in SLOTS[:max(n_slots, 1)] + IMPLIED]
         budget = self.max_len - self.length - 1
         rest = sum(_MIN_COST[k] for k in self.needs[:-1])
         out = []
         for i, tok in enumerate(TOKENS):
-            if tok in SLOTS:
+            if tok in SLOTS or tok in IMPLIED:
                 continue
             cost = sum(_MIN_COST[k] for k in _PUSHES[i])
             if rest + cost <= budget:

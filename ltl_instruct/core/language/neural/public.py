@@ -35,8 +35,13 @@ clean-up.jsonl's, and must fall on the same side) and ``lifted_formula`` hashes 
 its order of first appearance (``& F a F b`` -> ``& F 1 F 2``), so that whole formula
 structures are held out (fraction 0.2 of structures).
 
+A validation split is carved out of the train split the same way (salt group ``valid|<group>``,
+fraction 0.1 of the non-test keys; ``lifted`` and ``lifted_formula`` share theirs): it is never
+trained on, and is where the combined translator's policy is chosen (``bench.translator_policy``),
+so the test splits stay unseen by every choice.
+
 Training (:func:`tagged_examples`) uses the train split of the set minus every item whose
-utterance is a test key of any set (the sets share phrases such as "go to the red room"); for
+utterance is a test or validation key of any set (the sets share phrases such as "go to the red room"); for
 ``lifted`` (and ``lifted_formula``) it uses the intersection of both train splits: neither
 held-out utterances nor held-out formula structures are ever seen in training.
 
@@ -88,6 +93,7 @@ _FILES = {
     'cleanup_l2l': 'lang2ltl/cleanup.csv',
 }
 _GROUP = {'cleanup_l2l': 'cleanup'}
+VALID_FRACTION = 0.1
 
 CLEANUP_LETTERS = {'B': 'blue_room', 'C': 'green_room', 'R': 'red_room', 'Y': 'yellow_room',
                    'X': 'blue_room_with_chair', 'Z': 'green_room_with_chair'}
@@ -262,8 +268,17 @@ def _is_test(name: str, item: _Item) -> bool:
     return in_test(_GROUP.get(name, name), normalise(item.text), FRACTION[name])
 
 
+def _is_valid(name: str, item: _Item) -> bool:
+    group = 'lifted' if name == 'lifted_formula' else _GROUP.get(name, name)
+    return not _is_test(name, item) and in_test(f'valid|{group}', normalise(item.text), VALID_FRACTION)
+
+
+def _split_of(name: str, item: _Item) -> str:
+    return 'test' if _is_test(name, item) else 'valid' if _is_valid(name, item) else 'train'
+
+
 def read_split(name: str, split: str, root: Optional[Path] = None) -> DataSet:
-    """Read the ``train`` or ``test`` split of a public set, gold formulas in our syntax.
+    """Read the ``train``, ``valid`` or ``test`` split of a public set, gold formulas in our syntax.
 
     ``landmarks`` lists every proposition name of the set (all splits); ``skipped`` the rows
     that could not be read.
@@ -274,42 +289,34 @@ def read_split(name: str, split: str, root: Optional[Path] = None) -> DataSet:
         Unknown set or split, or the data sets are not found.
     """
     _check_name(name)
-    if split not in ('train', 'test'):
-        raise InvalidInputError(f"split must be 'train' or 'test', not {split!r}")
+    if split not in ('train', 'valid', 'test'):
+        raise InvalidInputError(f"split must be 'train', 'valid' or 'test', not {split!r}")
     items, skipped = _read(name, _root(root))
-    want = split == 'test'
     ds = DataSet(f'{name}:{split}', skipped=list(skipped))
-    ds.examples = [Example(it.text, it.formula, it.source) for it in items if _is_test(name, it) == want]
+    ds.examples = [Example(it.text, it.formula, it.source) for it in items if _split_of(name, it) == split]
     ds.landmarks = tuple(sorted({str(d) for it in items for d in referents_of(it.formula)}))
     return ds
 
 
 @functools.lru_cache(maxsize=4)
-def _all_test_keys(root: Path) -> frozenset[str]:
+def _held_out_keys(root: Path) -> frozenset[str]:
+    """Utterance keys of every set's test and validation splits."""
     keys: set[str] = set()
     for name in SETS:
         if not (root / _FILES[name]).is_file():
             continue
         items, _ = _read(name, root)
-        keys.update(normalise(it.text) for it in items if _is_test(name, it))
+        keys.update(normalise(it.text) for it in items if _split_of(name, it) != 'train')
     return frozenset(keys)
 
 
 def _train_items(name: str, root: Path) -> list[_Item]:
-    """Training items: the train split, minus test keys of every set (and both lifted hold-outs)."""
+    """Training items: the train split, minus held-out keys of every set (and both lifted hold-outs)."""
     items, _ = _read(name, root)
-    test_keys = _all_test_keys(root)
-    out = []
-    for it in items:
-        if normalise(it.text) in test_keys:
-            continue
-        lifted = ('lifted', 'lifted_formula')
-        if name in lifted and any(_is_test(h, it) for h in lifted):
-            continue
-        if _is_test(name, it):
-            continue
-        out.append(it)
-    return out
+    held_out = _held_out_keys(root)
+    names = ('lifted', 'lifted_formula') if name in ('lifted', 'lifted_formula') else (name,)
+    return [it for it in items if normalise(it.text) not in held_out
+            and all(_split_of(n, it) == 'train' for n in names)]
 
 
 # ---------------------------------------------------------------------------- mentions

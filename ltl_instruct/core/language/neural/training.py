@@ -19,13 +19,13 @@ from typing import Callable, Optional, Sequence
 import torch
 from torch import nn
 
-from ltl_instruct.core.errors import LtlInstructError
+from ltl_instruct.core.errors import ErrorCode, LtlInstructError, TranslationError
 from ltl_instruct.core.language.neural.encoder import (
     BertEncoder, WordPieces, load_encoder, pad_batch, packaged_model_dir,
 )
 from ltl_instruct.core.language.neural.examples import TaggedExample
 from ltl_instruct.core.language.neural.features import example_tags
-from ltl_instruct.core.language.neural.grammar import MAX_SLOTS, TOKEN_ID, to_prefix
+from ltl_instruct.core.language.neural.grammar import MAX_SLOTS, TOKEN_ID, TOKENS, to_prefix
 from ltl_instruct.core.language.neural.model import NetConfig, TranslatorNet
 from ltl_instruct.core.spec import parse_formula
 
@@ -201,13 +201,16 @@ def save_bundle(net: TranslatorNet, out_dir: Path, facts: dict) -> None:
     out_dir.mkdir(parents=True, exist_ok=True)
     torch.save({k: v.half() if v.is_floating_point() else v for k, v in net.state_dict().items()},
                out_dir / BUNDLE_WEIGHTS)
-    (out_dir / BUNDLE_CONFIG).write_text(json.dumps({'net': net.config.to_dict(), **facts}, indent=2) + '\n',
-                                         encoding='utf-8')
+    config = {'net': net.config.to_dict(), 'tokens': list(TOKENS), **facts}
+    (out_dir / BUNDLE_CONFIG).write_text(json.dumps(config, indent=2) + '\n', encoding='utf-8')
 
 
 def load_bundle(bundle: Path) -> TranslatorNet:
     """Read the networks of a bundle written by :func:`save_bundle` (float32, eval mode)."""
     config = json.loads((bundle / BUNDLE_CONFIG).read_text(encoding='utf-8'))
+    if config.get('tokens') != list(TOKENS):
+        raise TranslationError(f'the translator model in {bundle} was trained for another output vocabulary; '
+                               f'retrain it with "ltl-instruct translator train"', ErrorCode.MODEL_ERROR)
     net = TranslatorNet(NetConfig(**config['net']))
     state = torch.load(bundle / BUNDLE_WEIGHTS, map_location='cpu', weights_only=True)
     net.load_state_dict({k: v.float() if v.is_floating_point() else v for k, v in state.items()})

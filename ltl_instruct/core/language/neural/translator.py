@@ -6,8 +6,10 @@
 2. the tagger's mentions become descriptors (``features.mentions_from_tags``); mentions of the
    same descriptor share a slot;
 3. beam search over lifted formulas (grammar-constrained: every hypothesis parses);
-4. the first hypothesis that is satisfiable and uses every slot wins; if none uses every slot,
-   the first satisfiable one (a correction or an aside may name a thing the task does not use);
+4. the first hypothesis that is satisfiable and uses every slot wins, unless the first
+   satisfiable one leaves a slot out and is at least ``LEAVE_OUT_ODDS`` times as likely (a
+   correction, a list of which one item is meant, or an aside names things the task does not
+   use); a reading that leaves a slot out is flagged, with what it left out;
 5. slots are replaced by their descriptors.
 
 The result carries ``extra['confidence']`` (probability of the chosen hypothesis among the
@@ -122,7 +124,8 @@ class NeuralTranslator:
             notes.append(f'the learned translator is unsure of this reading ({confidence:.2f})')
         alternatives = [format_formula(f) for (f, _), _ in readings[1:3]]
         return Translation(instruction, best[0], self.name, tuple(notes), {
-            'confidence': round(confidence, 4), 'flagged': flagged, 'alternatives': alternatives,
+            'confidence': round(confidence, 4), 'flagged': flagged, 'complete': complete,
+            'alternatives': alternatives,
             'mentions': [{'text': m.text, 'descriptor': m.descriptor, 'slot': m.slot} for m in mentions]})
 
 
@@ -137,10 +140,12 @@ def _ground(tokens: Sequence[str], descriptors: dict[str, str]) -> Formula:
 
 
 Reading = tuple[tuple[Formula, float], bool]
+# how much likelier than the best complete reading a reading that leaves a mention out must be
+LEAVE_OUT_ODDS = 3.0
 
 
 def _readings(hyps: Sequence[Hypothesis], descriptors: dict[str, str]) -> list[Reading]:
-    """Return the best satisfiable reading using every slot (else the best satisfiable one), then the others.
+    """Return the reading chosen as in step 4 of the module docstring, then the others.
 
     Automata are built only until the reading is found (a beam's last hypotheses can be long
     formulas, slow to compile); the others follow unchecked, as alternatives to show.
@@ -156,7 +161,8 @@ def _readings(hyps: Sequence[Hypothesis], descriptors: dict[str, str]) -> list[R
         except LtlInstructError:
             continue
         if slots_used(hyp.tokens) == set(descriptors):
-            chosen = (i, ((f, hyp.logprob), True))
+            if fallback is None or fallback[1][0][1] - hyp.logprob < math.log(LEAVE_OUT_ODDS):
+                chosen = (i, ((f, hyp.logprob), True))
             break
         if fallback is None:
             fallback = (i, ((f, hyp.logprob), False))

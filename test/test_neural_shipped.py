@@ -24,8 +24,9 @@ def combined():
 @pytest.mark.parametrize('text, formula', [
     ('bring me over to the printer', 'F near[printer]'),
     ('I have to finish my essay, can you find the lamp', 'F near[lamp]'),
-    ('Go to the kitchen. On top of that, never enter the hall', 'F near[kitchen] & G !near[hall]'),
-    ('go to the kitchen, otherwise go to the garage', 'F (near[kitchen] | near[garage])'),
+    ('go to the kitchen. furthermore, never enter the hall', 'F near[kitchen] & G !near[hall]'),
+    ('throw away the banana peel', 'F (near[banana_peel] & F (pick[banana_peel] & F (near[trash_can] & '
+     'F release[banana_peel, trash_can])))'),
     ('Find Bookstore and then find Marston Hall', 'F (near[bookstore] & F near[marston_hall])'),
     ('pick up the green plush toy and put it in the basket',
      'F (near[green_plush_toy] & F (pick[green_plush_toy] & F (near[basket] & '
@@ -37,14 +38,15 @@ def test_the_model_reads_what_the_rules_misread(neural, text, formula):
 
 @pytest.mark.parametrize('text', [
     'Go to the kitchen. On top of that, never enter the hall',
-    'go to the kitchen, otherwise go to the garage',
     'I have to finish my essay, can you find the lamp',
 ])
-def test_combined_flags_a_rules_misreading_and_offers_the_model_reading(combined, neural, text):
+def test_combined_flags_a_disagreement_and_offers_both_readings(combined, neural, text):
     t = combined.translate(text)
     assert t.extra['flagged'] and t.extra['agreement'] is False
-    assert str(neural.translate(text).formula) in t.extra['alternatives']
-    assert any('reads this differently' in w for w in t.extra['unread'])
+    rules = str(make_translator('offline').translate(text).formula)
+    readings = [str(t.formula)] + list(t.extra['alternatives'])
+    assert str(neural.translate(text).formula) in readings and rules in readings
+    assert any('read this differently' in w or 'reads this differently' in w for w in t.extra['unread'])
 
 
 def test_combined_takes_over_a_refusal_flagged(combined):
@@ -78,17 +80,19 @@ def test_the_dialog_offers_the_model_reading_and_takes_it(combined):
     assert classify_reply('alternative 1').kind == 'alternative'
     assert classify_reply('take alt 2').index == 2
     assert classify_reply('go to the alternative entrance').kind == 'correction'
-    replies = iter(['go to the kitchen, otherwise go to the garage', 'alternative 1', 'yes'])
+    text = 'Go to the kitchen. On top of that, never enter the hall'
+    other = combined.translate(text).extra['alternatives'][0]
+    replies = iter([text, 'alternative 1', 'yes'])
     said: list[str] = []
     assert interactive(combined, lambda _: next(replies), said.append) == 0
-    assert 'Alternative 1: F (near[kitchen] | near[garage])' in said[0]
-    assert 'reads this differently' in said[0]
-    assert json.loads(said[-1])['formula'] == 'F (near[kitchen] | near[garage])'
+    assert f'Alternative 1: {other}' in said[0]
+    assert 'read this differently' in said[0] or 'reads this differently' in said[0]
+    assert json.loads(said[-1])['formula'] == other
 
 
 def test_a_bad_alternative_number_is_refused(combined):
     from ltl_instruct.commands.translate import interactive
-    replies = iter(['go to the kitchen, otherwise go to the garage', 'alternative 9', 'no'])
+    replies = iter(['Go to the kitchen. On top of that, never enter the hall', 'alternative 9', 'no'])
     said: list[str] = []
     assert interactive(combined, lambda _: next(replies), said.append) == 1
     assert 'there is no alternative 9' in said

@@ -12,6 +12,7 @@ import json
 import random
 
 from ltl_instruct.commands.translate import _options
+from ltl_instruct.commands.translate import warn_without_model
 from ltl_instruct.core.language import BACKENDS, make_translator
 from ltl_instruct.core.language.datasets import read_dataset
 from ltl_instruct.core.language.evaluation import evaluate
@@ -61,6 +62,7 @@ def run(args: argparse.Namespace) -> int:
     if args.backend in ('offline', 'combined', 'neural') and ds.landmarks:
         options['landmarks'] = ds.landmarks   # lifted propositions are names given in advance
     translator = make_translator(args.backend, **options)
+    warn_without_model(translator)
     examples = ds.examples
     if args.limit and args.limit < len(examples):
         examples = random.Random(args.seed).sample(examples, args.limit)

@@ -94,9 +94,18 @@ def record(t: Translation) -> dict[str, Any]:
     return out
 
 
+def warn_without_model(translator: object) -> None:
+    """Say on stderr when the combined backend runs without its learned model (the rules alone read)."""
+    error = getattr(translator, 'model_error', '')
+    if error:
+        print(f'warning: the learned translator is not loaded, the rules alone read: {error}',
+              file=sys.stderr)
+
+
 def run(args: argparse.Namespace) -> int:
     """Translate one instruction, a file of them, or run the dialog."""
     translator = make_translator(args.backend, **_options(args))
+    warn_without_model(translator)
     if args.interactive:
         return interactive(translator, input, print)
     if args.input:

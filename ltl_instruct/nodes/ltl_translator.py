@@ -165,6 +165,9 @@ class LtlTranslatorNode(Node):
                 from ltl_instruct.core.language import make_translator
                 opts = {'model_path': self.params['model_path']} if self.params['model_path'] else {}
                 self._translator = make_translator(self.params['backend'], **opts)
+                if getattr(self._translator, 'model_error', ''):
+                    self.get_logger().warning('the learned translator is not loaded, the rules alone read: '
+                                              f'{self._translator.model_error}')
             except ImportError as e:
                 self._translator_error = TranslationError(f'translator backend unavailable: {e}',
                                                           ErrorCode.MODEL_ERROR)

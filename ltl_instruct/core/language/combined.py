@@ -6,7 +6,9 @@ Policy (measured on the public sets' held-out splits; see the README, "translate
   reading, not flagged (with the model's names when only the model's are all landmarks given:
   "the green area" is the map's `green_room`);
 - both read it and disagree: the rules' reading, **flagged**, with the model's reading offered
-  as the alternative (the dialog shows both);
+  as the alternative (the dialog shows both); unless the model is sure of its reading
+  (confidence at least ``override``, every mention used, every name made of words or
+  landmarks given): then the model's reading, **flagged**, with the rules' as the alternative;
 - the rules refuse because words could not be placed (never a count, limit or input rule they
   enforce) and the model reads it with confidence at least ``takeover`` (the share of
   the beam's probability on its reading): the model's reading, **flagged**, with what the rules
@@ -22,7 +24,7 @@ which the verification dialog shows first, before anything moves.
 from __future__ import annotations
 
 import re
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from typing import Any, Optional, Sequence
 
 from ltl_instruct.core.errors import ErrorCode, LtlInstructError, TranslationError
@@ -50,16 +52,38 @@ def _unreadable(refusal: LtlInstructError) -> bool:
     return refusal.code == ErrorCode.TRANSLATION_ERROR and 'part' in details and 'count' not in details
 
 
+@dataclass(frozen=True)
+class Policy:
+    """The thresholds of the policy (model confidence: its reading's share of the beam's probability).
+
+    takeover: the rules refused (words they could not place): the model's reading stands in at
+        this confidence or more.
+    override: the two disagree: the model's reading goes on instead of the rules' at this
+        confidence or more (above 1: never). Chosen on the validation splits and the dev set by
+        ``bench.translator_policy``; the README gives the figures.
+    """
+
+    takeover: float = 0.5
+    override: float = 0.95
+
+
+# what the rules and the model made of one instruction: (rules' reading, rules' refusal, model's reading)
+Readings = tuple[Optional[Translation], Optional[LtlInstructError], Optional[Translation]]
+
+
 class CombinedTranslator:
     """Backend ``'combined'``: rules and learned model together (the module docstring's policy)."""
 
     name = 'combined'
 
     def __init__(self, model_path: Optional[str] = None, landmarks: Sequence[str] = (),
-                 takeover: float = 0.5, **rule_options: Any) -> None:
+                 takeover: Optional[float] = None, override: Optional[float] = None,
+                 **rule_options: Any) -> None:
         from ltl_instruct.core.language.offline import OfflineTranslator
         self.rules = OfflineTranslator(landmarks=landmarks, **rule_options)
-        self.takeover = takeover
+        default = Policy()
+        self.policy = Policy(default.takeover if takeover is None else takeover,
+                             default.override if override is None else override)
         self.landmarks = tuple(landmarks)
         self.model: Optional[Translator] = None
         self.model_error = ''
@@ -72,6 +96,10 @@ class CombinedTranslator:
 
     def translate(self, instruction: str) -> Translation:
         """Translate with both; return the one reading the policy picks."""
+        return self.decide(self.read(instruction), self.policy)
+
+    def read(self, instruction: str) -> Readings:
+        """Return what the rules and the model make of an instruction (the model only when worth asking)."""
         rules: Optional[Translation] = None
         refusal: Optional[LtlInstructError] = None
         try:
@@ -84,16 +112,36 @@ class CombinedTranslator:
                 model = self.model.translate(instruction)
             except LtlInstructError:
                 model = None
+        return rules, refusal, model
+
+    def decide(self, readings: Readings, policy: Policy) -> Translation:
+        """Pick the one reading that goes on (raises the rules' refusal when none may)."""
+        rules, refusal, model = readings
         if rules is not None:
+            if model is not None and not same_task(rules.formula, model.formula) \
+                    and self._sure(model, policy.override):
+                return self._from_model(model, self._differs_note(rules), [format_formula(rules.formula)],
+                                        rules_error=None)
             return self._with_rules(rules, model)
-        if model is not None and refusal is not None and _unreadable(refusal) and self._may_take_over(model):
-            return self._from_model(model, refusal)
         assert refusal is not None
+        if model is not None and _unreadable(refusal) and self._sure(model, policy.takeover, complete=False):
+            best = refusal.details.get('best_reading') if isinstance(refusal.details, dict) else None
+            note = (f'the rules could not read all of it ({refusal.message}); this reading is the '
+                    f'learned model\'s: check it')
+            return self._from_model(model, note, [best] if isinstance(best, str) else [],
+                                    rules_error=refusal.to_dict())
         raise refusal
 
-    def _may_take_over(self, model: Translation) -> bool:
-        """Tell whether the model may stand in for a refusal: confident, every name made of words."""
-        if model.extra.get('confidence', 0.0) < self.takeover:
+    @staticmethod
+    def _differs_note(rules: Translation) -> str:
+        return (f'the rules read this differently: {format_formula(rules.formula)}; this reading is the '
+                f'learned model\'s, which is sure of it: check which is meant')
+
+    def _sure(self, model: Translation, threshold: float, complete: bool = True) -> bool:
+        """Tell whether the model's reading may go on: confident, complete if asked, names made of words."""
+        if model.extra.get('confidence', 0.0) < threshold:
+            return False
+        if complete and not model.extra.get('complete', True):
             return False
         from ltl_instruct.core.language.offline import rules_speller
         speller = rules_speller()
@@ -124,17 +172,15 @@ class CombinedTranslator:
         alternative = format_formula(model.formula)
         unread = list(extra.get('unread', ())) + [
             f'the learned model reads this differently: {alternative}; check which is meant']
-        extra.update(flagged=True, agreement=False, alternatives=[alternative], unread=unread)
+        extra.update(flagged=True, agreement=False, alternatives=[alternative], unread=unread,
+                     confidence=model.extra.get('confidence'))
         return replace(rules, backend=self.name, extra=extra)
 
-    def _from_model(self, model: Translation, refusal: LtlInstructError) -> Translation:
+    def _from_model(self, model: Translation, note: str, first: list[str],
+                    rules_error: Optional[dict]) -> Translation:
         extra = dict(model.extra)
-        unread = [f'the rules could not read all of it ({refusal.message}); this reading is the '
-                  f'learned model\'s: check it']
-        best = refusal.details.get('best_reading') if isinstance(refusal.details, dict) else None
-        alternatives = list(extra.get('alternatives', ()))
-        if isinstance(best, str):
-            alternatives.insert(0, best)
-        extra.update(flagged=True, agreement=False, unread=unread, alternatives=alternatives,
-                     rules_error=refusal.to_dict())
+        alternatives = first + [a for a in extra.get('alternatives', ()) if a not in first]
+        extra.update(flagged=True, agreement=False, unread=[note], alternatives=alternatives)
+        if rules_error is not None:
+            extra['rules_error'] = rules_error
         return replace(model, backend=self.name, extra=extra)

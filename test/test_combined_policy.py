@@ -1,0 +1,83 @@
+"""The combined translator's policy, decided on readings made up here (no model is loaded)."""
+import math
+
+import pytest
+
+from ltl_instruct.core.errors import TranslationError
+from ltl_instruct.core.language.base import Translation
+from ltl_instruct.core.language.combined import CombinedTranslator, Policy
+from ltl_instruct.core.language.neural.decode import Hypothesis
+from ltl_instruct.core.language.neural.translator import LEAVE_OUT_ODDS, _readings
+from ltl_instruct.core.spec import parse_formula
+
+TEXT = 'go to the kitchen, then the hall'
+
+
+@pytest.fixture(scope='module')
+def combined():
+    t = CombinedTranslator(model_path='/nonexistent/bundle')   # the model part is replaced by readings
+    assert t.model is None
+    return t
+
+
+def _rules(formula: str) -> Translation:
+    return Translation(TEXT, parse_formula(formula), 'offline')
+
+
+def _model(formula: str, confidence: float, complete: bool = True,
+           mentions=('kitchen', 'hall')) -> Translation:
+    said = [{'text': f'the {m}', 'descriptor': m, 'slot': f's{i}'} for i, m in enumerate(mentions, 1)]
+    return Translation(TEXT, parse_formula(formula), 'neural', (), {
+        'confidence': confidence, 'complete': complete, 'flagged': confidence < 0.6, 'alternatives': [],
+        'mentions': said})
+
+
+RULES = 'F near[kitchen] & F near[hall]'
+MODEL = 'F (near[kitchen] & F near[hall])'
+
+
+def test_agreement_goes_on_unflagged(combined):
+    t = combined.decide((_rules(MODEL), None, _model(MODEL, 0.7)), Policy())
+    assert t.extra['agreement'] is True and not t.extra['flagged']
+
+
+def test_disagreement_below_override_keeps_the_rules_flagged(combined):
+    t = combined.decide((_rules(RULES), None, _model(MODEL, 0.8)), Policy(override=0.9))
+    assert str(t.formula) == RULES
+    assert t.extra['flagged'] and t.extra['alternatives'] == [MODEL]
+
+
+def test_sure_model_overrides_flagged_with_the_rules_as_alternative(combined):
+    t = combined.decide((_rules(RULES), None, _model(MODEL, 0.95)), Policy(override=0.9))
+    assert str(t.formula) == MODEL and t.backend == 'combined'
+    assert t.extra['flagged'] and t.extra['alternatives'][0] == RULES
+    assert any('rules read this differently' in n for n in t.extra['unread'])
+
+
+def test_incomplete_or_misspelt_model_never_overrides(combined):
+    incomplete = _model(MODEL, 0.99, complete=False)
+    assert str(combined.decide((_rules(RULES), None, incomplete), Policy(override=0.5)).formula) == RULES
+    gibberish = _model('F (near[qzxv] & F near[hall])', 0.99, mentions=('qzxv', 'hall'))
+    assert str(combined.decide((_rules(RULES), None, gibberish), Policy(override=0.5)).formula) == RULES
+
+
+def test_refusal_taken_over_only_when_sure(combined):
+    refusal = TranslationError('could not place "zorp"', details={'part': 'zorp'})
+    t = combined.decide((None, refusal, _model(MODEL, 0.6)), Policy(takeover=0.5))
+    assert str(t.formula) == MODEL and t.extra['flagged'] and t.extra['rules_error']
+    with pytest.raises(TranslationError):
+        combined.decide((None, refusal, _model(MODEL, 0.4)), Policy(takeover=0.5))
+    count = TranslationError('too many visits', details={'part': 'x', 'count': 50})
+    with pytest.raises(TranslationError):
+        combined.decide((None, count, _model(MODEL, 0.99)), Policy(takeover=0.5))
+
+
+def test_reading_that_leaves_a_mention_out_must_be_much_likelier():
+    descriptors = {'s1': 'fridge', 's2': 'freezer'}
+    left_out = Hypothesis(('F', 'near', 's2'), math.log(0.6))
+    complete = Hypothesis(('F', '&', 'near', 's1', 'F', 'near', 's2'), math.log(0.3))
+    best, whole = _readings([left_out, complete], descriptors)[0]
+    assert str(best[0]) == 'F (near[fridge] & F near[freezer])' and whole   # only 2x likelier
+    much = Hypothesis(('F', 'near', 's2'), math.log(0.3 * LEAVE_OUT_ODDS * 1.1))
+    best, whole = _readings([much, complete], descriptors)[0]
+    assert str(best[0]) == 'F near[freezer]' and not whole

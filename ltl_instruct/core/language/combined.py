@@ -10,7 +10,7 @@ Policy (measured on the public sets' held-out splits; see the README, "translate
   (confidence at least ``override``, every mention used, every name made of words or
   landmarks given): then the model's reading, **flagged**, with the rules' as the alternative;
 - the rules refuse because words could not be placed (never a count, limit or input rule they
-  enforce) and the model reads it with confidence at least ``takeover`` (the share of
+  enforce) and the model reads it, using every mention, with confidence at least ``takeover`` (the share of
   the beam's probability on its reading): the model's reading, **flagged**, with what the rules
   could not place as a warning; below that, or when a name it found is no English word nor a
   landmark given ("qwzx vvv"), the rules' refusal stands (a guess is not a task);
@@ -124,7 +124,7 @@ class CombinedTranslator:
                                         rules_error=None)
             return self._with_rules(rules, model)
         assert refusal is not None
-        if model is not None and _unreadable(refusal) and self._sure(model, policy.takeover, complete=False):
+        if model is not None and _unreadable(refusal) and self._sure(model, policy.takeover):
             best = refusal.details.get('best_reading') if isinstance(refusal.details, dict) else None
             note = (f'the rules could not read all of it ({refusal.message}); this reading is the '
                     f'learned model\'s: check it')
@@ -137,11 +137,9 @@ class CombinedTranslator:
         return (f'the rules read this differently: {format_formula(rules.formula)}; this reading is the '
                 f'learned model\'s, which is sure of it: check which is meant')
 
-    def _sure(self, model: Translation, threshold: float, complete: bool = True) -> bool:
-        """Tell whether the model's reading may go on: confident, complete if asked, names made of words."""
-        if model.extra.get('confidence', 0.0) < threshold:
-            return False
-        if complete and not model.extra.get('complete', True):
+    def _sure(self, model: Translation, threshold: float) -> bool:
+        """Tell whether the model's reading may go on: confident, every mention used, names made of words."""
+        if model.extra.get('confidence', 0.0) < threshold or not model.extra.get('complete', True):
             return False
         from ltl_instruct.core.language.offline import rules_speller
         speller = rules_speller()

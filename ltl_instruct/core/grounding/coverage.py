@@ -38,7 +38,7 @@ class PlaneGrid:
 
     @staticmethod
     def over(bounds_min: Sequence[float], bounds_max: Sequence[float], cell: float) -> 'PlaneGrid':
-        """The grid that covers the (x, y) box of some bounds [m]."""
+        """Return the grid that covers the (x, y) box of some bounds [m]."""
         nx = max(1, int(math.ceil((bounds_max[0] - bounds_min[0]) / cell)))
         ny = max(1, int(math.ceil((bounds_max[1] - bounds_min[1]) / cell)))
         return PlaneGrid((float(bounds_min[0]), float(bounds_min[1])), float(cell), (nx, ny))
@@ -115,7 +115,7 @@ def view_gain(points: np.ndarray, grid: PlaneGrid, seen: np.ndarray, blocks: np.
 
 
 def travel_field(free: np.ndarray, grid: PlaneGrid, start: Sequence[float]) -> np.ndarray:
-    """Shortest 8-connected distance [m] from ``start`` over ``free`` cells (nx, ny); inf where unreachable."""
+    """Return the 8-connected travel [m] from ``start`` over ``free`` cells (nx, ny); inf: unreachable."""
     nx, ny = free.shape
     ids = np.arange(nx * ny).reshape(nx, ny)
     rows, cols, w = [], [], []

@@ -153,12 +153,12 @@ class SearchResult:
 
 
 def unresolved(rmap: ReferentMap) -> tuple[str, ...]:
-    """Required descriptors of a referent map that denote nothing (``UNKNOWN_REFERENT``, ``NO_MATCH``)."""
+    """Return the required descriptors of a referent map that denote nothing (unknown or no match)."""
     return tuple(t for t, g in rmap.groundings.items() if g.required and g.outcome in _UNRESOLVED)
 
 
 def avoid_regions(rmap: ReferentMap, radius: float) -> tuple[AtomRegion, ...]:
-    """The ``near[x]`` regions of the avoided (not required) descriptors that denote instances."""
+    """Return the ``near[x]`` regions of the avoided (not required) descriptors that denote instances."""
     out = []
     for text, g in sorted(rmap.groundings.items()):
         if not g.required and g.instances:
@@ -358,7 +358,7 @@ def search_referents(scene: Scene, formula: Union[Formula, str], start: Optional
 
 
 def _after_complete_search(rmap: ReferentMap, area: float, views: int) -> ReferentMap:
-    """Required descriptors still unresolved become ``NO_MATCH``, saying the whole reachable map was searched."""
+    """Make required descriptors still unresolved ``NO_MATCH``: the whole reachable map was searched."""
     out = dict(rmap.groundings)
     for text in unresolved(rmap):
         g = rmap.groundings[text]

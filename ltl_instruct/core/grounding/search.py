@@ -54,6 +54,8 @@ from ltl_instruct.core.world.scene import Scene
 STRATEGIES = ('gain', 'nearest')
 _GOAL_ATOM = near('search_goal')
 _UNRESOLVED = (Outcome.UNKNOWN_REFERENT, Outcome.NO_MATCH)
+GOAL_RADIUS = 0.2
+"""A move ends within this distance [m] of its frontier goal."""
 
 
 @dataclass(frozen=True)
@@ -176,6 +178,20 @@ def _avoid_guard(regions: Sequence[AtomRegion], with_goal: bool) -> Guard:
     return Guard.of([Cube(pos, neg)])
 
 
+def plan_move(world: PlanningWorld, start: Sequence[float], goal: Sequence[float],
+              avoid: Sequence[AtomRegion], params: SearchParams, request_id: str = 'search') -> SegmentResult:
+    """Plan with FMT* from ``start`` to within ``GOAL_RADIUS`` of ``goal`` [m], staying out of ``avoid``.
+
+    The regions to avoid are kept ``params.avoid_margin`` outside, where free space allows.
+    """
+    target = AtomRegion(_GOAL_ATOM.key, ((float(goal[0]), float(goal[1]), 0.0),), ((0.0, 0.0, 0.0),),
+                        GOAL_RADIUS)
+    request = SegmentRequest(request_id, (float(start[0]), float(start[1])), 2, (target,) + tuple(avoid),
+                             _avoid_guard(avoid, True), _avoid_guard(avoid, False), params.fmt,
+                             avoid_margin=params.avoid_margin)
+    return solve_segment(request, world)
+
+
 class _Explorer:
     """The search's state: the map, the robot's pose, the path and views so far."""
 
@@ -273,13 +289,9 @@ class _Explorer:
         return best
 
     def plan(self, goal: np.ndarray) -> SegmentResult:
-        """FMT* from the robot to within 0.2 m of ``goal`` [m], never near an avoided region."""
+        """FMT* from the robot to ``goal`` [m], never near an avoided region."""
         avoid = avoid_regions(self.rmap, self.params.near_threshold)
-        target = AtomRegion(_GOAL_ATOM.key, ((float(goal[0]), float(goal[1]), 0.0),), ((0.0, 0.0, 0.0),), 0.2)
-        request = SegmentRequest(f'search/{self.moves}', tuple(self.pose.position[:2]), 2, (target,) + avoid,
-                                 _avoid_guard(avoid, True), _avoid_guard(avoid, False), self.params.fmt,
-                                 avoid_margin=self.params.avoid_margin)
-        return solve_segment(request, self.world)
+        return plan_move(self.world, self.pose.position, goal, avoid, self.params, f'search/{self.moves}')
 
     # ------------------------------------------------------------------ moving
     def drive(self, result: SegmentResult) -> None:

@@ -74,8 +74,9 @@ def _sight_blocks(scene: Scene, grid: PlaneGrid, eye: float, skip: Instance) -> 
     return out
 
 
-def _in_sight(cells: np.ndarray, grid: PlaneGrid, blocks: np.ndarray, obj: Instance, reach: float) -> np.ndarray:
-    """Whether a straight line from each cell centre (K, 2) meets the object's footprint within ``reach`` [m]."""
+def _in_sight(cells: np.ndarray, grid: PlaneGrid, blocks: np.ndarray, obj: Instance,
+              reach: float) -> np.ndarray:
+    """Whether a line from each cell's centre (cells (K, 2)) meets the object's footprint within ``reach`` [m]."""
     c, h = np.asarray(obj.center[:2]), np.asarray(obj.size[:2]) / 2
     targets = c + np.array([[0, 0], [-1, -1], [-1, 1], [1, -1], [1, 1]]) * h * 0.9     # (T, 2)
     pts = grid.centers()[cells[:, 0], cells[:, 1]]
@@ -173,12 +174,12 @@ def _summary(cases: Sequence[Case], label: str) -> dict:
            for k in total}
     ok = {k: sum(c.correct[k] for c in cases) for k in ('gain', 'nearest')}
     within = sum(c.travel['gain'] <= TRAVEL_TARGET * c.travel['oracle'] + 1e-9 for c in with_oracle)
-    print(f'{label}: {len(cases)} referents not resolved from the start; correct: gain {ok["gain"]}/{len(cases)}, '
-          f'nearest {ok["nearest"]}/{len(cases)}')
+    print(f'{label}: {len(cases)} referents not resolved from the start; correct: '
+          f'gain {ok["gain"]}/{len(cases)}, nearest {ok["nearest"]}/{len(cases)}')
     print(f'  travel total (median) over {len(with_oracle)} with an oracle: gain {total["gain"]:.1f} m '
           f'({med["gain"]:.1f}), nearest {total["nearest"]:.1f} m ({med["nearest"]:.1f}), '
-          f'oracle {total["oracle"]:.1f} m ({med["oracle"]:.1f}); gain/oracle {total["gain"] / total["oracle"]:.2f}, '
-          f'gain/nearest {total["gain"] / total["nearest"]:.2f}; gain within {TRAVEL_TARGET:.0f}x oracle '
+          f'oracle {total["oracle"]:.1f} m ({med["oracle"]:.1f}); '
+          f'gain/oracle {total["gain"] / total["oracle"]:.2f}, gain/nearest {total["gain"] / total["nearest"]:.2f}; gain within {TRAVEL_TARGET:.0f}x oracle '
           f'{within}/{len(with_oracle)}')
     return {'n': len(cases), 'ok': ok['gain'], 'total': total}
 
@@ -206,7 +207,8 @@ def main(argv: list[str]) -> int:
         gone = absent(scene, params)
         _summary(mine, scene.name)
         print(f'  absent referents NO_MATCH after a complete search: {sum(a[2] for a in gone)}/{len(gone)} '
-              f'(travel {", ".join(f"{a[0]}/{a[1]} {a[3]:.1f} m" for a in gone)}); {time.perf_counter() - t0:.0f} s')
+              f'(travel {", ".join(f"{a[0]}/{a[1]} {a[3]:.1f} m" for a in gone)}); '
+              f'{time.perf_counter() - t0:.0f} s')
         cases += mine
         absents += gone
     s = _summary(cases, 'all')

@@ -76,7 +76,7 @@ def _sight_blocks(scene: Scene, grid: PlaneGrid, eye: float, skip: Instance) -> 
 
 def _in_sight(cells: np.ndarray, grid: PlaneGrid, blocks: np.ndarray, obj: Instance,
               reach: float) -> np.ndarray:
-    """Whether a line from each cell's centre (cells (K, 2)) meets the object's footprint within ``reach`` [m]."""
+    """Whether a line from each cell's centre (cells (K, 2)) meets the object's footprint within reach [m]."""
     c, h = np.asarray(obj.center[:2]), np.asarray(obj.size[:2]) / 2
     targets = c + np.array([[0, 0], [-1, -1], [-1, 1], [1, -1], [1, 1]]) * h * 0.9     # (T, 2)
     pts = grid.centers()[cells[:, 0], cells[:, 1]]
@@ -179,8 +179,9 @@ def _summary(cases: Sequence[Case], label: str) -> dict:
     print(f'  travel total (median) over {len(with_oracle)} with an oracle: gain {total["gain"]:.1f} m '
           f'({med["gain"]:.1f}), nearest {total["nearest"]:.1f} m ({med["nearest"]:.1f}), '
           f'oracle {total["oracle"]:.1f} m ({med["oracle"]:.1f}); '
-          f'gain/oracle {total["gain"] / total["oracle"]:.2f}, gain/nearest {total["gain"] / total["nearest"]:.2f}; gain within {TRAVEL_TARGET:.0f}x oracle '
-          f'{within}/{len(with_oracle)}')
+          f'gain/oracle {total["gain"] / total["oracle"]:.2f}, '
+          f'gain/nearest {total["gain"] / total["nearest"]:.2f}; '
+          f'gain within {TRAVEL_TARGET:.0f}x oracle {within}/{len(with_oracle)}')
     return {'n': len(cases), 'ok': ok['gain'], 'total': total}
 
 

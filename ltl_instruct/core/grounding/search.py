@@ -7,7 +7,7 @@ moves to a frontier (:mod:`coverage`) and looks again, along the way every
 ``view_spacing`` metres and at the goal, re-grounding after every panorama:
 
 - ``gain`` (the default) picks the frontier with the most unseen cells in sight per
-  metre of travel: ``gain / (travel + view_cost)``, travel first from the grid's
+  metre of travel: ``gain * exp(-decay * travel)``, travel first from the grid's
   shortest paths, then, for the ``shortlist`` best, the FMT* path to it;
 - ``nearest`` picks the frontier nearest by travel (the classic baseline).
 
@@ -71,7 +71,9 @@ class SearchParams:
     width, height: camera image size [px].
     cell: cell of the plane grid [m] (the map's voxel size is kept at least this fine).
     min_gain: least unseen cells in sight for a frontier to be worth a move.
-    view_cost: travel [m] a panorama is worth in the gain-per-metre score.
+    decay: the gain-per-metre score of a frontier is ``gain * exp(-decay * travel)`` (per
+        metre [1/m], as Gonzalez-Banos and Latombe weigh it); 0: ``gain / (travel + view_cost)``.
+    view_cost: travel [m] a panorama is worth in the second form.
     shortlist: frontiers planned with FMT* per move (the best by grid travel).
     max_moves: moves before the search gives up.
     revisit: frontiers closer than this to where a panorama was taken are not goals [m]
@@ -91,6 +93,7 @@ class SearchParams:
     cell: float = 0.1
     min_gain: int = 30
     view_cost: float = 2.0
+    decay: float = 0.3
     shortlist: int = 3
     max_moves: int = 40
     revisit: float = 1.0
@@ -268,11 +271,17 @@ class _Explorer:
             if self.params.strategy == 'nearest':
                 order = np.argsort(dist, kind='stable')[:1]
             else:
-                score = gain / (dist + self.params.view_cost)
+                score = self.score(gain, dist)
                 order = np.argsort(-score, kind='stable')[:self.params.shortlist]
             best = self._best_planned(pts[order], gain[order])
             if best is not None:
                 return best
+
+    def score(self, gain: np.ndarray, travel: np.ndarray) -> np.ndarray:
+        """Score frontier goals by gain (K,) and travel [m] (K,): the higher the better."""
+        if self.params.decay > 0:
+            return gain * np.exp(-self.params.decay * travel)
+        return gain / (travel + self.params.view_cost)
 
     def _best_planned(self, goals: np.ndarray, gains: np.ndarray) -> Optional[SegmentResult]:
         """Plan to each goal with FMT*; the best by gain per metre (failures are never tried again)."""
@@ -283,7 +292,7 @@ class _Explorer:
                 ix, iy = self.grid.index(goal[None])
                 self.failed.add((int(ix[0]), int(iy[0])))
                 continue
-            score = gain / (result.length + self.params.view_cost)
+            score = float(self.score(np.array([gain]), np.array([result.length]))[0])
             if score > best_score:
                 best, best_score = result, score
         return best

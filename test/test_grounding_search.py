@@ -8,6 +8,7 @@ import pytest
 
 from ltl_instruct.cli import main
 from ltl_instruct.core.errors import InvalidInputError
+from ltl_instruct.core.grounding.coverage import PlaneGrid, travel_field, view_gain
 from ltl_instruct.core.grounding.rsm import Outcome
 from ltl_instruct.core.grounding.search import SearchParams, search_referents
 from ltl_instruct.core.world.near import box_distance
@@ -109,3 +110,23 @@ def test_ground_explore_cli_refuses_views_too(tmp_path):
                  '--explore']) == 2
     assert main(['ground', '--scene', 'apartment', '--formula', 'F near[sofa]', '--explore',
                  '--png', str(tmp_path / 'no' / 'x.png')]) == 2
+
+
+def test_view_gain_counts_unseen_cells_in_sight_only():
+    grid = PlaneGrid((0.0, 0.0), 0.1, (40, 20))
+    seen = np.zeros(grid.shape, dtype=bool)
+    seen[:20] = True                       # the left half was seen
+    blocks = np.zeros(grid.shape, dtype=bool)
+    open_gain = view_gain(np.array([[1.95, 1.0]]), grid, seen, blocks, 3.0)[0]
+    blocks[20, :] = True                   # a wall between the halves
+    walled = view_gain(np.array([[1.95, 1.0]]), grid, seen, blocks, 3.0)[0]
+    assert open_gain > 100 and walled == 0
+
+
+def test_travel_field_goes_round_a_wall():
+    grid = PlaneGrid((0.0, 0.0), 0.1, (30, 30))
+    free = np.ones(grid.shape, dtype=bool)
+    free[15, :25] = False                  # a wall with a gap at the top
+    d = travel_field(free, grid, (0.55, 0.55))
+    assert d[5, 5] == 0.0 and np.isinf(d[15, 0])
+    assert d[25, 5] > 2.0 * 2.0            # up to the gap and back down, not 2 m straight

@@ -1,12 +1,12 @@
 """Search for referents the robot cannot see from its start: travel to resolve, three ways (issue 18).
 
-Run: ``.venv/bin/python -m bench.search [--scene NAME ...] [--limit N] [--verbose]``.
+Run: ``.venv/bin/python -m bench.search [--scene NAME ...] [--limit N] [--every-start] [--verbose]``.
 
 Scenes: the built-in ``apartment`` (four rooms, archways) and the two-room office of
 :mod:`bench.grounding_camera` (an occluding wall with a doorway). Referents: every label
 that names exactly one object of the scene and that the start panorama (4 views) does
-not resolve: behind a wall, or out of range, from the scene's start and from a start in
-each other room (``--one-start``: the scene's only). Each is sought with ``F near[label]``:
+not resolve: behind a wall, or out of range, from the scene's start (``--every-start``:
+also from a start in each other room). Each is sought with ``F near[label]``:
 
 (a) ``gain``: :func:`search_referents`, frontiers by information gain per metre;
 (b) ``nearest``: the same search, the nearest frontier each move;
@@ -215,7 +215,8 @@ def main(argv: list[str]) -> int:
                     help='apartment, two_room_office or a scene file (default: the first two)')
     ap.add_argument('--limit', type=int, default=0, help='at most this many referents per scene (0: all)')
     ap.add_argument('--verbose', action='store_true', help='a line per referent')
-    ap.add_argument('--one-start', action='store_true', help="only the scene's start (default: one per room)")
+    ap.add_argument('--every-start', action='store_true',
+                    help="also start in each other room (default: the scene's start only; slow)")
     args = ap.parse_args(argv)
     params = SearchParams()
     cases: list[Case] = []
@@ -224,7 +225,7 @@ def main(argv: list[str]) -> int:
         t0 = time.perf_counter()
         scene = _scene(name)
         mine, gone = [], []
-        for start in _starts(scene, not args.one_start):
+        for start in _starts(scene, args.every_start):
             for obj in hidden_referents(scene, start, params)[:args.limit or None]:
                 mine.append(seek(scene, start, obj, params))
                 if args.verbose:

@@ -1,0 +1,133 @@
+"""What a ground robot's camera has covered, in the plane: seen cells, frontiers, view gain, travel fields.
+
+The search (:mod:`search`) reads the voxel :class:`SemanticMap` through this module as a
+2D grid over the scene's bounds (``cell`` [m] square cells, index ``[ix, iy]``):
+
+- a cell is *seen* when a voxel of its column between ``band`` heights was observed
+  (free or a surface);
+- a cell *blocks sight* when a voxel of its column at the camera's height holds a
+  surface (walls; tables and chairs are seen over);
+- a *frontier* is a seen cell that does not block sight, next to a cell not seen.
+
+The gain of a view pose is the number of unseen cells a ray from it reaches within the
+sensor range before it meets a cell that blocks sight (unseen cells let rays through:
+the estimate is optimistic, as frontier exploration usually is). Travel fields are
+8-connected shortest-path distances [m] over the cells a robot may stand in.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+from scipy import ndimage
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import dijkstra
+
+from ltl_instruct.core.grounding.semantic_map import SemanticMap
+
+
+@dataclass(frozen=True)
+class PlaneGrid:
+    """A 2D grid over the bounds: ``origin`` [m] of cell [0, 0]'s corner, ``cell`` [m], ``shape`` (nx, ny)."""
+
+    origin: tuple[float, float]
+    cell: float
+    shape: tuple[int, int]
+
+    @staticmethod
+    def over(bounds_min: Sequence[float], bounds_max: Sequence[float], cell: float) -> 'PlaneGrid':
+        """Return the grid that covers the (x, y) box of some bounds [m]."""
+        nx = max(1, int(math.ceil((bounds_max[0] - bounds_min[0]) / cell)))
+        ny = max(1, int(math.ceil((bounds_max[1] - bounds_min[1]) / cell)))
+        return PlaneGrid((float(bounds_min[0]), float(bounds_min[1])), float(cell), (nx, ny))
+
+    def centers(self) -> np.ndarray:
+        """Cell centres [m], shape (nx, ny, 2)."""
+        xs = self.origin[0] + (np.arange(self.shape[0]) + 0.5) * self.cell
+        ys = self.origin[1] + (np.arange(self.shape[1]) + 0.5) * self.cell
+        return np.stack(np.meshgrid(xs, ys, indexing='ij'), axis=-1)
+
+    def index(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Cell indices (ix, iy) of points (N, >=2) [m], clipped into the grid."""
+        p = np.atleast_2d(np.asarray(points, dtype=float))
+        ix = np.clip(((p[:, 0] - self.origin[0]) / self.cell).astype(np.int64), 0, self.shape[0] - 1)
+        iy = np.clip(((p[:, 1] - self.origin[1]) / self.cell).astype(np.int64), 0, self.shape[1] - 1)
+        return ix, iy
+
+
+def _column_any(smap: SemanticMap, grid: PlaneGrid, mask: np.ndarray, z_lo: float, z_hi: float) -> np.ndarray:
+    """Cells (nx, ny) of ``grid`` over which some voxel of ``mask`` has its centre height in [z_lo, z_hi]."""
+    out = np.zeros(grid.shape, dtype=bool)
+    if not mask.size:
+        return out
+    vs = smap.params.voxel_size
+    z = (np.arange(mask.shape[2]) + smap.origin[2] + 0.5) * vs
+    band = (z >= z_lo) & (z <= z_hi)
+    if not band.any():
+        return out
+    cols = np.argwhere(mask[:, :, band].any(axis=2))
+    if cols.size == 0:
+        return out
+    ix, iy = grid.index((cols + smap.origin[:2] + 0.5) * vs)
+    out[ix, iy] = True
+    return out
+
+
+def seen_cells(smap: SemanticMap, grid: PlaneGrid, band: tuple[float, float] = (0.3, 1.8)) -> np.ndarray:
+    """Cells whose column was observed between ``band`` heights [m]; bool (nx, ny)."""
+    return _column_any(smap, grid, smap.observed, band[0], band[1])
+
+
+def sight_blocking_cells(smap: SemanticMap, grid: PlaneGrid, eye_height: float) -> np.ndarray:
+    """Cells with a surface at the camera's height (within 0.15 m) [m]; bool (nx, ny)."""
+    return _column_any(smap, grid, smap.occupied, eye_height - 0.15, eye_height + 0.15)
+
+
+def frontier_cells(seen: np.ndarray, blocks: np.ndarray) -> np.ndarray:
+    """Seen cells that do not block sight, with an unseen 8-neighbour; bool (nx, ny)."""
+    unseen = ndimage.binary_dilation(~seen, structure=np.ones((3, 3), dtype=bool))
+    return seen & ~blocks & unseen
+
+
+def view_gain(points: np.ndarray, grid: PlaneGrid, seen: np.ndarray, blocks: np.ndarray,
+              sensor_range: float, rays: int = 72) -> np.ndarray:
+    """Unseen cells visible from each view point (K, >=2) [m] within ``sensor_range`` [m]; int (K,)."""
+    p = np.atleast_2d(np.asarray(points, dtype=float))[:, :2]
+    if len(p) == 0:
+        return np.zeros(0, dtype=np.int64)
+    a = np.linspace(0.0, 2.0 * math.pi, rays, endpoint=False)
+    steps = np.arange(1, int(sensor_range / (grid.cell * 0.5)) + 1) * grid.cell * 0.5
+    d = np.stack([np.cos(a), np.sin(a)], axis=-1)
+    pts = p[:, None, None, :] + d[None, :, None, :] * steps[None, None, :, None]   # (K, R, S, 2)
+    lo = np.asarray(grid.origin)
+    hi = lo + np.asarray(grid.shape) * grid.cell
+    inside = np.all((pts >= lo) & (pts < hi), axis=-1)
+    ix, iy = grid.index(pts.reshape(-1, 2))
+    ix, iy = ix.reshape(inside.shape), iy.reshape(inside.shape)
+    stopped = np.maximum.accumulate(blocks[ix, iy] | ~inside, axis=2)
+    hit = ~stopped & ~seen[ix, iy]
+    flat = ix * grid.shape[1] + iy
+    k = np.broadcast_to(np.arange(len(p))[:, None, None], hit.shape)
+    pairs = np.unique(k[hit] * (grid.shape[0] * grid.shape[1]) + flat[hit])
+    return np.bincount(pairs // (grid.shape[0] * grid.shape[1]), minlength=len(p))
+
+
+def travel_field(free: np.ndarray, grid: PlaneGrid, start: Sequence[float]) -> np.ndarray:
+    """Return the 8-connected travel [m] from ``start`` over ``free`` cells (nx, ny); inf: unreachable."""
+    nx, ny = free.shape
+    ids = np.arange(nx * ny).reshape(nx, ny)
+    rows, cols, w = [], [], []
+    for dx, dy in ((1, 0), (0, 1), (1, 1), (1, -1)):
+        x0, x1, y0, y1 = max(0, -dx), nx - max(0, dx), max(0, -dy), ny - max(0, dy)
+        a, b = ids[x0:x1, y0:y1], ids[x0 + dx:x1 + dx, y0 + dy:y1 + dy]
+        ok = free.ravel()[a.ravel()] & free.ravel()[b.ravel()]
+        rows.append(a.ravel()[ok])
+        cols.append(b.ravel()[ok])
+        w.append(np.full(int(ok.sum()), math.hypot(dx, dy) * grid.cell))
+    graph = coo_matrix((np.concatenate(w), (np.concatenate(rows), np.concatenate(cols))),
+                       shape=(nx * ny, nx * ny)).tocsr()
+    ix, iy = grid.index(np.asarray([start], dtype=float))
+    dist = dijkstra(graph, directed=False, indices=int(ids[ix[0], iy[0]]))
+    return dist.reshape(nx, ny)

@@ -26,7 +26,7 @@ def test_status_memory_ends_each_phase_once():
     assert m.admit('a', _status('a', 'progressing', phase=EXECUTION, automaton_state=1))
     assert m.admit('a', _status('a', 'superseded', True, EXECUTION, superseded_by='b'))
     assert not m.admit('a', _status('a', 'satisfied', True, EXECUTION))
-    assert [s['status'] for s in m.repeat('a')] == ['planned', 'superseded']
+    assert [s['status'] for s in m.repeat('a')] == ['superseded']
     assert all(s['repeat'] for s in m.repeat('a'))
     assert m.admit('x', _status('x', 'input_rejected', phase='input')) and not m.knows('x')
 
@@ -80,3 +80,32 @@ def test_ledger_forgets_ended_instructions_first():
         led.take(str(i))
         led.note_status(_status(str(i), 'failed', True))
     assert led.in_flight() == [{'id': 'running'}]
+
+
+def test_the_journal_brings_the_memory_back_after_a_restart(tmp_path):
+    journal = tmp_path / 'task_progression.jsonl'
+    m = StatusMemory(journal=journal)
+    m.admit('a', _status('a', 'received', instruction='go to the hall'))
+    m.admit('a', _status('a', 'failed', True, error={'code': 'TIMEOUT', 'message': 'late'}))
+    m.admit('b', _status('b', 'planned', True, verification={'big': [0] * 100}))
+    m.admit('b', _status('b', 'progressing', phase=EXECUTION, automaton_state=2))
+    with open(journal, 'a') as f:
+        f.write('{"id": "c", "status": "pla')          # the line a kill cut short
+    again = StatusMemory(journal=journal)
+    assert again.ended('a') == 'failed' and again.repeat('a')[-1]['error']['code'] == 'TIMEOUT'
+    assert again.executing('b') == m.executing('b') and again.executing('b')['automaton_state'] == 2
+    assert again.executing('a') is None and not again.knows('c')
+    assert 'verification' not in again.repeat('b')[0]                  # the plan is not kept
+    assert not again.admit('a', _status('a', 'planned', True))
+    assert again.admit('b', _status('b', 'superseded', True, EXECUTION)) and again.executing('b') is None
+
+
+def test_the_journal_is_compacted_to_what_memory_keeps(tmp_path):
+    journal = tmp_path / 'j.jsonl'
+    m = StatusMemory(limit=4, journal=journal)
+    for i in range(30):
+        m.admit(str(i), _status(str(i), 'received'))
+        m.admit(str(i), _status(str(i), 'failed', True))
+    assert len(journal.read_text().splitlines()) <= 2 * 4 + 2
+    again = StatusMemory(limit=4, journal=journal)
+    assert again.ended('29') == 'failed' and not again.knows('0')

@@ -9,18 +9,23 @@ An instruction has two phases, and each ends with exactly one terminal status:
   terminal ``satisfied``, ``violated``, ``failed``, ``superseded`` (a newer plan replaced
   it) or ``cancelled``.
 
-Two records survive the death of any one node. ``task_progression`` keeps a
-:class:`StatusMemory` (what it said about each id: a repeated request is answered from
-it, and no phase ends twice); ``ltl_translator`` keeps an :class:`InstructionLedger`
-(every instruction it took and the statuses it heard: when a reader of ``task_spec``
-restarts, it sends again every spec still in flight, an executing one with its last
-automaton state so that planning resumes from there).
+Two records outlive a node. ``task_progression`` keeps a :class:`StatusMemory` (what it
+said about each id: a spec sent again is answered from it, and no phase ends twice),
+journaled to a file in the run's state directory so that it survives its own restart;
+``ltl_translator`` keeps an :class:`InstructionLedger` (every instruction it took and the
+statuses it heard: when a reader of ``task_spec`` restarts, it sends again every spec
+still in flight, an executing one with its last automaton state so that planning resumes
+from there). A restarted translator rebuilds its ledger from the latched statuses and
+the sender's latched instructions.
 """
 from __future__ import annotations
 
 import hashlib
+import json
+import os
 from collections import OrderedDict
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, Optional
 
 PLANNING, EXECUTION = 'planning', 'execution'
@@ -30,6 +35,9 @@ SUPERSEDED, VIOLATED = 'superseded', 'violated'
 PLANNING_ENDS = (PLANNED, SATISFIED, FAILED, CANCELLED)
 EXECUTION_ENDS = (SATISFIED, VIOLATED, FAILED, SUPERSEDED, CANCELLED)
 MEMORY = 10_000   # instructions remembered by each record
+# what a remembered status keeps (what a repeat answer and a resumed task need; not the plan)
+KEPT_FIELDS = ('status', 'phase', 'terminal', 'error', 'reason', 'stage', 'automaton_state', 'superseded_by',
+               'id_source', 'formula', 'plan_stamp')
 
 
 def plain_instruction_id(source_ns: Any, sequence: Any, text: str) -> Optional[str]:
@@ -53,14 +61,25 @@ def _trim(entries: OrderedDict, limit: int) -> None:
 class StatusMemory:
     """What ``task_progression`` has said about each instruction, phase by phase.
 
+    With a ``journal`` (a file in the run's state directory, given by ``bringup``), each
+    status is also appended to it as one JSON line, and read back when the node starts
+    again: a restarted ``task_progression`` then still knows what has ended (and answers a
+    spec sent again with its statuses, instead of carrying it out twice) and which task was
+    executing, from which automaton state.
+
     Parameters
     ----------
     limit: instructions remembered (the oldest are forgotten first).
+    journal: the file, or None to remember in memory only.
     """
 
-    def __init__(self, limit: int = MEMORY) -> None:
+    def __init__(self, limit: int = MEMORY, journal: Optional[Path] = None) -> None:
         self._last: OrderedDict[str, dict[str, dict[str, Any]]] = OrderedDict()
         self._limit = limit
+        self._journal = journal
+        self._lines = 0
+        if journal is not None and journal.is_file():
+            self._load(journal)
 
     def admit(self, iid: str, body: dict[str, Any]) -> bool:
         """Record a status about to be published; False when its phase has already ended.
@@ -73,10 +92,15 @@ class StatusMemory:
             return True
         if self.ended(iid, phase) is not None:
             return False
-        self._last.setdefault(iid, {})[phase] = dict(body)
+        record = {k: body[k] for k in KEPT_FIELDS if body.get(k) is not None}
+        self._remember(iid, record)
+        self._append(iid, record)
+        return True
+
+    def _remember(self, iid: str, record: dict[str, Any]) -> None:
+        self._last.setdefault(iid, {})[record['phase']] = record
         self._last.move_to_end(iid)
         _trim(self._last, self._limit)
-        return True
 
     def knows(self, iid: str) -> bool:
         """Tell whether any status of ``iid`` was published."""
@@ -87,10 +111,59 @@ class StatusMemory:
         last = self._last.get(iid, {}).get(phase)
         return last['status'] if last is not None and last.get('terminal') else None
 
+    def executing(self, iid: str) -> Optional[dict[str, Any]]:
+        """Return the last execution status of a planned ``iid`` whose execution has not ended, else None.
+
+        (``{}`` when it was planned and no execution status came yet.)
+        """
+        if self.ended(iid) != PLANNED or self.ended(iid, EXECUTION) is not None:
+            return None
+        return dict(self._last[iid].get(EXECUTION, {}))
+
     def repeat(self, iid: str) -> list[dict[str, Any]]:
-        """Return the last status of each phase of ``iid``, marked ``repeat`` (answers a repeated spec)."""
+        """Return the statuses that answer a repeated spec of ``iid``, marked ``repeat``.
+
+        The end of its execution when that has ended, else the last status of each phase.
+        """
         last = self._last.get(iid, {})
-        return [dict(last[phase], repeat=True) for phase in (PLANNING, EXECUTION) if phase in last]
+        phases = (EXECUTION,) if self.ended(iid, EXECUTION) else (PLANNING, EXECUTION)
+        return [dict(last[phase], repeat=True) for phase in phases if phase in last]
+
+    # ------------------------------------------------------------------ the journal
+    def _append(self, iid: str, record: dict[str, Any]) -> None:
+        if self._journal is None:
+            return
+        if self._lines >= 2 * self._limit:   # compact: the file keeps what memory keeps
+            self._rewrite()
+        with open(self._journal, 'a', encoding='utf-8') as f:
+            f.write(json.dumps({'id': iid, **record}) + '\n')
+        self._lines += 1
+
+    def _rewrite(self) -> None:
+        assert self._journal is not None
+        tmp = self._journal.with_name(self._journal.name + '.tmp')
+        with open(tmp, 'w', encoding='utf-8') as f:
+            for iid, phases in self._last.items():
+                for record in phases.values():
+                    f.write(json.dumps({'id': iid, **record}) + '\n')
+        os.replace(tmp, self._journal)
+        self._lines = sum(len(phases) for phases in self._last.values())
+
+    def _load(self, journal: Path) -> None:
+        with open(journal, encoding='utf-8', errors='replace') as f:
+            for line in f:   # a line cut short by a kill is skipped
+                try:
+                    record = json.loads(line)
+                except ValueError:
+                    continue
+                if _is_record(record):
+                    self._remember(record.pop('id'), record)
+                    self._lines += 1
+
+
+def _is_record(record: Any) -> bool:
+    return isinstance(record, dict) and isinstance(record.get('id'), str) and \
+        record.get('phase') in (PLANNING, EXECUTION) and isinstance(record.get('status'), str)
 
 
 @dataclass

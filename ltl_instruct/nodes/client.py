@@ -17,7 +17,8 @@ import numpy as np
 import rclpy
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rclpy.context import Context
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.exceptions import InvalidHandle
+from rclpy.executors import SingleThreadedExecutor
 from std_msgs.msg import String
 
 from ltl_instruct import conversions as conv
@@ -63,6 +64,7 @@ class GraphClient:
         self.received = Received()
         self.record_odom = record_odom
         self._cond = threading.Condition()
+        self._closing = threading.Event()
         self._ids = itertools.count(1)
         self._prefix = os.urandom(3).hex()
         n = self.node
@@ -80,27 +82,36 @@ class GraphClient:
         n.create_subscription(String, 'skill/result', self._on_skill_result, reliable_qos())
         n.create_subscription(Odometry, 'odom', self._on_odom, reliable_qos(10))
         n.create_subscription(OccupancyGrid, 'map', self._on_map, latched_qos(1))
-        self._executor = MultiThreadedExecutor(num_threads=2, context=self.context)
+        # one thread runs every callback: once it is joined, none can touch the node being destroyed
+        # (a pool's callback could: rclpy's executor.shutdown does not wait for them)
+        self._executor = SingleThreadedExecutor(context=self.context)
         self._executor.add_node(self.node)
         self._thread = threading.Thread(target=self._spin, name='client-spin', daemon=True)
         self._thread.start()
 
     # ------------------------------------------------------------------ lifecycle
     def _spin(self) -> None:
-        try:
-            self._executor.spin()
-        except Exception:  # noqa: BLE001 - shutting down
-            pass
+        while self.context.ok() and not self._closing.is_set():
+            try:
+                self._executor.spin_once(timeout_sec=0.1)
+            except InvalidHandle:
+                # rclpy: a publisher or subscription another thread destroyed (a test's helper) while
+                # this thread built its wait set; it is gone now, and the next wait set has no trace of it
+                continue
+            except Exception:  # noqa: BLE001 - shutting down
+                return
 
     def close(self) -> None:
         """Stop spinning and shut this client's context down.
 
-        The spinning thread is joined before the node is destroyed: a callback still running on it
-        would otherwise touch the destroyed node ("cannot use Destroyable because destruction was
-        requested", seen at the end of a demo).
+        The spinning thread (which runs every callback) is joined before the node is destroyed: a
+        callback still running would otherwise touch the destroyed node ("The following exception
+        was never retrieved: cannot use Destroyable because destruction was requested", seen at the
+        end of a demo).
         """
+        self._closing.set()
+        self._thread.join(timeout=5.0)
         self._executor.shutdown(timeout_sec=2.0)
-        self._thread.join(timeout=2.0)
         self.node.destroy_node()
         rclpy.try_shutdown(context=self.context)
 

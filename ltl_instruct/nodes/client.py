@@ -23,9 +23,8 @@ from std_msgs.msg import String
 
 from ltl_instruct import conversions as conv
 from ltl_instruct.core.errors import InvalidInputError, LtlInstructError, ErrorCode
+from ltl_instruct.core.lifecycle import PLANNING, RECEIVED
 from ltl_instruct.nodes.common import latched_qos, reliable_qos
-
-TERMINAL = ('planned', 'satisfied', 'failed')
 
 
 @dataclass
@@ -68,7 +67,9 @@ class GraphClient:
         self._ids = itertools.count(1)
         self._prefix = os.urandom(3).hex()
         n = self.node
-        self.instruction_pub = n.create_publisher(String, 'instruction', reliable_qos())
+        # latched: a translator that restarts reads again what it had not finished
+        self.instruction_pub = n.create_publisher(String, 'instruction', latched_qos())
+        self.cancel_pub = n.create_publisher(String, 'cancel', reliable_qos())
         self.reply_pub = n.create_publisher(String, 'verification/reply', reliable_qos())
         self.task_spec_pub = n.create_publisher(String, 'task_spec', latched_qos())
         self.odom_pub = n.create_publisher(Odometry, 'odom', reliable_qos(10))
@@ -247,24 +248,39 @@ class GraphClient:
         """Answer a verification request."""
         self.reply_pub.publish(conv.json_msg(conv.payload(conv.VERIFICATION_REPLY, iid, accept=accept)))
 
-    def terminal(self, iid: str) -> Optional[dict[str, Any]]:
-        """Return the terminal status of ``iid`` if it has come."""
+    def cancel(self, iid: str) -> None:
+        """Publish a cancel for ``iid`` (as plain text)."""
+        self.cancel_pub.publish(String(data=iid))
+
+    def terminal(self, iid: str, phase: str = PLANNING) -> Optional[dict[str, Any]]:
+        """Return the terminal status of ``phase`` (planning, execution) of ``iid`` if it has come."""
         for s in self.received.statuses.get(iid, []):
-            if s.get('terminal'):
+            if s.get('terminal') and s.get('phase') == phase:
                 return s
         return None
 
-    def wait_terminal(self, iid: str, timeout: float = 30.0) -> dict[str, Any]:
-        """Wait for the terminal status of ``iid``.
+    def terminals(self, iid: str, phase: str = PLANNING) -> list[dict[str, Any]]:
+        """Return every terminal status of ``phase`` of ``iid``, but repeats (one is expected)."""
+        return [s for s in self.received.statuses.get(iid, [])
+                if s.get('terminal') and s.get('phase') == phase and not s.get('repeat')]
+
+    def ids_for(self, text: str) -> list[str]:
+        """Return the ids that ``received`` statuses gave to an instruction ``text``."""
+        return sorted({iid for iid, statuses in self.received.statuses.items() for s in statuses
+                       if s.get('status') == RECEIVED and s.get('instruction') == text})
+
+    def wait_terminal(self, iid: str, timeout: float = 30.0, phase: str = PLANNING) -> dict[str, Any]:
+        """Wait for the terminal status of ``phase`` of ``iid`` (planning: planned, satisfied, failed...).
 
         Raises
         ------
         LtlInstructError
             (TIMEOUT) if none comes in time.
         """
-        s = self.wait_until(lambda: self.terminal(iid), timeout)
+        s = self.wait_until(lambda: self.terminal(iid, phase), timeout)
         if s is None:
-            raise LtlInstructError(f'no terminal task_status for {iid} within {timeout} s', ErrorCode.TIMEOUT)
+            raise LtlInstructError(f'no terminal {phase} task_status for {iid} within {timeout} s',
+                                   ErrorCode.TIMEOUT)
         return s
 
     def wait_status(self, iid: str, status: str, timeout: float = 60.0) -> Optional[dict[str, Any]]:

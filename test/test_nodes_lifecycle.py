@@ -157,3 +157,24 @@ def _summary(client, ids, texts) -> list:
     return [(i, [s['status'] for s in client.received.statuses.get(i, [])],
              (client.terminal(i) or {}).get('error')) for i in ids + _plain_ids(client, texts)] + \
         [(t, client.ids_for(t)) for t in texts]
+
+
+def test_translator_and_task_progression_dying_together_carry_out_nothing_twice(graph):
+    """Both records of what ended are gone from DDS: task_progression's journal still has them."""
+    g, client, logs = graph
+    executing = client.send(formula='F (near[whiteboard] & F near[front_door])')   # a long walk
+    assert client.wait_terminal(executing, timeout=30.0)['status'] == 'planned'
+    before = {iid for iid, statuses in client.received.statuses.items() if client.terminals(iid)}
+    for node in ('ltl_translator', 'task_progression'):
+        os.killpg(g.processes[node].pid, signal.SIGKILL)
+    later = client.send(formula='F near[sofa]')
+    assert client.wait_terminal(later, timeout=60.0)['status'] == 'planned', _logs(logs)
+    # the running task was resumed by the new task_progression (from its journal), then superseded
+    ended = client.wait_terminal(executing, timeout=TIMEOUT, phase='execution')
+    assert ended['status'] == 'superseded' and ended['superseded_by'] == later, ended
+    assert any(s.get('reason', '').startswith('resumed') for s in client.received.statuses[executing]), \
+        [s['status'] for s in client.received.statuses[executing]]
+    # the restarted translator sent its whole history again; everything that had ended stays ended
+    twice = {iid: [s['status'] for s in client.received.statuses[iid]] for iid in before
+             if len(client.terminals(iid)) != 1}
+    assert not twice, twice

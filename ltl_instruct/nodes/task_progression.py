@@ -305,8 +305,8 @@ class TaskProgressionNode(Node):
                 if int(data.get('revision', 0)) > active.rmap_revision and data.get('ok', False):
                     self._jobs.put(('replan', iid, data, 'the referent map changed'))
                 return
-            if self._memory.ended(iid) is not None:
-                return
+            if self._memory.ended(iid) not in (None, PLANNED) or self._memory.ended(iid, EXECUTION):
+                return   # over (one planned by an earlier run of this node may still be resumed)
             p = self._pending.setdefault(iid, _Pending(iid))
             p.rmap = data
             self._maybe_queue(p)
@@ -462,7 +462,7 @@ class TaskProgressionNode(Node):
         with self._lock:
             for p in list(self._pending.values()):
                 if not p.queued and p.spec is not None and now - p.since > self.params['grounding_timeout']:
-                    late.append(p.iid)
+                    late.append((p.iid, EXECUTION if p.resume is not None else PLANNING))
                 elif p.spec is None and now - p.since > 10 * self.params['grounding_timeout']:
                     del self._pending[p.iid]   # a referent map whose task spec never came
             # replies that came after their request timed out
@@ -470,9 +470,9 @@ class TaskProgressionNode(Node):
                 self._segments.pop(next(iter(self._segments)))
             while len(self._paths) > 1000:
                 self._paths.pop(next(iter(self._paths)))
-        for iid in late:
-            self._fail(iid, LtlInstructError('no referent map came for this instruction in time',
-                                             ErrorCode.TIMEOUT), stage='grounding')
+        for iid, phase in late:
+            self.publish_status(iid, 'failed', True, phase=phase, stage='grounding', error=LtlInstructError(
+                'no referent map came for this instruction in time', ErrorCode.TIMEOUT))
 
     def on_grounder_matched(self, info: Any) -> None:
         """Give the specs still waiting the whole ``grounding_timeout`` again when a grounder comes (back).

@@ -418,4 +418,3 @@ def test_tpsm_cloud_marks_goal_and_avoid_regions(graph):
         assert np.all(lamp.distance(pts[fields['value'] == -1.0], dims=2) <= NEAR + 1e-6)
     finally:
         client.node.destroy_subscription(sub)
-

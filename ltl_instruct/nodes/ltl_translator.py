@@ -180,8 +180,8 @@ class LtlTranslatorNode(Node):
             return str(e.details.get('id') or conv.salvage_id(text) or fallback_id)
 
     def _serve(self, job: _Job) -> None:
-        with self._ledger_lock:
-            if self._ledger.ended(job.iid):   # cancelled while it waited here
+        with self._ledger_lock:   # ended meanwhile (the latched statuses tell a restarted translator so)
+            if self._ledger.ended(job.iid):
                 return
         try:
             iid, body, formula_text = self._read_instruction(job.fallback_id, job.text)

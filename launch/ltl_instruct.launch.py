@@ -1,13 +1,18 @@
 """Launch the ltl_instruct node graph on a machine with a full ROS 2 install.
 
 ``ros2 launch ltl_instruct ltl_instruct.launch.py [sim:=true] [scene:=apartment]
-[params_file:=/path/to.yaml]``. The scene (a built-in name or a scene file) sets each
-node's robot parameters exactly as ``ltl-instruct bringup --scene`` does: the simulator
-and the grounder load it; ``task_progression`` and ``fmt_planner`` get the robot's kind
-and radius and, for a drone, its flight volume. Without ROS (no ``ros2``/``launch``
-from PyPI), use ``ltl-instruct bringup [--sim]``, which starts the same processes.
+[params_file:=/path/to.yaml] [respawn:=true|false] [respawn_delay:=1.0] [state_dir:=DIR]``.
+The scene (a built-in name or a scene file) sets each node's robot parameters exactly as
+``ltl-instruct bringup --scene`` does: the simulator and the grounder load it;
+``task_progression`` and ``fmt_planner`` get the robot's kind and radius and, for a
+drone, its flight volume. As with ``bringup``, a node that dies is restarted (``respawn``,
+default true), and ``task_progression`` keeps its journal in ``state_dir`` (default: a
+folder of this launch under the temporary directory) so that it survives the restart.
+Without ROS (no ``ros2``/``launch`` from PyPI), use ``ltl-instruct bringup [--sim]``,
+which starts the same processes.
 """
 import os
+import tempfile
 
 from ament_index_python.packages import get_package_share_directory
 from launch import LaunchDescription
@@ -26,11 +31,21 @@ def _nodes(context, *args, **kwargs):
     params_file = LaunchConfiguration('params_file').perform(context)
     overrides = scene_overrides(LaunchConfiguration('scene').perform(context))
     names = PIPELINE
-    if LaunchConfiguration('sim').perform(context).strip().lower() in ('true', '1', 'yes'):
+    if _true(LaunchConfiguration('sim').perform(context)):
         names = PIPELINE + (SIM,)
+    respawn = _true(LaunchConfiguration('respawn').perform(context))
+    if respawn:   # a restarted task_progression reads back what it had said
+        state_dir = LaunchConfiguration('state_dir').perform(context) or \
+            os.path.join(tempfile.gettempdir(), f'ltl_instruct-state-{os.getpid()}')
+        overrides.setdefault('task_progression', {})['state_dir'] = state_dir
+    delay = float(LaunchConfiguration('respawn_delay').perform(context))
     return [Node(package=PACKAGE, executable=name, name=name, output='screen',
-                 parameters=[params_file, overrides.get(name, {})])
+                 parameters=[params_file, overrides.get(name, {})], respawn=respawn, respawn_delay=delay)
             for name in names]
+
+
+def _true(text: str) -> bool:
+    return text.strip().lower() in ('true', '1', 'yes')
 
 
 def generate_launch_description() -> LaunchDescription:
@@ -42,5 +57,11 @@ def generate_launch_description() -> LaunchDescription:
         DeclareLaunchArgument('sim', default_value='false', description='also start sim_world'),
         DeclareLaunchArgument('scene', default_value='apartment',
                               description='built-in scene name or scene file (robot kind, radius, objects)'),
+        DeclareLaunchArgument('respawn', default_value='true',
+                              description='restart a node that dies (the graph recovers what it lost)'),
+        DeclareLaunchArgument('respawn_delay', default_value='1.0', description='seconds before a restart'),
+        DeclareLaunchArgument('state_dir', default_value='',
+                              description='where task_progression keeps its statuses across a restart '
+                                          '("" = a folder of this launch under the temporary directory)'),
         OpaqueFunction(function=_nodes),
     ])

@@ -31,7 +31,8 @@ from visualization_msgs.msg import Marker, MarkerArray
 from ltl_instruct.core.errors import InvalidInputError
 from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.payloads import (  # noqa: F401  (the payload parsing lives in the core; re-exported)
-    INSTRUCTION, MAX_PAYLOAD_BYTES, SCHEMA_VERSION, parse_json_payload, read_instruction, salvage_id,
+    INSTRUCTION, MAX_PAYLOAD_BYTES, SCHEMA_VERSION, parse_json_payload, read_cancel, read_instruction,
+    salvage_id,
     safe_id as _safe_id,
 )
 from ltl_instruct.core.planning import PlanningWorld

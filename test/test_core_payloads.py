@@ -2,7 +2,7 @@
 import pytest
 
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LimitExceededError
-from ltl_instruct.core.payloads import parse_json_payload, read_instruction, salvage_id
+from ltl_instruct.core.payloads import parse_json_payload, read_cancel, read_instruction, salvage_id
 
 
 @pytest.mark.parametrize('text', ['null', '42', '[]', 'true', 'false', '-3.5', '1e999', 'NaN',
@@ -53,3 +53,28 @@ def test_payload_helpers():
     with pytest.raises(InvalidInputError):
         parse_json_payload('null')
     assert salvage_id('{"id": "q1", "schema": 3') == 'q1'
+
+
+def test_json_object_may_leave_out_schema_version_and_id():
+    # issue 19: {"id": ..., "text": ...} is an instruction with its own id
+    text = '{"id": "a7", "text": "go to the hall"}'
+    assert read_instruction(text, 'id-1') == ('a7', 'go to the hall', None)
+    assert read_instruction('{"formula": "F near[hall]"}', 'id-1') == ('id-1', '', 'F near[hall]')
+    for bad in ('{"schema": "other", "id": "a7", "text": "go"}', '{"version": 2, "id": "a7", "text": "go"}',
+                '{"id": 7, "text": "go"}', '{"id": "", "text": "go"}'):
+        with pytest.raises(InvalidInputError):
+            read_instruction(bad, 'id-1')
+
+
+@pytest.mark.parametrize('text, iid', [('a7', 'a7'), ('  client-3  ', 'client-3'), ('{"id": "a7"}', 'a7'),
+                                       ('"a7"', 'a7'), ('{"schema": "x", "id": "q"}', 'q')])
+def test_cancel_names_an_id(text, iid):
+    assert read_cancel(text) == iid
+
+
+@pytest.mark.parametrize('text', ['', '   ', 'null', '42', '[1]', '{"id": 5}', '{}', '{"id": ""}',
+                                  '{"id": "a', 'x' * 201, '"', None, b'a7'])
+def test_garbage_cancel_is_invalid_input(text):
+    with pytest.raises(InvalidInputError) as e:
+        read_cancel(text)
+    assert e.value.code == ErrorCode.INVALID_INPUT

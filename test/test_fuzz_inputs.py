@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 from ltl_instruct.commands.formula import report
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language import make_translator
-from ltl_instruct.core.payloads import read_instruction
+from ltl_instruct.core.payloads import read_cancel, read_instruction
 from ltl_instruct.core.world.scene import load_scene
 
 FUZZ = settings(deadline=5000, max_examples=30, derandomize=True,
@@ -113,6 +113,16 @@ def test_fuzz_instruction_messages(text):
         read_instruction(text, 'id-1')
     except LtlInstructError:
         pass
+
+
+@FUZZ
+@given(st.one_of(st.text(max_size=300), MESSAGES))
+def test_fuzz_cancel_messages(text):
+    try:
+        iid = read_cancel(text)
+    except LtlInstructError:
+        return
+    assert isinstance(iid, str) and 0 < len(iid) <= 200 and iid == iid.strip()
 
 
 NUMBER = st.one_of(st.integers(-10**30, 10**30), st.floats(allow_nan=True, allow_infinity=True),

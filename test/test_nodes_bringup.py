@@ -118,3 +118,33 @@ def test_a_translator_backend_that_cannot_start_fails_each_instruction_not_the_n
         assert spec is not None and spec['ok'] is False, spec
         assert spec['error']['code'] == 'MODEL_ERROR' and spec['error']['message'], spec
     assert codes == {'ltl_translator': 0}
+
+
+def test_restarts_back_off_doubling_with_each_quick_crash_and_respawn_is_the_default():
+    import argparse
+
+    from ltl_instruct.commands.bringup import RestartPolicy, add_arguments
+    policy = RestartPolicy(first_delay=0.5, max_delay=3.0)
+    assert [policy.delay(n) for n in (1, 2, 3, 4, 5)] == [0.5, 1.0, 2.0, 3.0, 3.0]
+    parser = argparse.ArgumentParser()
+    add_arguments(parser)
+    assert parser.parse_args([]).respawn and not parser.parse_args(['--no-respawn']).respawn
+
+
+def test_a_node_whose_parameters_are_invalid_is_not_restarted(tmp_path):
+    from ltl_instruct.commands.bringup import RestartPolicy
+    env = {'ROS_DOMAIN_ID': str(random.randint(120, 229)), 'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST'}
+    said = []
+    g = NodeGraph(['fmt_planner'], default_params_file(), {'fmt_planner': {'num_samples': 5}}, env=env,
+                  log_dir=tmp_path, restart=RestartPolicy(first_delay=0.1), say=said.append).start()
+    try:
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and not g.given_up():
+            time.sleep(0.1)
+    finally:
+        g.stop()
+    # exit status 2 is a configuration error: restarting would only fail again
+    log = (tmp_path / 'fmt_planner.log').read_text()
+    assert g.given_up() == {'fmt_planner': 2} and not g.restarts, (said, log)
+    assert 'not restarted (its parameters are invalid)' in said[-1]
+    assert g.state_dir is not None and not g.state_dir.exists()   # the run's state folder is removed

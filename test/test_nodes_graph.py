@@ -233,8 +233,9 @@ def test_burst_of_50_instructions_gets_50_terminal_statuses(graph):
     missing = [i for i in ids if client.terminal(i) is None]
     assert done and not missing, missing
     for i in ids:
-        terminals = [s for s in client.received.statuses[i] if s.get('terminal')]
+        terminals = client.terminals(i)
         assert len(terminals) == 1, terminals
+        assert client.received.statuses[i][0]['status'] == 'received', client.received.statuses[i][0]
     outcomes = [client.terminal(i)['status'] for i in ids]
     # good ones are planned (or already satisfied where the robot stands), bad ones fail
     wrong = [(kinds[k % len(kinds)], client.terminal(i)['status'], client.terminal(i)['error'])
@@ -313,7 +314,7 @@ def test_task_plan_lists_steps_with_automaton_states(graph):
 
 def test_a_changed_referent_map_triggers_a_replan_from_the_current_state(graph):
     g, client, _ = graph
-    formula = 'F (near[bed] & F near[wardrobe])'
+    formula = 'F (near[fridge] & F (near[nightstand] & F near[wardrobe]))'
     iid = client.send(formula=formula)
     status = client.wait_terminal(iid, timeout=30.0)
     assert status['status'] == 'planned', status
@@ -326,17 +327,28 @@ def test_a_changed_referent_map_triggers_a_replan_from_the_current_state(graph):
     try:
         pub.publish(conv.json_msg(conv.payload(conv.REFERENT_MAP, iid, ok=True, revision=1,
                                                referent_map=rmap)))
-        replanned = client.wait_status(iid, 'replanned', timeout=30.0)
+        outcome = client.wait_until(lambda: next((s for s in client.received.statuses[iid]
+                                                  if s['status'] == 'replanned'), None)
+                                    or client.terminal(iid, 'execution'), 30.0)
     finally:
         client.node.destroy_publisher(pub)
-    assert replanned is not None, [s['status'] for s in client.received.statuses[iid]]
-    assert replanned['phase'] == 'execution' and not replanned['terminal']
-    new_plan = client.wait_until(lambda: client.received.plans.get(replanned['plan_stamp']), 5.0)
+    statuses = [s['status'] for s in client.received.statuses[iid]]
+    replanning = next((s for s in client.received.statuses[iid] if s['status'] == 'replanning'), None)
+    assert outcome is not None and replanning is not None, statuses
+    assert isinstance(replanning['automaton_state'], int) and replanning['phase'] == 'execution'
+    assert len(client.terminals(iid)) == 1
+    if outcome['status'] != 'replanned':
+        # at 8x (12 m/s) on a loaded machine the robot may finish the old plan first: then the
+        # replan is dropped, and the robot is not sent anywhere after its task is done
+        time.sleep(2.0)
+        statuses = [s['status'] for s in client.received.statuses[iid]]
+        assert outcome['status'] == 'satisfied' and 'replanned' not in statuses, statuses
+        return
+    assert not outcome['terminal']
+    new_plan = client.wait_until(lambda: client.received.plans.get(outcome['plan_stamp']), 5.0)
     assert new_plan is not None
     moved = ReferentMap.from_dict(rmap).instances('wardrobe')[0]
     assert moved.distance(new_plan[-1], dims=2)[0] <= NEAR + 1e-6                   # ends at the new place
-    assert [s for s in client.received.statuses[iid] if s['status'] == 'replanning']
-    assert len([s for s in client.received.statuses[iid] if s.get('terminal')]) == 1
 
 
 def test_a_failed_skill_is_reported_and_replanned_then_given_up(graph):

@@ -132,9 +132,13 @@ def test_launch_file_gives_each_node_the_scene_parameters_as_bringup_does(monkey
     for node in drone:
         params_file, overrides = node.kwargs['parameters']
         assert params_file == str(REPO / 'config' / 'ltl_instruct.yaml')
+        overrides.pop('state_dir', None)   # respawn is on: task_progression keeps a journal
         assert overrides == expected.get(node.kwargs['name'], {})
+        assert node.kwargs['respawn'] is True and node.kwargs['respawn_delay'] == 1.0
     planner = next(n for n in drone if n.kwargs['name'] == 'task_progression')
     assert planner.kwargs['parameters'][1]['robot_kind'] == 'drone'
+    still = _run_launch_file(monkeypatch, {'respawn': 'false'})
+    assert all(n.kwargs['respawn'] is False and 'state_dir' not in n.kwargs['parameters'][1] for n in still)
 
 
 def test_params_file_matches_declared_parameters():

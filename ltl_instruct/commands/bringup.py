@@ -4,17 +4,26 @@ Each node runs as ``python -m ltl_instruct.nodes.<name> --ros-args --params-file
 with the parameters of ``config/ltl_instruct.yaml`` (or ``--params FILE``). Ctrl-C (or
 SIGTERM) stops them cleanly: SIGINT first, then SIGTERM, then SIGKILL after a grace
 period. :class:`NodeGraph` is the same machinery for the demo and the tests.
+
+With a :class:`RestartPolicy` (``bringup`` has one unless ``--no-respawn``), a node that
+dies is started again after a back-off that doubles with each quick crash in a row; a
+node that crashes too often, or exits 2 (its parameters are invalid: it would only fail
+again), is not, and ``bringup`` then stops the rest.
 """
 from __future__ import annotations
 
 import argparse
 import os
+import shutil
 import signal
 import subprocess
 import sys
+import tempfile
+import threading
 import time
+from dataclasses import dataclass
 from pathlib import Path
-from typing import IO, Mapping, Optional, Sequence
+from typing import IO, Callable, Mapping, Optional, Sequence
 
 from ltl_instruct.core.errors import InvalidInputError
 from ltl_instruct.core.world.builtin import resolve_scene
@@ -25,6 +34,7 @@ SIM_NODE = 'sim_world'
 ALL_NODES = PIPELINE_NODES + (SIM_NODE,)
 PACKAGE = 'ltl_instruct'
 PARAMS_FILE_NAME = 'ltl_instruct.yaml'
+INVALID_PARAMETERS = 2   # the exit status of a node whose parameters are invalid (nodes.common.run_node)
 
 
 def default_params_file() -> Path:
@@ -57,6 +67,42 @@ def node_command(name: str, params_file: Optional[Path] = None,
     return cmd
 
 
+@dataclass(frozen=True)
+class RestartPolicy:
+    """When a node that died is started again.
+
+    A crash within ``stable_after`` seconds of the node's start is a quick one; the
+    back-off doubles with each quick crash in a row, from ``first_delay`` up to
+    ``max_delay`` [s], and after ``max_quick_restarts`` of them the node is given up.
+    """
+
+    first_delay: float = 0.5
+    max_delay: float = 10.0
+    max_quick_restarts: int = 5
+    stable_after: float = 30.0
+
+    def delay(self, quick_crashes: int) -> float:
+        """Return the back-off [s] before a restart after ``quick_crashes`` quick crashes in a row."""
+        return min(self.first_delay * 2.0 ** max(quick_crashes - 1, 0), self.max_delay)
+
+
+@dataclass
+class Restart:
+    """One restart of a node: why, when, after how long a back-off."""
+
+    node: str
+    exit_status: int
+    ran_s: float          # how long the dead process had run [s]
+    delay_s: float        # back-off before the new process [s]
+    count: int            # restarts of this node so far, this one included
+    due: float = 0.0      # time.monotonic() when the back-off is over
+    at: float = 0.0       # time.monotonic() when the new process started
+
+
+def _say(text: str) -> None:
+    print(text, file=sys.stderr, flush=True)
+
+
 class NodeGraph:
     """A set of node processes, started together and stopped together.
 
@@ -67,11 +113,17 @@ class NodeGraph:
     overrides: per node name, parameters to set on its command line.
     env: extra environment variables (``ROS_DOMAIN_ID``...).
     log_dir: where each node's output goes (``<log_dir>/<node>.log``); None: inherit.
+    restart: restart a node that dies (None: a dead node stays dead).
+    say: where restarts are reported (default: stderr).
+    state_dir: where a node keeps what it must remember across its restart (``task_progression``'s
+        statuses); None: a temporary folder for this run when nodes are restarted, else none.
     """
 
     def __init__(self, nodes: Sequence[str], params_file: Optional[Path] = None,
                  overrides: Optional[Mapping[str, Mapping[str, object]]] = None,
-                 env: Optional[Mapping[str, str]] = None, log_dir: Optional[Path] = None) -> None:
+                 env: Optional[Mapping[str, str]] = None, log_dir: Optional[Path] = None,
+                 restart: Optional[RestartPolicy] = None, say: Callable[[str], None] = _say,
+                 state_dir: Optional[Path] = None) -> None:
         unknown = [n for n in nodes if n not in ALL_NODES]
         if unknown:
             raise InvalidInputError(f'unknown node(s) {unknown} (known: {", ".join(ALL_NODES)})')
@@ -85,30 +137,100 @@ class NodeGraph:
         self.env['PYTHONUNBUFFERED'] = '1'
         self.env.update(env or {})
         self.log_dir = log_dir
+        self.restart = restart
+        self.say = say
+        self.state_dir = state_dir
+        self._own_state_dir = False
         self.processes: dict[str, subprocess.Popen] = {}
+        self.restarts: list[Restart] = []
         self._logs: list[IO[bytes]] = []
+        self._started: dict[str, float] = {}
+        self._quick: dict[str, int] = {}          # quick crashes in a row, per node
+        self._due: dict[str, Restart] = {}        # restarts waiting for their back-off
+        self._given_up: dict[str, int] = {}
+        self._lock = threading.Lock()
+        self._stopping = threading.Event()
+        self._supervisor: Optional[threading.Thread] = None
 
     def start(self) -> 'NodeGraph':
-        """Start every node (each in its own process group)."""
+        """Start every node (each in its own process group), and the supervisor if nodes are restarted."""
         if self.log_dir is not None:
             self.log_dir.mkdir(parents=True, exist_ok=True)
-        for name in self.nodes:
-            out: Optional[IO[bytes]] = None
-            if self.log_dir is not None:
-                out = open(self.log_dir / f'{name}.log', 'wb')
-                self._logs.append(out)
-            self.processes[name] = subprocess.Popen(
-                node_command(name, self.params_file, self.overrides.get(name)), env=self.env,
-                stdout=out, stderr=subprocess.STDOUT if out is not None else None,
-                start_new_session=True)
+        if self.state_dir is None and self.restart is not None:
+            self.state_dir, self._own_state_dir = Path(tempfile.mkdtemp(prefix='ltl_instruct-state-')), True
+        if self.state_dir is not None:
+            self.overrides.setdefault('task_progression', {}).setdefault('state_dir', str(self.state_dir))
+        with self._lock:
+            for name in self.nodes:
+                self._spawn(name, 'wb')
+        if self.restart is not None:
+            self._supervisor = threading.Thread(target=self._supervise, name='respawn', daemon=True)
+            self._supervisor.start()
         return self
 
+    def _spawn(self, name: str, mode: str) -> None:
+        """Start node ``name`` (lock held); a restarted one appends to its log."""
+        out: Optional[IO[bytes]] = None
+        if self.log_dir is not None:
+            out = open(self.log_dir / f'{name}.log', mode)
+            self._logs.append(out)
+        self.processes[name] = subprocess.Popen(
+            node_command(name, self.params_file, self.overrides.get(name)), env=self.env,
+            stdout=out, stderr=subprocess.STDOUT if out is not None else None,
+            start_new_session=True)
+        self._started[name] = time.monotonic()
+
     def dead(self) -> dict[str, int]:
-        """Nodes that have exited, with their exit status."""
-        return {n: p.returncode for n, p in self.processes.items() if p.poll() is not None}
+        """Nodes that have exited (and are not running again yet), with their exit status."""
+        with self._lock:
+            return {n: p.returncode for n, p in self.processes.items() if p.poll() is not None}
+
+    def given_up(self) -> dict[str, int]:
+        """Nodes that died and will not be restarted, with their exit status (without a policy: all dead)."""
+        if self.restart is None:
+            return self.dead()
+        with self._lock:
+            return dict(self._given_up)
+
+    def _supervise(self) -> None:
+        while not self._stopping.wait(0.1):
+            with self._lock:
+                if not self._stopping.is_set():
+                    self._check()
+
+    def _check(self) -> None:
+        """Schedule a restart for each node that died, start those whose back-off is over (lock held)."""
+        now = time.monotonic()
+        assert self.restart is not None
+        for name, proc in self.processes.items():
+            code = proc.poll()
+            if code is None or name in self._due or name in self._given_up:
+                continue
+            ran = now - self._started[name]
+            self._quick[name] = self._quick.get(name, 0) + 1 if ran < self.restart.stable_after else 1
+            if code == INVALID_PARAMETERS or self._quick[name] > self.restart.max_quick_restarts:
+                why = 'its parameters are invalid' if code == INVALID_PARAMETERS else \
+                    f'{self._quick[name] - 1} quick restarts in a row'
+                self.say(f'{name} exited with status {code}; not restarted ({why})')
+                self._given_up[name] = code
+                continue
+            delay = self.restart.delay(self._quick[name])
+            count = sum(r.node == name for r in self.restarts) + 1
+            self._due[name] = Restart(name, code, ran, delay, count, due=now + delay)
+            self.say(f'{name} exited with status {code} after {ran:.1f} s; restart {count} in {delay:.1f} s')
+        for name, r in list(self._due.items()):
+            if now >= r.due:
+                del self._due[name]
+                self._spawn(name, 'ab')
+                r.at = time.monotonic()
+                self.restarts.append(r)
+                self.say(f'{name} restarted (pid {self.processes[name].pid}, restart {r.count})')
 
     def stop(self, grace: float = 5.0) -> dict[str, Optional[int]]:
         """Stop every node: SIGINT, then SIGTERM, then SIGKILL; return the exit statuses."""
+        self._stopping.set()
+        if self._supervisor is not None:
+            self._supervisor.join(timeout=5.0)
         for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGKILL):
             alive = [p for p in self.processes.values() if p.poll() is None]
             if not alive:
@@ -124,6 +246,8 @@ class NodeGraph:
         for f in self._logs:
             f.close()
         self._logs.clear()
+        if self._own_state_dir and self.state_dir is not None:
+            shutil.rmtree(self.state_dir, ignore_errors=True)
         return {n: p.poll() for n, p in self.processes.items()}
 
     def __enter__(self) -> 'NodeGraph':
@@ -174,6 +298,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help=f'comma-separated subset of nodes (default: {",".join(ALL_NODES)})')
     parser.add_argument('--log-dir', type=Path, default=None,
                         help='write each node\'s output to DIR/<node>.log instead of this terminal')
+    parser.add_argument('--respawn', action=argparse.BooleanOptionalAction, default=True,
+                        help='restart a node that dies, after a back-off (default); --no-respawn stops '
+                             'every node when one exits')
+    parser.add_argument('--state-dir', type=Path, default=None,
+                        help='folder where a restarted node finds what it must remember (default: a '
+                             'temporary one for this run, with --respawn)')
+    parser.add_argument('--max-restarts', type=int, default=RestartPolicy.max_quick_restarts,
+                        help='quick crashes in a row (within 30 s of a start) before a node is given up '
+                             '(default %(default)s)')
 
 
 def run(args: argparse.Namespace) -> int:
@@ -187,7 +320,11 @@ def run(args: argparse.Namespace) -> int:
     overrides: dict[str, dict[str, object]] = {}
     if args.scene:
         overrides = scene_overrides(args.scene)
-    graph = NodeGraph(nodes, Path(params), overrides, log_dir=args.log_dir)
+    if args.max_restarts < 0:
+        raise InvalidInputError(f'--max-restarts must be 0 or more, not {args.max_restarts}')
+    restart = RestartPolicy(max_quick_restarts=args.max_restarts) if args.respawn else None
+    graph = NodeGraph(nodes, Path(params), overrides, log_dir=args.log_dir, restart=restart,
+                      state_dir=args.state_dir)
     stop = {'now': False}
 
     def on_signal(signum: int, frame: object) -> None:
@@ -198,13 +335,14 @@ def run(args: argparse.Namespace) -> int:
     # KeyboardInterrupt: Ctrl-C (or kill -INT) must stop the graph however bringup was started
     signal.signal(signal.SIGINT, signal.default_int_handler)
     graph.start()
-    print(f'started {", ".join(nodes)} (parameters: {params}); Ctrl-C stops them', flush=True)
+    respawn = 'restarted when they die' if restart else 'not restarted (--no-respawn)'
+    print(f'started {", ".join(nodes)} (parameters: {params}; {respawn}); Ctrl-C stops them', flush=True)
     status = 0
     try:
         while not stop['now']:
-            dead = graph.dead()
-            if dead:
-                print(f'node(s) exited: {dead}; stopping the rest', file=sys.stderr)
+            gone = graph.given_up()
+            if gone:
+                print(f'node(s) exited: {gone}; stopping the rest', file=sys.stderr)
                 status = 1
                 break
             time.sleep(0.2)

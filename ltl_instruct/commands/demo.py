@@ -135,7 +135,7 @@ def _run_instruction(client: Any, args: argparse.Namespace, instruction: Optiona
     report['referents'] = {d: [i['id'] for i in g.get('instances', [])]
                            for d, g in ((rmap.get('referent_map') or {}).get('groundings') or {}).items()}
     report['referent_map'] = rmap.get('referent_map') or {}
-    if status['status'] == 'failed':
+    if status['status'] not in ('planned', 'satisfied'):   # failed (or cancelled)
         return 1
     if status['status'] == 'satisfied':
         report['execution'] = 'already satisfied at the start'
@@ -146,11 +146,9 @@ def _run_instruction(client: Any, args: argparse.Namespace, instruction: Optiona
     report['task_plan'] = client.received.task_plans.get(iid)
     say(f'\nPlan: {len(plan) if plan is not None else 0} poses; executing in the simulator ...')
     t1 = time.monotonic()
-    done = client.wait_until(lambda: next(
-        (s for s in client.received.statuses.get(iid, [])
-         if s.get('phase') == 'execution' and s.get('status') in ('satisfied', 'violated')
-         or (s.get('phase') == 'execution' and s.get('status') == 'failed')), None),
-        max(args.timeout - (time.monotonic() - t0), 1.0))
+    # the execution's terminal status: satisfied, violated, failed (replans given up)
+    done = client.wait_until(lambda: client.terminal(iid, phase='execution'),
+                             max(args.timeout - (time.monotonic() - t0), 1.0))
     report['execution_s'] = round(time.monotonic() - t1, 2)
     report['driven'] = np.array([p for _, p in client.received.odom]) if client.received.odom else None
     report['skills'] = [r for r in client.received.skill_results if r.get('id') == iid]

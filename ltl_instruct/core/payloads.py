@@ -28,6 +28,14 @@ def parse_json_payload(text: str, schema: Optional[str] = None,
     InvalidInputError
         On invalid JSON, a non-object, a wrong schema or version, or a missing ``id``.
     """
+    data = _json_object(text, max_bytes)
+    if schema is not None:
+        _check_schema(data, schema)
+    _check_id(data)
+    return data
+
+
+def _json_object(text: str, max_bytes: int = MAX_PAYLOAD_BYTES) -> dict[str, Any]:
     if len(text) > max_bytes:
         raise LimitExceededError(f'payload of {len(text)} bytes exceeds the limit of {max_bytes}')
     try:
@@ -36,15 +44,21 @@ def parse_json_payload(text: str, schema: Optional[str] = None,
         raise InvalidInputError(f'not valid JSON: {str(e)[:200]}') from None
     if not isinstance(data, dict):
         raise InvalidInputError(f'expected a JSON object, got {type(data).__name__}')
-    if schema is not None and data.get('schema') != schema:
+    return data
+
+
+def _check_schema(data: dict[str, Any], schema: str) -> None:
+    if data.get('schema') != schema:
         raise InvalidInputError(f'expected schema {schema!r}, got {str(data.get("schema"))[:80]!r}',
                                 details={'id': safe_id(data.get('id'))})
-    if schema is not None and data.get('version') != SCHEMA_VERSION:
+    if data.get('version') != SCHEMA_VERSION:
         raise InvalidInputError(f'unsupported {schema} version {data.get("version")!r} '
                                 f'(expected {SCHEMA_VERSION})', details={'id': safe_id(data.get('id'))})
+
+
+def _check_id(data: dict[str, Any]) -> None:
     if not isinstance(data.get('id'), str) or not data['id'] or len(data['id']) > 200:
         raise InvalidInputError('payload has no valid "id" (non-empty text up to 200 characters)')
-    return data
 
 
 def safe_id(value: Any) -> str:
@@ -73,9 +87,10 @@ _JSON_NON_TEXT = re.compile(r'(?:null|true|false|NaN|-?Infinity|[-+]?[0-9.][0-9.
 def read_instruction(text: Any, fallback_id: str, limit: int = 2000) -> tuple[str, str, Optional[str]]:
     """Read an ``instruction`` message: ``(id, text, formula or None)``.
 
-    The message is plain English, or a JSON payload ``{"schema": "ltl_instruct/instruction",
-    "version": 1, "id": ..., "text": ...}`` (or ``"formula"`` instead of ``"text"``). A JSON
-    string (``"go to the hall"``) is read as its text.
+    The message is plain English, or a JSON object ``{"id": ..., "text": ...}`` (or
+    ``"formula"`` instead of ``"text"``; ``"schema": "ltl_instruct/instruction"`` and
+    ``"version": 1`` may be given, and are checked when they are). An instruction without an
+    ``id`` gets ``fallback_id``. A JSON string (``"go to the hall"``) is read as its text.
 
     Raises
     ------
@@ -90,7 +105,7 @@ def read_instruction(text: Any, fallback_id: str, limit: int = 2000) -> tuple[st
         raise InvalidInputError(f'an instruction must be text, not {type(text).__name__}')
     stripped = text.strip()
     if stripped.startswith('{'):
-        data = parse_json_payload(stripped, INSTRUCTION)
+        data = _instruction_object(stripped, fallback_id)
         body, formula = data.get('text', ''), data.get('formula')
         if not isinstance(body, str) or (formula is not None and not isinstance(formula, str)):
             raise InvalidInputError('instruction "text" and "formula" must be strings',
@@ -121,3 +136,39 @@ def read_instruction(text: Any, fallback_id: str, limit: int = 2000) -> tuple[st
             raise InvalidInputError(f'an instruction must be English text or a JSON object, '
                                     f'not the JSON value {stripped[:40]!r} ({kind})')
     return fallback_id, text, None
+
+
+def _instruction_object(text: str, fallback_id: str) -> dict[str, Any]:
+    """Parse an instruction JSON object: schema and version checked when given, ``id`` defaulting."""
+    data = _json_object(text)
+    if 'schema' in data or 'version' in data:
+        _check_schema(data, INSTRUCTION)
+    data.setdefault('id', fallback_id)
+    _check_id(data)
+    return data
+
+
+def read_cancel(text: Any) -> str:
+    """Read a ``cancel`` message: the id to cancel, as plain text or a JSON object ``{"id": ...}``.
+
+    Raises
+    ------
+    InvalidInputError
+        Anything else: empty text, JSON that is not a string or an object with an ``id``
+        (``null``, numbers, arrays), an id longer than 200 characters.
+    """
+    if not isinstance(text, str):
+        raise InvalidInputError(f'a cancel must be text, not {type(text).__name__}')
+    stripped = text.strip()
+    value: Any = stripped
+    if stripped.startswith(('{', '"')) or _JSON_NON_TEXT.match(stripped):
+        try:
+            value = json.loads(stripped[:MAX_PAYLOAD_BYTES])
+        except (ValueError, RecursionError):
+            raise InvalidInputError(f'cancel is not valid JSON: {stripped[:40]!r}') from None
+    if isinstance(value, dict):
+        value = value.get('id')
+    if not isinstance(value, str) or not value.strip() or len(value) > 200:
+        raise InvalidInputError('a cancel names the id of an instruction (text up to 200 characters, or '
+                                f'{{"id": ...}}), not {stripped[:40]!r}')
+    return value.strip()

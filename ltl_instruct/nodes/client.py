@@ -17,14 +17,14 @@ import numpy as np
 import rclpy
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rclpy.context import Context
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.exceptions import InvalidHandle
+from rclpy.executors import SingleThreadedExecutor
 from std_msgs.msg import String
 
 from ltl_instruct import conversions as conv
 from ltl_instruct.core.errors import InvalidInputError, LtlInstructError, ErrorCode
+from ltl_instruct.core.lifecycle import PLANNING, RECEIVED
 from ltl_instruct.nodes.common import latched_qos, reliable_qos
-
-TERMINAL = ('planned', 'satisfied', 'failed')
 
 
 @dataclass
@@ -63,10 +63,13 @@ class GraphClient:
         self.received = Received()
         self.record_odom = record_odom
         self._cond = threading.Condition()
+        self._closing = threading.Event()
         self._ids = itertools.count(1)
         self._prefix = os.urandom(3).hex()
         n = self.node
-        self.instruction_pub = n.create_publisher(String, 'instruction', reliable_qos())
+        # latched: a translator that restarts reads again what it had not finished
+        self.instruction_pub = n.create_publisher(String, 'instruction', latched_qos())
+        self.cancel_pub = n.create_publisher(String, 'cancel', reliable_qos())
         self.reply_pub = n.create_publisher(String, 'verification/reply', reliable_qos())
         self.task_spec_pub = n.create_publisher(String, 'task_spec', latched_qos())
         self.odom_pub = n.create_publisher(Odometry, 'odom', reliable_qos(10))
@@ -80,27 +83,36 @@ class GraphClient:
         n.create_subscription(String, 'skill/result', self._on_skill_result, reliable_qos())
         n.create_subscription(Odometry, 'odom', self._on_odom, reliable_qos(10))
         n.create_subscription(OccupancyGrid, 'map', self._on_map, latched_qos(1))
-        self._executor = MultiThreadedExecutor(num_threads=2, context=self.context)
+        # one thread runs every callback: once it is joined, none can touch the node being destroyed
+        # (a pool's callback could: rclpy's executor.shutdown does not wait for them)
+        self._executor = SingleThreadedExecutor(context=self.context)
         self._executor.add_node(self.node)
         self._thread = threading.Thread(target=self._spin, name='client-spin', daemon=True)
         self._thread.start()
 
     # ------------------------------------------------------------------ lifecycle
     def _spin(self) -> None:
-        try:
-            self._executor.spin()
-        except Exception:  # noqa: BLE001 - shutting down
-            pass
+        while self.context.ok() and not self._closing.is_set():
+            try:
+                self._executor.spin_once(timeout_sec=0.1)
+            except InvalidHandle:
+                # rclpy: a publisher or subscription another thread destroyed (a test's helper) while
+                # this thread built its wait set; it is gone now, and the next wait set has no trace of it
+                continue
+            except Exception:  # noqa: BLE001 - shutting down
+                return
 
     def close(self) -> None:
         """Stop spinning and shut this client's context down.
 
-        The spinning thread is joined before the node is destroyed: a callback still running on it
-        would otherwise touch the destroyed node ("cannot use Destroyable because destruction was
-        requested", seen at the end of a demo).
+        The spinning thread (which runs every callback) is joined before the node is destroyed: a
+        callback still running would otherwise touch the destroyed node ("The following exception
+        was never retrieved: cannot use Destroyable because destruction was requested", seen at the
+        end of a demo).
         """
+        self._closing.set()
+        self._thread.join(timeout=5.0)
         self._executor.shutdown(timeout_sec=2.0)
-        self._thread.join(timeout=2.0)
         self.node.destroy_node()
         rclpy.try_shutdown(context=self.context)
 
@@ -236,24 +248,39 @@ class GraphClient:
         """Answer a verification request."""
         self.reply_pub.publish(conv.json_msg(conv.payload(conv.VERIFICATION_REPLY, iid, accept=accept)))
 
-    def terminal(self, iid: str) -> Optional[dict[str, Any]]:
-        """Return the terminal status of ``iid`` if it has come."""
+    def cancel(self, iid: str) -> None:
+        """Publish a cancel for ``iid`` (as plain text)."""
+        self.cancel_pub.publish(String(data=iid))
+
+    def terminal(self, iid: str, phase: str = PLANNING) -> Optional[dict[str, Any]]:
+        """Return the terminal status of ``phase`` (planning, execution) of ``iid`` if it has come."""
         for s in self.received.statuses.get(iid, []):
-            if s.get('terminal'):
+            if s.get('terminal') and s.get('phase') == phase:
                 return s
         return None
 
-    def wait_terminal(self, iid: str, timeout: float = 30.0) -> dict[str, Any]:
-        """Wait for the terminal status of ``iid``.
+    def terminals(self, iid: str, phase: str = PLANNING) -> list[dict[str, Any]]:
+        """Return every terminal status of ``phase`` of ``iid``, but repeats (one is expected)."""
+        return [s for s in self.received.statuses.get(iid, [])
+                if s.get('terminal') and s.get('phase') == phase and not s.get('repeat')]
+
+    def ids_for(self, text: str) -> list[str]:
+        """Return the ids that ``received`` statuses gave to an instruction ``text``."""
+        return sorted({iid for iid, statuses in self.received.statuses.items() for s in statuses
+                       if s.get('status') == RECEIVED and s.get('instruction') == text})
+
+    def wait_terminal(self, iid: str, timeout: float = 30.0, phase: str = PLANNING) -> dict[str, Any]:
+        """Wait for the terminal status of ``phase`` of ``iid`` (planning: planned, satisfied, failed...).
 
         Raises
         ------
         LtlInstructError
             (TIMEOUT) if none comes in time.
         """
-        s = self.wait_until(lambda: self.terminal(iid), timeout)
+        s = self.wait_until(lambda: self.terminal(iid, phase), timeout)
         if s is None:
-            raise LtlInstructError(f'no terminal task_status for {iid} within {timeout} s', ErrorCode.TIMEOUT)
+            raise LtlInstructError(f'no terminal {phase} task_status for {iid} within {timeout} s',
+                                   ErrorCode.TIMEOUT)
         return s
 
     def wait_status(self, iid: str, status: str, timeout: float = 60.0) -> Optional[dict[str, Any]]:

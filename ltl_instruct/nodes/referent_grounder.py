@@ -10,12 +10,17 @@ JSON, with the instruction's ``id``; ``ok: false`` with a typed error such as
 
 When new detections change what the running task's descriptors resolve to, a new
 ``revision`` of its referent map is published, and ``task_progression`` replans.
+
+Each task spec is grounded once (by id): the translator sends the specs in flight again
+whenever a reader of ``task_spec`` (re)starts, and a repeat is not grounded again. The
+subscription is volatile, so a restarted grounder grounds only what is still in flight.
 """
 from __future__ import annotations
 
 import sys
 import threading
 import time
+from collections import OrderedDict
 from typing import Any, Optional
 
 import numpy as np
@@ -49,6 +54,7 @@ PARAMS = (
     ParamSpec('viewpoint', 'origin', 'frame of reference of the comparators', choices=('origin', 'robot')),
     ParamSpec('use_embeddings', False, 'also match names with the packaged sentence-embedding model'),
 )
+GROUNDED_MEMORY = 10_000   # task ids remembered, so that a spec sent again is not grounded twice
 
 
 class ReferentGrounderNode(Node):
@@ -68,9 +74,10 @@ class ReferentGrounderNode(Node):
         self._camera_poses: dict[int, Any] = {}
         self._last_frame = 0.0
         self._task: Optional[dict[str, Any]] = None   # the latest grounded task
+        self._grounded: OrderedDict[str, None] = OrderedDict()   # ids grounded already
         self.rmap_pub = self.create_publisher(String, 'referent_map', latched_qos())
         self.marker_pub = self.create_publisher(MarkerArray, 'referent_map/markers', latched_qos(1))
-        self.create_subscription(String, 'task_spec', self.on_task_spec, latched_qos())
+        self.create_subscription(String, 'task_spec', self.on_task_spec, reliable_qos())
         self.create_subscription(Odometry, 'odom', self.on_odom, reliable_qos(10))
         if self._semantic_map is not None:
             self.create_subscription(CameraInfo, 'camera/color/camera_info', self.on_info, sensor_qos())
@@ -123,7 +130,7 @@ class ReferentGrounderNode(Node):
         except LtlInstructError as e:
             self.get_logger().warning(f'task spec rejected: {e.message}')   # task_progression reports it
             return
-        if not spec.get('ok') or not isinstance(spec.get('formula'), str):
+        if not spec.get('ok') or not isinstance(spec.get('formula'), str) or self._seen(spec['id']):
             return
         iid = spec['id']
         t0 = time.monotonic()
@@ -142,6 +149,15 @@ class ReferentGrounderNode(Node):
         with self._lock:
             self._task = {'id': iid, 'formula': formula, 'rmap': rmap, 'revision': 0}
         self._publish(iid, rmap, 0, time.monotonic() - t0, error)
+
+    def _seen(self, iid: str) -> bool:
+        """Tell whether ``iid`` was grounded already (a spec sent again); remember it if not."""
+        if iid in self._grounded:
+            return True
+        self._grounded[iid] = None
+        while len(self._grounded) > GROUNDED_MEMORY:
+            self._grounded.popitem(last=False)
+        return False
 
     def _publish(self, iid: str, rmap: Optional[ReferentMap], revision: int, seconds: float,
                  error: Optional[LtlInstructError]) -> None:

@@ -6,12 +6,19 @@ navigation transition becomes a ``plan_request`` (the symbolic TPSM) that the
 ``fmt_planner`` node answers with a ``plan_segment``. The whole plan is checked
 against the automaton before it is published (``plan``, ``task_plan``, ``tpsm``).
 
-Every instruction ends with exactly one terminal ``task_status`` (``planned``,
-``satisfied`` when nothing has to move, or ``failed`` with a typed error code).
+Every instruction's first ``task_status`` is ``received`` (with the id the translator
+gave it); its planning ends with exactly one terminal status (``planned``, ``satisfied``
+when nothing has to move, ``failed`` with a typed error code, or ``cancelled``).
 Execution statuses follow with ``phase: execution``: the robot's odometry and skill
-results are read by the automaton (``progressing``, ``satisfied``, ``violated`` with
-the atoms that did it). A new referent map for the running task, or a failed skill,
-triggers a replan from the current automaton state and pose.
+results are read by the automaton (``progressing``, then one terminal ``satisfied``,
+``violated`` with the atoms that did it, ``failed``, ``superseded`` by a newer plan, or
+``cancelled``). A new referent map for the running task, or a failed skill, triggers a
+replan from the current automaton state and pose. ``cancel`` (an id) ends an instruction
+where it is; a cancelled execution stops the robot (an empty ``plan``).
+
+A restarted ``task_progression`` reads only new task specs (volatile): the translator
+sends again those in flight, an executing one with the automaton state to resume from,
+and a spec this node has already ended is answered with its statuses again (``repeat``).
 
 Planning runs in one worker thread (instructions are served in order); callbacks
 stay short, so odometry and segment replies are handled while a plan is being made.
@@ -20,6 +27,7 @@ from __future__ import annotations
 
 import itertools
 import math
+import pathlib
 import queue
 import sys
 import threading
@@ -30,6 +38,7 @@ from typing import Any, Optional
 
 import numpy as np
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
+from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
 from rclpy.node import Node
 from sensor_msgs.msg import PointCloud2
 from std_msgs.msg import String
@@ -39,6 +48,9 @@ from ltl_instruct.core import planning
 from ltl_instruct.core.automaton import Automaton, compile_automaton
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError, PlanningError
 from ltl_instruct.core.grounding.rsm import ReferentMap
+from ltl_instruct.core.lifecycle import (
+    CANCELLED, EXECUTION, MEMORY, PLANNED, PLANNING, RECEIVED, SUPERSEDED, StatusMemory,
+)
 from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, PlanTrace, Verdict
 from ltl_instruct.core.spec import Atom, parse_formula
 from ltl_instruct.core.world import near
@@ -69,14 +81,14 @@ PARAMS = (
     ParamSpec('tpsm_spacing', 0.25, 'point spacing of the tpsm cloud [m]', 0.05, 5.0),
     ParamSpec('trace_tolerance', 0.25, 'odometry poses this close to the plan are on it: the monitor '
               'reads the move between two of them along the plan [m]', 0.01, 10.0),
+    ParamSpec('state_dir', '', 'folder where the statuses of each instruction are kept across a restart of '
+              'this node ("" = in memory only; bringup gives one when it restarts nodes)'),
     ParamSpec('start_x', float('nan'), 'start x when no odometry comes [m] (nan: wait for odom)'),
     ParamSpec('start_y', float('nan'), 'start y when no odometry comes [m]'),
     ParamSpec('start_z', 0.0, 'start z when no odometry comes [m]'),
 )
 
-_TERMINAL = ('planned', 'satisfied', 'failed')
 NO_INSTRUCTION = 'no-instruction'   # the id of input rejected while no task runs
-_SEEN_LIMIT = 10000
 
 
 @dataclass
@@ -86,8 +98,9 @@ class _Pending:
     iid: str
     spec: Optional[dict[str, Any]] = None
     rmap: Optional[dict[str, Any]] = None
-    since: float = field(default_factory=time.monotonic)
+    since: float = field(default_factory=time.monotonic)   # waiting for a referent map since
     queued: bool = False
+    resume: Optional[dict[str, Any]] = None   # planned by an earlier run of this node: resume from here
 
 
 @dataclass
@@ -117,7 +130,8 @@ class TaskProgressionNode(Node):
         self.start_override = self._start_override()
         self._lock = threading.RLock()
         self._pending: dict[str, _Pending] = {}
-        self._finished: OrderedDict[str, str] = OrderedDict()   # id -> terminal status
+        self._memory = StatusMemory(journal=self._journal_path())   # what was said about each id, by phase
+        self._cancelled: OrderedDict[str, None] = OrderedDict()   # cancels of ids not seen yet
         self._jobs: queue.Queue = queue.Queue()
         self._pose: Optional[np.ndarray] = None
         self._pose_event = threading.Event()
@@ -133,16 +147,22 @@ class TaskProgressionNode(Node):
         self._world: Any = None
         self._world_error: LtlInstructError = InvalidInputError('no map received yet')
         self._map_received = False          # a map came (good or rejected)
+        self._planners_come = 0   # planners matched so far (one more after each restart)
         self._map_come = threading.Condition(self._lock)
 
         self.status_pub = self.create_publisher(String, 'task_status', latched_qos())
         self.plan_pub = self.create_publisher(Path, 'plan', latched_qos(1))
         self.task_plan_pub = self.create_publisher(String, 'task_plan', latched_qos(1))
         self.tpsm_pub = self.create_publisher(PointCloud2, 'tpsm', latched_qos(1))
-        self.request_pub = self.create_publisher(String, 'plan_request', reliable_qos())
+        self.request_pub = self.create_publisher(String, 'plan_request', reliable_qos(),
+                                                 event_callbacks=PublisherEventCallbacks(
+                                                     matched=self.on_planner_matched))
         self.skill_pub = self.create_publisher(String, 'skill/request', reliable_qos())
-        self.create_subscription(String, 'task_spec', self.on_task_spec, latched_qos())
-        self.create_subscription(String, 'referent_map', self.on_referent_map, latched_qos())
+        # volatile: after a restart, the translator sends again what is in flight (not the ended history)
+        self.create_subscription(String, 'task_spec', self.on_task_spec, reliable_qos())
+        self.create_subscription(String, 'referent_map', self.on_referent_map, latched_qos(),
+                                 event_callbacks=SubscriptionEventCallbacks(matched=self.on_grounder_matched))
+        self.create_subscription(String, 'cancel', self.on_cancel, reliable_qos())
         self.create_subscription(Odometry, 'odom', self.on_odom, reliable_qos(ODOM_DEPTH))
         self.create_subscription(Path, 'plan_segment', self.on_plan_segment, reliable_qos())
         self.create_subscription(String, 'fmt_planner/status', self.on_segment_status, reliable_qos())
@@ -154,6 +174,17 @@ class TaskProgressionNode(Node):
         self.create_timer(0.25, self.on_timer)
         self._worker = threading.Thread(target=self._work, name='plan', daemon=True)
         self._worker.start()
+
+    def _journal_path(self) -> Optional[pathlib.Path]:
+        """Return the file that keeps this node's statuses across a restart (None without ``state_dir``)."""
+        if not self.params['state_dir']:
+            return None
+        folder = pathlib.Path(self.params['state_dir'])
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+        except OSError as e:
+            raise InvalidInputError(f'parameter state_dir: cannot use {folder}: {e}') from None
+        return folder / (self.get_fully_qualified_name().strip('/').replace('/', '.') + '.status.jsonl')
 
     def _start_override(self) -> Optional[np.ndarray]:
         values = []
@@ -169,23 +200,23 @@ class TaskProgressionNode(Node):
         return np.asarray(values)
 
     # ------------------------------------------------------------------ status
-    def publish_status(self, iid: str, status: str, terminal: bool, phase: str = 'planning',
+    def publish_status(self, iid: str, status: str, terminal: bool, phase: str = PLANNING,
                        error: Optional[LtlInstructError] = None, **fields: Any) -> None:
-        """Publish one ``task_status``; a terminal one is sent at most once per id."""
-        with self._lock:
-            if terminal:
-                if iid in self._finished:
-                    return
-                self._finished[iid] = status
-                while len(self._finished) > _SEEN_LIMIT:
-                    self._finished.popitem(last=False)
-                self._pending.pop(iid, None)
+        """Publish one ``task_status``; nothing is sent in a phase that has ended (one terminal each)."""
         body = dict(status=status, terminal=terminal, phase=phase,
                     error=error.to_dict() if error is not None else None, **fields)
+        with self._lock:
+            if not self._memory.admit(iid, body):
+                return
+            if terminal:
+                self._pending.pop(iid, None)
         if error is not None:
             self.get_logger().warning(f'{iid}: {status} [{error.code.value}] {error.message}')
         else:
             self.get_logger().info(f'{iid}: {status}')
+        self._send_status(iid, body)
+
+    def _send_status(self, iid: str, body: dict[str, Any]) -> None:
         self.status_pub.publish(conv.json_msg(conv.payload(conv.TASK_STATUS, iid, **body)))
 
     def _fail(self, iid: str, error: LtlInstructError, **fields: Any) -> None:
@@ -209,19 +240,55 @@ class TaskProgressionNode(Node):
             self._fail(iid, e, stage='task_spec')
             return
         iid = spec['id']
-        with self._lock:
-            if iid in self._finished:
+        with self._lock:   # held while 'received' goes out: no other status of this id can precede it
+            resume = self._resume_point(iid, spec)
+            if resume is None and (self._memory.ended(iid) or self._memory.ended(iid, EXECUTION)):
+                for body in self._memory.repeat(iid):   # the translator missed how it ended
+                    self._send_status(iid, body)
                 return
-            if not spec.get('ok', False):
-                err = spec.get('error') or {}
-                self._fail(iid, _error_from_dict(err, ErrorCode.TRANSLATION_ERROR),
-                           stage='translation', instruction=spec.get('instruction', ''))
-                return
-            if not isinstance(spec.get('formula'), str):
-                self._fail(iid, InvalidInputError('task spec has no formula'), stage='task_spec')
-                return
+            if iid in self._pending and self._pending[iid].spec is not None:
+                return                                  # sent again while it is being served
+            if resume is None and not self._memory.knows(iid):
+                self.publish_status(iid, RECEIVED, False, instruction=str(spec.get('instruction', '')),
+                                    id_source=str(spec.get('id_source', 'sender')))
+            self._take_spec(iid, spec, resume)
+
+    def _resume_point(self, iid: str, spec: dict[str, Any]) -> Optional[dict[str, Any]]:
+        """Return where to resume a task an earlier run of this node planned (lock held), or None.
+
+        The journal says it was executing (its last automaton state), or, without a journal,
+        the translator does (``resume`` in the spec it sends again).
+        """
+        pending = self._pending.get(iid)
+        if (pending is not None and pending.spec is not None) or \
+                (self._active is not None and self._active.iid == iid):
+            return None                                 # this run serves it
+        executing = self._memory.executing(iid)
+        if executing is not None and executing.get('automaton_state') is not None:
+            return {'automaton_state': executing['automaton_state']}
+        resume = spec.get('resume')
+        if isinstance(resume, dict) and not self._memory.ended(iid, EXECUTION) and \
+                self._memory.ended(iid) in (None, PLANNED):
+            return resume
+        return {'automaton_state': None} if executing is not None else None
+
+    def _take_spec(self, iid: str, spec: dict[str, Any], resume: Optional[dict[str, Any]]) -> None:
+        """Queue a new spec (lock held): it fails, is cancelled, or waits for its referent map."""
+        phase = EXECUTION if resume is not None else PLANNING
+        if iid in self._cancelled:
+            del self._cancelled[iid]
+            self.publish_status(iid, CANCELLED, True, phase=phase, reason='cancelled before it was served')
+        elif not spec.get('ok', False):
+            err = spec.get('error') or {}
+            self.publish_status(iid, 'failed', True, phase=phase, stage='translation',
+                                error=_error_from_dict(err, ErrorCode.TRANSLATION_ERROR),
+                                instruction=spec.get('instruction', ''))
+        elif not isinstance(spec.get('formula'), str):
+            self.publish_status(iid, 'failed', True, phase=phase, stage='task_spec',
+                                error=InvalidInputError('task spec has no formula'))
+        else:
             p = self._pending.setdefault(iid, _Pending(iid))
-            p.spec = spec
+            p.spec, p.resume, p.since = spec, resume, time.monotonic()
             self._maybe_queue(p)
 
     def on_referent_map(self, msg: String) -> None:
@@ -238,8 +305,8 @@ class TaskProgressionNode(Node):
                 if int(data.get('revision', 0)) > active.rmap_revision and data.get('ok', False):
                     self._jobs.put(('replan', iid, data, 'the referent map changed'))
                 return
-            if iid in self._finished:
-                return
+            if self._memory.ended(iid) not in (None, PLANNED) or self._memory.ended(iid, EXECUTION):
+                return   # over (one planned by an earlier run of this node may still be resumed)
             p = self._pending.setdefault(iid, _Pending(iid))
             p.rmap = data
             self._maybe_queue(p)
@@ -247,7 +314,36 @@ class TaskProgressionNode(Node):
     def _maybe_queue(self, p: _Pending) -> None:
         if p.spec is not None and p.rmap is not None and not p.queued:
             p.queued = True
-            self._jobs.put(('plan', p.iid, None, ''))
+            self._jobs.put(('plan' if p.resume is None else 'resume', p.iid, None, ''))
+
+    def on_cancel(self, msg: String) -> None:
+        """End the named instruction where it is: waiting, being planned, or executing."""
+        try:
+            iid = conv.read_cancel(msg.data)
+        except LtlInstructError as e:
+            self.publish_status(conv.salvage_id(msg.data) or NO_INSTRUCTION, 'cancel_rejected', False,
+                                phase='input', error=e)
+            return
+        with self._lock:
+            active, pending = self._active, self._pending.get(iid)
+            if active is not None and active.iid == iid and not active.finished:
+                active.finished = True
+                stop = conv.path_msg(np.zeros((0, 3)), conv.stamp_from_key(next(self._stamps)))
+                self.plan_pub.publish(stop)                                   # an empty plan stops the robot
+                self.publish_status(iid, CANCELLED, True, phase=EXECUTION)
+            elif pending is not None and pending.spec is not None:
+                phase = EXECUTION if pending.resume is not None else PLANNING
+                self._pending.pop(iid, None)
+                self.publish_status(iid, CANCELLED, True, phase=phase)       # a plan being made is dropped
+            elif self._memory.knows(iid):
+                ended = self._memory.ended(iid, EXECUTION) or self._memory.ended(iid)
+                self.publish_status(iid, 'cancel_rejected', False, phase='input', error=InvalidInputError(
+                    f'{iid} cannot be cancelled: it has ended ({ended})'))
+            else:   # not here yet (being translated, or on its way): cancelled when it comes
+                self._cancelled[iid] = None
+                while len(self._cancelled) > MEMORY:
+                    self._cancelled.popitem(last=False)
+                self.get_logger().info(f'{iid}: cancel noted; it will end when it comes')
 
     def on_map(self, msg: OccupancyGrid) -> None:
         """Keep the 2D world the plans are checked against (a bad map is remembered as the error)."""
@@ -308,8 +404,8 @@ class TaskProgressionNode(Node):
             plan = active.plan
         if report.changed and report.verdict is Verdict.PROGRESSING:
             self._publish_tpsm(plan, report.state)
-        self.publish_status(active.iid, report.verdict.value, False, phase='execution',
-                            automaton_state=report.state, monitor=report.to_dict())
+        self.publish_status(active.iid, report.verdict.value, report.verdict is not Verdict.PROGRESSING,
+                            phase=EXECUTION, automaton_state=report.state, monitor=report.to_dict())
 
     def on_plan_segment(self, msg: Path) -> None:
         """Store a segment from the planner, matched to its request by the header stamp."""
@@ -366,7 +462,7 @@ class TaskProgressionNode(Node):
         with self._lock:
             for p in list(self._pending.values()):
                 if not p.queued and p.spec is not None and now - p.since > self.params['grounding_timeout']:
-                    late.append(p.iid)
+                    late.append((p.iid, EXECUTION if p.resume is not None else PLANNING))
                 elif p.spec is None and now - p.since > 10 * self.params['grounding_timeout']:
                     del self._pending[p.iid]   # a referent map whose task spec never came
             # replies that came after their request timed out
@@ -374,9 +470,27 @@ class TaskProgressionNode(Node):
                 self._segments.pop(next(iter(self._segments)))
             while len(self._paths) > 1000:
                 self._paths.pop(next(iter(self._paths)))
-        for iid in late:
-            self._fail(iid, LtlInstructError('no referent map came for this instruction in time',
-                                             ErrorCode.TIMEOUT), stage='grounding')
+        for iid, phase in late:
+            self.publish_status(iid, 'failed', True, phase=phase, stage='grounding', error=LtlInstructError(
+                'no referent map came for this instruction in time', ErrorCode.TIMEOUT))
+
+    def on_grounder_matched(self, info: Any) -> None:
+        """Give the specs still waiting the whole ``grounding_timeout`` again when a grounder comes (back).
+
+        DDS notices a killed node only when its lease ends (20 s), so its return, not its
+        death, is what is seen in time.
+        """
+        if info.current_count_change > 0:
+            with self._lock:
+                for p in self._pending.values():
+                    p.since = time.monotonic()
+
+    def on_planner_matched(self, info: Any) -> None:
+        """Send a waiting request to a planner that has come (back), with a new deadline."""
+        if info.current_count_change > 0:
+            with self._segment_cond:
+                self._planners_come += 1
+                self._segment_cond.notify_all()
 
     # ------------------------------------------------------------------ planning (worker thread)
     def close(self) -> None:
@@ -393,22 +507,26 @@ class TaskProgressionNode(Node):
                 return
             kind, iid, data, reason = job
             try:
-                if kind == 'plan':
-                    self._plan_instruction(iid)
-                else:
+                if kind == 'replan':
                     self._replan(iid, data, reason)
-            except LtlInstructError as e:
+                else:
+                    self._plan_instruction(iid)
+            except Exception as e:  # noqa: BLE001 - a bug must not kill the worker or lose the instruction
+                if not isinstance(e, LtlInstructError):
+                    self.get_logger().error(f'internal error on {iid}: {e!r}')
+                    e = LtlInstructError(f'internal error: {e!r}', ErrorCode.INTERNAL_ERROR)
                 if kind == 'plan':
                     self._fail(iid, e)
-                else:
-                    self.publish_status(iid, 'failed', False, phase='execution', error=e)
-            except Exception as e:  # noqa: BLE001 - a bug must not kill the worker or lose the instruction
-                self.get_logger().error(f'internal error on {iid}: {e!r}')
-                err = LtlInstructError(f'internal error: {e!r}', ErrorCode.INTERNAL_ERROR)
-                if kind == 'plan':
-                    self._fail(iid, err)
-                else:
-                    self.publish_status(iid, 'failed', False, phase='execution', error=err)
+                else:   # a failed replan leaves the running plan; a failed resume ends the execution
+                    self.publish_status(iid, 'failed', kind == 'resume', phase=EXECUTION, error=e)
+
+    def _dropped(self, iid: str) -> bool:
+        """Tell whether a plan still being made for ``iid`` is to be dropped.
+
+        It is when the instruction was cancelled, or its execution has ended (superseded,
+        cancelled, or done while a replan was being made).
+        """
+        return self._memory.ended(iid) == CANCELLED or self._memory.ended(iid, EXECUTION) is not None
 
     def _current_pose(self) -> np.ndarray:
         if self.start_override is not None and self._pose is None:
@@ -440,8 +558,11 @@ class TaskProgressionNode(Node):
             raise _error_from_dict(rdata.get('error') or {}, ErrorCode.UNKNOWN_REFERENT)
         rmap = ReferentMap.from_dict(rdata.get('referent_map') or {})
         start = self._current_pose()
-        self._plan_and_publish(iid, automaton, rmap, start, None, timing,
-                               int(rdata.get('revision', 0)), replans=0)
+        state, mode = None, 'plan'
+        if p.resume is not None:   # planned by an earlier run of this node: on from the last state heard
+            state, mode = _resume_state(p.resume, automaton), 'resume'
+        self._plan_and_publish(iid, automaton, rmap, start, state, timing,
+                               int(rdata.get('revision', 0)), replans=0, mode=mode)
 
     def _replan(self, iid: str, rdata: Optional[dict[str, Any]], reason: str) -> None:
         with self._lock:
@@ -461,11 +582,12 @@ class TaskProgressionNode(Node):
             state = active.monitor.state
             replans = active.replans + 1
         if err is not None:
-            self.publish_status(iid, 'failed', False, phase='execution', error=err)
+            self.publish_status(iid, 'failed', True, phase=EXECUTION, error=err)
             return
-        self.publish_status(iid, 'replanning', False, phase='execution', reason=reason, automaton_state=state)
+        self.publish_status(iid, 'replanning', False, phase=EXECUTION, reason=reason, automaton_state=state)
         start = self._current_pose()
-        self._plan_and_publish(iid, active.automaton, rmap, start, state, {}, revision, replans)
+        self._plan_and_publish(iid, active.automaton, rmap, start, state, {}, revision, replans,
+                               mode='replan')
 
     def _letters(self, automaton: Automaton, rmap: ReferentMap) -> LetterMaker:
         dims = 3 if self.params['robot_kind'] == 'drone' else 2
@@ -481,9 +603,51 @@ class TaskProgressionNode(Node):
 
     def _plan_and_publish(self, iid: str, automaton: Automaton, rmap: ReferentMap, start: np.ndarray,
                           state: Optional[int], timing: dict[str, float], revision: int,
-                          replans: int) -> None:
-        """Plan (from ``state``, or the initial state when None), then publish everything and monitor."""
+                          replans: int, mode: str = 'plan') -> None:
+        """Plan (from ``state``, or the initial state when None), then publish everything and monitor.
+
+        ``mode``: ``plan`` for a new instruction (its planning ends here), ``replan`` or
+        ``resume`` for an executing one (execution statuses only).
+        """
         world = self._world_or_error()
+        plan = self._make_plan(iid, automaton, rmap, world, start, state, timing)
+        if plan.status == 'satisfied' or not plan.steps:
+            self._publish_satisfied(iid, automaton, timing, mode)
+            return
+        stamp = next(self._stamps)
+        letters = self._letters(automaton, rmap)
+        path, skills = _path_and_skills(plan, rmap)
+        fields = dict(formula=str(automaton.formula), timing=timing, plan_stamp=stamp,
+                      num_poses=int(len(path)), length_m=round(plan.length, 3), num_skills=len(skills),
+                      automaton_states=plan.states, verification=plan.verification.to_dict(),
+                      warnings=list(plan.warnings))
+        with self._lock:   # a cancel comes before the plan is out (dropped) or after (it stops the robot)
+            if self._dropped(iid):
+                return
+            self._supersede(iid)
+            monitor = ExecutionMonitor(automaton, letters, automaton.initial if state is None else state)
+            self._active = _Active(iid, automaton, rmap, monitor, stamp, revision, plan, replans,
+                                   PlanTrace(path, self.params['trace_tolerance'], letters.dims))
+            self._publish_plan(iid, plan, path, skills, stamp, revision)
+            if mode == 'plan':
+                self.publish_status(iid, 'planned', True, **fields)
+            else:
+                if mode == 'resume':
+                    fields['reason'] = 'resumed by a restarted task_progression'
+                self.publish_status(iid, 'replanned', False, phase=EXECUTION, **fields)
+        self._publish_tpsm(plan, plan.steps[0].state_before)
+
+    def _publish_plan(self, iid: str, plan: Any, path: np.ndarray, skills: list[dict[str, Any]], stamp: int,
+                      revision: int) -> None:
+        self.plan_pub.publish(conv.path_msg(path, conv.stamp_from_key(stamp)))
+        self.task_plan_pub.publish(conv.json_msg(conv.payload(
+            conv.TASK_PLAN, iid, plan_stamp=stamp, revision=revision, skills=skills, **plan.to_dict())))
+        for skill in skills:
+            self.skill_pub.publish(conv.json_msg(conv.payload(
+                conv.SKILL_REQUEST, iid, plan_stamp=stamp, **skill)))
+
+    def _make_plan(self, iid: str, automaton: Automaton, rmap: ReferentMap, world: Any, start: np.ndarray,
+                   state: Optional[int], timing: dict[str, float]) -> Any:
         p = self.params
         settings = planning.PlannerSettings(near_threshold=p['near_threshold'], goal_margin=p['goal_margin'],
                                             avoid_margin=p['avoid_margin'], max_segments=p['max_segments'],
@@ -493,38 +657,25 @@ class TaskProgressionNode(Node):
                                   solve=lambda request: self._remote_solve(iid, request, world.dims),
                                   request_id=iid, initial_state=state)
         timing['plan_s'] = time.monotonic() - t0   # every segment over DDS, and the plan check
-        first = state is None
-        if plan.status == 'satisfied' or not plan.steps:
-            if first:
-                self.publish_status(iid, 'satisfied', True, formula=str(automaton.formula), timing=timing,
-                                    reason='the task already holds at the robot\'s pose')
-            else:
-                self.publish_status(iid, 'satisfied', False, phase='execution')
+        return plan
+
+    def _publish_satisfied(self, iid: str, automaton: Automaton, timing: dict[str, float], mode: str) -> None:
+        """End planning ``satisfied`` (the task holds where the robot is), or the execution."""
+        if mode == 'plan':
+            self.publish_status(iid, 'satisfied', True, formula=str(automaton.formula), timing=timing,
+                                reason='the task already holds at the robot\'s pose')
             return
-        stamp = next(self._stamps)
-        letters = self._letters(automaton, rmap)
-        monitor_state = automaton.initial if first else state
-        path, skills = _path_and_skills(plan, rmap)
         with self._lock:
-            self._active = _Active(iid, automaton, rmap, ExecutionMonitor(automaton, letters, monitor_state),
-                                   stamp, revision, plan, replans,
-                                   PlanTrace(path, self.params['trace_tolerance'], letters.dims))
-        stamp_msg = conv.stamp_from_key(stamp)
-        self.plan_pub.publish(conv.path_msg(path, stamp_msg))
-        self.task_plan_pub.publish(conv.json_msg(conv.payload(
-            conv.TASK_PLAN, iid, plan_stamp=stamp, revision=revision, skills=skills, **plan.to_dict())))
-        self._publish_tpsm(plan, plan.steps[0].state_before)
-        for skill in skills:
-            self.skill_pub.publish(conv.json_msg(conv.payload(
-                conv.SKILL_REQUEST, iid, plan_stamp=stamp, **skill)))
-        fields = dict(formula=str(automaton.formula), timing=timing, plan_stamp=stamp,
-                      num_poses=int(len(path)), length_m=round(plan.length, 3), num_skills=len(skills),
-                      automaton_states=plan.states, verification=plan.verification.to_dict(),
-                      warnings=list(plan.warnings))
-        if first:
-            self.publish_status(iid, 'planned', True, **fields)
-        else:
-            self.publish_status(iid, 'replanned', False, phase='execution', **fields)
+            if self._active is not None and self._active.iid == iid:
+                self._active.finished = True
+        self.publish_status(iid, 'satisfied', True, phase=EXECUTION)
+
+    def _supersede(self, iid: str) -> None:
+        """End the running execution of another instruction (lock held): a newer plan replaces it."""
+        old = self._active
+        if old is not None and old.iid != iid and not old.finished:
+            old.finished = True
+            self.publish_status(old.iid, SUPERSEDED, True, phase=EXECUTION, superseded_by=iid)
 
     def _remote_solve(self, iid: str, request: Any, dims: int) -> Any:
         """Send one ``plan_request`` and wait for the planner's answer (bounded by ``segment_timeout``)."""
@@ -535,8 +686,12 @@ class TaskProgressionNode(Node):
         deadline = time.monotonic() + self.params['segment_timeout']
         resend_at = 0.0
         with self._segment_cond:
-            while not self._closing.is_set():
+            planners = self._planners_come
+            while not self._closing.is_set() and not self._dropped(iid):
                 now = time.monotonic()
+                if self._planners_come != planners:   # a planner (re)started: it gets the whole timeout
+                    planners, resend_at = self._planners_come, 0.0
+                    deadline = now + self.params['segment_timeout']
                 # a request sent before discovery has matched us with a planner is lost:
                 # send only to a listening planner, and repeat while unanswered
                 if now >= resend_at and self.request_pub.get_subscription_count() > 0:
@@ -605,6 +760,13 @@ def _path_and_skills(plan: Any, rmap: ReferentMap) -> tuple[np.ndarray, list[dic
                        'path_index': index, 'position': where.tolist(),
                        'state_before': step.state_before, 'state_after': step.state_after})
     return path, skills
+
+
+def _resume_state(resume: dict[str, Any], automaton: Automaton) -> int:
+    """Return the automaton state a resumed task goes on from (the initial one when unknown)."""
+    state = resume.get('automaton_state')
+    valid = isinstance(state, int) and not isinstance(state, bool) and 0 <= state < automaton.num_states
+    return state if valid else automaton.initial
 
 
 def _error_from_dict(err: dict[str, Any], default: ErrorCode) -> LtlInstructError:

@@ -7,6 +7,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from bench.planning import referent_map
 from ltl_instruct.cli import main
 from ltl_instruct.core.automaton import compile_automaton
 from ltl_instruct.core.automaton.guards import Cube, Guard
@@ -18,10 +19,10 @@ from ltl_instruct.core.planning import (
     solve_segment, verify_plan, world_from_scene,
 )
 from ltl_instruct.core.planning.verify import _atom_truth
-from ltl_instruct.core.spec import Atom, Descriptor, parse_formula, referents_of
+from ltl_instruct.core.spec import Atom, Descriptor, parse_formula
 from ltl_instruct.core.world import near
 from ltl_instruct.core.world.builtin import resolve_scene
-from ltl_instruct.core.world.scene import Box, slug
+from ltl_instruct.core.world.scene import Box
 
 GM, AM = near.DEFAULT_GOAL_MARGIN, near.DEFAULT_AVOID_MARGIN
 TOL = 0.01
@@ -30,18 +31,9 @@ A = Atom('near', (Descriptor('a'),))
 B = Atom('near', (Descriptor('b'),))
 
 
-def _rmap(scene, formula) -> ReferentMap:
-    g = {}
-    for d in referents_of(formula):
-        inst = tuple(Instance(o.id, o.label, o.center, o.size or (0.0, 0.0, 0.0)) for o in scene.objects
-                     if slug(o.label) == d.name or slug(o.label).endswith('_' + d.name))
-        g[str(d)] = Grounding(str(d), Outcome.RESOLVED if len(inst) == 1 else Outcome.AMBIGUOUS, inst)
-    return ReferentMap(g)
-
-
 def _plan(scene, text, settings=SETTINGS, start=None):
     f = parse_formula(text)
-    aut, rmap, world = compile_automaton(f), _rmap(scene, f), world_from_scene(scene)
+    aut, rmap, world = compile_automaton(f), referent_map(scene, f), world_from_scene(scene)
     plan = plan_task(aut, rmap, world, scene.robot.start if start is None else start, settings)
     return plan, aut, rmap, world
 

@@ -8,14 +8,15 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
+from bench.planning import referent_map
 from ltl_instruct.core.automaton import compile_automaton
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, PlanningError, UnsatisfiableError
-from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap
+from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.planning import (
     FmtSettings, PlannerSettings, SegmentResult, plan_task, resample, verify_plan, world_from_scene,
 )
-from ltl_instruct.core.spec import parse_formula, referents_of
-from ltl_instruct.core.world.scene import scene_from_dict, slug
+from ltl_instruct.core.spec import parse_formula
+from ltl_instruct.core.world.scene import scene_from_dict
 
 FAST = PlannerSettings(fmt=FmtSettings(num_samples=1500, seed=1))
 
@@ -35,20 +36,11 @@ ROOM = {
 }
 
 
-def _rmap(scene, formula) -> ReferentMap:
-    g = {}
-    for d in referents_of(formula):
-        inst = tuple(Instance(o.id, o.label, o.center, o.size or (0.0, 0.0, 0.0)) for o in scene.objects
-                     if slug(o.label) == d.name or slug(o.label).endswith('_' + d.name))
-        g[str(d)] = Grounding(str(d), Outcome.RESOLVED if len(inst) == 1 else Outcome.AMBIGUOUS, inst)
-    return ReferentMap(g)
-
-
 def _plan(text, scene_dict=ROOM, settings=FAST, **kw):
     scene = scene_from_dict(scene_dict)
     f = parse_formula(text)
     aut = compile_automaton(f)
-    rmap = _rmap(scene, f)
+    rmap = referent_map(scene, f)
     world = world_from_scene(scene)
     return plan_task(aut, rmap, world, scene.robot.start, settings, **kw), aut, rmap, world
 
@@ -146,7 +138,7 @@ def test_start_that_violates_the_task_or_collides_is_refused():
     aut = compile_automaton('F near[sofa]')
     for bad in ([float('nan'), 1.0], ['a', 'b'], [1.0]):
         with pytest.raises(InvalidInputError):
-            plan_task(aut, _rmap(scene, aut.formula), world_from_scene(scene), bad, FAST)
+            plan_task(aut, referent_map(scene, aut.formula), world_from_scene(scene), bad, FAST)
 
 
 def test_task_already_satisfied_at_the_start_needs_no_step():
@@ -163,7 +155,7 @@ def test_a_lying_segment_solver_never_yields_a_violating_plan():
 
     aut = compile_automaton('F near[sofa] & G !near[door]')
     with pytest.raises(PlanningError):
-        plan_task(aut, _rmap(scene, aut.formula), world_from_scene(scene), (12.0, 6.0), FAST,
+        plan_task(aut, referent_map(scene, aut.formula), world_from_scene(scene), (12.0, 6.0), FAST,
                   solve=straight_line)
 
 
@@ -236,7 +228,7 @@ def test_random_starts_give_a_verified_plan_or_a_typed_error(x, y, goal, avoid):
     aut = compile_automaton(text)
     world = world_from_scene(scene)
     try:
-        plan = plan_task(aut, _rmap(scene, aut.formula), world, (x, y), FAST)
+        plan = plan_task(aut, referent_map(scene, aut.formula), world, (x, y), FAST)
     except (PlanningError, UnsatisfiableError) as e:
         assert e.code in (ErrorCode.START_OCCUPIED, ErrorCode.GOAL_OCCUPIED, ErrorCode.NO_VALID_PATH,
                           ErrorCode.UNSATISFIABLE)

@@ -50,12 +50,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def _viewpoint(text: Optional[str]) -> Optional[tuple[float, ...]]:
     if text is None:
         return None
+    return _finite_numbers(text, '--viewpoint', 'x,y,z[,yaw]', (3, 4))
+
+
+def _finite_numbers(text: str, flag: str, shape: str, counts: tuple[int, int]) -> tuple[float, ...]:
+    """Read comma-separated finite numbers, as many as one of ``counts`` (a typed error otherwise)."""
     try:
         vals = tuple(float(v) for v in text.split(','))
     except ValueError as e:
-        raise InvalidInputError(f'--viewpoint must be x,y,z[,yaw] numbers, got {text!r}') from e
-    if len(vals) not in (3, 4) or not all(math.isfinite(v) for v in vals):
-        raise InvalidInputError(f'--viewpoint must be 3 or 4 finite numbers, got {text!r}')
+        raise InvalidInputError(f'{flag} must be {shape} numbers, got {text!r}') from e
+    if len(vals) not in counts or not all(math.isfinite(v) for v in vals):
+        raise InvalidInputError(f'{flag} must be {counts[0]} or {counts[1]} finite numbers, got {text!r}')
     return vals
 
 
@@ -64,12 +69,7 @@ def parse_start_pose(text: Optional[str], start: tuple[float, ...]) -> Any:
     from ltl_instruct.core.world.robot import Pose
     if text is None:
         return Pose((float(start[0]), float(start[1]), 0.0), 0.0)
-    try:
-        vals = tuple(float(v) for v in text.split(','))
-    except ValueError as e:
-        raise InvalidInputError(f'--start must be x,y[,yaw] numbers, got {text!r}') from e
-    if len(vals) not in (2, 3) or not all(math.isfinite(v) for v in vals):
-        raise InvalidInputError(f'--start must be 2 or 3 finite numbers, got {text!r}')
+    vals = _finite_numbers(text, '--start', 'x,y[,yaw]', (2, 3))
     return Pose((vals[0], vals[1], 0.0), vals[2] if len(vals) == 3 else 0.0)
 
 

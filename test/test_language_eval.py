@@ -125,6 +125,18 @@ def test_translate_command_single_and_batch(tmp_path: Path, capsys: Any) -> None
     assert main(['translate']) == 2
 
 
+def test_batch_reads_text_keys_and_keeps_ids_of_bad_lines(tmp_path: Path) -> None:
+    src = tmp_path / 'in.jsonl'
+    src.write_text('{"id": 1, "text": "go to the lamp"}\n{"id": 2, "instruction": 5}\n'
+                   + '[' * 100000 + '\n')
+    dst = tmp_path / 'out.jsonl'
+    assert main(['translate', '--backend', 'offline', '--input', str(src), '--output', str(dst)]) == 1
+    rows = [json.loads(x) for x in dst.read_text().splitlines()]
+    assert rows[0]['formula'] == 'F near[lamp]' and rows[0]['id'] == 1
+    assert rows[1]['id'] == 2 and rows[1]['error']['code'] == 'INVALID_INPUT' and rows[1]['instruction'] is None
+    assert rows[2]['error']['code'] == 'INVALID_INPUT'   # nested too deep: one error line, no traceback
+
+
 def test_eval_command_on_a_small_file(tmp_path: Path, capsys: Any) -> None:
     data = tmp_path / 'dev.jsonl'
     data.write_text(json.dumps({'instruction': 'go to the lamp', 'formula': 'F near[lamp]'}) + '\n')

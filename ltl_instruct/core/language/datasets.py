@@ -202,16 +202,29 @@ def read_dataset(path: str | Path, kind: Optional[str] = None) -> DataSet:
     return readers[kind](p)
 
 
+# keys an input line may name its instruction with ("text" as on the node's instruction topic)
+INSTRUCTION_KEYS = ('instruction', 'text')
+
+
 def iter_instructions(path: str | Path) -> Iterator[tuple[int, dict]]:
-    """Lines of a JSONL file of instructions: ``(line number, object)``; bad lines give ``{'error'}``."""
+    """Lines of a JSONL file of instructions: ``(line number, object)``; bad lines give ``{'error'}``.
+
+    The instruction is the line's ``instruction`` (or ``text``) string, returned under
+    ``instruction``; a bad line that is an object keeps its other fields (an ``id``) beside the error.
+    """
     with Path(path).open(encoding='utf-8') as fh:
         for n, line in enumerate(fh, 1):
             if not line.strip():
                 continue
+            obj: object = None
             try:
                 obj = json.loads(line)
-                if not isinstance(obj, dict) or not isinstance(obj.get('instruction'), str):
+                if not isinstance(obj, dict):
                     raise ValueError('each line must be an object with an "instruction" string')
-                yield n, obj
-            except ValueError as e:
-                yield n, {'error': {'code': 'INVALID_INPUT', 'message': f'line {n}: {e}'}}
+                text = next((obj[k] for k in INSTRUCTION_KEYS if isinstance(obj.get(k), str)), None)
+                if text is None:
+                    raise ValueError('each line must be an object with an "instruction" string')
+                yield n, {**obj, 'instruction': text}
+            except (ValueError, RecursionError) as e:   # RecursionError: JSON nested too deep
+                kept = {k: v for k, v in obj.items() if k not in INSTRUCTION_KEYS} if isinstance(obj, dict) else {}
+                yield n, {**kept, 'error': {'code': 'INVALID_INPUT', 'message': f'line {n}: {e}'}}

@@ -81,3 +81,26 @@ def test_reading_that_leaves_a_mention_out_must_be_much_likelier():
     much = Hypothesis(('F', 'near', 's2'), math.log(0.3 * LEAVE_OUT_ODDS * 1.1))
     best, whole = _readings([much, complete], descriptors)[0]
     assert str(best[0]) == 'F near[freezer]' and not whole
+
+
+def test_model_never_overrides_a_count(combined):
+    """The model miscounts nested visits: a reading naming one place three times stays the rules'."""
+    thrice = 'F (near[kitchen] & F (!near[kitchen] & F near[kitchen]))'
+    t = combined.decide((_rules(thrice), None, _model('F near[kitchen]', 0.99, mentions=('kitchen',))),
+                        Policy(override=0.5))
+    assert str(t.formula) == thrice and t.extra['flagged']
+    t = combined.decide((_rules('F near[kitchen]'), None, _model(thrice, 0.99, mentions=('kitchen',))),
+                        Policy(override=0.5))
+    assert str(t.formula) == 'F near[kitchen]' and t.extra['flagged']
+
+
+def test_a_clause_read_as_one_name_is_not_sure(combined):
+    """A name longer than any object's, which the phrase reader could not split, keeps the rules'."""
+    blob = 'dock_next_to_tv_or_one_next_to_shelf'
+    t = combined.decide((_rules(RULES), None, _model(f'F near[{blob}]', 0.99, mentions=(blob,))),
+                        Policy(override=0.5))
+    assert str(t.formula) == RULES and t.extra['flagged']
+    related = 'F near[dock::isnextto(tv)]'
+    t = combined.decide((_rules(RULES), None, _model(related, 0.99, mentions=('dock::isnextto(tv)',))),
+                        Policy(override=0.5))
+    assert str(t.formula) == related   # a thing with its relations is a parsed name

@@ -133,7 +133,8 @@ def test_batch_reads_text_keys_and_keeps_ids_of_bad_lines(tmp_path: Path) -> Non
     assert main(['translate', '--backend', 'offline', '--input', str(src), '--output', str(dst)]) == 1
     rows = [json.loads(x) for x in dst.read_text().splitlines()]
     assert rows[0]['formula'] == 'F near[lamp]' and rows[0]['id'] == 1
-    assert rows[1]['id'] == 2 and rows[1]['error']['code'] == 'INVALID_INPUT' and rows[1]['instruction'] is None
+    assert rows[1]['id'] == 2 and rows[1]['error']['code'] == 'INVALID_INPUT'
+    assert rows[1]['instruction'] is None
     assert rows[2]['error']['code'] == 'INVALID_INPUT'   # nested too deep: one error line, no traceback
 
 

@@ -31,8 +31,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--backend', default='combined', choices=BACKENDS,
                         help='translator backend (default combined: rules and learned model)')
     parser.add_argument('--json', action='store_true', help='print one JSON object')
-    parser.add_argument('--input', help='JSON lines file, one {"instruction": ...} (or {"text": ...}) per line; '
-                                        'other fields (an id) are copied to the output')
+    parser.add_argument('--input', help='JSON lines file, one {"instruction": ...} (or {"text": ...}) '
+                                        'per line; other fields (an id) are copied to the output')
     parser.add_argument('--output', help='JSON lines file to write (default: standard output)')
     parser.add_argument('--interactive', action='store_true', help='verification dialog on the terminal')
     parser.add_argument('--model-path', help='learned backend: trained parser bundle; neural and combined: '

@@ -226,5 +226,6 @@ def iter_instructions(path: str | Path) -> Iterator[tuple[int, dict]]:
                     raise ValueError('each line must be an object with an "instruction" string')
                 yield n, {**obj, 'instruction': text}
             except (ValueError, RecursionError) as e:   # RecursionError: JSON nested too deep
-                kept = {k: v for k, v in obj.items() if k not in INSTRUCTION_KEYS} if isinstance(obj, dict) else {}
+                kept = {k: v for k, v in obj.items() if k not in INSTRUCTION_KEYS} \
+                    if isinstance(obj, dict) else {}
                 yield n, {**kept, 'error': {'code': 'INVALID_INPUT', 'message': f'line {n}: {e}'}}

@@ -27,6 +27,7 @@ from ltl_instruct.core.world.robot import Pose
 DOMAIN_ID = str(random.Random(os.getpid() ^ int(time.time())).randint(120, 229))
 NEAR = 1.0
 TIMEOUT = 5.0   # every bad input gets its typed error within this many seconds
+STALL = 60.0    # a burst fails when no instruction of it ends for this long
 
 
 @pytest.fixture(scope='module')
@@ -199,29 +200,31 @@ def test_nan_odometry_is_reported_and_ignored(graph):
     assert client.wait_terminal(good, timeout=30.0)['status'] == 'planned'
 
 
-def test_empty_map_gives_a_typed_error_then_the_good_map_serves_again(graph):
+def test_a_malformed_map_is_reported_and_the_last_good_map_serves_on(graph):
+    """A malformed map once replaced the world: every instruction failed until a good map came (fuzzing)."""
     g, client, _ = graph
     good_map = client.received.map
     assert good_map is not None
-    client.map_pub.publish(OccupancyGrid())          # an empty map
-    # (a map is large: under load it may take a while to arrive, so ask again until it has)
-    status = _ask_until(client, lambda s: s['status'] == 'failed')
-    assert status['status'] == 'failed' and status['error']['code'] == 'INVALID_INPUT', status
-    assert 'map' in status['error']['message']
-    client.map_pub.publish(good_map)
-    again = _ask_until(client, lambda s: s['status'] == 'planned')
-    assert again['status'] == 'planned', again
+    before = len(_map_rejections(client))
+    bad = OccupancyGrid()
+    bad.info.width, bad.info.height, bad.info.resolution = 10, 10, float('nan')
+    try:
+        for msg in (OccupancyGrid(), bad):                # an empty map, then one with a NaN resolution
+            client.map_pub.publish(msg)
+            got = client.wait_until(lambda: _map_rejections(client)[before:], TIMEOUT + 5.0)
+            assert got and got[-1]['error']['code'] == 'INVALID_INPUT', got
+            assert 'map' in got[-1]['error']['message'] and not got[-1]['terminal']
+            before = len(_map_rejections(client))
+        status = client.wait_terminal(client.send(formula='F near[bed]'), timeout=30.0)
+        assert status['status'] in ('planned', 'satisfied'), status
+    finally:
+        client.map_pub.publish(good_map)
     _alive(g)
 
 
-def _ask_until(client, done, formula='F near[bed]', timeout=20.0):
-    """Send ``formula`` every half second until its terminal status is ``done``; return the last status."""
-    end = time.monotonic() + timeout
-    while True:
-        time.sleep(0.5)
-        status = client.wait_terminal(client.send(formula=formula), timeout=TIMEOUT + 5.0)
-        if status is None or done(status) or time.monotonic() > end:
-            return status
+def _map_rejections(client) -> list:
+    return [s for v in list(client.received.statuses.values()) for s in v
+            if s['status'] == 'input_rejected' and 'map' in s['error']['message']]
 
 
 def test_burst_of_50_instructions_gets_50_terminal_statuses(graph):
@@ -229,9 +232,8 @@ def test_burst_of_50_instructions_gets_50_terminal_statuses(graph):
     kinds = ['F near[fridge]', 'F near[unicorn]', 'F near[sofa] & G !near[sofa]',
              'F (near[tv] & F near[lamp])']
     ids = [client.send(formula=kinds[i % len(kinds)]) for i in range(50)]
-    done = client.wait_until(lambda: all(client.terminal(i) for i in ids) or None, 120.0)
-    missing = [i for i in ids if client.terminal(i) is None]
-    assert done and not missing, missing
+    missing = _wait_all_ended(client, ids)
+    assert not missing, missing
     for i in ids:
         terminals = client.terminals(i)
         assert len(terminals) == 1, terminals
@@ -243,6 +245,25 @@ def test_burst_of_50_instructions_gets_50_terminal_statuses(graph):
     assert not wrong, wrong[:3]
     assert outcomes.count('failed') == 25
     _alive(g)
+
+
+def _wait_all_ended(client, ids, stall=STALL):
+    """Wait until every id has its terminal planning status; return those that have none.
+
+    Instructions are planned one at a time, each FMT* plan taking 0.5 s on a quiet machine and
+    5-9 s under a load of 18 (a burst of 50 once needed 117 s there): so the wait fails only when
+    no instruction ends for ``stall`` seconds (one is lost, or the graph has stalled), not after a
+    fixed total time.
+    """
+    ended = -1
+    while True:
+        now = sum(1 for i in ids if client.terminal(i))
+        if now == len(ids):
+            return []
+        if now == ended:
+            return [i for i in ids if client.terminal(i) is None]
+        ended = now
+        client.wait_until(lambda: sum(1 for i in ids if client.terminal(i)) > now or None, stall)
 
 
 def test_late_subscriber_gets_latched_spec_referent_map_and_plan(graph):

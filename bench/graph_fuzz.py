@@ -444,8 +444,15 @@ class GraphFuzzer:
         self.segment_status: list[dict[str, Any]] = []
         self._lock = threading.Lock()
         self._sent_at: dict[str, float] = {}
-        client.node.create_subscription(String, 'fmt_planner/status', self._on_segment_status,
-                                        reliable_qos(256))
+        self._sub = client.node.create_subscription(String, 'fmt_planner/status', self._on_segment_status,
+                                                    reliable_qos(256))
+
+    def close(self) -> None:
+        """Destroy the publishers and the subscription made on the client's node."""
+        for pub in self._pubs.values():
+            self.client.node.destroy_publisher(pub)
+        self._pubs.clear()
+        self.client.node.destroy_subscription(self._sub)
 
     def _on_segment_status(self, msg: Any) -> None:
         try:

@@ -439,3 +439,45 @@ def test_tpsm_cloud_marks_goal_and_avoid_regions(graph):
         assert np.all(lamp.distance(pts[fields['value'] == -1.0], dims=2) <= NEAR + 1e-6)
     finally:
         client.node.destroy_subscription(sub)
+
+
+def test_malformed_messages_on_every_topic_lose_no_instruction(graph):
+    """Issue 21's graph target, scaled down (``make fuzz`` runs 1,000 among 100, bench.graph_fuzz)."""
+    from bench.graph_fuzz import GraphFuzzer
+    g, client, _ = graph
+    fuzzer = GraphFuzzer(client, seed=21)
+    try:
+        fuzzer.prepare()
+        report = fuzzer.run(bad=80, good=4, good_map=client.received.map)
+    finally:
+        fuzzer.close()
+    report.dead = g.dead()
+    assert report.target_met(), report.lines()
+    assert len(report.bad_sent) >= 12, report.bad_sent   # most topics drawn, instructions most
+
+
+def test_a_formula_too_large_ends_within_its_budget_and_leaves_no_trace(graph):
+    """The formulas that once ran for minutes end (typed) within the compilation budget plus 1 s."""
+    from ltl_instruct.core.automaton.dfa import DEFAULT_TIME_LIMIT_S
+    g, client, _ = graph
+    running = client.send(formula='F (near[whiteboard] & F near[stove])')
+    assert client.wait_terminal(running, timeout=30.0)['status'] == 'planned'
+    chain = 'F (' + ' <-> '.join(f'near[a{i}]' for i in range(14)) + ')'    # 2^14 terms written out
+    until = ' U '.join(f'near[a{i}]' for i in range(20))                     # its automaton takes minutes
+    for formula, codes in ((chain, {'LIMIT_EXCEEDED', 'TIMEOUT'}), (until, {'TIMEOUT', 'LIMIT_EXCEEDED'})):
+        t0 = time.monotonic()
+        iid = client.send(formula=formula)
+        status = client.wait_terminal(iid, timeout=DEFAULT_TIME_LIMIT_S + 1.0)
+        assert time.monotonic() - t0 <= DEFAULT_TIME_LIMIT_S + 1.0
+        assert status['status'] == 'failed' and status['error']['code'] in codes, status
+        assert [s['status'] for s in client.received.statuses[iid]] == ['received', 'failed']
+    # the running task went on as if they had not been sent; the next one replaces it as usual
+    ended = client.terminal(running, 'execution')
+    assert ended is None or ended['status'] == 'satisfied', ended
+    nxt = client.send(formula='F near[fridge]')
+    planned = client.wait_terminal(nxt, timeout=30.0)
+    assert planned['status'] in ('planned', 'satisfied'), planned
+    assert [s['status'] for s in client.received.statuses[nxt]][:2] == ['received', planned['status']]
+    ended = client.wait_terminal(running, timeout=TIMEOUT, phase='execution')
+    assert ended['status'] == 'satisfied' or ended.get('superseded_by') == nxt, ended
+    _alive(g)

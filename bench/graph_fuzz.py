@@ -586,6 +586,8 @@ def main(argv: list[str]) -> int:
     parser.add_argument('--bad', type=int, default=1000, help='malformed messages (default 1000)')
     parser.add_argument('--good', type=int, default=100, help='valid instructions (default 100)')
     parser.add_argument('--seed', type=int, default=0)
+    parser.add_argument('--segment-timeout', type=float, default=30.0,
+                        help='task_progression\'s segment_timeout [s] (default 30)')
     parser.add_argument('--backend', default='combined',
                         help='the translator node\'s backend (default combined)')
     args = parser.parse_args(argv)
@@ -598,7 +600,11 @@ def main(argv: list[str]) -> int:
 
     logs = Path(tempfile.mkdtemp(prefix='bench_graph_fuzz_'))
     # the simulator's camera is off, the grounder's subscriptions to it are on: only malformed frames come
-    overrides = {'sim_world': {'camera_rate_hz': 0.0}, 'ltl_translator': {'backend': args.backend}}
+    # a segment may wait 30 s for the planner (10 s by default): under a load of 40-80 from other jobs on this
+    # 2-core machine, one FMT* answer took over 10 s, and valid instructions failed with TIMEOUT, which says
+    # nothing about malformed input; a stall still shows (as a TIMEOUT after 30 s)
+    overrides = {'sim_world': {'camera_rate_hz': 0.0}, 'ltl_translator': {'backend': args.backend},
+                 'task_progression': {'segment_timeout': args.segment_timeout}}
     restarts: list[str] = []
     graph = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs,
                       restart=RestartPolicy(), say=restarts.append).start()

@@ -21,6 +21,7 @@ import argparse
 import json
 import os
 import random
+import signal
 import sys
 import tempfile
 import threading
@@ -598,6 +599,8 @@ def main(argv: list[str]) -> int:
     from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, RestartPolicy, default_params_file
     from ltl_instruct.nodes.client import GraphClient
 
+    # killed (a time limit's SIGTERM): stop the graph on the way out, not leave its nodes running
+    signal.signal(signal.SIGTERM, lambda signum, frame: sys.exit(1))
     logs = Path(tempfile.mkdtemp(prefix='bench_graph_fuzz_'))
     # the simulator's camera is off, the grounder's subscriptions to it are on: only malformed frames come
     # a segment may wait 30 s for the planner (10 s by default): under a load of 40-80 from other jobs on this

@@ -445,6 +445,8 @@ class GraphFuzzer:
         self.segment_status: list[dict[str, Any]] = []
         self._lock = threading.Lock()
         self._sent_at: dict[str, float] = {}
+        self._good: set[str] = set()
+        self._before: set[str] = set()
         self._sub = client.node.create_subscription(String, 'fmt_planner/status', self._on_segment_status,
                                                     reliable_qos(256))
 
@@ -475,10 +477,20 @@ class GraphFuzzer:
         from ltl_instruct import conversions as conv
         return conv.stamp_from_key(next(self._stamps))
 
+    def _mine(self, iid: str) -> bool:
+        """Tell whether ``iid`` is an instruction of this run: not forged, not one a client sent before it.
+
+        (The ids of the valid ones are known; a malformed one has its own id, or gets one from the
+        translator or task_progression. An instruction of an earlier test may still end meanwhile.)
+        """
+        if iid in self._good:
+            return True
+        return iid not in self._before and not iid.startswith(('junk-', 'client-'))
+
     def _ended(self) -> int:
-        """Ids (but forged ones) with a terminal planning status."""
+        """Instructions of this run with a terminal planning status."""
         statuses = self.client.received.statuses
-        return sum(1 for iid in list(statuses) if not iid.startswith('junk-') and self.client.terminal(iid))
+        return sum(1 for iid in list(statuses) if self._mine(iid) and self.client.terminal(iid))
 
     def _wait_window(self, expected: int, timeout: float = 120.0) -> None:
         self.client.wait_until(lambda: expected - self._ended() <= self.window or None, timeout)
@@ -504,6 +516,8 @@ class GraphFuzzer:
         client = self.client
         t0 = time.monotonic()
         good_ids: list[str] = []
+        self._good = set()
+        self._before = set(client.received.statuses)
         bad_ids_expected = 0
         cancels = planner_refusals = 0
         segment_before = len(self.segment_status)
@@ -513,6 +527,7 @@ class GraphFuzzer:
             iid = client.send(formula=GOOD[k % len(GOOD)]) if GOOD[k % len(GOOD)].startswith(('F ', 'G ')) \
                 else client.send(text=GOOD[k % len(GOOD)])
             good_ids.append(iid)
+            self._good.add(iid)
             report.good_sent += 1
             map_sent = False
             for _ in range(per_good[k]):
@@ -561,7 +576,7 @@ class GraphFuzzer:
         client = self.client
         good = set(good_ids)
         for iid, statuses in list(client.received.statuses.items()):
-            if iid.startswith('junk-'):
+            if not self._mine(iid):
                 continue
             ends = client.terminals(iid)
             if not ends:

@@ -452,7 +452,7 @@ def test_malformed_messages_on_every_topic_lose_no_instruction(graph):
     finally:
         fuzzer.close()
     report.dead = g.dead()
-    assert report.target_met(), report.lines()
+    assert report.target_met(), '\n'.join(report.lines())
     assert len(report.bad_sent) >= 12, report.bad_sent   # most topics drawn, instructions most
 
 

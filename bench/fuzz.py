@@ -426,12 +426,19 @@ def run_all(tally: Tally, examples: int, nodes: Nodes, deadline: float) -> None:
     folder = Path(tempfile.mkdtemp(prefix='fuzz_scene_'))
 
     def target(name: str, strategy: Any, run: Callable[[Any], Any], case: Callable[[Any], Any] = lambda x: x):
+        if time.monotonic() >= deadline:
+            return
+        broken = len(tally.tracebacks) + len(tally.hangs)
+
         @fuzz
         @given(strategy)
         def go(value: Any) -> None:
             if time.monotonic() < deadline:
                 check(tally, name, lambda: run(value), case(value))
         go()
+        now_broken = len(tally.tracebacks) + len(tally.hangs) - broken
+        print(f'{name}: {tally.inputs.get(name, 0)} inputs, {now_broken} broke it, '
+              f'slowest {tally.slowest.get(name, 0.0):.2f} s', flush=True)
 
     def scene(doc: Any) -> None:
         path = folder / 's.yaml'

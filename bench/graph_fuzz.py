@@ -602,8 +602,8 @@ def main(argv: list[str]) -> int:
     parser.add_argument('--bad', type=int, default=1000, help='malformed messages (default 1000)')
     parser.add_argument('--good', type=int, default=100, help='valid instructions (default 100)')
     parser.add_argument('--seed', type=int, default=0)
-    parser.add_argument('--segment-timeout', type=float, default=30.0,
-                        help='task_progression\'s segment_timeout [s] (default 30)')
+    parser.add_argument('--segment-timeout', type=float, default=60.0,
+                        help='task_progression\'s segment_timeout [s] (default 60; FMT* gets a third)')
     parser.add_argument('--backend', default='combined',
                         help='the translator node\'s backend (default combined)')
     args = parser.parse_args(argv)
@@ -618,11 +618,13 @@ def main(argv: list[str]) -> int:
     signal.signal(signal.SIGTERM, lambda signum, frame: sys.exit(1))
     logs = Path(tempfile.mkdtemp(prefix='bench_graph_fuzz_'))
     # the simulator's camera is off, the grounder's subscriptions to it are on: only malformed frames come
-    # a segment may wait 30 s for the planner (10 s by default): under a load of 40-80 from other jobs on this
-    # 2-core machine, one FMT* answer took over 10 s, and valid instructions failed with TIMEOUT, which says
-    # nothing about malformed input; a stall still shows (as a TIMEOUT after 30 s)
+    # FMT* may take 20 s per segment (2 s by default) and a segment may wait 60 s for it (10 s): under a load
+    # of 40-80 from other jobs on this 2-core machine, FMT* drew too few samples in 2 s and answers took over
+    # 10 s, and valid instructions failed with TIMEOUT, which says nothing about malformed input (a stall
+    # still shows, as a TIMEOUT); on a quiet machine a segment takes well under a second either way
     overrides = {'sim_world': {'camera_rate_hz': 0.0}, 'ltl_translator': {'backend': args.backend},
-                 'task_progression': {'segment_timeout': args.segment_timeout}}
+                 'task_progression': {'segment_timeout': args.segment_timeout},
+                 'fmt_planner': {'time_limit': args.segment_timeout / 3}}
     restarts: list[str] = []
     graph = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs,
                       restart=RestartPolicy(), say=restarts.append).start()

@@ -633,7 +633,7 @@ def main(argv: list[str]) -> int:
         if not client.wait_for_graph(timeout=90.0, need_sim=True):
             print(f'graph did not come up; logs in {logs}')
             return 1
-        # connected is not ready: the translator serves nothing before its backend has loaded (minutes, loaded)
+        # connected is not ready: the translator serves nothing before its backend has loaded
         client.wait_terminal(client.send(formula='F near[unicorn]'), timeout=600.0)
         fuzzer = GraphFuzzer(client, seed=args.seed)
         fuzzer.prepare()

@@ -10,7 +10,7 @@ STAMP  := $(VENV)/.installed
 APT_PACKAGES := libusb-1.0-0 libgomp1 mona
 PYTEST_FLAGS ?= -p no:dash -q
 
-.PHONY: all setup apt venv demo test bench lint clean
+.PHONY: all setup apt venv demo test bench fuzz lint clean
 
 all: test
 
@@ -48,6 +48,12 @@ test: apt $(STAMP)
 
 bench: apt $(STAMP)
 	$(PY) -m bench
+
+# issue 21: hypothesis-generated inputs against every entry point (about 10 min), then
+# 1,000 malformed messages among 100 valid instructions through the running graph
+fuzz: apt $(STAMP)
+	$(PY) -m bench.fuzz
+	$(PY) -m bench.graph_fuzz
 
 lint: $(STAMP)
 	$(PY) -m flake8 ltl_instruct test bench

@@ -27,6 +27,7 @@ from ltl_instruct.core.world.robot import Pose
 DOMAIN_ID = str(random.Random(os.getpid() ^ int(time.time())).randint(120, 229))
 NEAR = 1.0
 TIMEOUT = 5.0   # every bad input gets its typed error within this many seconds
+STALL = 60.0    # a burst fails when no instruction of it ends for this long
 
 
 @pytest.fixture(scope='module')
@@ -38,11 +39,18 @@ def graph(tmp_path_factory):
     logs = tmp_path_factory.mktemp('node_logs')
     overrides = {'sim_world': {'time_scale': 8.0, 'max_speed': 1.5, 'camera_rate_hz': 0.0},
                  'referent_grounder': {'use_camera': False},
-                 'task_progression': {'near_threshold': NEAR}}
+                 # under a load of 40-80 from other jobs, at nice 10, FMT* drew too few samples in its 2 s and
+                 # answers took over 10 s: valid instructions failed with TIMEOUT (a lost request still shows)
+                 'task_progression': {'near_threshold': NEAR, 'segment_timeout': 30.0},
+                 'fmt_planner': {'time_limit': 10.0}}
     g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
     client = GraphClient('test_client', record_odom=True)
     try:
         assert client.wait_for_graph(timeout=60.0, need_sim=True), _logs(logs, g)
+        # connected is not ready: the translator serves nothing before its backend (torch, the model) has
+        # loaded, which took over 60 s under that load and was charged to the first tests' budgets
+        warm = client.wait_terminal(client.send(formula='F near[unicorn]'), timeout=240.0)
+        assert warm['status'] == 'failed', warm
         yield g, client, logs
     finally:
         client.close()
@@ -199,29 +207,31 @@ def test_nan_odometry_is_reported_and_ignored(graph):
     assert client.wait_terminal(good, timeout=30.0)['status'] == 'planned'
 
 
-def test_empty_map_gives_a_typed_error_then_the_good_map_serves_again(graph):
+def test_a_malformed_map_is_reported_and_the_last_good_map_serves_on(graph):
+    """A malformed map once replaced the world: every instruction failed until a good map came (fuzzing)."""
     g, client, _ = graph
     good_map = client.received.map
     assert good_map is not None
-    client.map_pub.publish(OccupancyGrid())          # an empty map
-    # (a map is large: under load it may take a while to arrive, so ask again until it has)
-    status = _ask_until(client, lambda s: s['status'] == 'failed')
-    assert status['status'] == 'failed' and status['error']['code'] == 'INVALID_INPUT', status
-    assert 'map' in status['error']['message']
-    client.map_pub.publish(good_map)
-    again = _ask_until(client, lambda s: s['status'] == 'planned')
-    assert again['status'] == 'planned', again
+    before = len(_map_rejections(client))
+    bad = OccupancyGrid()
+    bad.info.width, bad.info.height, bad.info.resolution = 10, 10, float('nan')
+    try:
+        for msg in (OccupancyGrid(), bad):                # an empty map, then one with a NaN resolution
+            client.map_pub.publish(msg)
+            got = client.wait_until(lambda: _map_rejections(client)[before:], TIMEOUT + 5.0)
+            assert got and got[-1]['error']['code'] == 'INVALID_INPUT', got
+            assert 'map' in got[-1]['error']['message'] and not got[-1]['terminal']
+            before = len(_map_rejections(client))
+        status = client.wait_terminal(client.send(formula='F near[bed]'), timeout=30.0)
+        assert status['status'] in ('planned', 'satisfied'), status
+    finally:
+        client.map_pub.publish(good_map)
     _alive(g)
 
 
-def _ask_until(client, done, formula='F near[bed]', timeout=20.0):
-    """Send ``formula`` every half second until its terminal status is ``done``; return the last status."""
-    end = time.monotonic() + timeout
-    while True:
-        time.sleep(0.5)
-        status = client.wait_terminal(client.send(formula=formula), timeout=TIMEOUT + 5.0)
-        if status is None or done(status) or time.monotonic() > end:
-            return status
+def _map_rejections(client) -> list:
+    return [s for v in list(client.received.statuses.values()) for s in v
+            if s['status'] == 'input_rejected' and 'map' in s['error']['message']]
 
 
 def test_burst_of_50_instructions_gets_50_terminal_statuses(graph):
@@ -229,9 +239,8 @@ def test_burst_of_50_instructions_gets_50_terminal_statuses(graph):
     kinds = ['F near[fridge]', 'F near[unicorn]', 'F near[sofa] & G !near[sofa]',
              'F (near[tv] & F near[lamp])']
     ids = [client.send(formula=kinds[i % len(kinds)]) for i in range(50)]
-    done = client.wait_until(lambda: all(client.terminal(i) for i in ids) or None, 120.0)
-    missing = [i for i in ids if client.terminal(i) is None]
-    assert done and not missing, missing
+    missing = _wait_all_ended(client, ids)
+    assert not missing, missing
     for i in ids:
         terminals = client.terminals(i)
         assert len(terminals) == 1, terminals
@@ -243,6 +252,25 @@ def test_burst_of_50_instructions_gets_50_terminal_statuses(graph):
     assert not wrong, wrong[:3]
     assert outcomes.count('failed') == 25
     _alive(g)
+
+
+def _wait_all_ended(client, ids, stall=STALL):
+    """Wait until every id has its terminal planning status; return those that have none.
+
+    Instructions are planned one at a time, each FMT* plan taking 0.5 s on a quiet machine and
+    5-9 s under a load of 18 (a burst of 50 once needed 117 s there): so the wait fails only when
+    no instruction ends for ``stall`` seconds (one is lost, or the graph has stalled), not after a
+    fixed total time.
+    """
+    ended = -1
+    while True:
+        now = sum(1 for i in ids if client.terminal(i))
+        if now == len(ids):
+            return []
+        if now == ended:
+            return [i for i in ids if client.terminal(i) is None]
+        ended = now
+        client.wait_until(lambda: sum(1 for i in ids if client.terminal(i)) > now or None, stall)
 
 
 def test_late_subscriber_gets_latched_spec_referent_map_and_plan(graph):
@@ -418,3 +446,45 @@ def test_tpsm_cloud_marks_goal_and_avoid_regions(graph):
         assert np.all(lamp.distance(pts[fields['value'] == -1.0], dims=2) <= NEAR + 1e-6)
     finally:
         client.node.destroy_subscription(sub)
+
+
+def test_malformed_messages_on_every_topic_lose_no_instruction(graph):
+    """Issue 21's graph target, scaled down (``make fuzz`` runs 1,000 among 100, bench.graph_fuzz)."""
+    from bench.graph_fuzz import GraphFuzzer
+    g, client, _ = graph
+    fuzzer = GraphFuzzer(client, seed=21)
+    try:
+        fuzzer.prepare()
+        report = fuzzer.run(bad=80, good=4, good_map=client.received.map)
+    finally:
+        fuzzer.close()
+    report.dead = g.dead()
+    assert report.target_met(), '\n'.join(report.lines())
+    assert len(report.bad_sent) >= 12, report.bad_sent   # most topics drawn, instructions most
+
+
+def test_a_formula_too_large_ends_within_its_budget_and_leaves_no_trace(graph):
+    """The formulas that once ran for minutes end (typed) within the compilation budget plus 1 s."""
+    from ltl_instruct.core.automaton.dfa import DEFAULT_TIME_LIMIT_S
+    g, client, _ = graph
+    running = client.send(formula='F (near[whiteboard] & F near[stove])')
+    assert client.wait_terminal(running, timeout=30.0)['status'] == 'planned'
+    chain = 'F (' + ' <-> '.join(f'near[a{i}]' for i in range(14)) + ')'    # 2^14 terms written out
+    until = ' U '.join(f'near[a{i}]' for i in range(20))                     # its automaton takes minutes
+    for formula, codes in ((chain, {'LIMIT_EXCEEDED', 'TIMEOUT'}), (until, {'TIMEOUT', 'LIMIT_EXCEEDED'})):
+        t0 = time.monotonic()
+        iid = client.send(formula=formula)
+        status = client.wait_terminal(iid, timeout=DEFAULT_TIME_LIMIT_S + 1.0)
+        assert time.monotonic() - t0 <= DEFAULT_TIME_LIMIT_S + 1.0
+        assert status['status'] == 'failed' and status['error']['code'] in codes, status
+        assert [s['status'] for s in client.received.statuses[iid]] == ['received', 'failed']
+    # the running task went on as if they had not been sent; the next one replaces it as usual
+    ended = client.terminal(running, 'execution')
+    assert ended is None or ended['status'] == 'satisfied', ended
+    nxt = client.send(formula='F near[fridge]')
+    planned = client.wait_terminal(nxt, timeout=30.0)
+    assert planned['status'] in ('planned', 'satisfied'), planned
+    assert [s['status'] for s in client.received.statuses[nxt]][:2] == ['received', planned['status']]
+    ended = client.wait_terminal(running, timeout=TIMEOUT, phase='execution')
+    assert ended['status'] == 'satisfied' or ended.get('superseded_by') == nxt, ended
+    _alive(g)

@@ -119,6 +119,16 @@ def test_update_along_sees_a_region_between_two_far_apart_poses():
         fast.update_along([0, 0, 0], [np.nan, 0, 0])
 
 
+@pytest.mark.parametrize('far', [1e9, 1e308, -1e308])
+def test_a_move_of_absurd_length_is_refused_and_the_monitor_goes_on(far):
+    """Odometry at 1e9 m once stalled task_progression: the move was read every 5 cm (1e308: an overflow)."""
+    m = _monitor('F near[sofa]')
+    m.update([0.0, -2.0, 0.0])
+    with pytest.raises(InvalidInputError, match='longer than'):
+        m.update_along([0.0, -2.0, 0.0], [far, 0.0, 0.0])
+    assert m.update_along([0.0, -2.0, 0.0], [4.0, 2.0, 0.0]).verdict is Verdict.SATISFIED
+
+
 # a plan that turns at the sofa: (0, -3) -> (2, -1.15) -> (4, -3), densified every 0.1 m
 _LEGS = [np.linspace([0.0, -3.0, 0.0], [2.0, -1.15, 0.0], 28),
          np.linspace([2.0, -1.15, 0.0], [4.0, -3.0, 0.0], 28)[1:]]

@@ -28,6 +28,10 @@ from ltl_instruct.core.grounding.rsm import Instance, ReferentMap
 from ltl_instruct.core.spec import Atom
 from ltl_instruct.core.world import near
 
+# the longest move read between two poses [m]: a longer one (odometry of 1e9 m) is refused, since
+# reading it every few centimetres would take the node's time and memory without end
+MAX_MOVE_M = 1000.0
+
 
 class Verdict(str, enum.Enum):
     """Where the task stands during execution."""
@@ -179,13 +183,17 @@ class ExecutionMonitor:
         Raises
         ------
         InvalidInputError
-            On non-finite positions or ``spacing`` <= 0.
+            On non-finite positions, ``spacing`` <= 0, or a move longer than :data:`MAX_MOVE_M`.
         """
         corners = [np.asarray(p, dtype=float) for p in (start, *via, end)]
         if any(c.shape != (3,) or not np.all(np.isfinite(c)) for c in corners):
             raise InvalidInputError('positions must be 3 finite numbers')
         if not spacing > 0:
             raise InvalidInputError(f'spacing must be positive, got {spacing}')
+        length = sum(float(np.linalg.norm(b - a)) for a, b in zip(corners, corners[1:]))
+        if not length <= MAX_MOVE_M:
+            raise InvalidInputError(f'a move of {length:.3g} m between two poses is longer than '
+                                    f'{MAX_MOVE_M:g} m: the pose is not read')
         events = list(events)
         points = [a + (b - a) * (k / n) for a, b in zip(corners, corners[1:])
                   for n in [max(1, int(np.ceil(float(np.linalg.norm(b - a)) / spacing)))]

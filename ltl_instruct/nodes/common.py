@@ -15,6 +15,7 @@ validated (a bad value stops the node at start with a clear message, never later
 from __future__ import annotations
 
 import math
+import os
 import sys
 from dataclasses import dataclass
 from typing import Any, Callable, Optional, Sequence
@@ -129,10 +130,13 @@ def run_node(make_node: Callable[[], Node], args: Optional[Sequence[str]] = None
              threads: int = 2) -> int:
     """Run the node idiom: init, build, spin (multi-threaded), clean shutdown on Ctrl-C or SIGTERM.
 
-    Returns the process exit status (2 when the parameters are invalid).
+    The process then ends at once with its exit status (2 when the parameters are invalid,
+    0 after a signal): see :func:`_end_process`. A signal that comes while the node is still
+    starting, or while the executor builds its wait set, is a stop too, not a crash.
     """
     rclpy.init(args=list(args) if args is not None else None)
     node: Optional[Node] = None
+    status = 0
     try:
         node = make_node()
         executor = MultiThreadedExecutor(num_threads=threads)
@@ -140,9 +144,14 @@ def run_node(make_node: Callable[[], Node], args: Optional[Sequence[str]] = None
         executor.spin()
     except InvalidInputError as e:
         print(f'error [{e.code.value}]: {e.message}', file=sys.stderr)
-        return 2
+        status = 2
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    except Exception:  # noqa: BLE001 - re-raised unless a signal shut the context down under it
+        # rclpy raises RCLError ("the given context is not valid") from a wait set built as the signal
+        # came, and the executor's constructor fails on a context shut down while the node was starting
+        if rclpy.ok():
+            raise
     finally:
         if node is not None:
             close = getattr(node, 'close', None)
@@ -150,4 +159,20 @@ def run_node(make_node: Callable[[], Node], args: Optional[Sequence[str]] = None
                 close()
             node.destroy_node()
         rclpy.try_shutdown()
-    return 0
+    _end_process(status)
+    return status
+
+
+def _end_process(status: int) -> None:
+    """End the process now, without waiting for threads still at work.
+
+    A worker in the middle of a long computation (an FMT* solve with a long time limit, an
+    automaton compilation running to its deadline) or an executor callback still running (a
+    camera frame being rendered) would hold the stop up for as long as it runs, and a thread
+    returning from OMPL into a finalizing interpreter aborted it (SIGABRT). Their work is not
+    lost: a restarted node gets it again from its peers. The node and the ROS context are
+    already shut down here.
+    """
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(status)

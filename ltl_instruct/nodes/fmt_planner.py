@@ -6,8 +6,9 @@ Reads the static map (``map``, nav_msgs/OccupancyGrid, for a ground robot; or
 ``goal`` and ``allowed`` guards) with a ``plan_segment`` (nav_msgs/Path whose header
 stamp echoes the request's ``stamp``) and a JSON verdict on ``~/status`` (``ok`` or a
 typed error: ``START_OCCUPIED``, ``GOAL_OCCUPIED``, ``NO_VALID_PATH``, ``TIMEOUT``,
-``INVALID_INPUT`` for an empty or malformed map...). A path is published only on
-success. Requests are served one at a time, in order, in a worker thread.
+``INVALID_INPUT`` when no valid map has come...). A malformed map is logged and
+ignored: the last good one stays. A path is published only on success. Requests
+are served one at a time, in order, in a worker thread.
 
 Requests are idempotent by ``request_id``: the sender may repeat a request it has no
 answer to (a message sent before discovery matched the two nodes is lost); a repeat
@@ -82,7 +83,7 @@ class FmtPlannerNode(Node):
 
     # ------------------------------------------------------------------ maps
     def on_map(self, msg: OccupancyGrid) -> None:
-        """Use a new 2D occupancy grid (an empty or malformed one is rejected and remembered)."""
+        """Use a new 2D occupancy grid (an empty or malformed one is rejected; the last good one stays)."""
         try:
             world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
         except LtlInstructError as e:
@@ -104,12 +105,15 @@ class FmtPlannerNode(Node):
         self.get_logger().info(f'map_cloud: {msg.width * msg.height} obstacle points')
 
     def _set_world(self, dims: int, world: Any, error: Optional[LtlInstructError]) -> None:
+        """Use a new world; a rejected map is ignored, but is the error as long as no good one came."""
         with self._lock:
-            self._worlds[dims] = (world, error or InvalidInputError('no map'))
+            if world is not None or self._worlds[dims][0] is None:
+                self._worlds[dims] = (world, error or InvalidInputError('no map'))
             self._received.add(dims)
             self._map_come.notify_all()
         if error is not None:
-            self.get_logger().warning(f'map rejected: [{error.code.value}] {error.message}')
+            self.get_logger().warning(f'map rejected (the last good one stays): '
+                                      f'[{error.code.value}] {error.message}')
 
     # ------------------------------------------------------------------ requests
     def on_plan_request(self, msg: String) -> None:

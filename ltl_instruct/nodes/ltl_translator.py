@@ -148,10 +148,10 @@ class LtlTranslatorNode(Node):
 
     # ------------------------------------------------------------------ work
     def close(self) -> None:
-        """Stop the worker thread and wait for it (a model still loading finishes first)."""
+        """Stop the worker thread (one still translating or loading a model is left: the process ends)."""
         self._closing.set()
         self._jobs.put(None)
-        self._worker.join(timeout=10.0)
+        self._worker.join(timeout=0.5)
 
     def _work(self) -> None:
         # build the translator before the first instruction comes (imports, tables, models),

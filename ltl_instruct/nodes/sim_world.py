@@ -148,8 +148,8 @@ class SimWorldNode(Node):
             if skill not in ('pick', 'release') or not isinstance(req.get('args'), list):
                 raise ValueError(f'bad skill request {skill!r}')
             stamp = None if req.get('plan_stamp') is None else int(req['plan_stamp'])
-        except (LtlInstructError, KeyError, ValueError, TypeError) as e:
-            self.get_logger().warning(f'skill request rejected: {e}')
+        except (LtlInstructError, KeyError, ValueError, TypeError, OverflowError) as e:   # int(Infinity)
+            self.get_logger().warning(f'skill request rejected: {e!r}')
             return
         if stamp is None or stamp == self._plan_key:
             self._queue(index, req)

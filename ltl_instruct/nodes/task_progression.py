@@ -302,7 +302,7 @@ class TaskProgressionNode(Node):
         with self._lock:
             active = self._active
             if active is not None and active.iid == iid and not active.finished:
-                if int(data.get('revision', 0)) > active.rmap_revision and data.get('ok', False):
+                if _revision(data) > active.rmap_revision and data.get('ok', False):
                     self._jobs.put(('replan', iid, data, 'the referent map changed'))
                 return
             if self._memory.ended(iid) not in (None, PLANNED) or self._memory.ended(iid, EXECUTION):
@@ -346,11 +346,12 @@ class TaskProgressionNode(Node):
                 self.get_logger().info(f'{iid}: cancel noted; it will end when it comes')
 
     def on_map(self, msg: OccupancyGrid) -> None:
-        """Keep the 2D world the plans are checked against (a bad map is remembered as the error)."""
+        """Keep the 2D world the plans are checked against (a malformed map is reported and ignored)."""
         try:
             world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
         except LtlInstructError as e:
-            world, self._world_error = None, e
+            self._reject_map(e)
+            return
         self._set_world(world)
 
     def _set_world(self, world: Any) -> None:
@@ -359,13 +360,27 @@ class TaskProgressionNode(Node):
             self._map_received = True
             self._map_come.notify_all()
 
+    def _reject_map(self, error: LtlInstructError) -> None:
+        """Report a malformed map (``input_rejected``); the last good one stays.
+
+        Until a good map has come, this one's error is why nothing can be planned.
+        """
+        with self._lock:
+            if self._world is None:
+                self._world_error = error
+            self._map_received = True
+            self._map_come.notify_all()
+            iid = self._active.iid if self._active is not None else NO_INSTRUCTION
+        self.publish_status(iid, 'input_rejected', False, phase='input', error=error)
+
     def on_map_cloud(self, msg: PointCloud2) -> None:
-        """Keep the 3D world of a drone."""
+        """Keep the 3D world of a drone (a malformed cloud is reported and ignored)."""
         try:
             world = conv.planning_world_from_cloud(msg, self.params['cloud_voxel'],
                                                    self.params['robot_radius'], self._bounds)
         except LtlInstructError as e:
-            world, self._world_error = None, e
+            self._reject_map(e)
+            return
         self._set_world(world)
 
     def on_odom(self, msg: Odometry) -> None:
@@ -562,7 +577,7 @@ class TaskProgressionNode(Node):
         if p.resume is not None:   # planned by an earlier run of this node: on from the last state heard
             state, mode = _resume_state(p.resume, automaton), 'resume'
         self._plan_and_publish(iid, automaton, rmap, start, state, timing,
-                               int(rdata.get('revision', 0)), replans=0, mode=mode)
+                               _revision(rdata), replans=0, mode=mode)
 
     def _replan(self, iid: str, rdata: Optional[dict[str, Any]], reason: str) -> None:
         with self._lock:
@@ -578,7 +593,7 @@ class TaskProgressionNode(Node):
             rmap, revision = active.referent_map, active.rmap_revision
             if rdata is not None:
                 rmap = ReferentMap.from_dict(rdata.get('referent_map') or {})
-                revision = int(rdata.get('revision', revision))
+                revision = _revision(rdata, revision)
             state = active.monitor.state
             replans = active.replans + 1
         if err is not None:
@@ -769,13 +784,22 @@ def _resume_state(resume: dict[str, Any], automaton: Automaton) -> int:
     return state if valid else automaton.initial
 
 
-def _error_from_dict(err: dict[str, Any], default: ErrorCode) -> LtlInstructError:
+def _error_from_dict(err: Any, default: ErrorCode) -> LtlInstructError:
+    """Return the error a peer's payload describes; anything malformed in it falls back to ``default``."""
+    if not isinstance(err, dict):
+        err = {}
     try:
         code = ErrorCode(err.get('code', default.value))
-    except ValueError:
+    except (ValueError, TypeError):
         code = default
     return LtlInstructError(str(err.get('message', code.value))[:2000], code,
                             details=err.get('details') if isinstance(err.get('details'), dict) else None)
+
+
+def _revision(data: dict[str, Any], default: int = 0) -> int:
+    """Return the ``revision`` of a referent map payload (``default`` when it is not a whole number)."""
+    value = data.get('revision', default)
+    return value if isinstance(value, int) and not isinstance(value, bool) else default
 
 
 def main(args: Optional[list[str]] = None) -> int:

@@ -1,0 +1,46 @@
+"""Inputs that once broke a node (found by ``bench.fuzz`` and ``bench.graph_fuzz``), replayed.
+
+Each line of ``regressions/fuzz_found.jsonl`` names a target (a topic, ``camera frame``,
+``formula``, ``english`` or ``scene``) and the input; it is handed to the real node callbacks
+built in this process (no DDS traffic), as ``bench.fuzz`` does. It must return or raise a
+typed error, and a task spec must still end with one terminal status.
+"""
+from __future__ import annotations
+
+import json
+import os
+import random
+from pathlib import Path
+
+import pytest
+
+from ltl_instruct.core.errors import LtlInstructError
+
+FOUND = Path(__file__).parent / 'regressions' / 'fuzz_found.jsonl'
+CASES = [json.loads(line) for line in FOUND.read_text().splitlines() if line.strip()]
+
+
+@pytest.fixture(scope='module')
+def nodes():
+    os.environ['ROS_DOMAIN_ID'] = str(random.randint(120, 229))
+    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
+    from bench.fuzz import Nodes
+    built = Nodes(backend='offline')
+    try:
+        yield built
+    finally:
+        built.close()
+
+
+@pytest.mark.parametrize('case', CASES, ids=[f'{k}-{c["target"]}' for k, c in enumerate(CASES)])
+def test_an_input_that_broke_a_node_is_refused_typed(nodes, case):
+    from bench.fuzz import run_case
+    try:
+        run_case(nodes, case['target'], case['input'])
+    except LtlInstructError:
+        pass
+    assert not nodes.internal_errors, nodes.internal_errors
+    if case['target'] == 'task_spec':
+        iid = json.loads(case['input'])['id']
+        ends = [body for i, body in nodes.statuses if i == iid and body.get('terminal')]
+        assert len(ends) == 1 and ends[0]['status'] == 'failed', nodes.statuses

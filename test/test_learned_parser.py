@@ -73,6 +73,25 @@ def test_plan_product_graph_orders_and_avoids(lmap):
         plan_on_landmarks(lmap, seq, 42)
 
 
+def test_plan_on_a_map_ten_times_the_largest_city_and_its_expansion_limit():
+    """160 landmarks (the largest city has 15): graph built once, the plan optimal, the limit typed."""
+    import networkx as nx
+    from ltl_instruct.core.world.landmarks import build_landmark_map
+    rng = np.random.default_rng(3)
+    lat_lon = np.column_stack([42.37 + rng.uniform(0, 0.02, 160), -71.12 + rng.uniform(0, 0.03, 160)])
+    big = build_landmark_map('bigville', [f'place {i}' for i in range(160)], lat_lon)
+    assert big.adjacency is big.adjacency                       # built once per map
+    a, b, c = 17, 93, 141
+    formula = parse_formula(f'F ({big.props[a]} & F ({big.props[b]} & F {big.props[c]}))')
+    plan = plan_on_landmarks(big, formula, 0)
+    g = big.graph()
+    best = sum(nx.shortest_path_length(g, u, v, weight='weight') for u, v in ((0, a), (a, b), (b, c)))
+    assert plan.path[-1] == c and plan.length_m == pytest.approx(best)
+    with pytest.raises(LtlInstructError) as e:
+        plan_on_landmarks(big, formula, 0, max_expansions=50)
+    assert e.value.code is ErrorCode.LIMIT_EXCEEDED
+
+
 def test_reward_uses_first_acceptance_and_the_plan(lmap):
     vocab = OutputVocabulary(lmap.props)
     cache = RewardCache(vocab, lmap)

@@ -235,3 +235,18 @@ def test_random_starts_give_a_verified_plan_or_a_typed_error(x, y, goal, avoid):
         return
     assert plan.verification.ok
     assert world.is_free(plan.path()).all()
+
+
+def test_junctions_are_chosen_for_the_whole_task_and_keep_the_margins():
+    """A visit on the way: the junction moves round the first goal towards the second, shortening the plan."""
+    scene = dict(ROOM, objects=[{'label': 'lamp', 'center': [6, 6, 0.4], 'size': [0.4, 0.4, 0.8]},
+                                {'label': 'plant', 'center': [9, 1, 0.4], 'size': [0.4, 0.4, 0.8]}],
+                 obstacles=[])
+    greedy = _plan('F (near[lamp] & F near[plant])', scene, replace(FAST, shorten_junctions=False))[0]
+    plan, aut, rmap, world = _plan('F (near[lamp] & F near[plant])', scene)
+    assert plan.verification.ok and len(plan.steps) == 2
+    assert plan.length < greedy.length - 0.05
+    assert np.allclose(plan.steps[0].end, plan.steps[1].waypoints[0])
+    assert min(plan.verification.goal_depths) >= FAST.goal_margin - 0.01
+    again = verify_plan(plan.steps, plan.start, aut, rmap, world, FAST.near_threshold)
+    assert again.ok and again.margins_ok

@@ -17,6 +17,7 @@ from ltl_instruct.core.planning import (
 )
 from ltl_instruct.core.planning.regions import eval_guard_vectorised, eval_key_cubes, key_cubes
 from ltl_instruct.core.spec import parse_formula
+from ltl_instruct.core.world import near
 from ltl_instruct.core.world.scene import scene_from_dict
 
 SCENE = {
@@ -66,42 +67,71 @@ def test_clearance_certifies_a_free_ball(x, y, angle, frac):
 @settings(max_examples=60, derandomize=True, deadline=None)
 @given(st.integers(0, 10_000), st.sampled_from([2, 3]), st.integers(0, 120))
 def test_cell_index_answers_as_the_test_against_every_box(seed, dims, n_boxes):
-    """point_free and segment_hits_box use a cell index; brute force over all boxes must agree."""
+    """point_free and segment_hits_box use a cell index; brute force over all boxes must agree.
+
+    The robot is a disc (a ball in 3D): blocked within the radius of a box, corners rounded.
+    """
     from ltl_instruct.core.planning.occupancy import PlanningWorld
     from ltl_instruct.core.world.scene import Box
     rng = np.random.default_rng(seed)
     size = np.array([30.0, 20.0, 10.0])
     boxes = tuple(Box(tuple(rng.uniform(-2, size + 2)), tuple(rng.uniform(0.01, 4.0, 3)))
                   for _ in range(n_boxes))
-    w = PlanningWorld(dims, (0.0,) * dims, tuple(size[:dims]), float(rng.uniform(0, 0.5)), boxes)
-    lo, hi = w.inflated_boxes
+    radius = float(rng.uniform(0, 0.5))
+    w = PlanningWorld(dims, (0.0,) * dims, tuple(size[:dims]), radius, boxes)
+    raw_lo = np.array([b.lo[:dims] for b in boxes]).reshape(-1, dims)
+    raw_hi = np.array([b.hi[:dims] for b in boxes]).reshape(-1, dims)
     pts = rng.uniform(-1, size[:dims] + 1, (300, dims))
-    # points exactly on inflated box faces and on cell boundaries are the edge cases
+    # points on the rounded boxes' flat faces, near their corners, and on cell boundaries are the edge cases
     if n_boxes:
-        pts[:40] = lo[rng.integers(0, n_boxes, 40)]
-        pts[40:80] = hi[rng.integers(0, n_boxes, 40)]
-    for p in pts:
-        inside_any = bool(np.any(np.all((p >= lo) & (p <= hi), axis=1))) if n_boxes else False
+        pick = rng.integers(0, n_boxes, 80)
+        pts[:40] = raw_lo[pick[:40]] - np.eye(dims)[rng.integers(0, dims, 40)] * radius
+        corner = rng.normal(size=(40, dims))
+        corner /= np.linalg.norm(corner, axis=1, keepdims=True)
+        pts[40:80] = raw_hi[pick[40:]] + np.abs(corner) * radius * rng.choice([0.98, 1.02], (40, 1))
+    free = w.is_free(pts)
+    for p, f in zip(pts, free):
+        gap = np.maximum(np.maximum(raw_lo - p, p - raw_hi), 0.0)
+        blocked = bool(np.any(np.sqrt((gap ** 2).sum(axis=1)) <= radius)) if n_boxes else False
         in_bounds = bool(np.all(p >= 0) and np.all(p <= size[:dims]))
-        assert w.point_free(tuple(p)) == (in_bounds and not inside_any) == (w.clearance(tuple(p)) >= 0)
-    for a, b in zip(pts[::2], pts[1::2]):   # the index only narrows which boxes get the exact slab test
-        exact = any(_slab_hits(a, b, bl, bh) for bl, bh in zip(lo, hi))
-        assert w.segment_hits_box(tuple(a), tuple(b)) == exact
+        assert w.point_free(tuple(p)) == (in_bounds and not blocked) == (w.clearance(tuple(p)) >= 0) == f
+    for a, b in zip(pts[::2], pts[1::2]):   # the index only narrows which boxes get the exact test
+        near_box = np.all((np.minimum(a, b) <= raw_hi + radius) & (np.maximum(a, b) >= raw_lo - radius),
+                          axis=1)
+        least = min((near.segment_box_distance(tuple(a), tuple(b), tuple(lo), tuple(hi))
+                     for lo, hi in zip(raw_lo[near_box], raw_hi[near_box])), default=np.inf)
+        assert w.segment_hits_box(tuple(a), tuple(b)) == (least <= radius)
 
 
-def _slab_hits(a, b, lo, hi) -> bool:
-    t0, t1 = 0.0, 1.0
-    for k in range(len(a)):
-        delta = b[k] - a[k]
-        if delta == 0.0:
-            if a[k] < lo[k] or a[k] > hi[k]:
-                return False
-            continue
-        u, v = sorted(((lo[k] - a[k]) / delta, (hi[k] - a[k]) / delta))
-        t0, t1 = max(t0, u), min(t1, v)
-        if t0 > t1:
-            return False
-    return True
+@settings(max_examples=200, derandomize=True, deadline=None)
+@given(st.integers(0, 10_000), st.sampled_from([2, 3]))
+def test_segment_box_distance_is_the_least_over_the_segment(seed, dims):
+    rng = np.random.default_rng(seed)
+    lo = rng.uniform(-1, 1, dims)
+    hi = lo + rng.uniform(0, 1, dims) * (rng.random(dims) > 0.1)   # some flat boxes
+    a, b = rng.uniform(-3, 3, dims), rng.uniform(-3, 3, dims)
+    if rng.random() < 0.3:
+        b[0] = a[0]                                                  # parallel to a face
+    along = a + np.linspace(0.0, 1.0, 4001)[:, None] * (b - a)
+    sampled = float(near.box_distance(along, ((lo + hi) / 2)[None], (hi - lo)[None], dims).min())
+    exact = near.segment_box_distance(tuple(a), tuple(b), tuple(lo), tuple(hi))
+    assert exact <= sampled + 1e-12
+    assert sampled - exact <= np.linalg.norm(b - a) / 4000      # within the sampling step
+
+
+def test_a_disc_passes_a_diagonal_gap_that_square_inflation_would_close():
+    """Two boxes 0.7 m apart corner to corner: a 0.3 m disc passes, a 0.6 m square would not."""
+    from ltl_instruct.core.planning.occupancy import PlanningWorld
+    from ltl_instruct.core.world.scene import Box
+    gap = 0.7 / math.sqrt(2)
+    boxes = (Box((1.0, 1.0, 0.5), (2.0, 2.0, 1.0)), Box((3.0 + gap, 3.0 + gap, 0.5), (2.0, 2.0, 1.0)))
+    w = PlanningWorld(2, (-5.0, -5.0), (10.0, 10.0), 0.3, boxes)
+    mid = (2.0 + gap / 2, 2.0 + gap / 2)
+    assert w.point_free(mid) and w.is_free(np.array([mid]))[0]
+    assert abs(w.clearance(mid) - 0.05) < 1e-9
+    # the straight line between the two boxes' free sides, through the gap
+    assert not w.segment_hits_box((mid[0] - 2.0, mid[1] + 2.0), (mid[0] + 2.0, mid[1] - 2.0))
+    assert w.segment_hits_box((mid[0] - 2.0, mid[1] - 2.0), (mid[0] + 2.0, mid[1] + 2.0))
 
 
 def test_occupancy_grid_world_blocks_occupied_unknown_and_inflated_cells():

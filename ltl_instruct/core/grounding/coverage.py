@@ -128,6 +128,28 @@ def travel_field(free: np.ndarray, grid: PlaneGrid, start: Sequence[float]) -> n
         w.append(np.full(int(ok.sum()), math.hypot(dx, dy) * grid.cell))
     graph = coo_matrix((np.concatenate(w), (np.concatenate(rows), np.concatenate(cols))),
                        shape=(nx * ny, nx * ny)).tocsr()
+    cells, offsets = _start_cells(free, grid, start)
+    dist = np.atleast_2d(dijkstra(graph, directed=False, indices=[int(ids[c]) for c in cells]))
+    return (dist + offsets[:, None]).min(axis=0).reshape(nx, ny)
+
+
+def _start_cells(free: np.ndarray, grid: PlaneGrid, start: Sequence[float],
+                 rings: int = 3) -> tuple[list[tuple[int, int]], np.ndarray]:
+    """Return the cells travel starts from and the distance [m] to each: the start's own cell if free.
+
+    A robot whose disc clears every obstacle may still sit in a cell whose centre does
+    not (near a corner); travel then starts from the free cells within ``rings`` cells.
+    """
     ix, iy = grid.index(np.asarray([start], dtype=float))
-    dist = dijkstra(graph, directed=False, indices=int(ids[ix[0], iy[0]]))
-    return dist.reshape(nx, ny)
+    x, y = int(ix[0]), int(iy[0])
+    if free[x, y]:
+        return [(x, y)], np.zeros(1)
+    centres = grid.centers()
+    for k in range(1, rings + 1):
+        cells = [(i, j) for i in range(max(0, x - k), min(free.shape[0], x + k + 1))
+                 for j in range(max(0, y - k), min(free.shape[1], y + k + 1)) if free[i, j]]
+        if cells:
+            off = np.array([float(np.hypot(*(centres[i, j][:2] - np.asarray(start[:2], dtype=float))))
+                            for i, j in cells])
+            return cells, off
+    return [(x, y)], np.zeros(1)

@@ -20,7 +20,7 @@ import numpy as np
 
 from ltl_instruct.core.errors import InvalidInputError
 
-PLANNERS = ('fmt', 'rrtstar')
+PLANNERS = ('fmt', 'rrtstar', 'default')
 
 
 @dataclass(frozen=True)
@@ -41,7 +41,8 @@ class FmtSettings:
         are checked exactly): no avoid region thicker than this can be jumped.
     path_spacing: spacing [m] of the returned dense path (0: only the waypoints).
     simplify: shortcut the path (never leaving the allowed space).
-    planner: ``fmt`` or ``rrtstar`` (RRT* runs for the whole time limit).
+    planner: ``fmt``, ``rrtstar`` (RRT* runs for the whole time limit) or ``default``
+        (what OMPL's ``SimpleSetup`` chooses: RRTConnect, the benchmarks' peer).
     goal_samples: goal states drawn for the sampleable goal region.
     """
 
@@ -177,6 +178,9 @@ def plan_motion(dims: int, bounds_min: Sequence[float], bounds_max: Sequence[flo
         s0[k] = float(start[k])
     pdef.addStartState(s0)
     pdef.setGoal(goal_region)
+    if settings.planner == 'default':
+        pdef.clearGoal()
+        return _plan_default(si, s0, goal_region, settings)
     pdef.setOptimizationObjective(ob.PathLengthOptimizationObjective(si))
     if settings.planner == 'fmt':
         planner = og.FMT(si)
@@ -203,5 +207,28 @@ def plan_motion(dims: int, bounds_min: Sequence[float], bounds_max: Sequence[flo
     planner.clear()
     pdef.clearGoal()
     del planner, pdef, goal_region, motion, si, space, s0
+    gc.collect()
+    return MotionOutcome(points, status_text, seconds, timed_out)
+
+
+def _plan_default(si: Any, s0: Any, goal_region: Any, settings: FmtSettings) -> MotionOutcome:
+    """Plan with OMPL's default planner for the problem (``SimpleSetup`` chooses; no objective)."""
+    import ompl.geometric as og
+    dims = si.getStateDimension()
+    ss = og.SimpleSetup(si)
+    ss.setStartState(s0)
+    ss.setGoal(goal_region)
+    t0 = time.monotonic()
+    status = ss.solve(float(settings.time_limit))
+    seconds = time.monotonic() - t0
+    points: Optional[np.ndarray] = None
+    if ss.haveExactSolutionPath():
+        path = ss.getSolutionPath()
+        points = np.array([[path.getState(i)[k] for k in range(dims)] for i in range(path.getStateCount())])
+    status_text = f'{ss.getPlanner().getName()}: {status}'
+    timed_out = seconds >= float(settings.time_limit) * 0.98 and points is None
+    ss.clear()
+    ss.getProblemDefinition().clearGoal()
+    del ss
     gc.collect()
     return MotionOutcome(points, status_text, seconds, timed_out)

@@ -6,11 +6,17 @@ inflation by the robot radius, and optionally an occupancy lookup built from an
 occupancy grid (2D) or an obstacle point cloud (3D). A ground robot plans in (x, y),
 a drone in (x, y, z) inside its altitude band.
 
-Boxes are inflated by the robot radius on every side (a Minkowski sum with a cube,
-slightly conservative at corners). Besides "is this point free", the world gives a
-*clearance*: a radius around a free point inside which every point is free, which lets
-edge checks skip through open space exactly and still sample finely near obstacles.
-Units are metres, in the ``map`` frame.
+The robot is a disc (a ball for a drone) of the robot radius: a point is blocked where
+it lies within the radius of a box (Euclidean distance to the box, the boundary
+blocked), so a box grows into a rounded box, not a bigger box, and a diagonal gap that
+the disc fits through stays open. This is the plan check's own definition
+(:mod:`~ltl_instruct.core.planning.verify`) and the occupancy grid's (a Euclidean
+distance transform). Boxes are indexed once per world by the (x, y) cells their
+rounded boxes overlap, so point and segment checks test a few boxes exactly
+(:func:`~ltl_instruct.core.world.near.segment_box_distance` for a segment). Besides
+"is this point free", the world gives a *clearance*: a radius around a free point
+inside which every point is free, which lets edge checks skip through open space
+exactly and still sample finely near obstacles. Units are metres, in the ``map`` frame.
 """
 from __future__ import annotations
 
@@ -64,7 +70,7 @@ class PlanningWorld:
     ----------
     dims: 2 (ground: x, y) or 3 (drone: x, y, z).
     bounds_min, bounds_max: the box the robot centre stays in [m], each shape (dims,).
-    robot_radius: inflation of every obstacle [m].
+    robot_radius: the robot's radius [m]: the centre stays farther than this from every box.
     obstacles: blocking boxes as given (not inflated).
     lookup: optional inflated occupancy grid (from a map message).
     """
@@ -77,7 +83,10 @@ class PlanningWorld:
     lookup: Optional[OccupancyLookup] = None
     _lo: np.ndarray = field(init=False, repr=False)
     _hi: np.ndarray = field(init=False, repr=False)
-    _boxes: tuple = field(init=False, repr=False)
+    _boxes: tuple = field(init=False, repr=False)      # bounding boxes of the rounded boxes
+    _raw: tuple = field(init=False, repr=False)        # the boxes as given, (lo, hi) per box
+    _raw_lo: np.ndarray = field(init=False, repr=False)
+    _raw_hi: np.ndarray = field(init=False, repr=False)
     _cell: tuple = field(init=False, repr=False)       # (cell size [m], nx, ny) of the box index
     _buckets: tuple = field(init=False, repr=False)    # per (x, y) cell: indices of the boxes over it
 
@@ -93,11 +102,16 @@ class PlanningWorld:
         if not (math.isfinite(r) and r >= 0.0):
             raise InvalidInputError(f'robot radius must be a non-negative number, got {self.robot_radius}')
         if self.obstacles:
-            lo = np.array([b.lo[:self.dims] for b in self.obstacles]) - r
-            hi = np.array([b.hi[:self.dims] for b in self.obstacles]) + r
+            raw_lo = np.array([b.lo[:self.dims] for b in self.obstacles], dtype=float)
+            raw_hi = np.array([b.hi[:self.dims] for b in self.obstacles], dtype=float)
         else:
-            lo = np.zeros((0, self.dims))
-            hi = np.zeros((0, self.dims))
+            raw_lo = np.zeros((0, self.dims))
+            raw_hi = np.zeros((0, self.dims))
+        lo, hi = raw_lo - r, raw_hi + r
+        object.__setattr__(self, '_raw_lo', raw_lo)
+        object.__setattr__(self, '_raw_hi', raw_hi)
+        raw = tuple((tuple(a), tuple(b)) for a, b in zip(raw_lo.tolist(), raw_hi.tolist()))
+        object.__setattr__(self, '_raw', raw)
         object.__setattr__(self, '_lo', lo)
         object.__setattr__(self, '_hi', hi)
         boxes = tuple((tuple(a), tuple(b)) for a, b in zip(lo.tolist(), hi.tolist()))
@@ -132,8 +146,35 @@ class PlanningWorld:
     # ------------------------------------------------------------------ vectorised
     @property
     def inflated_boxes(self) -> tuple[np.ndarray, np.ndarray]:
-        """Inflated obstacle corners ``(lo, hi)`` [m], each shape (K, dims)."""
+        """Corners ``(lo, hi)`` [m] of the bounding boxes of the rounded obstacles, each shape (K, dims)."""
         return self._lo, self._hi
+
+    def box_gap(self, points: np.ndarray) -> np.ndarray:
+        """Distance [m] from each point (N, >=dims) to the nearest box as given; shape (N,), inf if none.
+
+        Boxes out of the radius of the points' bounding box are skipped: a point farther
+        than the radius from every box may get any distance above the radius instead.
+        """
+        p = np.atleast_2d(np.asarray(points, dtype=float))[:, :self.dims]
+        out = np.full(len(p), np.inf)
+        if not len(self._raw_lo) or not len(p):
+            return out
+        finite = p[np.all(np.isfinite(p), axis=1)]
+        if not len(finite):
+            return out
+        lo, hi = finite.min(axis=0), finite.max(axis=0)   # only boxes within reach of the points
+        near_pts = np.all((self._lo <= hi) & (self._hi >= lo), axis=1)
+        if not near_pts.all():
+            out[:] = self.robot_radius + 1.0       # farther than the radius from every box
+        raw_lo, raw_hi = self._raw_lo[near_pts], self._raw_hi[near_pts]
+        if not len(raw_lo):
+            return out
+        step = max(1, 2_000_000 // (len(raw_lo) * self.dims))   # bounded memory
+        for s in range(0, len(p), step):
+            q = p[s:s + step, None, :]
+            gap = np.maximum(np.maximum(raw_lo[None] - q, q - raw_hi[None]), 0.0)
+            out[s:s + step] = np.minimum(out[s:s + step], np.sqrt((gap * gap).sum(axis=2).min(axis=1)))
+        return out
 
     def in_bounds(self, points: np.ndarray) -> np.ndarray:
         """Whether points (N, >=dims) lie inside the planning bounds."""
@@ -142,19 +183,18 @@ class PlanningWorld:
             & np.all(np.isfinite(p), axis=1)
 
     def is_free(self, points: np.ndarray) -> np.ndarray:
-        """Whether the robot centre may be at each point (N, >=dims): in bounds, in no inflated obstacle."""
+        """Whether the robot centre may be at each point (N, >=dims): in bounds, clear of every box."""
         p = np.atleast_2d(np.asarray(points, dtype=float))[:, :self.dims]
         ok = self.in_bounds(p)
         if len(self._lo):
-            inside = np.all((p[:, None, :] >= self._lo[None]) & (p[:, None, :] <= self._hi[None]), axis=2)
-            ok &= ~inside.any(axis=1)
+            ok &= self.box_gap(p) > self.robot_radius
         if self.lookup is not None:
             ok &= ~self.lookup.is_blocked(p)
         return ok
 
     # ------------------------------------------------------------------ scalar (planner callbacks)
     def point_free(self, p: Sequence[float]) -> bool:
-        """Whether the robot centre may be at ``p``: in bounds and in no inflated obstacle.
+        """Whether the robot centre may be at ``p``: in bounds and farther than the radius from every box.
 
         The same answer as ``clearance(p) >= 0``, from the boxes of ``p``'s cell only.
         """
@@ -164,10 +204,11 @@ class PlanningWorld:
                 return False
         cell, nx, ny = self._cell
         cx, cy = self._cell_of(p[0], p[1], cell, nx, ny)
-        boxes = self._boxes
+        boxes, raw, r2 = self._boxes, self._raw, self.robot_radius ** 2
         for i in self._buckets[cx * ny + cy]:
             lo, hi = boxes[i]
-            if all(lo[k] <= p[k] <= hi[k] for k in range(d)):
+            if all(lo[k] <= p[k] <= hi[k] for k in range(d)) \
+                    and near.point_distance(p, raw[i:i + 1]) ** 2 <= r2:
                 return False
         if self.lookup is not None and self.lookup.is_blocked(np.asarray(p[:d], dtype=float)[None])[0]:
             return False
@@ -176,8 +217,9 @@ class PlanningWorld:
     def clearance(self, p: Sequence[float]) -> float:
         """Return a radius [m] around ``p`` in which every point is free; -1 if ``p`` is not free.
 
-        Exact for bounds and boxes (distance to the nearest inflated box or bound); an
-        occupancy lookup gives 0 for a free point (its cells are checked one by one).
+        Exact for bounds and boxes (distance to the nearest box less the robot radius, or
+        to a bound); an occupancy lookup gives 0 for a free point (its cells are checked
+        one by one).
         """
         d = self.dims
         best = math.inf
@@ -186,8 +228,8 @@ class PlanningWorld:
             if not (self.bounds_min[k] <= x <= self.bounds_max[k]):
                 return -1.0
             best = min(best, x - self.bounds_min[k], self.bounds_max[k] - x)
-        to_box = near.point_distance(p, self._boxes)   # the boxes' faces count as inside
-        if to_box == 0.0:
+        to_box = near.point_distance(p, self._raw) - self.robot_radius   # at the radius counts as inside
+        if to_box <= 0.0:
             return -1.0
         best = min(best, to_box)
         if self.lookup is not None:
@@ -229,7 +271,11 @@ class PlanningWorld:
         return sorted(out)
 
     def segment_hits_box(self, a: Sequence[float], b: Sequence[float]) -> bool:
-        """Whether the straight segment a -> b touches an inflated box (exact slab test)."""
+        """Whether the straight segment a -> b comes within the robot radius of a box (exact).
+
+        A slab test against each candidate's bounding box first, then the segment's exact
+        distance to the box.
+        """
         d = self.dims
         seg_lo = [min(a[k], b[k]) for k in range(d)]
         seg_hi = [max(a[k], b[k]) for k in range(d)]
@@ -253,7 +299,7 @@ class PlanningWorld:
                 t1 = min(t1, v)
                 if t0 > t1:
                     break
-            if t0 <= t1:
+            if t0 <= t1 and near.segment_box_distance(a, b, *self._raw[i]) <= self.robot_radius:
                 return True
         return False
 

@@ -47,7 +47,8 @@ from ltl_instruct.core.planning.regions import (
     skill_guard,
 )
 from ltl_instruct.core.planning.segment import SegmentRequest, SegmentResult, SolveFn, resample, solve_segment
-from ltl_instruct.core.planning.taskplan import NAVIGATE, SKILL, PlanStep, TaskPlan
+from ltl_instruct.core.planning.junctions import shorten_junctions
+from ltl_instruct.core.planning.taskplan import NAVIGATE, SKILL, PlanStep, TaskPlan, Verification
 from ltl_instruct.core.planning.verify import verify_plan
 from ltl_instruct.core.spec.ast import Atom
 from ltl_instruct.core.world.near import (
@@ -74,6 +75,10 @@ class PlannerSettings:
     max_alternatives: alternative goal regions / instances tried per transition after
         the first choice led nowhere.
     verify_spacing: sample spacing [m] of the independent check (at most 0.05).
+    shorten_junctions: after the search, move where consecutive segments meet, inside
+        each goal region, to shorten the whole task
+        (:mod:`~ltl_instruct.core.planning.junctions`); the plan as searched is kept if
+        the moved one fails the check.
     """
 
     near_threshold: float = DEFAULT_NEAR_THRESHOLD
@@ -85,6 +90,7 @@ class PlannerSettings:
     goal_margin: float = DEFAULT_GOAL_MARGIN
     avoid_margin: float = DEFAULT_AVOID_MARGIN
     start_shift: float = 0.5
+    shorten_junctions: bool = True
 
     def __post_init__(self) -> None:
         check_threshold(self.near_threshold)
@@ -410,8 +416,13 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
     steps = search.search(state, p0, None, frozenset({(state, None)}))
     if steps is None:
         raise _failure_error(search, formula)
-    verification = verify_plan(steps, p0, automaton, referent_map, world, settings.near_threshold,
-                               settings.verify_spacing, initial_state=initial_state)
+    verification = _verified(steps, p0, automaton, referent_map, world, settings, initial_state)
+    if settings.shorten_junctions and verification.ok:
+        shorter = shorten_junctions(steps, world, fmt.seed)
+        if any(a is not b for a, b in zip(shorter, steps)):
+            checked = _verified(shorter, p0, automaton, referent_map, world, settings, initial_state)
+            if checked.ok:
+                steps, verification = shorter, checked
     if not verification.ok:
         raise PlanningError(f'the plan for "{formula}" failed the independent check: {verification.reason}',
                             ErrorCode.VERIFICATION_FAILED, details={'verification': verification.to_dict()})
@@ -422,6 +433,13 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
                 'avoid_margin': settings.avoid_margin}
     return TaskPlan(formula, p0, dims, tuple(steps), 'planned' if steps else 'satisfied', verification, stats,
                     tuple(warnings), nearness)
+
+
+def _verified(steps: Sequence[PlanStep], p0: np.ndarray, automaton: Automaton, referent_map: ReferentMap,
+              world: PlanningWorld, settings: PlannerSettings, initial_state: Optional[int]) -> Verification:
+    """Run the independent check of a plan's steps."""
+    return verify_plan(steps, p0, automaton, referent_map, world, settings.near_threshold,
+                       settings.verify_spacing, initial_state=initial_state)
 
 
 def _free_start(world: PlanningWorld, p0: np.ndarray, shift: float) -> tuple[np.ndarray, list[str]]:

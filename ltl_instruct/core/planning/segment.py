@@ -503,9 +503,11 @@ class SegmentProblem:
                     batch: int = 4096) -> tuple[np.ndarray, bool]:
         """Return up to ``count`` valid goal points (M, dims), and whether a plain goal point was seen.
 
-        Rejection sampling in the boxes of the plain goal's near regions, so that with
-        margins the points drawn are those the same request without margins draws: when
-        none of them is in the plain goal either, that request is blocked too.
+        Rejection sampling in the boxes of the plain goal's near regions (for a cube of
+        several atoms, each box of its atom with the fewest instances, cut to the
+        bounding box of the other atoms' regions that meet it), so that with margins the
+        points drawn are those the same request without margins draws: when none of them
+        is in the plain goal either, that request is blocked too.
         """
         rng = np.random.default_rng(seed)
         dims = self.world.dims
@@ -519,6 +521,9 @@ class SegmentProblem:
             for c, s in zip(region.centers, region.sizes):
                 lo, hi = near.region_box(c, s, region.radius, dims)
                 lo, hi = np.maximum(lo, self.lo), np.minimum(hi, self.hi)
+                for other in candidates:        # a conjunction: where the other regions may hold too
+                    if other is not region and np.all(lo <= hi):
+                        lo, hi = _clip_to_region(lo, hi, other, dims)
                 if np.all(lo <= hi):
                     boxes.append((lo, hi))
         if not boxes:
@@ -566,50 +571,63 @@ class SegmentProblem:
         e = int(ends[0])
         return dense[:e + 1] if (f['free'] & f['hold'])[k + 1:e + 1].all() else None
 
-    def goal_projections(self, p: Sequence[float]) -> list[np.ndarray]:
-        """Return the nearest points to ``p`` of the near-balls of every goal cube's true atoms."""
+    def goal_projections(self, points: np.ndarray) -> np.ndarray:
+        """Return, for each point (M, dims), its nearest point of every goal atom's near-ball; (M, C, dims).
+
+        One column per instance of every atom a goal cube needs true (its near region
+        shrunk by the goal margin where there is one); a point inside a ball is its own
+        projection.
+        """
         dims = self.world.dims
-        a = np.asarray(p[:dims], dtype=float)
-        out = []
+        a = np.atleast_2d(np.asarray(points, dtype=float))[:, :dims]
+        cols = []
         for pos, _ in self.goal_cubes:
             for k in pos:
                 region = self.regions.by_key.get(k)
-                if region is None:
+                if region is None or not region.centers:
                     continue
-                for c, sz in zip(region.centers, region.sizes):
-                    q = near.nearest_box_point(a, c, sz)
-                    d = float(np.linalg.norm(a - q))
-                    r = region.radius * (1.0 - 1e-6)
-                    out.append(a.copy() if d <= r else q + (a - q) * (r / d))
-        return out
+                c = np.asarray(region.centers, dtype=float)[:, :dims]
+                h = np.asarray(region.sizes, dtype=float)[:, :dims] / 2.0
+                q = np.clip(a[:, None, :], (c - h)[None], (c + h)[None])          # (M, I, dims)
+                d = np.linalg.norm(a[:, None, :] - q, axis=2, keepdims=True)
+                r = region.radius * (1.0 - 1e-6)
+                scale = np.where(d <= r, 1.0, r / np.maximum(d, 1e-300))
+                cols.append(q + (a[:, None, :] - q) * scale)
+        return np.concatenate(cols, axis=1) if cols else np.zeros((len(a), 0, dims))
 
-    def refine_end(self, path: np.ndarray, pool: np.ndarray) -> np.ndarray:
-        """Re-choose where the path enters the goal: the cheapest straight exit from any vertex."""
+    def refine_end(self, path: np.ndarray, pool: np.ndarray, max_checks: int = 400) -> np.ndarray:
+        """Re-choose where the path enters the goal: the cheapest straight exit from any vertex.
+
+        Candidates, for every vertex of the path (resampled at 10 cm): its projections on
+        the goal's near-balls and its three nearest goal samples of ``pool``. They are
+        ranked at once by the cost of the path to the vertex plus the straight exit, and
+        checked cheapest first; the first valid one is the best (at most ``max_checks``).
+        """
         path = resample(path, 0.1)
         prefix = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(path, axis=0), axis=1))])
         best_cost = prefix[-1]
-        best = path
-        for i in range(len(path) - 1):
-            a = path[i]
-            if prefix[i] >= best_cost:
+        verts = path[:-1]
+        cands = self.goal_projections(verts)
+        if len(pool):
+            dist = np.linalg.norm(verts[:, None, :] - pool[None], axis=2)
+            nearest = np.argsort(dist, axis=1)[:, :3]
+            cands = np.concatenate([cands, pool[nearest]], axis=1)
+        if cands.shape[1] == 0:
+            return _drop_collinear(path)
+        cost = prefix[:-1, None] + np.linalg.norm(cands - verts[:, None, :], axis=2)
+        order = np.argsort(cost, axis=None)
+        for flat in order[:max_checks]:
+            i, j = divmod(int(flat), cands.shape[1])
+            if cost[i, j] >= best_cost - 1e-9:
                 break
-            near_pool = pool[np.argsort(np.linalg.norm(pool - a, axis=1))[:3]] if len(pool) else pool
-            cands = self.goal_projections(a) + [q for q in near_pool]
-            cands.sort(key=lambda q: float(np.linalg.norm(q - a)))
-            for q in cands:
-                if prefix[i] + float(np.linalg.norm(q - a)) >= best_cost:
-                    break
-                if not self.state_valid(tuple(q)) or not self.motion_valid(tuple(a), tuple(q)):
-                    continue
-                cut = self.first_goal_prefix(np.vstack([a, q]))
-                if cut is None:
-                    continue
-                cost = prefix[i] + float(np.linalg.norm(cut[-1] - a))
-                if cost < best_cost - 1e-9:
-                    best_cost = cost
-                    best = np.vstack([path[:i + 1], cut[-1:]])
-                break
-        return _drop_collinear(best)
+            a, q = tuple(verts[i]), tuple(cands[i, j])
+            if not self.state_valid(q) or not self.motion_valid(a, q):
+                continue
+            cut = self.first_goal_prefix(np.vstack([verts[i], cands[i, j]]))
+            if cut is None:
+                continue
+            return _drop_collinear(np.vstack([path[:i + 1], cut[-1:]]))
+        return _drop_collinear(path)
 
     def shortcut(self, path: np.ndarray, rounds: int = 4, spacing: float = 0.5,
                  pool: Optional[np.ndarray] = None, window: int = 60) -> np.ndarray:
@@ -638,6 +656,18 @@ class SegmentProblem:
             elif r > 0:
                 break
         return best
+
+
+def _clip_to_region(lo: np.ndarray, hi: np.ndarray, region: AtomRegion,
+                    dims: int) -> tuple[np.ndarray, np.ndarray]:
+    """Cut the box lo..hi to the bounding box of the parts of ``region`` that meet it (empty: lo > hi)."""
+    parts = [near.region_box(c, s, region.radius, dims) for c, s in zip(region.centers, region.sizes)]
+    meet = [(a, b) for a, b in parts if np.all(a <= hi) and np.all(b >= lo)]
+    if not meet:
+        return lo, lo - 1.0
+    low = np.min([a for a, _ in meet], axis=0)
+    high = np.max([b for _, b in meet], axis=0)
+    return np.maximum(lo, low), np.minimum(hi, high)
 
 
 def _drop_collinear(points: np.ndarray, tol: float = 1e-9) -> np.ndarray:

@@ -14,6 +14,7 @@ shortest.
 """
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 import re
@@ -144,16 +145,22 @@ class LandmarkMap:
             g.add_edge(i, j, weight=self.edge_length(i, j))
         return g
 
-    def neighbours(self) -> list[list[tuple[int, float]]]:
-        """Adjacency lists: item i is [(j, length [m]), ...], sorted by j."""
+    @functools.cached_property
+    def adjacency(self) -> tuple[tuple[tuple[int, float], ...], ...]:
+        """Adjacency of the graph, built once per map: item i is ((j, length [m]), ...), sorted by j.
+
+        The map is immutable, so every plan on it shares this one structure.
+        """
         adj: list[list[tuple[int, float]]] = [[] for _ in range(self.num_landmarks)]
         for i, j in sorted(self.edges):
             d = self.edge_length(i, j)
             adj[i].append((j, d))
             adj[j].append((i, d))
-        for a in adj:
-            a.sort()
-        return adj
+        return tuple(tuple(sorted(a)) for a in adj)
+
+    def neighbours(self) -> list[list[tuple[int, float]]]:
+        """Adjacency lists, a fresh copy of :attr:`adjacency`: item i is [(j, length [m]), ...]."""
+        return [list(a) for a in self.adjacency]
 
     def path_length(self, path: Sequence[int]) -> float:
         """Length of a node path [m] (straight segments between centres)."""

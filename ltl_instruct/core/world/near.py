@@ -129,6 +129,54 @@ def point_distance(p: Sequence[float], corners: Corners) -> float:
     return math.sqrt(best) if best != math.inf else math.inf
 
 
+def segment_box_distance(a: Sequence[float], b: Sequence[float], lo: Sequence[float],
+                         hi: Sequence[float]) -> float:
+    """Distance [m] between the straight segment a -> b and the box lo..hi (0 where they meet).
+
+    Plain Python, for one segment at a time (the planner's edge check). The squared
+    distance from the point at ``t`` in [0, 1] to the box is a convex piecewise quadratic
+    in ``t``, its pieces split where an axis enters or leaves the box's slab: the least
+    is at a piece's own minimum, clipped to the piece, so it is exact.
+    """
+    n = len(lo)
+    d = [b[k] - a[k] for k in range(n)]
+    ts = [0.0, 1.0]
+    for k in range(n):
+        if d[k] != 0.0:
+            for edge in (lo[k], hi[k]):
+                t = (edge - a[k]) / d[k]
+                if 0.0 < t < 1.0:
+                    ts.append(t)
+    ts.sort()
+    best = math.inf
+    for t0, t1 in zip(ts, ts[1:]):
+        tm = 0.5 * (t0 + t1)
+        quad = lin = 0.0
+        for k in range(n):
+            x = a[k] + tm * d[k]
+            if x < lo[k]:
+                c = a[k] - lo[k]
+            elif x > hi[k]:
+                c = a[k] - hi[k]
+            else:
+                continue
+            quad += d[k] * d[k]
+            lin += c * d[k]
+        t = t0 if quad == 0.0 else min(t1, max(t0, -lin / quad))
+        s = 0.0
+        for k in range(n):
+            x = a[k] + t * d[k]
+            if x < lo[k]:
+                s += (lo[k] - x) ** 2
+            elif x > hi[k]:
+                s += (x - hi[k]) ** 2
+        if s < best:
+            best = s
+            if s == 0.0:
+                break
+    return math.sqrt(best)
+
+
 def nearest_box_point(p: np.ndarray, center: Sequence[float], size: Sequence[float]) -> np.ndarray:
     """Return the point of a box nearest to ``p`` [m] (``p`` itself inside), shape of ``p``."""
     dims = len(p)

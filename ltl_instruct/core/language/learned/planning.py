@@ -6,6 +6,14 @@ automaton's initial state; moving along a graph edge to landmark j reads the
 letter ``{near[j]}``. Dijkstra over edge lengths [m] finds the shortest walk
 whose trace is accepted; the plan ends at the first accepting product node,
 as a robot may stop at the first point where the trace so far is accepted.
+
+The graph's adjacency is built once per map (:attr:`LandmarkMap.adjacency`) and
+shared by every plan. Each product node is expanded at most once, so a search
+costs at most (landmarks x automaton states) expansions; ``max_expansions``
+(:data:`MAX_EXPANSIONS` by default: room for maps 10x the largest city's 15
+landmarks with automata of thousands of states) bounds it, and a search that
+reaches the bound raises ``LIMIT_EXCEEDED``, not ``NO_VALID_PATH``: it did not
+show that no walk exists.
 """
 from __future__ import annotations
 
@@ -14,10 +22,13 @@ from dataclasses import dataclass
 from typing import Optional
 
 from ltl_instruct.core.automaton import Automaton, compile_automaton
-from ltl_instruct.core.errors import InvalidInputError, PlanningError
+from ltl_instruct.core.errors import InvalidInputError, LimitExceededError, PlanningError
 from ltl_instruct.core.spec import Formula, atoms_of
 from ltl_instruct.core.spec.ast import Atom, near
 from ltl_instruct.core.world.landmarks import LandmarkMap
+
+MAX_EXPANSIONS = 2_000_000
+"""Product nodes the search expands before it gives up with ``LIMIT_EXCEEDED``."""
 
 
 @dataclass(frozen=True)
@@ -44,7 +55,7 @@ def _letters(lmap: LandmarkMap, aut: Automaton) -> list[frozenset[Atom]]:
 
 def plan_on_landmarks(lmap: LandmarkMap, formula: Formula, start: int,
                       automaton: Optional[Automaton] = None,
-                      max_expansions: int = 200_000) -> LandmarkPlan:
+                      max_expansions: int = MAX_EXPANSIONS) -> LandmarkPlan:
     """Shortest walk from ``start`` whose trace satisfies ``formula`` (LTLf).
 
     Raises
@@ -52,7 +63,10 @@ def plan_on_landmarks(lmap: LandmarkMap, formula: Formula, start: int,
     InvalidInputError
         If ``start`` is not a landmark, or the formula names a proposition not on the map.
     PlanningError
-        If no walk on the graph satisfies the formula.
+        ``NO_VALID_PATH`` if no walk on the graph satisfies the formula.
+    LimitExceededError
+        ``LIMIT_EXCEEDED`` if the search expanded ``max_expansions`` product nodes
+        without reaching acceptance.
     """
     n = lmap.num_landmarks
     if not 0 <= start < n:
@@ -63,7 +77,7 @@ def plan_on_landmarks(lmap: LandmarkMap, formula: Formula, start: int,
             raise InvalidInputError(f'{a.key} is not a landmark of map {lmap.city!r}')
     aut = automaton if automaton is not None else compile_automaton(formula)
     letters = _letters(lmap, aut)
-    adj = lmap.neighbours()
+    adj = lmap.adjacency
     q0 = aut.step(aut.initial, letters[start])
     best: dict[tuple[int, int], float] = {(start, q0): 0.0}
     parent: dict[tuple[int, int], Optional[tuple[int, int]]] = {(start, q0): None}
@@ -84,7 +98,10 @@ def plan_on_landmarks(lmap: LandmarkMap, formula: Formula, start: int,
             return LandmarkPlan(tuple(reversed(path)), tuple(reversed(states)), d)
         counter += 1
         if counter > max_expansions:
-            break
+            raise LimitExceededError(
+                f'planning {formula} on map {lmap.city!r} expanded {max_expansions} (landmark, state) '
+                f'pairs without an accepted walk ({n} landmarks, {aut.num_states} automaton states)',
+                details={'max_expansions': max_expansions, 'landmarks': n})
         for w, length in adj[v]:
             q2 = aut.step(q, letters[w])
             if q2 == sink:

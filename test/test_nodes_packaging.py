@@ -50,8 +50,9 @@ def test_ament_index_finds_the_package_and_its_share(prefix):
     assert (share / 'package.xml').is_file()
     assert (share / 'launch' / 'ltl_instruct.launch.py').is_file()
     params = yaml.safe_load((share / 'config' / 'ltl_instruct.yaml').read_text())
-    assert set(ALL_NODES) <= set(params)
-    assert all('ros__parameters' in params[n] for n in ALL_NODES)
+    # keyed /**/<node>: the file applies to each node in any namespace
+    assert {f'/**/{n}' for n in ALL_NODES} <= set(params)
+    assert all('ros__parameters' in params[f'/**/{n}'] for n in ALL_NODES)
 
 
 @pytest.mark.parametrize('node', ALL_NODES)
@@ -135,10 +136,27 @@ def test_launch_file_gives_each_node_the_scene_parameters_as_bringup_does(monkey
         overrides.pop('state_dir', None)   # respawn is on: task_progression keeps a journal
         assert overrides == expected.get(node.kwargs['name'], {})
         assert node.kwargs['respawn'] is True and node.kwargs['respawn_delay'] == 1.0
+        assert node.kwargs['namespace'] == '' and node.kwargs['ros_arguments'] == ['--log-level', 'info']
     planner = next(n for n in drone if n.kwargs['name'] == 'task_progression')
     assert planner.kwargs['parameters'][1]['robot_kind'] == 'drone'
     still = _run_launch_file(monkeypatch, {'respawn': 'false'})
     assert all(n.kwargs['respawn'] is False and 'state_dir' not in n.kwargs['parameters'][1] for n in still)
+
+
+def test_launch_file_namespaces_one_robot_on_its_clock_and_frames(monkeypatch):
+    """namespace, frame_prefix, use_sim_time and log_level reach every node as bringup gives them."""
+    nodes = _run_launch_file(monkeypatch, {'sim': 'true', 'namespace': 'r1', 'frame_prefix': 'r1/',
+                                           'use_sim_time': 'true', 'log_level': 'debug'})
+    assert sorted(n.kwargs['name'] for n in nodes) == sorted(ALL_NODES)
+    for node in nodes:
+        name, overrides = node.kwargs['name'], node.kwargs['parameters'][1]
+        assert node.kwargs['namespace'] == '/r1'
+        assert node.kwargs['ros_arguments'] == ['--log-level', 'debug']
+        assert overrides['frame_prefix'] == 'r1/'
+        if name == 'sim_world':   # the simulator makes the clock the others read
+            assert overrides['publish_clock'] is True and 'use_sim_time' not in overrides
+        else:
+            assert overrides['use_sim_time'] is True
 
 
 def test_params_file_matches_declared_parameters():
@@ -147,9 +165,11 @@ def test_params_file_matches_declared_parameters():
                                     task_progression)
     modules = {'ltl_translator': ltl_translator, 'referent_grounder': referent_grounder,
                'task_progression': task_progression, 'fmt_planner': fmt_planner, 'sim_world': sim_world}
+    from ltl_instruct.commands.bringup import file_parameters
+    from ltl_instruct.nodes.common import COMMON_PARAMS
     params = yaml.safe_load((REPO / 'config' / 'ltl_instruct.yaml').read_text())
     for node, module in modules.items():
-        specs = {p.name: p for p in module.PARAMS}
-        for key, value in params[node]['ros__parameters'].items():
+        specs = {p.name: p for p in module.PARAMS + COMMON_PARAMS}
+        for key, value in file_parameters(params, node).items():
             assert key in specs, f'{node}.{key} is not declared'
             specs[key].check(value)

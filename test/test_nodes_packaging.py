@@ -173,3 +173,39 @@ def test_params_file_matches_declared_parameters():
         for key, value in file_parameters(params, node).items():
             assert key in specs, f'{node}.{key} is not declared'
             specs[key].check(value)
+
+
+def _imported_modules(paths) -> set[str]:
+    """Top-level modules imported by the Python files under ``paths`` (absolute imports only)."""
+    import ast
+    names: set[str] = set()
+    for path in paths:
+        for f in ([path] if path.is_file() else sorted(path.rglob('*.py'))):
+            for node in ast.walk(ast.parse(f.read_text(), str(f))):
+                if isinstance(node, ast.Import):
+                    names.update(a.name.split('.')[0] for a in node.names)
+                elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+                    names.add(node.module.split('.')[0])
+    local = {'ltl_instruct', 'bench', 'translation_cases', 'ltl_oracles', 'learned_synthetic'}
+    return {n for n in names if n not in sys.stdlib_module_names and n not in local}
+
+
+def test_package_xml_declares_every_import():
+    """Each third-party module imported is provided by a key package.xml declares (rosdep or pip key)."""
+    import xml.etree.ElementTree as ElementTree
+    table = yaml.safe_load((REPO / 'test' / 'package_imports.yaml').read_text())
+    root = ElementTree.parse(REPO / 'package.xml').getroot()
+    exec_keys = {e.text for e in root.iter('exec_depend')}
+    test_keys = {e.text for e in root.iter('test_depend')}
+    runtime = _imported_modules([REPO / 'ltl_instruct', REPO / 'launch' / 'ltl_instruct.launch.py'])
+    unknown = runtime - set(table['exec'])
+    assert not unknown, f'imported by ltl_instruct but not in test/package_imports.yaml: {unknown}'
+    assert {table['exec'][m] for m in runtime} <= exec_keys
+    tests = _imported_modules([REPO / 'test', REPO / 'bench']) - runtime
+    unknown = tests - set(table['exec']) - set(table['test'])
+    assert not unknown, f'imported by the tests but not in test/package_imports.yaml: {unknown}'
+    assert {table['test'][m] for m in tests if m in table['test']} <= test_keys | exec_keys
+    # every pip key has its rosdep rule (a pip package) in rosdep/ltl_instruct.yaml
+    rules = yaml.safe_load((REPO / 'rosdep' / 'ltl_instruct.yaml').read_text())
+    for key in sorted(k for k in exec_keys | test_keys if k.endswith('-pip')):
+        assert rules[key]['ubuntu']['pip']['packages'], key

@@ -1,0 +1,145 @@
+"""Many robots on one graph, each in its namespace (issue 19 benchmark).
+
+Run: ``.venv/bin/python -m bench.fleet [--robots 10] [--rounds 4]``.
+
+First one robot alone (namespace ``/solo``), then ``--robots`` robots at once
+(``/r0`` ... ``/r9``), each a full set of five node processes (offline translator,
+camera off) on the built-in apartment, on one private ROS_DOMAIN_ID. Every robot sends
+its English instructions one at a time, all robots at the same time, and the client of
+each robot (in its namespace) measures instruction -> ``plan`` latency. Process start is
+not counted. Reported: latency per robot and over all of them against the one robot
+alone (target: median within 2x), cross-talk (a status, spec, referent map or plan of
+another robot's instruction heard in a namespace: none allowed) and lost instructions
+(sent, and no terminal status: none allowed).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import random
+import statistics
+import sys
+import tempfile
+import threading
+import time
+from pathlib import Path
+from typing import Any
+
+from bench.pipeline import INSTRUCTIONS
+
+QUIET = {'sim_world': {'camera_rate_hz': 0.0, 'time_scale': 1.0},
+         'referent_grounder': {'use_camera': False}, 'ltl_translator': {'backend': 'offline'}}
+
+
+def _start(namespaces: list[str], logs: Path) -> tuple[list[Any], dict[str, Any]]:
+    """Start a graph and a client per namespace; return them once every robot's graph is up."""
+    from ltl_instruct.commands.bringup import (
+        ALL_NODES, NodeGraph, default_params_file, merge_overrides, robot_overrides,
+    )
+    from ltl_instruct.nodes.client import GraphClient
+    graphs, clients = [], {}
+    for ns in namespaces:
+        overrides = merge_overrides(QUIET, robot_overrides(ns.strip('/') + '/'))
+        graphs.append(NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs,
+                                namespace=ns).start())
+        clients[ns] = GraphClient('bench_fleet', namespace=ns)
+    return graphs, clients
+
+
+def _drive(client: Any, rounds: int, offset: int, out: dict[str, Any]) -> None:
+    """Send ``rounds`` instructions one at a time (two warm-ups first); record latency and ids."""
+    out.update(latencies=[], sent=[], failed=[])
+    for k in range(rounds + 2):
+        text = INSTRUCTIONS[(k + offset) % len(INSTRUCTIONS)]
+        t0 = time.monotonic()
+        iid = client.send(text=text)
+        out['sent'].append(iid)
+        try:
+            status = client.wait_terminal(iid, timeout=180.0)
+        except Exception as e:  # noqa: BLE001 - a lost instruction is a figure, not a crash
+            out['failed'].append((text, str(e)))
+            continue
+        if status['status'] != 'planned':
+            out['failed'].append((text, status.get('error')))
+            continue
+        stamp = status['plan_stamp']
+        client.wait_until(lambda: client.received.plans.get(stamp) is not None, 30.0)
+        if k >= 2:
+            out['latencies'].append(time.monotonic() - t0)
+
+
+def _run(namespaces: list[str], rounds: int, logs: Path) -> dict[str, dict[str, Any]]:
+    """Run every robot at once; return per namespace its latencies, ids sent, failures, what it heard."""
+    graphs, clients = _start(namespaces, logs)
+    results: dict[str, dict[str, Any]] = {ns: {} for ns in namespaces}
+    try:
+        t0 = time.monotonic()
+        for ns, client in clients.items():
+            if not client.wait_for_graph(timeout=600.0, need_sim=True):
+                missing = client.missing(need_sim=True)
+                raise SystemExit(f'{ns}: graph did not come up ({missing}); logs in {logs}')
+        print(f'  {len(namespaces)} robot(s) up in {time.monotonic() - t0:.1f} s (not counted)', flush=True)
+        threads = [threading.Thread(target=_drive, args=(clients[ns], rounds, k, results[ns]))
+                   for k, ns in enumerate(namespaces)]
+        for t in threads:
+            t.start()
+        for t in threads:
+            t.join()
+        time.sleep(1.0)   # anything crossing over would have come by now
+        for ns, client in clients.items():
+            got = client.received
+            heard = set(got.statuses) | set(got.specs) | set(got.referent_maps)
+            results[ns]['foreign'] = sorted(heard - set(results[ns]['sent']))
+            known = {s.get('plan_stamp') for ss in client.received.statuses.values() for s in ss}
+            results[ns]['foreign'] += [f'plan {k}' for k in sorted(set(client.received.plans) - known)]
+            results[ns]['lost'] = [i for i in results[ns]['sent'] if client.terminal(i) is None]
+        for ns, g in zip(namespaces, graphs):
+            results[ns]['dead'] = g.dead()
+    finally:
+        for client in clients.values():
+            client.close()
+        for g in graphs:
+            g.stop()
+    return results
+
+
+def _ms(values: list[float]) -> str:
+    return f'{statistics.median(values) * 1000:6.0f} ms' if values else '     - ms'
+
+
+def main(argv: list[str]) -> int:
+    """Run the benchmark and print its figures; 0 without cross-talk or loss and with the target met."""
+    parser = argparse.ArgumentParser(prog='python -m bench.fleet', description=__doc__.splitlines()[0])
+    parser.add_argument('--robots', type=int, default=10, help='robots on the graph at once (default 10)')
+    parser.add_argument('--rounds', type=int, default=4, help='timed instructions per robot (default 4)')
+    args = parser.parse_args(argv)
+    os.environ['ROS_DOMAIN_ID'] = str(random.randint(120, 229))
+    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
+    os.environ.pop('ROS_LOCALHOST_ONLY', None)
+    logs = Path(tempfile.mkdtemp(prefix='bench_fleet_'))
+    print(f'one robot alone, {args.rounds} instructions; logs in {logs}', flush=True)
+    solo = _run(['/solo'], args.rounds, logs)['/solo']
+    print(f'{args.robots} robots at once, {args.rounds} instructions each', flush=True)
+    fleet = _run([f'/r{k}' for k in range(args.robots)], args.rounds, logs)
+    every = [v for r in fleet.values() for v in r['latencies']]
+    print('instruction -> plan latency (median per robot):')
+    for ns, r in fleet.items():
+        timed, failed = len(r['latencies']), len(r['failed'])
+        print(f'  {ns:<6} {_ms(r["latencies"])}  ({timed} timed, {failed} not planned)')
+    foreign = sum(len(r['foreign']) for r in fleet.values())
+    lost = sum(len(r['lost']) for r in fleet.values()) + len(solo['lost'])
+    ratio = statistics.median(every) / statistics.median(solo['latencies']) if every and solo['latencies'] \
+        else float('inf')
+    print(f'one robot alone: median {_ms(solo["latencies"])}; {args.robots} robots: median {_ms(every)}, '
+          f'p90 {sorted(every)[int(0.9 * (len(every) - 1))] * 1000:.0f} ms; ratio {ratio:.2f} (target <= 2)'
+          if every else 'no plan was made')
+    print(f'cross-talk: {foreign} message(s) of another robot heard; lost instructions: {lost}; '
+          f'nodes dead at the end: {sum(len(r["dead"]) for r in fleet.values())}')
+    failed = [f for r in fleet.values() for f in r['failed']]
+    if failed:
+        print(f'not planned: {len(failed)}, e.g. {failed[:3]}')
+    return 0 if foreign == 0 and lost == 0 and ratio <= 2.0 else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))

@@ -210,3 +210,47 @@ def test_odometry_in_a_foreign_frame_is_rejected_on_task_status(robots):
     assert status is not None
     assert status['error']['details'] == {'frame': 'r1/map', 'expected': ['r2/map']}
     assert 'r1/map' in status['error']['message'] and 'r2/map' in status['error']['message']
+
+
+def _conditions(ns: str, node: str) -> set[str]:
+    """The table's "when" values that hold for ``node`` of robot ``ns`` as the fixture starts it."""
+    held = {'always', 'ground'}
+    if ns == '/r1':   # on simulated time: the simulator makes the clock, the others read it
+        held.add('publish_clock' if node == 'sim_world' else 'use_sim_time')
+    return held
+
+
+def _qos_text(profile) -> str:
+    from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
+    if profile.reliability == ReliabilityPolicy.BEST_EFFORT:
+        return 'best effort'
+    return 'latched' if profile.durability == DurabilityPolicy.TRANSIENT_LOCAL else 'reliable'
+
+
+def test_readme_interface_table_matches_the_running_nodes(robots):
+    """Each endpoint the nodes have on the graph is a README table row, and each row that applies is one."""
+    from readme_tables import read_table
+    from rclpy.topic_endpoint_info import TopicEndpointTypeEnum
+    rows = read_table('topics')
+    _, clients, _ = robots
+    for ns, client in clients.items():
+        node = client.node
+        seen = set()
+        for topic, _ in node.get_topic_names_and_types():
+            if topic in ('/rosout', '/parameter_events'):
+                continue
+            endpoints = node.get_publishers_info_by_topic(topic) + node.get_subscriptions_info_by_topic(topic)
+            for info in endpoints:
+                if info.node_namespace != ns or info.node_name not in ALL_NODES:
+                    continue   # this test's clients, the other robot
+                kind = 'pub' if info.endpoint_type == TopicEndpointTypeEnum.PUBLISHER else 'sub'
+                name = topic if topic in SHARED else topic[len(ns) + 1:]
+                seen.add((info.node_name, kind, name, info.topic_type.replace('/msg/', '/'),
+                          _qos_text(info.qos_profile)))
+        expected = set()
+        for r in rows:
+            nodes = ALL_NODES if r['node'] == 'every node' else (r['node'],)
+            for n in nodes:
+                if r['when'] in _conditions(ns, n):
+                    expected.add((n, r['pub/sub'], r['topic'], r['type'], r['QoS'].rsplit(' ', 1)[0]))
+        assert seen == expected, (ns, sorted(seen - expected), sorted(expected - seen))

@@ -209,3 +209,68 @@ def test_package_xml_declares_every_import():
     rules = yaml.safe_load((REPO / 'rosdep' / 'ltl_instruct.yaml').read_text())
     for key in sorted(k for k in exec_keys | test_keys if k.endswith('-pip')):
         assert rules[key]['ubuntu']['pip']['packages'], key
+
+
+def _table_default(value) -> str:
+    if isinstance(value, bool):
+        return 'true' if value else 'false'
+    return '""' if value == '' else str(value)
+
+
+def _table_range(spec) -> str:
+    if spec.choices:
+        return ' | '.join(spec.choices)
+    return f'{spec.low:g} .. {spec.high:g}' if spec.low is not None else ''
+
+
+def test_readme_parameter_table_matches_what_each_node_declares():
+    from readme_tables import read_table
+
+    from ltl_instruct.nodes import (fmt_planner, ltl_translator, referent_grounder, sim_world,
+                                    task_progression)
+    from ltl_instruct.nodes.common import COMMON_PARAMS
+    modules = {'ltl_translator': ltl_translator, 'referent_grounder': referent_grounder,
+               'task_progression': task_progression, 'fmt_planner': fmt_planner, 'sim_world': sim_world}
+    expected = {('every node', p.name): (p, False) for p in COMMON_PARAMS}
+    for node, module in modules.items():
+        assert set(module.RUNTIME) <= {p.name for p in module.PARAMS}, node
+        expected.update({(node, p.name): (p, p.name in module.RUNTIME) for p in module.PARAMS})
+    rows = {(r['node'], r['parameter']): r for r in read_table('parameters')}
+    assert set(rows) == set(expected), set(rows) ^ set(expected)
+    for key, (spec, runtime) in expected.items():
+        row = rows[key]
+        assert row['default'] == _table_default(spec.default), (key, row['default'])
+        assert row['range'] == _table_range(spec), (key, row['range'])
+        assert row['at runtime'] == ('set' if runtime else 'read-only'), key
+
+
+def _published_statuses() -> set[str]:
+    """Every ``status`` task_progression can publish: the literal or constant given to publish_status."""
+    import ast
+    from ltl_instruct.core import lifecycle
+    from ltl_instruct.core.monitor import Verdict
+    tree = ast.parse((REPO / 'ltl_instruct' / 'nodes' / 'task_progression.py').read_text())
+    found: set[str] = set()
+    for node in ast.walk(tree):
+        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)):
+            continue
+        if node.func.attr == '_fail':
+            found.add('failed')
+        if node.func.attr != 'publish_status' or len(node.args) < 2:
+            continue
+        arg = node.args[1]
+        if isinstance(arg, ast.Constant):
+            found.add(arg.value)
+        elif isinstance(arg, ast.Name):
+            found.add(getattr(lifecycle, arg.id))
+        else:   # the monitor's verdict
+            assert 'verdict' in ast.unparse(arg), ast.unparse(arg)
+            found.update(v.value for v in Verdict)
+    return found
+
+
+def test_readme_status_table_names_every_status_task_progression_publishes():
+    from readme_tables import read_table
+    documented = {r['status'] for r in read_table('statuses')}
+    published = _published_statuses()
+    assert published == documented, published ^ documented

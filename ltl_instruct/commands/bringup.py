@@ -163,13 +163,15 @@ class NodeGraph:
         statuses); None: a temporary folder for this run when nodes are restarted, else none.
     namespace: the namespace of every node (``''``: the root); logs are then ``<ns>.<node>.log``.
     log_level: the nodes' log level (``''``: their default).
+    prefix: a command every node is started under (``ip netns exec NAME``: a network namespace).
     """
 
     def __init__(self, nodes: Sequence[str], params_file: Optional[Path] = None,
                  overrides: Optional[Mapping[str, Mapping[str, object]]] = None,
                  env: Optional[Mapping[str, str]] = None, log_dir: Optional[Path] = None,
                  restart: Optional[RestartPolicy] = None, say: Callable[[str], None] = _say,
-                 state_dir: Optional[Path] = None, namespace: str = '', log_level: str = '') -> None:
+                 state_dir: Optional[Path] = None, namespace: str = '', log_level: str = '',
+                 prefix: Sequence[str] = ()) -> None:
         unknown = [n for n in nodes if n not in ALL_NODES]
         if unknown:
             raise InvalidInputError(f'unknown node(s) {unknown} (known: {", ".join(ALL_NODES)})')
@@ -178,6 +180,7 @@ class NodeGraph:
         if log_level and log_level not in LOG_LEVELS:
             raise InvalidInputError(f'log level {log_level!r} is not one of {", ".join(LOG_LEVELS)}')
         self.log_level = log_level
+        self.prefix = list(prefix)
         self.params_file = params_file
         self.overrides = {k: dict(v) for k, v in (overrides or {}).items()}
         self.env = dict(os.environ)
@@ -225,7 +228,8 @@ class NodeGraph:
             out = open(self.log_path(name), mode)
             self._logs.append(out)
         self.processes[name] = subprocess.Popen(
-            node_command(name, self.params_file, self.overrides.get(name), self.namespace, self.log_level),
+            self.prefix + node_command(name, self.params_file, self.overrides.get(name), self.namespace,
+                                       self.log_level),
             env=self.env,
             stdout=out, stderr=subprocess.STDOUT if out is not None else None,
             start_new_session=True)

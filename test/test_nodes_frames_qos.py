@@ -157,3 +157,15 @@ def test_stamps_follow_the_node_clock_and_always_grow(two_contexts):
     values = [next(stamps) for _ in range(1000)]
     assert all(b > a for a, b in zip(values, values[1:]))
     assert abs(values[-1] / 1e9 - time.time()) < 5.0
+
+
+@pytest.mark.parametrize('args, says', [(['--namespace', '1bad'], "namespace '1bad'"),
+                                        (['--frame-prefix', 'r1'], 'frame_prefix')])
+def test_bringup_refuses_a_bad_namespace_or_frame_prefix_before_starting_anything(args, says):
+    import subprocess
+    import sys
+    from pathlib import Path
+    repo = Path(__file__).resolve().parent.parent
+    proc = subprocess.run([sys.executable, '-m', 'ltl_instruct', 'bringup', *args], capture_output=True,
+                          text=True, timeout=120, env=dict(os.environ, PYTHONPATH=str(repo)))
+    assert proc.returncode == 2 and says in proc.stderr and 'started' not in proc.stdout, proc

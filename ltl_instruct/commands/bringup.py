@@ -394,7 +394,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help='prefix of every frame id (e.g. r1/ for r1/map, r1/odom, r1/base_link)')
     parser.add_argument('--use-sim-time', action='store_true',
                         help='the simulator publishes /clock and the other nodes run on it')
-    parser.add_argument('--log-level', default='', choices=('',) + LOG_LEVELS,
+    parser.add_argument('--log-level', default=None, choices=LOG_LEVELS,
                         help='log level of every node (default: info)')
     parser.add_argument('--max-restarts', type=int, default=RestartPolicy.max_quick_restarts,
                         help='quick crashes in a row (within 30 s of a start) before a node is given up '
@@ -409,13 +409,16 @@ def run(args: argparse.Namespace) -> int:
     nodes = list(PIPELINE_NODES) + ([SIM_NODE] if args.sim else [])
     if args.nodes:
         nodes = [n.strip() for n in args.nodes.split(',') if n.strip()]
+    if args.frame_prefix:   # checked here, not by five nodes that would each exit 2
+        from ltl_instruct.nodes.common import COMMON_PARAMS
+        next(p for p in COMMON_PARAMS if p.name == 'frame_prefix').check(args.frame_prefix)
     overrides = merge_overrides(scene_overrides(args.scene) if args.scene else {},
                                 robot_overrides(args.frame_prefix, args.use_sim_time))
     if args.max_restarts < 0:
         raise InvalidInputError(f'--max-restarts must be 0 or more, not {args.max_restarts}')
     restart = RestartPolicy(max_quick_restarts=args.max_restarts) if args.respawn else None
     graph = NodeGraph(nodes, Path(params), overrides, log_dir=args.log_dir, restart=restart,
-                      state_dir=args.state_dir, namespace=args.namespace, log_level=args.log_level)
+                      state_dir=args.state_dir, namespace=args.namespace, log_level=args.log_level or '')
     stop = {'now': False}
 
     def on_signal(signum: int, frame: object) -> None:

@@ -132,7 +132,9 @@ def _in_private_network(argv: list[str]) -> int:
         for step in (['link', 'set', 'lo', 'up'], ['link', 'set', 'lo', 'multicast', 'on'],
                      ['route', 'add', '224.0.0.0/4', 'dev', 'lo']):
             subprocess.run(['ip', '-n', name, *step], check=True, capture_output=True)
-        env = dict(os.environ, ROS_AUTOMATIC_DISCOVERY_RANGE='SUBNET')
+        # UDP only: Fast DDS's shared-memory ports live in /dev/shm, which the namespace shares with
+        # every other Fast DDS process of the host (a run logged "Failed init_port ... open_and_lock_file")
+        env = dict(os.environ, ROS_AUTOMATIC_DISCOVERY_RANGE='SUBNET', FASTDDS_BUILTIN_TRANSPORTS='UDPv4')
         return subprocess.run(['ip', 'netns', 'exec', name, sys.executable, '-m', 'bench.fleet', '--no-netns',
                                '--discovery', 'SUBNET', *argv], env=env).returncode
     finally:

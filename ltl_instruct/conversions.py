@@ -6,7 +6,8 @@ message type and the message layouts are tested once. Covered:
 - JSON payloads on ``std_msgs/String`` (schema name + version + instruction ``id``),
   with size limits and typed errors;
 - ``nav_msgs/Path`` <-> points (N, 3) [m];
-- ``nav_msgs/Odometry`` -> :class:`~ltl_instruct.core.world.robot.Pose` (NaN rejected);
+- ``nav_msgs/Odometry`` -> :class:`~ltl_instruct.core.world.robot.Pose` (NaN rejected), in the
+  map frame (:func:`odometry_in_map`: a pose in another frame is a ``FRAME_MISMATCH``);
 - ``nav_msgs/OccupancyGrid`` <-> :class:`~ltl_instruct.core.world.robot.OccupancyRaster`;
 - ``sensor_msgs/PointCloud2`` <-> float32 fields (packed with numpy: no sensor_msgs_py);
 - ``sensor_msgs/Image`` <-> numpy (rgb8, 32FC1 depth [m], 32SC1 labels), ``CameraInfo``;
@@ -28,7 +29,7 @@ from sensor_msgs.msg import CameraInfo, Image, PointCloud2, PointField
 from std_msgs.msg import Header, String
 from visualization_msgs.msg import Marker, MarkerArray
 
-from ltl_instruct.core.errors import InvalidInputError
+from ltl_instruct.core.errors import FrameMismatchError, InvalidInputError
 from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.payloads import (  # noqa: F401  (the payload parsing lives in the core; re-exported)
     INSTRUCTION, MAX_PAYLOAD_BYTES, SCHEMA_VERSION, parse_json_payload, read_cancel, read_instruction,
@@ -36,7 +37,7 @@ from ltl_instruct.core.payloads import (  # noqa: F401  (the payload parsing liv
     safe_id as _safe_id,
 )
 from ltl_instruct.core.planning import PlanningWorld
-from ltl_instruct.core.world.robot import OccupancyRaster, Pose
+from ltl_instruct.core.world.robot import OccupancyRaster, Pose, compose_planar
 from ltl_instruct.core.world.scene import Box
 
 FRAME_ID = 'map'
@@ -200,6 +201,50 @@ def odometry_pose(msg: Odometry) -> Pose:
     if not all(math.isfinite(v) for v in values):
         raise InvalidInputError('odometry contains NaN or infinite values')
     return Pose((float(p.x), float(p.y), float(p.z)), quaternion_to_yaw(q))
+
+
+def parse_planar_pose(text: str) -> Optional[Pose]:
+    """Return the pose of ``"x,y,yaw"`` [m, m, rad] (None for ""); a parameter's text.
+
+    Raises
+    ------
+    InvalidInputError
+        Unless three finite numbers.
+    """
+    if not text.strip():
+        return None
+    try:
+        x, y, yaw = (float(v) for v in text.split(','))
+    except ValueError:
+        raise InvalidInputError(f'expected "x,y,yaw", got {text!r}') from None
+    if not all(math.isfinite(v) for v in (x, y, yaw)):
+        raise InvalidInputError(f'"x,y,yaw" must be finite, got {text!r}')
+    return Pose((x, y, 0.0), yaw)
+
+
+def odometry_in_map(msg: Odometry, map_frame: str, odom_frame: str, map_to_odom: Optional[Pose]) -> Pose:
+    """Return the odometry's pose in ``map_frame``.
+
+    A pose in ``map_frame`` is taken as it is; one in ``odom_frame`` is moved by the fixed
+    ``map_to_odom`` (the odom frame's pose in the map) when one is given.
+
+    Raises
+    ------
+    FrameMismatchError
+        For any other frame (the message names both): planning from it would be wrong.
+    InvalidInputError
+        On NaN or infinite values.
+    """
+    frame = msg.header.frame_id
+    pose = odometry_pose(msg)
+    if frame == map_frame:
+        return pose
+    if frame == odom_frame and map_to_odom is not None:
+        return compose_planar(map_to_odom, pose)
+    expected = [map_frame] + ([odom_frame] if map_to_odom is not None else [])
+    hint = '' if map_to_odom is not None else f' (set map_to_odom to take poses in {odom_frame!r})'
+    raise FrameMismatchError(f'odometry is in frame {frame!r}, expected {" or ".join(map(repr, expected))}'
+                             f'{hint}', details={'frame': frame, 'expected': expected})
 
 
 # ---------------------------------------------------------------------------- occupancy grid
@@ -524,18 +569,22 @@ def camera_intrinsics(msg: CameraInfo) -> tuple[int, int, float, float, float, f
 
 # ---------------------------------------------------------------------------- markers
 def referent_markers(rmap: ReferentMap, stamp: Optional[Time] = None,
-                     namespace: str = 'referents') -> MarkerArray:
-    """One cube and one text marker per resolved instance (green: resolved, orange: ambiguous)."""
+                     namespace: str = 'referents', frame_id: Optional[str] = None) -> MarkerArray:
+    """One cube and one text marker per resolved instance (green: resolved, orange: ambiguous).
+
+    ``frame_id`` overrides the referent map's frame (a robot's prefixed map frame).
+    """
     out = MarkerArray()
+    frame = frame_id or rmap.frame_id
     clear = Marker(action=Marker.DELETEALL)
-    clear.header = Header(stamp=stamp or Time(), frame_id=rmap.frame_id)
+    clear.header = Header(stamp=stamp or Time(), frame_id=frame)
     out.markers.append(clear)
     mid = 0
     for descriptor, g in sorted(rmap.groundings.items()):
         for inst in g.instances:
             for kind in (Marker.CUBE, Marker.TEXT_VIEW_FACING):
                 m = Marker()
-                m.header = Header(stamp=stamp or Time(), frame_id=rmap.frame_id)
+                m.header = Header(stamp=stamp or Time(), frame_id=frame)
                 m.ns, m.id, m.type, m.action = namespace, mid, kind, Marker.ADD
                 mid += 1
                 x, y, z = inst.center

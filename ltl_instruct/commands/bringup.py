@@ -9,11 +9,17 @@ With a :class:`RestartPolicy` (``bringup`` has one unless ``--no-respawn``), a n
 dies is started again after a back-off that doubles with each quick crash in a row; a
 node that crashes too often, or exits 2 (its parameters are invalid: it would only fail
 again), is not, and ``bringup`` then stops the rest.
+
+``--namespace r1`` starts every node in ``/r1`` (``-r __ns:=/r1``): all its topics are
+relative, so several robots share one graph without hearing each other; the parameters
+file's ``/**/<node>`` keys apply in any namespace. ``--frame-prefix r1/`` prefixes every
+frame id, ``--use-sim-time`` runs the nodes on the simulator's ``/clock``.
 """
 from __future__ import annotations
 
 import argparse
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -55,10 +61,48 @@ def default_params_file() -> Path:
     raise InvalidInputError(f'cannot find {PARAMS_FILE_NAME}: pass --params FILE')
 
 
+LOG_LEVELS = ('debug', 'info', 'warn', 'error', 'fatal')
+
+
+def normalize_namespace(namespace: str) -> str:
+    """Return ``namespace`` as an absolute ROS namespace (``r1`` -> ``/r1``; ``''`` -> ``''``).
+
+    Raises
+    ------
+    InvalidInputError
+        Unless made of ROS name tokens (letters, digits, ``_``; no leading digit) joined by ``/``.
+    """
+    text = namespace.strip().strip('/')
+    if not text:
+        return ''
+    if not all(re.fullmatch(r'[A-Za-z_][A-Za-z0-9_]*', part) for part in text.split('/')):
+        raise InvalidInputError(f'namespace {namespace!r} is not a valid ROS namespace')
+    return '/' + text
+
+
+def file_parameters(params: Mapping[str, object], node: str) -> dict[str, object]:
+    """Return what a parameters file (loaded YAML) gives node ``node`` in any namespace.
+
+    ``/**`` applies to every node, then ``/**/<node>`` (and a bare ``<node>``, for a node in
+    the root namespace) over it, as rcl merges them.
+    """
+    out: dict[str, object] = {}
+    for key in ('/**', node, f'/**/{node}'):
+        section = params.get(key)
+        if isinstance(section, dict):
+            out.update(section.get('ros__parameters') or {})
+    return out
+
+
 def node_command(name: str, params_file: Optional[Path] = None,
-                 overrides: Optional[Mapping[str, object]] = None) -> list[str]:
+                 overrides: Optional[Mapping[str, object]] = None, namespace: str = '',
+                 log_level: str = '') -> list[str]:
     """Return the command line that starts node ``name`` with a parameters file and ``-p`` overrides."""
     cmd = [sys.executable, '-m', f'{PACKAGE}.nodes.{name}', '--ros-args']
+    if namespace:
+        cmd += ['-r', f'__ns:={normalize_namespace(namespace)}']
+    if log_level:
+        cmd += ['--log-level', log_level]
     if params_file is not None:
         cmd += ['--params-file', str(params_file)]
     for key, value in (overrides or {}).items():
@@ -117,17 +161,26 @@ class NodeGraph:
     say: where restarts are reported (default: stderr).
     state_dir: where a node keeps what it must remember across its restart (``task_progression``'s
         statuses); None: a temporary folder for this run when nodes are restarted, else none.
+    namespace: the namespace of every node (``''``: the root); logs are then ``<ns>.<node>.log``.
+    log_level: the nodes' log level (``''``: their default).
+    prefix: a command every node is started under (``ip netns exec NAME``: a network namespace).
     """
 
     def __init__(self, nodes: Sequence[str], params_file: Optional[Path] = None,
                  overrides: Optional[Mapping[str, Mapping[str, object]]] = None,
                  env: Optional[Mapping[str, str]] = None, log_dir: Optional[Path] = None,
                  restart: Optional[RestartPolicy] = None, say: Callable[[str], None] = _say,
-                 state_dir: Optional[Path] = None) -> None:
+                 state_dir: Optional[Path] = None, namespace: str = '', log_level: str = '',
+                 prefix: Sequence[str] = ()) -> None:
         unknown = [n for n in nodes if n not in ALL_NODES]
         if unknown:
             raise InvalidInputError(f'unknown node(s) {unknown} (known: {", ".join(ALL_NODES)})')
         self.nodes = tuple(nodes)
+        self.namespace = normalize_namespace(namespace)
+        if log_level and log_level not in LOG_LEVELS:
+            raise InvalidInputError(f'log level {log_level!r} is not one of {", ".join(LOG_LEVELS)}')
+        self.log_level = log_level
+        self.prefix = list(prefix)
         self.params_file = params_file
         self.overrides = {k: dict(v) for k, v in (overrides or {}).items()}
         self.env = dict(os.environ)
@@ -172,13 +225,21 @@ class NodeGraph:
         """Start node ``name`` (lock held); a restarted one appends to its log."""
         out: Optional[IO[bytes]] = None
         if self.log_dir is not None:
-            out = open(self.log_dir / f'{name}.log', mode)
+            out = open(self.log_path(name), mode)
             self._logs.append(out)
         self.processes[name] = subprocess.Popen(
-            node_command(name, self.params_file, self.overrides.get(name)), env=self.env,
+            self.prefix + node_command(name, self.params_file, self.overrides.get(name), self.namespace,
+                                       self.log_level),
+            env=self.env,
             stdout=out, stderr=subprocess.STDOUT if out is not None else None,
             start_new_session=True)
         self._started[name] = time.monotonic()
+
+    def log_path(self, name: str) -> Path:
+        """Return where node ``name``'s output goes (under ``log_dir``)."""
+        assert self.log_dir is not None
+        prefix = self.namespace.strip('/').replace('/', '.')
+        return self.log_dir / (f'{prefix}.{name}.log' if prefix else f'{name}.log')
 
     def dead(self) -> dict[str, int]:
         """Nodes that have exited (and are not running again yet), with their exit status."""
@@ -287,6 +348,29 @@ def scene_overrides(name_or_path: str) -> dict[str, dict[str, object]]:
     return out
 
 
+def robot_overrides(frame_prefix: str = '', use_sim_time: bool = False) -> dict[str, dict[str, object]]:
+    """Return the per-node parameters of one robot on a shared graph: its frames and its clock.
+
+    With ``use_sim_time`` the simulator publishes ``/clock`` and every other node reads it.
+    """
+    out: dict[str, dict[str, object]] = {name: {} for name in ALL_NODES}
+    for name in ALL_NODES:
+        if frame_prefix:
+            out[name]['frame_prefix'] = frame_prefix
+        if use_sim_time:
+            out[name].update({'publish_clock': True} if name == SIM_NODE else {'use_sim_time': True})
+    return {name: values for name, values in out.items() if values}
+
+
+def merge_overrides(*layers: Mapping[str, Mapping[str, object]]) -> dict[str, dict[str, object]]:
+    """Return per-node parameters with each layer's values over the earlier ones'."""
+    out: dict[str, dict[str, object]] = {}
+    for layer in layers:
+        for name, values in layer.items():
+            out.setdefault(name, {}).update(values)
+    return out
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     """Arguments of ``ltl-instruct bringup``."""
     parser.add_argument('--sim', action='store_true', help='also start the simulator (sim_world)')
@@ -304,6 +388,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--state-dir', type=Path, default=None,
                         help='folder where a restarted node finds what it must remember (default: a '
                              'temporary one for this run, with --respawn)')
+    parser.add_argument('--namespace', default='',
+                        help='start every node in this namespace (one robot of several on a graph)')
+    parser.add_argument('--frame-prefix', default='',
+                        help='prefix of every frame id (e.g. r1/ for r1/map, r1/odom, r1/base_link)')
+    parser.add_argument('--use-sim-time', action='store_true',
+                        help='the simulator publishes /clock and the other nodes run on it')
+    parser.add_argument('--log-level', default=None, choices=LOG_LEVELS,
+                        help='log level of every node (default: info)')
     parser.add_argument('--max-restarts', type=int, default=RestartPolicy.max_quick_restarts,
                         help='quick crashes in a row (within 30 s of a start) before a node is given up '
                              '(default %(default)s)')
@@ -317,14 +409,16 @@ def run(args: argparse.Namespace) -> int:
     nodes = list(PIPELINE_NODES) + ([SIM_NODE] if args.sim else [])
     if args.nodes:
         nodes = [n.strip() for n in args.nodes.split(',') if n.strip()]
-    overrides: dict[str, dict[str, object]] = {}
-    if args.scene:
-        overrides = scene_overrides(args.scene)
+    if args.frame_prefix:   # checked here, not by five nodes that would each exit 2
+        from ltl_instruct.nodes.common import COMMON_PARAMS
+        next(p for p in COMMON_PARAMS if p.name == 'frame_prefix').check(args.frame_prefix)
+    overrides = merge_overrides(scene_overrides(args.scene) if args.scene else {},
+                                robot_overrides(args.frame_prefix, args.use_sim_time))
     if args.max_restarts < 0:
         raise InvalidInputError(f'--max-restarts must be 0 or more, not {args.max_restarts}')
     restart = RestartPolicy(max_quick_restarts=args.max_restarts) if args.respawn else None
     graph = NodeGraph(nodes, Path(params), overrides, log_dir=args.log_dir, restart=restart,
-                      state_dir=args.state_dir)
+                      state_dir=args.state_dir, namespace=args.namespace, log_level=args.log_level or '')
     stop = {'now': False}
 
     def on_signal(signum: int, frame: object) -> None:
@@ -336,7 +430,9 @@ def run(args: argparse.Namespace) -> int:
     signal.signal(signal.SIGINT, signal.default_int_handler)
     graph.start()
     respawn = 'restarted when they die' if restart else 'not restarted (--no-respawn)'
-    print(f'started {", ".join(nodes)} (parameters: {params}; {respawn}); Ctrl-C stops them', flush=True)
+    where = f' in {graph.namespace}' if graph.namespace else ''
+    print(f'started {", ".join(nodes)}{where} (parameters: {params}; {respawn}); Ctrl-C stops them',
+          flush=True)
     status = 0
     try:
         while not stop['now']:

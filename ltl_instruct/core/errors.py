@@ -16,6 +16,7 @@ class ErrorCode(str, enum.Enum):
     PARSE_ERROR = 'PARSE_ERROR'              # malformed formula text
     LIMIT_EXCEEDED = 'LIMIT_EXCEEDED'        # input too long, too deep, too many atoms
     INVALID_INPUT = 'INVALID_INPUT'          # garbage JSON, NaN pose, wrong schema
+    FRAME_MISMATCH = 'FRAME_MISMATCH'        # a pose in a frame this robot cannot place in its map
     TRANSLATION_ERROR = 'TRANSLATION_ERROR'  # instruction could not be translated
     UNSATISFIABLE = 'UNSATISFIABLE'          # no accepting automaton state reachable
     UNKNOWN_REFERENT = 'UNKNOWN_REFERENT'    # nothing of that name is known
@@ -75,6 +76,12 @@ class InvalidInputError(LtlInstructError):
     """An input is malformed (bad JSON, wrong schema, NaN...)."""
 
     default_code = ErrorCode.INVALID_INPUT
+
+
+class FrameMismatchError(InvalidInputError):
+    """A stamped input is in a frame that cannot be placed in the robot's map frame."""
+
+    default_code = ErrorCode.FRAME_MISMATCH
 
 
 class UnsatisfiableError(LtlInstructError):

@@ -54,12 +54,15 @@ class GraphClient:
     ----------
     name: node name (a random suffix keeps several clients apart).
     record_odom: keep every odometry position (for drawing the driven path).
+    namespace: the robot's namespace (``/r1``); its topics are those of the nodes started in it.
     """
 
-    def __init__(self, name: str = 'ltl_instruct_client', record_odom: bool = False) -> None:
+    def __init__(self, name: str = 'ltl_instruct_client', record_odom: bool = False,
+                 namespace: str = '') -> None:
         self.context = Context()
         rclpy.init(context=self.context, args=[])
-        self.node = rclpy.create_node(f'{name}_{os.urandom(3).hex()}', context=self.context)
+        self.node = rclpy.create_node(f'{name}_{os.urandom(3).hex()}', context=self.context,
+                                      namespace=namespace or None)
         self.received = Received()
         self.record_odom = record_odom
         self._cond = threading.Condition()

@@ -11,17 +11,29 @@ QoS (as Nav2 names them):
 
 Parameters are declared from :class:`ParamSpec` with a description and a range, and
 validated (a bad value stops the node at start with a clear message, never later).
+Those a node names as ``runtime`` may be changed while it runs (``set_parameters``),
+validated the same way; every other one is declared read-only, so a ``set`` is refused.
+Every node also declares :data:`COMMON_PARAMS` (the robot's frame prefix and odom offset).
+
+Time: header stamps come from the node clock (:class:`StampSource`), so ``use_sim_time``
+with a ``/clock`` publisher (``sim_world publish_clock:=true``) stamps everything in
+simulated time; timers that measure waiting use the steady clock (:func:`steady_timer`),
+so they run whether or not a ``/clock`` comes.
 """
 from __future__ import annotations
 
 import math
 import os
+import re
 import sys
+import threading
 from dataclasses import dataclass
-from typing import Any, Callable, Optional, Sequence
+from typing import Any, Callable, Collection, Iterator, Optional, Sequence
 
 import rclpy
-from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
+from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor, SetParametersResult
+from rclpy.clock import Clock, ClockType
+from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.exceptions import InvalidParameterTypeException, InvalidParameterValueException
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.node import Node
@@ -69,13 +81,14 @@ class ParamSpec:
     low: Optional[float] = None
     high: Optional[float] = None
     choices: tuple[str, ...] = ()
+    pattern: str = ''
 
-    def descriptor(self) -> ParameterDescriptor:
-        """Return the ``ParameterDescriptor`` with description and range."""
+    def descriptor(self, read_only: bool = False) -> ParameterDescriptor:
+        """Return the ``ParameterDescriptor`` with description and range (and read-only flag)."""
         text = self.description
         if self.choices:
             text += f' (one of: {", ".join(self.choices)})'
-        d = ParameterDescriptor(description=text)
+        d = ParameterDescriptor(description=text, read_only=read_only)
         if isinstance(self.default, bool):
             return d
         if isinstance(self.default, int) and self.low is not None and self.high is not None:
@@ -105,11 +118,60 @@ class ParamSpec:
                 raise InvalidInputError(f'parameter {self.name}={value} outside [{self.low}, {self.high}]')
         if self.choices and value not in self.choices:
             raise InvalidInputError(f'parameter {self.name}={value!r} not one of {self.choices}')
+        if self.pattern and not re.fullmatch(self.pattern, value):
+            raise InvalidInputError(f'parameter {self.name}={value!r} does not match {self.pattern}')
         return value
 
 
-def declare_parameters(node: Node, specs: Sequence[ParamSpec]) -> dict[str, Any]:
-    """Declare every parameter with its descriptor; return the validated values by name.
+COMMON_PARAMS = (
+    ParamSpec('frame_prefix', '', 'prefix of every frame id this robot\'s nodes use and expect '
+              '("r1/" gives r1/map, r1/odom, r1/base_link; "" = none)', pattern=r'([A-Za-z0-9_]+/)*'),
+    ParamSpec('map_to_odom', '', 'fixed pose "x,y,yaw" [m, m, rad] of the odom frame in the map frame: '
+              'odometry in the odom frame is moved into the map frame by it ("" = odometry must be in map)',
+              pattern=r'|\s*[-+0-9.eE]+\s*,\s*[-+0-9.eE]+\s*,\s*[-+0-9.eE]+\s*'),
+)
+
+
+@dataclass(frozen=True)
+class Frames:
+    """The frame ids of one robot: the REP 105 names with its prefix."""
+
+    prefix: str = ''
+
+    @property
+    def map(self) -> str:
+        """The global frame of plans, maps and regions."""
+        return f'{self.prefix}map'
+
+    @property
+    def odom(self) -> str:
+        """The odometry frame (moved into ``map`` by ``map_to_odom``)."""
+        return f'{self.prefix}odom'
+
+    @property
+    def base_link(self) -> str:
+        """The robot body frame (odometry's child frame)."""
+        return f'{self.prefix}base_link'
+
+    @property
+    def camera(self) -> str:
+        """The camera's optical frame."""
+        return f'{self.prefix}camera_optical'
+
+
+def frames_of(params: dict[str, Any]) -> Frames:
+    """Return the robot's frames from a node's declared parameters."""
+    return Frames(str(params.get('frame_prefix', '')))
+
+
+def declare_parameters(node: Node, specs: Sequence[ParamSpec], runtime: Collection[str] = (),
+                       on_change: Optional[Callable[[str, Any], None]] = None) -> dict[str, Any]:
+    """Declare every parameter (and :data:`COMMON_PARAMS`); return the validated values by name.
+
+    Parameters named in ``runtime`` may be set while the node runs: a new value is
+    validated by its :class:`ParamSpec` (refused with the reason when invalid), then
+    written into the returned dict (which the node reads at each use) and passed to
+    ``on_change``. Every other parameter is read-only.
 
     Raises
     ------
@@ -117,13 +179,94 @@ def declare_parameters(node: Node, specs: Sequence[ParamSpec]) -> dict[str, Any]
         If a value given on the command line or in a parameters file is invalid.
     """
     values: dict[str, Any] = {}
-    for spec in specs:
+    by_name = {s.name: s for s in tuple(specs) + COMMON_PARAMS}
+    for spec in by_name.values():
         try:
-            node.declare_parameter(spec.name, spec.default, spec.descriptor())
+            node.declare_parameter(spec.name, spec.default,
+                                   spec.descriptor(read_only=spec.name not in runtime))
         except (InvalidParameterValueException, InvalidParameterTypeException) as e:
             raise InvalidInputError(f'parameter {spec.name}: {e}') from None
         values[spec.name] = spec.check(node.get_parameter(spec.name).value)
+    live = {name: by_name[name] for name in runtime if name in by_name}
+
+    def on_set(parameters: list) -> SetParametersResult:
+        try:
+            checked = [(p.name, live[p.name].check(p.value)) for p in parameters if p.name in live]
+        except InvalidInputError as e:
+            return SetParametersResult(successful=False, reason=e.message)
+        for name, value in checked:
+            values[name] = value
+            if on_change is not None:
+                on_change(name, value)
+        return SetParametersResult(successful=True)
+
+    node.add_on_set_parameters_callback(on_set)
     return values
+
+
+def steady_timer(node: Node, period: float, callback: Callable[[], None]) -> Any:
+    """Create a timer on the steady clock: it fires under ``use_sim_time`` whether ``/clock`` runs or not."""
+    return node.create_timer(period, callback, clock=Clock(clock_type=ClockType.STEADY_TIME))
+
+
+class StampSource:
+    """Header stamps from the node clock, strictly increasing (each one also keys a plan or a request).
+
+    Under ``use_sim_time`` they are simulated time; two stamps asked for within the same
+    clock tick (or before the first ``/clock``) are made one nanosecond apart.
+    """
+
+    def __init__(self, node: Node) -> None:
+        self._clock = node.get_clock()
+        self._last = 0
+        self._lock = threading.Lock()
+
+    def __iter__(self) -> Iterator[int]:
+        return self
+
+    def __next__(self) -> int:
+        """Return the next stamp [ns]: the clock's now, or one more than the last one."""
+        with self._lock:
+            self._last = max(self._clock.now().nanoseconds, self._last + 1)
+            return self._last
+
+
+class _SampleFilter:
+    """Let each sample through once, in order: the same odometry may come on two subscriptions."""
+
+    def __init__(self) -> None:
+        self._last: Optional[tuple[int, int]] = None
+        self._lock = threading.Lock()
+
+    def admit(self, info: Any) -> bool:
+        """Tell whether a sample (by its source time and sequence number) is new and not older."""
+        key = (int(info.get('source_timestamp', 0)), int(info.get('publication_sequence_number', 0)))
+        with self._lock:
+            last = self._last
+            if last is not None and (key == last or (key[0] <= last[0] and key[1] <= last[1])):
+                return False
+            self._last = key
+            return True
+
+
+def subscribe_any_reliability(node: Node, msg_type: Any, topic: str, callback: Callable[[Any], None],
+                              depth: int) -> None:
+    """Subscribe ``topic`` so that reliable and best-effort publishers are both heard.
+
+    A reliable subscription matches only reliable publishers; a best-effort one matches
+    both, but turns a reliable publisher's stream best effort. Both are made: a reliable
+    publisher is heard reliably (its samples also come on the best-effort one and are
+    dropped as repeats), a best-effort one on the best-effort subscription.
+    """
+    seen = _SampleFilter()
+
+    def on_message(msg: Any, info: Any) -> None:
+        if seen.admit(info):
+            callback(msg)
+
+    quiet = SubscriptionEventCallbacks(incompatible_qos=lambda event: None)
+    node.create_subscription(msg_type, topic, on_message, reliable_qos(depth), event_callbacks=quiet)
+    node.create_subscription(msg_type, topic, on_message, sensor_qos(depth))
 
 
 def run_node(make_node: Callable[[], Node], args: Optional[Sequence[str]] = None,

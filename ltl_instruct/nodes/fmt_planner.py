@@ -35,7 +35,9 @@ from std_msgs.msg import String
 from ltl_instruct import conversions as conv
 from ltl_instruct.core import planning
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError
-from ltl_instruct.nodes.common import ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node
+from ltl_instruct.nodes.common import (
+    ParamSpec, declare_parameters, frames_of, latched_qos, reliable_qos, run_node,
+)
 
 PARAMS = (
     ParamSpec('robot_radius', 0.3, 'obstacles are inflated by this much [m]', 0.0, 10.0),
@@ -52,6 +54,9 @@ PARAMS = (
     ParamSpec('map_timeout', 5.0, 'how long a request waits for a first map [s]', 0.0, 600.0),
 )
 
+# read at each request, so they may be set while the node runs; the map's inflation and bounds are read-only
+RUNTIME = frozenset({'num_samples', 'radius_multiplier', 'heuristics', 'time_limit', 'seed', 'path_spacing',
+                     'max_queue', 'map_timeout'})
 REMEMBERED_ANSWERS = 512   # answers kept for repeated requests (a few per instruction)
 
 
@@ -60,7 +65,8 @@ class FmtPlannerNode(Node):
 
     def __init__(self) -> None:
         super().__init__('fmt_planner')
-        self.params = declare_parameters(self, PARAMS)
+        self.params = declare_parameters(self, PARAMS, RUNTIME)
+        self.frames = frames_of(self.params)
         self._bounds = conv.parse_bounds(self.params['bounds'])
         # one world per planning dimension: 2 from map (ground), 3 from map_cloud (drone)
         self._worlds: dict[int, tuple[Any, LtlInstructError]] = {
@@ -187,7 +193,8 @@ class FmtPlannerNode(Node):
                     plan_s=seconds, result=result.to_dict())
         path = None
         if result.ok:
-            path = conv.path_msg(_as_3d(result.points), conv.stamp_from_key(stamp))
+            # the stamp is the request's (task_progression's clock): it pairs the segment with its request
+            path = conv.path_msg(_as_3d(result.points), conv.stamp_from_key(stamp), self.frames.map)
         else:
             body['error'] = result.error.to_dict() if result.error is not None else None
         self._answer(str(body['request_id']), path,

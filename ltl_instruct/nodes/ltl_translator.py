@@ -55,6 +55,8 @@ PARAMS = (
     ParamSpec('confirmation_timeout', 120.0, 'how long to wait for verification/reply [s]', 1.0, 3600.0),
     ParamSpec('max_instruction_chars', 2000, 'longest instruction accepted [characters]', 10, 100000),
 )
+# read at each instruction; the backend and its model are loaded once at start (read-only)
+RUNTIME = frozenset({'require_confirmation', 'confirmation_timeout', 'max_instruction_chars'})
 
 
 @dataclass(frozen=True)
@@ -77,7 +79,7 @@ class LtlTranslatorNode(Node):
 
     def __init__(self) -> None:
         super().__init__('ltl_translator')
-        self.params = declare_parameters(self, PARAMS)
+        self.params = declare_parameters(self, PARAMS, RUNTIME)
         self._translator: Any = None
         self._translator_error: Optional[LtlInstructError] = None
         self._prefix = os.urandom(3).hex()

@@ -38,7 +38,8 @@ from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.spec import Formula, parse_formula
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.nodes.common import (
-    ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node, sensor_qos,
+    ParamSpec, declare_parameters, frames_of, latched_qos, reliable_qos, run_node, sensor_qos,
+    subscribe_any_reliability,
 )
 
 PARAMS = (
@@ -54,6 +55,9 @@ PARAMS = (
     ParamSpec('viewpoint', 'origin', 'frame of reference of the comparators', choices=('origin', 'robot')),
     ParamSpec('use_embeddings', False, 'also match names with the packaged sentence-embedding model'),
 )
+# read at each grounding or frame; the known objects, the map's voxels and the embedding model are read-only
+RUNTIME = frozenset({'camera_min_interval', 'merge_distance', 'axis_threshold', 'nextto_threshold',
+                     'between_threshold', 'viewpoint'})
 GROUNDED_MEMORY = 10_000   # task ids remembered, so that a spec sent again is not grounded twice
 
 
@@ -62,7 +66,9 @@ class ReferentGrounderNode(Node):
 
     def __init__(self) -> None:
         super().__init__('referent_grounder')
-        self.params = declare_parameters(self, PARAMS)
+        self.params = declare_parameters(self, PARAMS, RUNTIME)
+        self.frames = frames_of(self.params)
+        self._map_to_odom = conv.parse_planar_pose(self.params['map_to_odom'])
         self._lock = threading.Lock()
         self._known = grounding.instances_from_scene(resolve_scene(self.params['scene'])) \
             if self.params['scene'] else ()
@@ -78,7 +84,7 @@ class ReferentGrounderNode(Node):
         self.rmap_pub = self.create_publisher(String, 'referent_map', latched_qos())
         self.marker_pub = self.create_publisher(MarkerArray, 'referent_map/markers', latched_qos(1))
         self.create_subscription(String, 'task_spec', self.on_task_spec, reliable_qos())
-        self.create_subscription(Odometry, 'odom', self.on_odom, reliable_qos(10))
+        subscribe_any_reliability(self, Odometry, 'odom', self.on_odom, 10)
         if self._semantic_map is not None:
             self.create_subscription(CameraInfo, 'camera/color/camera_info', self.on_info, sensor_qos())
             self.create_subscription(Image, 'camera/labels/image_raw', self.on_labels, sensor_qos())
@@ -164,7 +170,8 @@ class ReferentGrounderNode(Node):
         fields: dict[str, Any] = dict(ok=error is None, revision=revision, timing={'ground_s': seconds})
         if rmap is not None:
             fields['referent_map'] = rmap.to_dict()
-            self.marker_pub.publish(conv.referent_markers(rmap, self.get_clock().now().to_msg()))
+            self.marker_pub.publish(conv.referent_markers(rmap, self.get_clock().now().to_msg(),
+                                                          frame_id=self.frames.map))
         if error is not None:
             fields['error'] = error.to_dict()
             self.get_logger().warning(f'{iid}: [{error.code.value}] {error.message}')
@@ -174,7 +181,7 @@ class ReferentGrounderNode(Node):
     def on_odom(self, msg: Odometry) -> None:
         """Keep the robot pose (the camera's pose, and the viewpoint when it is the robot)."""
         try:
-            self._pose = conv.odometry_pose(msg)
+            self._pose = conv.odometry_in_map(msg, self.frames.map, self.frames.odom, self._map_to_odom)
         except LtlInstructError:
             pass   # task_progression reports bad odometry; the last good pose is kept
 

@@ -8,6 +8,10 @@ same stamp). It follows each ``plan`` (nav_msgs/Path) at ``max_speed``,
 stops at the path index of every ``skill/request`` (pick, release), carries it out in
 the simulated world (a picked object moves with the robot) and reports on
 ``skill/result``. Bad input (NaN in a plan, garbage JSON) is logged and dropped.
+
+The simulation steps on the steady clock. With ``publish_clock`` it publishes its
+simulated time on ``/clock`` (``time_scale`` times faster than the wall clock) and stamps
+every message with it, so that nodes run with ``use_sim_time`` live in simulated time.
 """
 from __future__ import annotations
 
@@ -19,6 +23,9 @@ import numpy as np
 from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rclpy.node import Node
+from rclpy.qos import QoSProfile
+from rclpy.time import Time
+from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import CameraInfo, Image, PointCloud2
 from std_msgs.msg import String
 
@@ -28,7 +35,8 @@ from ltl_instruct.core.world import near
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.core.world.robot import SimulatedWorld, obstacle_points, rasterize_scene
 from ltl_instruct.nodes.common import (
-    ODOM_DEPTH, ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node, sensor_qos,
+    ODOM_DEPTH, ParamSpec, declare_parameters, frames_of, latched_qos, reliable_qos, run_node, sensor_qos,
+    steady_timer,
 )
 
 _EARLY_PLANS = 8   # plans whose skill requests may wait for them at once
@@ -47,7 +55,12 @@ PARAMS = (
     ParamSpec('reach', near.DEFAULT_NEAR_THRESHOLD,
               'how far from an object the robot may pick or release [m]', 0.1, 5.0),
     ParamSpec('skill_duration', 0.5, 'simulated time a pick or release takes [s]', 0.0, 30.0),
+    ParamSpec('publish_clock', False, 'publish the simulated time on /clock and stamp every message with '
+              'it (for nodes run with use_sim_time)'),
 )
+# read at each tick or skill (max_speed and reach are handed to the world when set); the rest is read-only
+RUNTIME = frozenset({'time_scale', 'max_speed', 'reach', 'skill_duration'})
+CLOCK_QOS = QoSProfile(depth=1)   # reliable, volatile: matches rclpy's best-effort /clock readers
 
 
 class SimWorldNode(Node):
@@ -55,7 +68,8 @@ class SimWorldNode(Node):
 
     def __init__(self) -> None:
         super().__init__('sim_world')
-        self.params = declare_parameters(self, PARAMS)
+        self.params = declare_parameters(self, PARAMS, RUNTIME, on_change=self._on_parameter)
+        self.frames = frames_of(self.params)
         self.scene = resolve_scene(self.params['scene'])
         self.world = SimulatedWorld(self.scene, max_speed=self.params['max_speed'],
                                     reach=self.params['reach'])
@@ -66,6 +80,7 @@ class SimWorldNode(Node):
         self._early: dict[int, list[tuple[int, dict[str, Any]]]] = {}
         self._skill_busy_until = 0.0
         self._last_tick = time.monotonic()
+        self._sim_ns = 0   # simulated time [ns] (published on /clock with publish_clock)
         self._classes_sent: Optional[dict[str, str]] = None
         self._camera = self._make_camera()
 
@@ -79,16 +94,31 @@ class SimWorldNode(Node):
         self.info_pub = self.create_publisher(CameraInfo, 'camera/color/camera_info', sensor_qos())
         self.camera_pose_pub = self.create_publisher(PoseStamped, 'camera/pose', sensor_qos())
         self.classes_pub = self.create_publisher(String, 'camera/labels/classes', latched_qos(1))
+        self.clock_pub = self.create_publisher(Clock, '/clock', CLOCK_QOS) \
+            if self.params['publish_clock'] else None
         self.create_subscription(Path, 'plan', self.on_plan, latched_qos(1))
         self.create_subscription(String, 'skill/request', self.on_skill_request, reliable_qos())
         self.publish_map()
-        self.create_timer(1.0 / self.params['rate_hz'], self.on_tick)
+        steady_timer(self, 1.0 / self.params['rate_hz'], self.on_tick)
         if self._camera is not None and self.params['camera_rate_hz'] > 0.0:
-            self.create_timer(1.0 / self.params['camera_rate_hz'], self.on_camera)
+            steady_timer(self, 1.0 / self.params['camera_rate_hz'], self.on_camera)
         self.get_logger().info(f'sim_world: scene {self.scene.name} ({len(self.scene.objects)} objects), '
                                f'robot {self.scene.robot.kind} at {self.scene.robot.start}')
 
     # ------------------------------------------------------------------ set-up
+    def _on_parameter(self, name: str, value: object) -> None:
+        """Hand a parameter set at runtime to the world that holds it."""
+        if name == 'max_speed':
+            self.world.robot.max_speed = float(value)   # type: ignore[arg-type]
+        elif name == 'reach':
+            self.world.reach = float(value)   # type: ignore[arg-type]
+
+    def _stamp(self) -> Any:
+        """Return the stamp of a message sent now: the simulated time it publishes, or the node clock."""
+        if self.clock_pub is not None:
+            return Time(nanoseconds=self._sim_ns).to_msg()
+        return self.get_clock().now().to_msg()
+
     def _make_camera(self) -> Any:
         if self.params['camera_rate_hz'] <= 0.0:
             return None
@@ -106,12 +136,13 @@ class SimWorldNode(Node):
 
     def publish_map(self) -> None:
         """Publish the latched occupancy grid (and, for a drone, the 3D obstacle cloud)."""
-        stamp = self.get_clock().now().to_msg()
+        stamp = self._stamp()
         self.map_pub.publish(conv.occupancy_grid_msg(
-            rasterize_scene(self.scene, self.params['map_resolution']), stamp))
+            rasterize_scene(self.scene, self.params['map_resolution']), stamp, self.frames.map))
         if self.scene.robot.kind == 'drone':
             self.cloud_pub.publish(conv.point_cloud_msg(
-                obstacle_points(self.scene, self.params['cloud_spacing']), stamp=stamp))
+                obstacle_points(self.scene, self.params['cloud_spacing']), stamp=stamp,
+                frame_id=self.frames.map))
 
     # ------------------------------------------------------------------ callbacks
     def on_plan(self, msg: Path) -> None:
@@ -171,6 +202,9 @@ class SimWorldNode(Node):
         now = time.monotonic()
         dt = min(now - self._last_tick, 0.5) * self.params['time_scale']
         self._last_tick = now
+        self._sim_ns += int(dt * 1e9)
+        if self.clock_pub is not None:
+            self.clock_pub.publish(Clock(clock=Time(nanoseconds=self._sim_ns).to_msg()))
         robot = self.world.robot
         if robot.is_paused and now >= self._skill_busy_until:
             due = [k for k, (i, _) in enumerate(self._pending) if i <= robot.path_index]
@@ -183,12 +217,15 @@ class SimWorldNode(Node):
         before = robot.pose.xyz
         pose = self.world.step(dt)
         velocity = (pose.xyz - before) / dt if dt > 0 else np.zeros(3)
-        stamp = self.get_clock().now().to_msg()
+        stamp = self._stamp()
         # a slow tick (a loaded machine, a large time_scale) moves the robot far: the corners
         # passed go out first, so that straight moves between poses follow the path
         for corner in robot.corners:
-            self.odom_pub.publish(conv.odometry_msg(corner, stamp, velocity))
-        self.odom_pub.publish(conv.odometry_msg(pose, stamp, velocity))
+            self.odom_pub.publish(self._odometry(corner, stamp, velocity))
+        self.odom_pub.publish(self._odometry(pose, stamp, velocity))
+
+    def _odometry(self, pose: Any, stamp: Any, velocity: np.ndarray) -> Odometry:
+        return conv.odometry_msg(pose, stamp, velocity, self.frames.map, self.frames.base_link)
 
     def _do_skill(self, req: dict[str, Any]) -> None:
         targets = req.get('targets') or []
@@ -218,19 +255,19 @@ class SimWorldNode(Node):
         except LtlInstructError as e:
             self.get_logger().warning(f'camera: {e.message}')
             return
-        stamp = self.get_clock().now().to_msg()
+        stamp = self._stamp()
         classes = {str(k): v for k, v in sorted(frame.classes.items())}
         if classes != self._classes_sent:
             self.classes_pub.publish(conv.json_msg(conv.payload(conv.LABEL_CLASSES, 'camera',
                                                                 classes=classes)))
             self._classes_sent = classes
         # the pose first: the grounder pairs a depth image with the pose of the same stamp
-        self.camera_pose_pub.publish(conv.pose_stamped_msg(pose, stamp))
-        k = frame.intrinsics
-        self.info_pub.publish(conv.camera_info_msg(k.width, k.height, k.fx, k.fy, k.cx, k.cy, stamp))
-        self.rgb_pub.publish(conv.image_msg(frame.rgb, 'rgb8', stamp))
-        self.labels_pub.publish(conv.image_msg(frame.labels, '32SC1', stamp))
-        self.depth_pub.publish(conv.image_msg(frame.depth, '32FC1', stamp))
+        self.camera_pose_pub.publish(conv.pose_stamped_msg(pose, stamp, self.frames.map))
+        k, cam = frame.intrinsics, self.frames.camera
+        self.info_pub.publish(conv.camera_info_msg(k.width, k.height, k.fx, k.fy, k.cx, k.cy, stamp, cam))
+        self.rgb_pub.publish(conv.image_msg(frame.rgb, 'rgb8', stamp, cam))
+        self.labels_pub.publish(conv.image_msg(frame.labels, '32SC1', stamp, cam))
+        self.depth_pub.publish(conv.image_msg(frame.depth, '32FC1', stamp, cam))
 
 
 def main(args: Optional[list[str]] = None) -> int:

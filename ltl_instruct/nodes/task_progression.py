@@ -55,7 +55,8 @@ from ltl_instruct.core.monitor import ExecutionMonitor, LetterMaker, PlanTrace, 
 from ltl_instruct.core.spec import Atom, parse_formula
 from ltl_instruct.core.world import near
 from ltl_instruct.nodes.common import (
-    ODOM_DEPTH, ParamSpec, declare_parameters, latched_qos, reliable_qos, run_node,
+    ODOM_DEPTH, ParamSpec, StampSource, declare_parameters, frames_of, latched_qos, reliable_qos, run_node,
+    steady_timer, subscribe_any_reliability,
 )
 
 PARAMS = (
@@ -88,6 +89,11 @@ PARAMS = (
     ParamSpec('start_z', 0.0, 'start z when no odometry comes [m]'),
 )
 
+# may be set while the node runs (each is read at its next use: the next plan, request or pose);
+# the rest shape what is built at start (the robot, its map, its journal) and are read-only
+RUNTIME = frozenset({'near_threshold', 'goal_margin', 'avoid_margin', 'grounding_timeout', 'segment_timeout',
+                     'segment_resend', 'map_timeout', 'odom_timeout', 'max_segments', 'time_budget',
+                     'max_replans', 'tpsm_spacing', 'trace_tolerance'})
 NO_INSTRUCTION = 'no-instruction'   # the id of input rejected while no task runs
 
 
@@ -126,7 +132,11 @@ class TaskProgressionNode(Node):
 
     def __init__(self) -> None:
         super().__init__('task_progression')
-        self.params = declare_parameters(self, [p for p in PARAMS if not p.name.startswith('start_')])
+        self.params = declare_parameters(self, [p for p in PARAMS if not p.name.startswith('start_')],
+                                         RUNTIME)
+        self.frames = frames_of(self.params)
+        self._map_to_odom = conv.parse_planar_pose(self.params['map_to_odom'])
+        self._odom_error: Optional[LtlInstructError] = None   # why the last odometry was rejected
         self.start_override = self._start_override()
         self._lock = threading.RLock()
         self._pending: dict[str, _Pending] = {}
@@ -139,7 +149,7 @@ class TaskProgressionNode(Node):
         self._segments: dict[str, dict[str, Any]] = {}   # request_id -> segment status
         self._paths: dict[int, np.ndarray] = {}          # stamp key -> segment points
         self._segment_cond = threading.Condition(self._lock)
-        self._stamps = itertools.count(int(time.time() * 1e9))
+        self._stamps = StampSource(self)   # plan and request stamps: the node clock (sim time or wall)
         self._unidentified = itertools.count(1)
         self._last_input_warning = 0.0
         self._closing = threading.Event()
@@ -163,7 +173,7 @@ class TaskProgressionNode(Node):
         self.create_subscription(String, 'referent_map', self.on_referent_map, latched_qos(),
                                  event_callbacks=SubscriptionEventCallbacks(matched=self.on_grounder_matched))
         self.create_subscription(String, 'cancel', self.on_cancel, reliable_qos())
-        self.create_subscription(Odometry, 'odom', self.on_odom, reliable_qos(ODOM_DEPTH))
+        subscribe_any_reliability(self, Odometry, 'odom', self.on_odom, ODOM_DEPTH)
         self.create_subscription(Path, 'plan_segment', self.on_plan_segment, reliable_qos())
         self.create_subscription(String, 'fmt_planner/status', self.on_segment_status, reliable_qos())
         self.create_subscription(String, 'skill/result', self.on_skill_result, reliable_qos())
@@ -171,7 +181,7 @@ class TaskProgressionNode(Node):
             self.create_subscription(PointCloud2, 'map_cloud', self.on_map_cloud, latched_qos(1))
         else:
             self.create_subscription(OccupancyGrid, 'map', self.on_map, latched_qos(1))
-        self.create_timer(0.25, self.on_timer)
+        steady_timer(self, 0.25, self.on_timer)
         self._worker = threading.Thread(target=self._work, name='plan', daemon=True)
         self._worker.start()
 
@@ -190,7 +200,7 @@ class TaskProgressionNode(Node):
         values = []
         for name in ('start_x', 'start_y', 'start_z'):
             spec = next(p for p in PARAMS if p.name == name)
-            self.declare_parameter(name, spec.default, spec.descriptor())
+            self.declare_parameter(name, spec.default, spec.descriptor(read_only=True))
             v = self.get_parameter(name).value
             values.append(float(v) if isinstance(v, (int, float)) else float('nan'))
         if math.isnan(values[0]) or math.isnan(values[1]):
@@ -328,7 +338,8 @@ class TaskProgressionNode(Node):
             active, pending = self._active, self._pending.get(iid)
             if active is not None and active.iid == iid and not active.finished:
                 active.finished = True
-                stop = conv.path_msg(np.zeros((0, 3)), conv.stamp_from_key(next(self._stamps)))
+                stop = conv.path_msg(np.zeros((0, 3)), conv.stamp_from_key(next(self._stamps)),
+                                     self.frames.map)
                 self.plan_pub.publish(stop)                                   # an empty plan stops the robot
                 self.publish_status(iid, CANCELLED, True, phase=EXECUTION)
             elif pending is not None and pending.spec is not None:
@@ -386,8 +397,9 @@ class TaskProgressionNode(Node):
     def on_odom(self, msg: Odometry) -> None:
         """Keep the pose; progress the running task's automaton."""
         try:
-            pose = conv.odometry_pose(msg)
+            pose = conv.odometry_in_map(msg, self.frames.map, self.frames.odom, self._map_to_odom)
         except LtlInstructError as e:
+            self._odom_error = e
             with self._lock:
                 iid = self._active.iid if self._active is not None else NO_INSTRUCTION
             self._input_warning(iid, e)
@@ -547,6 +559,9 @@ class TaskProgressionNode(Node):
         if self.start_override is not None and self._pose is None:
             return self.start_override
         if not self._pose_event.wait(self.params['odom_timeout']):
+            if self._odom_error is not None:   # odometry came, but none of it could be used
+                raise type(self._odom_error)(f'no usable odometry: {self._odom_error.message}',
+                                             details=self._odom_error.details)
             raise InvalidInputError('no odometry received: cannot plan from an unknown pose')
         with self._lock:
             assert self._pose is not None
@@ -654,7 +669,7 @@ class TaskProgressionNode(Node):
 
     def _publish_plan(self, iid: str, plan: Any, path: np.ndarray, skills: list[dict[str, Any]], stamp: int,
                       revision: int) -> None:
-        self.plan_pub.publish(conv.path_msg(path, conv.stamp_from_key(stamp)))
+        self.plan_pub.publish(conv.path_msg(path, conv.stamp_from_key(stamp), self.frames.map))
         self.task_plan_pub.publish(conv.json_msg(conv.payload(
             conv.TASK_PLAN, iid, plan_stamp=stamp, revision=revision, skills=skills, **plan.to_dict())))
         for skill in skills:
@@ -748,7 +763,7 @@ class TaskProgressionNode(Node):
             self.get_logger().warning(f'tpsm not rendered: {e.message}')
             return
         self.tpsm_pub.publish(conv.point_cloud_msg(points, {'value': values.astype(np.float32)},
-                                                   self.get_clock().now().to_msg()))
+                                                   conv.stamp_from_key(next(self._stamps)), self.frames.map))
 
 
 def _path_and_skills(plan: Any, rmap: ReferentMap) -> tuple[np.ndarray, list[dict[str, Any]]]:

@@ -35,6 +35,18 @@ class Pose:
         return np.asarray(self.position, dtype=float)
 
 
+def compose_planar(parent: Pose, child: Pose) -> Pose:
+    """Return ``child`` (a pose in a frame placed at ``parent``) in the parent's frame.
+
+    The frame is turned by ``parent.yaw`` about +z and moved by ``parent.position`` [m].
+    """
+    c, s = math.cos(parent.yaw), math.sin(parent.yaw)
+    x, y, z = child.position
+    px, py, pz = parent.position
+    yaw = math.atan2(math.sin(parent.yaw + child.yaw), math.cos(parent.yaw + child.yaw))
+    return Pose((px + c * x - s * y, py + s * x + c * y, pz + z), yaw)
+
+
 @dataclass(frozen=True)
 class SkillOutcome:
     """What a pick or release did.

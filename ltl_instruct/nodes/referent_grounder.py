@@ -42,10 +42,11 @@ from ltl_instruct import conversions as conv
 from ltl_instruct.core import grounding
 from ltl_instruct.core.errors import ErrorCode, LtlInstructError
 from ltl_instruct.core.grounding.coverage import map_coverage
+from ltl_instruct.core.grounding.detectors import load_labeller
 from ltl_instruct.core.grounding.online_search import findable
 from ltl_instruct.core.grounding.search import unresolved
 from ltl_instruct.core.grounding.rsm import ReferentMap
-from ltl_instruct.core.spec import Formula, parse_formula
+from ltl_instruct.core.spec import Formula, parse_descriptor, parse_formula
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.core.world.camera import CameraMount
 from ltl_instruct.core.world.pose_history import PoseHistory
@@ -71,6 +72,13 @@ PARAMS = (
     ParamSpec('camera_yaw', 0.0, 'camera extrinsic: turned left of the robot\'s heading [rad]',
               -3.1416, 3.1416),
     ParamSpec('camera_pitch', 0.0, 'camera extrinsic: pitched down [rad]', -1.5708, 1.5708),
+    ParamSpec('detector', 'labels', 'where object classes come from: the label images of a segmenter '
+              '(labels), or the RGB images through an open-vocabulary detector queried with the tasks\' '
+              'referent names (owlvit, owlv2; weights from detector_model_dir)',
+              choices=('labels', 'owlvit', 'owlv2')),
+    ParamSpec('detector_model_dir', '', 'folder of the detector\'s weights (save_pretrained output)'),
+    ParamSpec('segmenter_model_dir', '', 'folder of SAM\'s weights ("" = a detection\'s box is its mask)'),
+    ParamSpec('detector_threshold', 0.1, 'least score of a detection', 0.0, 1.0),
     ParamSpec('pose_tolerance', 0.1, 'a frame is integrated with the odometry pose of its stamp, '
               'interpolated, when one lies within this time of it [s]', 0.0, 10.0),
 )
@@ -88,6 +96,8 @@ class ReferentGrounderNode(Node):
         self._known = grounding.instances_from_scene(resolve_scene(self.params['scene'])) \
             if self.params['scene'] else ()
         self._semantic_map: Any = self._make_semantic_map() if self.params['use_camera'] else None
+        self._labeller: Any = None            # RGB -> label images (detector other than labels)
+        self._model_error: Optional[LtlInstructError] = None
         self._detected: tuple = ()   # new detections, extracted after each integrated frame
         self._pose: Any = None
         self._info: Optional[CameraInfo] = None
@@ -104,11 +114,25 @@ class ReferentGrounderNode(Node):
         self.create_subscription(Odometry, 'odom', self.on_odom, reliable_qos(10))
         if self._semantic_map is not None:
             self.create_subscription(CameraInfo, 'camera/color/camera_info', self.on_info, sensor_qos())
-            self.create_subscription(Image, 'camera/labels/image_raw', self.on_labels, sensor_qos())
+            self._subscribe_classes_source()
             self.create_subscription(Image, 'camera/depth/image_raw', self.on_depth, sensor_qos())
             self.create_subscription(String, 'camera/labels/classes', self.on_classes, latched_qos(1))
         self.get_logger().info(f'referent_grounder: {len(self._known)} known objects, '
                                f'camera {"on" if self._semantic_map is not None else "off"}')
+
+    def _subscribe_classes_source(self) -> None:
+        """Subscribe to the label images, or load the detector and subscribe to the RGB images."""
+        p = self.params
+        if p['detector'] == 'labels':
+            self.create_subscription(Image, 'camera/labels/image_raw', self.on_labels, sensor_qos())
+            return
+        try:
+            self._labeller = load_labeller(p['detector'], p['detector_model_dir'], p['segmenter_model_dir'],
+                                           p['detector_threshold'])
+        except LtlInstructError as e:   # the node keeps running: each unresolved task says why
+            self._model_error = e
+            self.get_logger().error(f'detector {p["detector"]} not loaded: {e.message}')
+        self.create_subscription(Image, 'camera/color/image_raw', self.on_labels, sensor_qos())
 
     def _make_semantic_map(self) -> Any:
         semantic_map = getattr(grounding, 'SemanticMap', None)
@@ -163,7 +187,7 @@ class ReferentGrounderNode(Node):
             formula = parse_formula(spec['formula'])
             with self._lock:
                 rmap = self._ground(formula)
-            error = grounding.grounding_error(rmap)
+            error = self._with_model_error(grounding.grounding_error(rmap))
         except LtlInstructError as e:
             self._publish(iid, None, 0, time.monotonic() - t0, e)
             return
@@ -178,6 +202,13 @@ class ReferentGrounderNode(Node):
         self._publish(iid, rmap, 0, time.monotonic() - t0, error)
         if error is not None:
             self._publish_coverage()
+
+    def _with_model_error(self, error: Optional[LtlInstructError]) -> Optional[LtlInstructError]:
+        """Make an unresolved referent a ``MODEL_ERROR`` when the detector could not be loaded."""
+        if error is None or self._model_error is None:
+            return error
+        return LtlInstructError(f'{error.message}; the camera detects nothing: {self._model_error.message}',
+                                ErrorCode.MODEL_ERROR, details=error.details)
 
     def _seen(self, iid: str) -> bool:
         """Tell whether ``iid`` was grounded already (a spec sent again); remember it if not."""
@@ -228,13 +259,13 @@ class ReferentGrounderNode(Node):
         self._info = msg
 
     def on_labels(self, msg: Image) -> None:
-        """Keep the latest label image (paired with the depth image of the same stamp)."""
+        """Keep the latest label (with a detector: RGB) image, paired with the depth image of its stamp."""
         self._labels = msg
 
     def on_depth(self, msg: Image) -> None:
         """Integrate a depth + labels frame; republish the running task's map if it changed."""
         now = time.monotonic()
-        if now - self._last_frame < self.params['camera_min_interval']:
+        if now - self._last_frame < self.params['camera_min_interval'] or self._model_error is not None:
             return
         key = conv.stamp_key(msg.header.stamp)
         labels, info = self._labels, self._info
@@ -262,7 +293,7 @@ class ReferentGrounderNode(Node):
         now = time.monotonic()
         try:
             depth = conv.depth_array(depth_msg)
-            label_img = conv.image_array(labels)
+            label_img = self._label_image(labels, depth)
             intrinsics = conv.camera_intrinsics(info)
             with self._lock:
                 self._semantic_map.integrate(depth, label_img, intrinsics, pose)
@@ -276,6 +307,18 @@ class ReferentGrounderNode(Node):
             self._publish_coverage()
         except LtlInstructError as e:
             self.get_logger().warning(f'camera frame rejected: {e.message}')
+
+    def _label_image(self, msg: Image, depth: np.ndarray) -> np.ndarray:
+        """Return the label image of a frame: as sent, or detected in its RGB image (the tasks' names)."""
+        if self._labeller is None:
+            return conv.image_array(msg)
+        with self._lock:
+            queries = sorted({name for t in self._tasks.values() for text in t['rmap'].groundings
+                              for name in parse_descriptor(text).names()})
+        labels = self._labeller.labels(conv.rgb_array(msg), queries, depth)
+        with self._lock:
+            self._semantic_map.name_classes(self._labeller.classes)
+        return labels
 
     def _reground(self, task: dict[str, Any]) -> Optional[ReferentMap]:
         """Ground a followed task again (lock held); return its new referent map, or None when unchanged."""
@@ -293,8 +336,10 @@ class ReferentGrounderNode(Node):
         Only with a camera, and only names of the classes its label images hold: a search
         for a name no class matches would explore the whole map for nothing.
         """
-        if self._semantic_map is None:
+        if self._semantic_map is None or self._model_error is not None:
             return False
+        if self._labeller is not None:
+            return True   # an open-vocabulary detector is asked for every name
         labels = list(self._semantic_map.class_names.values())
         params = self._grounding_params()
         return all(findable(text, labels, params) for text in unresolved(rmap))

@@ -8,15 +8,18 @@ message type and the message layouts are tested once. Covered:
 - ``nav_msgs/Path`` <-> points (N, 3) [m];
 - ``nav_msgs/Odometry`` -> :class:`~ltl_instruct.core.world.robot.Pose` (NaN rejected), in the
   map frame (:func:`odometry_in_map`: a pose in another frame is a ``FRAME_MISMATCH``);
-- ``nav_msgs/OccupancyGrid`` <-> :class:`~ltl_instruct.core.world.robot.OccupancyRaster`;
+- ``nav_msgs/OccupancyGrid`` <-> :class:`~ltl_instruct.core.world.robot.OccupancyRaster`, and
+  <-> :class:`~ltl_instruct.core.grounding.coverage.Coverage` (what the camera has seen);
 - ``sensor_msgs/PointCloud2`` <-> float32 fields (packed with numpy: no sensor_msgs_py);
-- ``sensor_msgs/Image`` <-> numpy (rgb8, 32FC1 depth [m], 32SC1 labels), ``CameraInfo``;
+- ``sensor_msgs/Image`` <-> numpy (rgb8/bgr8/rgba8/bgra8; depth 32FC1 [m] or 16UC1 [mm], read as
+  metres; 32SC1 labels), ``CameraInfo``;
 - ``visualization_msgs/MarkerArray`` of a referent map.
 
 Message packages are plain Python; this module does not import rclpy.
 """
 from __future__ import annotations
 
+import array
 import json
 import math
 from typing import Any, Mapping, Optional, Sequence
@@ -30,6 +33,7 @@ from std_msgs.msg import Header, String
 from visualization_msgs.msg import Marker, MarkerArray
 
 from ltl_instruct.core.errors import FrameMismatchError, InvalidInputError
+from ltl_instruct.core.grounding.coverage import Coverage, PlaneGrid
 from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.payloads import (  # noqa: F401  (the payload parsing lives in the core; re-exported)
     INSTRUCTION, MAX_PAYLOAD_BYTES, SCHEMA_VERSION, parse_json_payload, read_cancel, read_instruction,
@@ -289,6 +293,32 @@ def occupancy_raster(msg: OccupancyGrid) -> OccupancyRaster:
     return OccupancyRaster(cells, float(info.resolution), (float(o.x), float(o.y)))
 
 
+def coverage_msg(coverage: Coverage, stamp: Optional[Time] = None, frame_id: str = FRAME_ID) -> OccupancyGrid:
+    """Return what a camera covered as an ``OccupancyGrid``: -1 unseen, 0 seen, 100 seen, blocking sight."""
+    g = coverage.grid
+    msg = OccupancyGrid()
+    msg.header = Header(stamp=stamp or Time(), frame_id=frame_id)
+    msg.info.resolution = float(g.cell)
+    msg.info.width, msg.info.height = int(g.shape[0]), int(g.shape[1])
+    msg.info.origin.position = Point(x=float(g.origin[0]), y=float(g.origin[1]), z=0.0)
+    msg.info.origin.orientation = Quaternion(w=1.0)
+    msg.data = array.array('b', np.ascontiguousarray(coverage.cells().T).tobytes())
+    return msg
+
+
+def coverage_from_msg(msg: OccupancyGrid) -> Coverage:
+    """Inverse of :func:`coverage_msg`.
+
+    Raises
+    ------
+    InvalidInputError
+        On an empty grid, a data length that does not match, or a bad resolution or origin.
+    """
+    raster = occupancy_raster(msg)
+    grid = PlaneGrid(raster.origin, raster.resolution, (raster.width, raster.height))
+    return Coverage.from_cells(grid, raster.cells.T)
+
+
 def occupied_rectangles(cells: np.ndarray, occupied_threshold: int = 50) -> list[tuple[int, int, int, int]]:
     """Cover the blocked cells of a grid with rectangles ``(row0, row1, col0, col1)`` (ends excluded).
 
@@ -492,8 +522,10 @@ def point_cloud_xyz(msg: PointCloud2) -> np.ndarray:
 
 
 # ---------------------------------------------------------------------------- images
-_ENCODINGS = {'rgb8': (np.uint8, 3), '32FC1': (np.float32, 1), '32SC1': (np.int32, 1),
-              'mono8': (np.uint8, 1), '16UC1': (np.uint16, 1)}
+_ENCODINGS = {'rgb8': (np.uint8, 3), 'bgr8': (np.uint8, 3), 'rgba8': (np.uint8, 4), 'bgra8': (np.uint8, 4),
+              '32FC1': (np.float32, 1), '32SC1': (np.int32, 1), 'mono8': (np.uint8, 1),
+              '16UC1': (np.uint16, 1)}
+DEPTH_ENCODINGS = ('32FC1', '16UC1')
 
 
 def image_msg(array: np.ndarray, encoding: str, stamp: Optional[Time] = None,
@@ -535,6 +567,52 @@ def image_array(msg: Image) -> np.ndarray:
     raw = np.frombuffer(bytes(msg.data), dtype=np.uint8).reshape(msg.height, msg.step)[:, :row]
     a = np.ascontiguousarray(raw).view(dt).reshape(msg.height, msg.width, channels)
     return (a[:, :, 0] if channels == 1 else a).astype(dt.newbyteorder('='))
+
+
+def depth_array(msg: Image) -> np.ndarray:
+    """Return a depth image in metres, float32 (H, W), NaN where there is no return.
+
+    REP 118: ``32FC1`` is in metres (NaN or inf: no return), ``16UC1`` in millimetres
+    (0: no return).
+
+    Raises
+    ------
+    InvalidInputError
+        On another encoding, or a size that does not match.
+    """
+    if msg.encoding not in DEPTH_ENCODINGS:
+        raise InvalidInputError(f'depth images must be 32FC1 [m] or 16UC1 [mm], got {msg.encoding!r}')
+    raw = image_array(msg)
+    if msg.encoding == '16UC1':
+        return np.where(raw > 0, raw.astype(np.float32) * np.float32(0.001), np.float32(np.nan))
+    return raw.astype(np.float32, copy=False)
+
+
+def depth_msg(depth: np.ndarray, encoding: str = '32FC1', stamp: Optional[Time] = None,
+              frame_id: str = 'camera_optical') -> Image:
+    """Return a depth ``Image`` of metres (H, W) (NaN: none) as ``32FC1`` [m] or ``16UC1`` [mm, 0: none]."""
+    if encoding not in DEPTH_ENCODINGS:
+        raise InvalidInputError(f'depth images must be 32FC1 or 16UC1, got {encoding!r}')
+    d = np.asarray(depth, dtype=np.float32)
+    if encoding == '16UC1':
+        with np.errstate(invalid='ignore'):
+            mm = np.where(np.isfinite(d) & (d > 0), np.rint(d * 1000.0), 0.0)
+        d = np.clip(mm, 0, 65535).astype(np.uint16)
+    return image_msg(d, encoding, stamp, frame_id)
+
+
+def rgb_array(msg: Image) -> np.ndarray:
+    """Return a colour image as uint8 RGB (H, W, 3) from rgb8, bgr8, rgba8 or bgra8.
+
+    Raises
+    ------
+    InvalidInputError
+        On another encoding, or a size that does not match.
+    """
+    if msg.encoding not in ('rgb8', 'bgr8', 'rgba8', 'bgra8'):
+        raise InvalidInputError(f'colour images must be rgb8, bgr8, rgba8 or bgra8, got {msg.encoding!r}')
+    a = image_array(msg)[:, :, :3]
+    return np.ascontiguousarray(a[:, :, ::-1] if msg.encoding.startswith('bgr') else a)
 
 
 def camera_info_msg(width: int, height: int, fx: float, fy: float, cx: float, cy: float,

@@ -175,3 +175,16 @@ def test_generated_suite_from_camera_views():
         assert frozenset(i.id for i in known.resolve(case.descriptor).instances) == case.expected
         got = frozenset(true_id(i) for i in seen.resolve(case.descriptor).instances)
         assert got == case.expected, str(case.descriptor)
+
+
+def test_classes_named_after_their_frames_take_the_name():
+    from ltl_instruct.core.grounding import SemanticMap
+    from ltl_instruct.core.world.camera import CameraIntrinsics
+    smap = SemanticMap()
+    depth = np.full((24, 32), 2.0, dtype=np.float32)
+    labels = np.zeros((24, 32), dtype=np.int32)
+    labels[8:16, 10:20] = 7
+    smap.integrate(depth, labels, CameraIntrinsics.default(32, 24), np.eye(4))
+    assert smap.column_labels[1] == 'class_7'
+    smap.name_classes({7: 'vase'})
+    assert smap.column_labels[1] == 'vase' and smap.class_names[7] == 'vase'

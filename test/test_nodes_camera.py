@@ -22,8 +22,11 @@ def camera_graph(tmp_path_factory):
     os.environ.pop('ROS_LOCALHOST_ONLY', None)
     from ltl_instruct.nodes.client import GraphClient
     logs = tmp_path_factory.mktemp('camera_logs')
-    overrides = {'sim_world': {'camera_rate_hz': 4.0, 'time_scale': 4.0},
-                 'referent_grounder': {'scene': '', 'use_camera': True, 'camera_min_interval': 0.1}}
+    # depth in millimetres (16UC1), as most depth cameras send it: read as metres by the grounder
+    overrides = {'sim_world': {'camera_rate_hz': 4.0, 'time_scale': 4.0, 'depth_encoding': '16UC1'},
+                 'referent_grounder': {'scene': '', 'use_camera': True, 'camera_min_interval': 0.1},
+                 'task_progression': {'search': False},   # the search has its own test
+                 'ltl_translator': {'backend': 'offline'}}   # formulas are sent: no model to wait for
     g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
     client = GraphClient('camera_test')
     try:

@@ -114,6 +114,29 @@ def test_bad_images_are_rejected():
         conv.image_array(msg)
 
 
+def test_depth_images_are_read_in_metres_in_both_rep118_encodings():
+    metres = np.array([[0.5, 1.234, np.nan], [0.0, 65.0, 2.0]], dtype=np.float32)
+    mm = conv.depth_msg(metres, '16UC1')
+    assert mm.encoding == '16UC1' and conv.image_array(mm).tolist() == [[500, 1234, 0], [0, 65000, 2000]]
+    back = conv.depth_array(mm)                   # millimetres, 0 = no return: metres, NaN
+    assert back.dtype == np.float32 and np.allclose(back, [[0.5, 1.234, np.nan], [np.nan, 65.0, 2.0]],
+                                                    equal_nan=True)
+    raw = conv.image_msg(np.array([[1500, 0]], dtype=np.uint16), '16UC1')
+    assert np.allclose(conv.depth_array(raw), [[1.5, np.nan]], equal_nan=True)   # not 1500 m
+    assert np.array_equal(conv.depth_array(conv.depth_msg(metres)), metres, equal_nan=True)
+    with pytest.raises(InvalidInputError):
+        conv.depth_array(conv.image_msg(np.zeros((2, 2), np.uint8), 'mono8'))
+
+
+def test_colour_images_are_read_as_rgb():
+    rgb = np.arange(2 * 3 * 3, dtype=np.uint8).reshape(2, 3, 3)
+    assert np.array_equal(conv.rgb_array(conv.image_msg(rgb[:, :, ::-1], 'bgr8')), rgb)
+    rgba = np.concatenate([rgb, np.full((2, 3, 1), 255, np.uint8)], axis=2)
+    assert np.array_equal(conv.rgb_array(conv.image_msg(rgba, 'rgba8')), rgb)
+    with pytest.raises(InvalidInputError):
+        conv.rgb_array(conv.image_msg(np.zeros((2, 2), np.float32), '32FC1'))
+
+
 def test_camera_info_round_trip_and_invalid():
     msg = conv.camera_info_msg(160, 120, 100.0, 101.0, 80.0, 60.0)
     assert conv.camera_intrinsics(msg) == (160, 120, 100.0, 101.0, 80.0, 60.0)

@@ -186,7 +186,8 @@ def _imported_modules(paths) -> set[str]:
                     names.update(a.name.split('.')[0] for a in node.names)
                 elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
                     names.add(node.module.split('.')[0])
-    local = {'ltl_instruct', 'bench', 'translation_cases', 'ltl_oracles', 'learned_synthetic'}
+    local = {'ltl_instruct', 'bench', 'translation_cases', 'ltl_oracles', 'learned_synthetic',
+             'readme_tables', 'search_scenes'}
     return {n for n in names if n not in sys.stdlib_module_names and n not in local}
 
 

@@ -53,6 +53,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--log-dir', type=Path, default=None,
                         help='node logs (default: a temporary folder, named in the report)')
     parser.add_argument('--json', action='store_true', help='print the report as JSON')
+    parser.add_argument('--search', action='store_true',
+                        help='the grounder knows no objects: all come from the camera, and a referent not '
+                             'in view is searched for (the picture shows the area seen and the search path)')
     add_margin_arguments(parser)
 
 
@@ -81,6 +84,9 @@ def run(args: argparse.Namespace) -> int:
     overrides['ltl_translator'] = {'require_confirmation': bool(args.interactive)}
     if scene.robot.kind == 'drone':
         overrides['sim_world']['max_speed'] = 4.0
+    if args.search:
+        overrides['referent_grounder'].update(scene='', use_camera=True, camera_min_interval=0.2)
+        overrides['sim_world']['camera_rate_hz'] = 4.0
     from ltl_instruct.nodes.client import GraphClient   # rclpy only when the demo runs
 
     say = (lambda *a: None) if args.json else (lambda *a: print(*a, flush=True))
@@ -124,6 +130,7 @@ def _run_instruction(client: Any, args: argparse.Namespace, instruction: Optiona
         else:
             say('  (accepted automatically; use --interactive to confirm yourself)')
     status = client.wait_terminal(iid, timeout=args.timeout)
+    _search_report(client, iid, report)
     report['id'] = iid
     report['terminal'] = status
     report['time_to_plan_s'] = round(time.monotonic() - t0, 3)
@@ -161,6 +168,18 @@ def _run_instruction(client: Any, args: argparse.Namespace, instruction: Optiona
     return 0 if done['status'] == 'satisfied' else 1
 
 
+def _search_report(client: Any, iid: str, report: dict[str, Any]) -> None:
+    """Keep what a search did: its last ``searching`` status, the path driven so far, the area seen."""
+    looks = [s for s in client.received.statuses.get(iid, []) if s.get('status') == 'searching']
+    if not looks:
+        return
+    report['search'] = {k: looks[-1].get(k) for k in ('sought', 'moves', 'travel_m', 'area_seen_m2')}
+    report['search_driven'] = np.array([p for _, p in client.received.odom]) if client.received.odom else None
+    if client.received.coverage is not None:
+        from ltl_instruct import conversions as conv
+        report['coverage'] = conv.coverage_from_msg(client.received.coverage)
+
+
 def _failed(client: Any, iid: str) -> Optional[dict[str, Any]]:
     t = client.terminal(iid)
     return t if t is not None and t.get('status') == 'failed' else None
@@ -177,6 +196,10 @@ def _print_report(report: dict[str, Any]) -> None:
     if report.get('referents'):
         print('Referents:    ' + '; '.join(f'{d} -> {", ".join(ids) or "nothing"}'
                                            for d, ids in report['referents'].items()))
+    search = report.get('search')
+    if search:
+        print(f'Search:       for {", ".join(search["sought"] or ["-"])}: {search["moves"]} moves, '
+              f'{search["travel_m"]} m, {search["area_seen_m2"]} m^2 seen')
     if term.get('status') == 'failed':
         err = term.get('error') or {}
         print(f'Result:       FAILED [{err.get("code")}] {err.get("message")}')
@@ -239,6 +262,22 @@ def _draw_regions(ax: Any, report: dict[str, Any], hi: np.ndarray) -> None:
                         weight='bold', zorder=7)
 
 
+def _draw_search(ax: Any, report: dict[str, Any]) -> None:
+    """Draw the area the camera saw (green) and the search path (black), when there was a search."""
+    from matplotlib.colors import ListedColormap
+    cov = report.get('coverage')
+    if cov is not None:
+        g = cov.grid
+        x1, y1 = g.origin[0] + g.shape[0] * g.cell, g.origin[1] + g.shape[1] * g.cell
+        extent = (g.origin[0], x1, g.origin[1], y1)
+        ax.imshow(cov.seen.T.astype(float), origin='lower', extent=extent, interpolation='nearest',
+                  cmap=ListedColormap(['#ffffff00', '#8fd18f']), vmin=0, vmax=1, alpha=0.6, zorder=1)
+        ax.plot([], [], 's', color='#8fd18f', label='area seen while searching')
+    path = report.get('search_driven')
+    if path is not None and len(path):
+        ax.plot(path[:, 0], path[:, 1], '-', color='k', lw=1.6, zorder=9, label='search path')
+
+
 def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     """Draw the map, the referent regions, the plan and the driven path into ``out``."""
     import matplotlib
@@ -264,6 +303,7 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
                                    zorder=3))
         ax.annotate(o.id, o.center[:2], fontsize=6.5, ha='center', va='center', color='0.15', zorder=6)
     _draw_regions(ax, report, hi)
+    _draw_search(ax, report)
     driven = report.get('driven')
     if driven is not None and len(driven):
         ax.plot(driven[:, 0], driven[:, 1], '-', color='#ff7f0e', lw=4.0, alpha=0.7,

@@ -44,6 +44,7 @@ class Received:
     skill_results: list[dict[str, Any]] = field(default_factory=list)
     odom: list[tuple[float, np.ndarray]] = field(default_factory=list)
     map: Optional[OccupancyGrid] = None
+    coverage: Optional[OccupancyGrid] = None   # the latest of what the camera covered (while searching)
     arrival: dict[tuple[str, str], float] = field(default_factory=dict)
 
 
@@ -86,6 +87,7 @@ class GraphClient:
         n.create_subscription(String, 'skill/result', self._on_skill_result, reliable_qos())
         n.create_subscription(Odometry, 'odom', self._on_odom, reliable_qos(10))
         n.create_subscription(OccupancyGrid, 'map', self._on_map, latched_qos(1))
+        n.create_subscription(OccupancyGrid, 'search/coverage', self._on_coverage, latched_qos(1))
         # one thread runs every callback: once it is joined, none can touch the node being destroyed
         # (a pool's callback could: rclpy's executor.shutdown does not wait for them)
         self._executor = SingleThreadedExecutor(context=self.context)
@@ -180,6 +182,10 @@ class GraphClient:
         with self._cond:
             self.received.map = msg
             self._cond.notify_all()
+
+    def _on_coverage(self, msg: OccupancyGrid) -> None:
+        with self._cond:
+            self.received.coverage = msg
 
     # ------------------------------------------------------------------ actions
     def wait_until(self, predicate: Callable[[], Any], timeout: float) -> Any:

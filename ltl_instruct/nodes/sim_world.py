@@ -2,12 +2,14 @@
 
 Publishes the scene's occupancy ``map`` (latched; plus ``map_cloud`` for a drone),
 ``odom`` at ``rate_hz``, and camera frames from the synthetic camera: RGB, depth
-(32FC1 [m]), class labels (32SC1) with their class table (``camera/labels/classes``,
-latched JSON), ``camera_info``, and the robot pose of each frame (``camera/pose``,
-same stamp). It follows each ``plan`` (nav_msgs/Path) at ``max_speed``,
-stops at the path index of every ``skill/request`` (pick, release), carries it out in
-the simulated world (a picked object moves with the robot) and reports on
-``skill/result``. Bad input (NaN in a plan, garbage JSON) is logged and dropped.
+(``depth_encoding``: 32FC1 [m] or 16UC1 [mm]), class labels (32SC1) with their class
+table (``camera/labels/classes``, latched JSON) and ``camera_info``, each frame stamped
+with the stamp of the odometry whose pose it shows (the camera is mounted 1 m above the
+robot's position, looking along its heading: the grounder's default extrinsic). It
+follows each ``plan`` (nav_msgs/Path) at ``max_speed``, stops at the path index of
+every ``skill/request`` (pick, release), carries it out in the simulated world (a
+picked object moves with the robot) and reports on ``skill/result``. Bad input (NaN in
+a plan, garbage JSON) is logged and dropped.
 
 The simulation steps on the steady clock. With ``publish_clock`` it publishes its
 simulated time on ``/clock`` (``time_scale`` times faster than the wall clock) and stamps
@@ -20,7 +22,6 @@ import time
 from typing import Any, Optional
 
 import numpy as np
-from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
@@ -52,6 +53,8 @@ PARAMS = (
     ParamSpec('camera_width', 160, 'camera image width [px]', 16, 1920),
     ParamSpec('camera_height', 120, 'camera image height [px]', 12, 1080),
     ParamSpec('camera_range', 12.0, 'farthest depth the camera returns [m]', 0.5, 500.0),
+    ParamSpec('depth_encoding', '32FC1', 'depth image encoding (REP 118): 32FC1 [m] or 16UC1 [mm]',
+              choices=('32FC1', '16UC1')),
     ParamSpec('reach', near.DEFAULT_NEAR_THRESHOLD,
               'how far from an object the robot may pick or release [m]', 0.1, 5.0),
     ParamSpec('skill_duration', 0.5, 'simulated time a pick or release takes [s]', 0.0, 30.0),
@@ -81,6 +84,7 @@ class SimWorldNode(Node):
         self._skill_busy_until = 0.0
         self._last_tick = time.monotonic()
         self._sim_ns = 0   # simulated time [ns] (published on /clock with publish_clock)
+        self._odom_stamp: Any = None   # the stamp of the last odometry: the pose the camera renders from
         self._classes_sent: Optional[dict[str, str]] = None
         self._camera = self._make_camera()
 
@@ -92,7 +96,6 @@ class SimWorldNode(Node):
         self.depth_pub = self.create_publisher(Image, 'camera/depth/image_raw', sensor_qos())
         self.labels_pub = self.create_publisher(Image, 'camera/labels/image_raw', sensor_qos())
         self.info_pub = self.create_publisher(CameraInfo, 'camera/color/camera_info', sensor_qos())
-        self.camera_pose_pub = self.create_publisher(PoseStamped, 'camera/pose', sensor_qos())
         self.classes_pub = self.create_publisher(String, 'camera/labels/classes', latched_qos(1))
         self.clock_pub = self.create_publisher(Clock, '/clock', CLOCK_QOS) \
             if self.params['publish_clock'] else None
@@ -223,6 +226,7 @@ class SimWorldNode(Node):
         for corner in robot.corners:
             self.odom_pub.publish(self._odometry(corner, stamp, velocity))
         self.odom_pub.publish(self._odometry(pose, stamp, velocity))
+        self._odom_stamp = stamp
 
     def _odometry(self, pose: Any, stamp: Any, velocity: np.ndarray) -> Odometry:
         return conv.odometry_msg(pose, stamp, velocity, self.frames.map, self.frames.base_link)
@@ -255,19 +259,18 @@ class SimWorldNode(Node):
         except LtlInstructError as e:
             self.get_logger().warning(f'camera: {e.message}')
             return
-        stamp = self._stamp()
+        # the robot moves only in on_tick: the frame shows the pose of the last odometry, and has its stamp
+        stamp = self._odom_stamp or self._stamp()
         classes = {str(k): v for k, v in sorted(frame.classes.items())}
         if classes != self._classes_sent:
             self.classes_pub.publish(conv.json_msg(conv.payload(conv.LABEL_CLASSES, 'camera',
                                                                 classes=classes)))
             self._classes_sent = classes
-        # the pose first: the grounder pairs a depth image with the pose of the same stamp
-        self.camera_pose_pub.publish(conv.pose_stamped_msg(pose, stamp, self.frames.map))
         k, cam = frame.intrinsics, self.frames.camera
         self.info_pub.publish(conv.camera_info_msg(k.width, k.height, k.fx, k.fy, k.cx, k.cy, stamp, cam))
         self.rgb_pub.publish(conv.image_msg(frame.rgb, 'rgb8', stamp, cam))
         self.labels_pub.publish(conv.image_msg(frame.labels, '32SC1', stamp, cam))
-        self.depth_pub.publish(conv.image_msg(frame.depth, '32FC1', stamp, cam))
+        self.depth_pub.publish(conv.depth_msg(frame.depth, self.params['depth_encoding'], stamp, cam))
 
 
 def main(args: Optional[list[str]] = None) -> int:

@@ -58,6 +58,7 @@ from ltl_instruct.nodes.common import (
     ODOM_DEPTH, ParamSpec, StampSource, declare_parameters, frames_of, latched_qos, reliable_qos, run_node,
     steady_timer, subscribe_any_reliability,
 )
+from ltl_instruct.nodes.search_driver import SEARCH_PARAMS, SearchMixin
 
 PARAMS = (
     ParamSpec('near_threshold', near.DEFAULT_NEAR_THRESHOLD, 'nearness radius of near[x] [m]', 0.05, 50.0),
@@ -84,6 +85,7 @@ PARAMS = (
               'reads the move between two of them along the plan [m]', 0.01, 10.0),
     ParamSpec('state_dir', '', 'folder where the statuses of each instruction are kept across a restart of '
               'this node ("" = in memory only; bringup gives one when it restarts nodes)'),
+) + SEARCH_PARAMS + (
     ParamSpec('start_x', float('nan'), 'start x when no odometry comes [m] (nan: wait for odom)'),
     ParamSpec('start_y', float('nan'), 'start y when no odometry comes [m]'),
     ParamSpec('start_z', 0.0, 'start z when no odometry comes [m]'),
@@ -127,7 +129,7 @@ class _Active:
     last_position: Optional[np.ndarray] = None
 
 
-class TaskProgressionNode(Node):
+class TaskProgressionNode(SearchMixin, Node):
     """Task spec + referent map in, verified plan and task status out."""
 
     def __init__(self) -> None:
@@ -181,6 +183,7 @@ class TaskProgressionNode(Node):
             self.create_subscription(PointCloud2, 'map_cloud', self.on_map_cloud, latched_qos(1))
         else:
             self.create_subscription(OccupancyGrid, 'map', self.on_map, latched_qos(1))
+        self._subscribe_search()
         steady_timer(self, 0.25, self.on_timer)
         self._worker = threading.Thread(target=self._work, name='plan', daemon=True)
         self._worker.start()
@@ -318,7 +321,8 @@ class TaskProgressionNode(Node):
             if self._memory.ended(iid) not in (None, PLANNED) or self._memory.ended(iid, EXECUTION):
                 return   # over (one planned by an earlier run of this node may still be resumed)
             p = self._pending.setdefault(iid, _Pending(iid))
-            p.rmap = data
+            if p.rmap is None or int(data.get('revision', 0)) >= int(p.rmap.get('revision', 0)):
+                p.rmap = data   # a search waits for a newer revision that resolves
             self._maybe_queue(p)
 
     def _maybe_queue(self, p: _Pending) -> None:
@@ -584,8 +588,12 @@ class TaskProgressionNode(Node):
         if not automaton.is_satisfiable:
             raise LtlInstructError(f'the task "{formula}" can never be completed: no sequence of steps '
                                    'satisfies it', ErrorCode.UNSATISFIABLE, details={'formula': str(formula)})
-        if not rdata.get('ok', False):
-            raise _error_from_dict(rdata.get('error') or {}, ErrorCode.UNKNOWN_REFERENT)
+        if not rdata.get('ok', False):   # explore for what is not seen yet, where that can help
+            unresolved = _error_from_dict(rdata.get('error') or {}, ErrorCode.UNKNOWN_REFERENT)
+            found = self._search(iid, rdata, unresolved)
+            if found is None:
+                return
+            rdata = found
         rmap = ReferentMap.from_dict(rdata.get('referent_map') or {})
         start = self._current_pose()
         state, mode = None, 'plan'

@@ -18,13 +18,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Optional, Sequence
 
 import numpy as np
 from scipy import ndimage
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import dijkstra
 
+from ltl_instruct.core.errors import InvalidInputError
 from ltl_instruct.core.grounding.semantic_map import SemanticMap
 
 
@@ -153,3 +154,66 @@ def _start_cells(free: np.ndarray, grid: PlaneGrid, start: Sequence[float],
                             for i, j in cells])
             return cells, off
     return [(x, y)], np.zeros(1)
+
+
+UNSEEN, SEEN, BLOCKS_SIGHT = -1, 0, 100
+"""Cell values of a coverage grid as a message carries it (``nav_msgs/OccupancyGrid`` style)."""
+
+
+@dataclass(frozen=True, eq=False)
+class Coverage:
+    """What a camera has covered in the plane: ``seen`` and ``blocks`` (bool (nx, ny)) over ``grid``."""
+
+    grid: PlaneGrid
+    seen: np.ndarray
+    blocks: np.ndarray
+
+    @property
+    def area_seen(self) -> float:
+        """Floor area seen [m^2]."""
+        return float(self.seen.sum()) * self.grid.cell ** 2
+
+    def cells(self) -> np.ndarray:
+        """Give each cell as int8 (nx, ny): ``UNSEEN``, ``SEEN`` or ``BLOCKS_SIGHT`` (seen, and it blocks)."""
+        out = np.full(self.grid.shape, UNSEEN, dtype=np.int8)
+        out[self.seen] = SEEN
+        out[self.seen & self.blocks] = BLOCKS_SIGHT
+        return out
+
+    @staticmethod
+    def from_cells(grid: PlaneGrid, cells: np.ndarray) -> 'Coverage':
+        """Inverse of :meth:`cells` (any value other than ``SEEN`` or ``BLOCKS_SIGHT`` is unseen).
+
+        Raises
+        ------
+        InvalidInputError
+            When the cells' shape is not the grid's.
+        """
+        c = np.asarray(cells)
+        if c.shape != grid.shape:
+            raise InvalidInputError(f'coverage cells {c.shape} do not match the grid {grid.shape}')
+        blocks = c == BLOCKS_SIGHT
+        return Coverage(grid, (c == SEEN) | blocks, blocks)
+
+    def on(self, grid: PlaneGrid) -> 'Coverage':
+        """Return this coverage resampled onto another grid (by cell centre; outside: unseen)."""
+        centers = grid.centers().reshape(-1, 2)
+        lo = np.asarray(self.grid.origin)
+        hi = lo + np.asarray(self.grid.shape) * self.grid.cell
+        inside = np.all((centers >= lo) & (centers < hi), axis=1)
+        ix, iy = self.grid.index(centers)
+        seen = (self.seen[ix, iy] & inside).reshape(grid.shape)
+        blocks = (self.blocks[ix, iy] & inside).reshape(grid.shape)
+        return Coverage(grid, seen, blocks)
+
+
+def map_coverage(smap: SemanticMap, eye_height: float, cell: Optional[float] = None) -> Coverage:
+    """Return the coverage of a semantic map over its own (x, y) extent (``cell`` [m]: its voxel size)."""
+    vs = smap.params.voxel_size
+    size = float(cell or vs)
+    if not smap.observed.size:
+        return Coverage(PlaneGrid((0.0, 0.0), size, (1, 1)), np.zeros((1, 1), bool), np.zeros((1, 1), bool))
+    lo = smap.origin[:2] * vs
+    hi = (smap.origin[:2] + np.asarray(smap.shape[:2])) * vs
+    grid = PlaneGrid.over(lo, hi, size)
+    return Coverage(grid, seen_cells(smap, grid), sight_blocking_cells(smap, grid, eye_height))

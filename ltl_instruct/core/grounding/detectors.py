@@ -9,6 +9,11 @@ segmenter gives them directly; for plain RGB images this module makes them:
    box itself is the mask);
 3. :func:`label_image` paints the masks into an int32 label image with a class table.
 
+:class:`RgbLabeller` does the three for the referent names of the tasks, with a class
+table that grows with the names; without SAM each box is cut to the near surface in it
+by depth (:func:`depth_masks`). ``referent_grounder`` uses it with ``detector: owlvit``
+or ``owlv2``.
+
 Models load once per detector object; every failure to load or run them is a typed
 ``MODEL_ERROR``. Images are uint8 (H, W, 3) RGB; boxes are ``(x0, y0, x1, y1)`` in
 pixels of that image.
@@ -160,6 +165,30 @@ class SamSegmenter:
         return chosen.numpy().astype(bool)
 
 
+def depth_masks(detections: Sequence[Detection], depth: np.ndarray, spread: float = 0.5) -> np.ndarray:
+    """Cut each box to the near surface in it: masks (N, H, W) of its pixels within ``spread`` [m] of it.
+
+    Without a segmenter a box is the mask, and it also labels what lies behind the object
+    in the box (the wall behind a pillar, the floor beside a chair), which the map then
+    keeps as pieces of the object. The near surface is the 20th percentile of the box's
+    depths [m]: most of a detector's box is its object, and the object is in front.
+    """
+    d = np.asarray(depth, dtype=np.float32)
+    out = np.zeros((len(detections),) + d.shape, dtype=bool)
+    for k, det in enumerate(detections):
+        x0, y0 = int(det.box[0]), int(det.box[1])
+        x1, y1 = int(np.ceil(det.box[2])), int(np.ceil(det.box[3]))
+        patch = d[y0:y1, x0:x1]
+        with np.errstate(invalid='ignore'):
+            valid = np.isfinite(patch) & (patch > 0)
+        if not valid.any():
+            continue
+        near = float(np.percentile(patch[valid], 20))
+        with np.errstate(invalid='ignore'):
+            out[k, y0:y1, x0:x1] = valid & (np.abs(patch - near) <= spread)
+    return out
+
+
 def label_image(shape: tuple[int, int], detections: Sequence[Detection], class_ids: Mapping[str, int],
                 masks: Optional[np.ndarray] = None) -> np.ndarray:
     """Paint detections into an int32 label image (H, W): higher scores win where they overlap.
@@ -187,3 +216,66 @@ def label_image(shape: tuple[int, int], detections: Sequence[Detection], class_i
             x0, y0, x1, y1 = d.box
             out[int(y0):int(np.ceil(y1)), int(x0):int(np.ceil(x1))] = cid
     return out
+
+
+class RgbLabeller:
+    """Label images from RGB: the referent names of the tasks as text queries, boxes, masks, class ids.
+
+    The class table grows with the queries: each new name gets the next id (from 1), so a
+    semantic map fed with these label images keeps one class per name whatever the
+    order of the tasks. Detections of a query are painted with its id
+    (:func:`label_image`), through SAM masks when a segmenter is given, else as boxes.
+
+    Parameters
+    ----------
+    detector: anything with ``detect(rgb, queries) -> list[Detection]``
+        (:class:`OpenVocabularyDetector`).
+    segmenter: optional, with ``masks(rgb, boxes) -> (N, H, W) bool`` (:class:`SamSegmenter`).
+    """
+
+    def __init__(self, detector: Any, segmenter: Optional[Any] = None) -> None:
+        self.detector, self.segmenter = detector, segmenter
+        self.classes: dict[int, str] = {}
+        self._ids: dict[str, int] = {}
+
+    def class_id(self, name: str) -> int:
+        """Return the class id of a query (the text a detection is labelled with), adding it when new."""
+        text = name.replace('_', ' ').strip()
+        if text not in self._ids:
+            self._ids[text] = len(self._ids) + 1
+            self.classes[self._ids[text]] = text
+        return self._ids[text]
+
+    def labels(self, rgb: np.ndarray, queries: Sequence[str],
+               depth: Optional[np.ndarray] = None) -> np.ndarray:
+        """Return the int32 label image (H, W) of one RGB image for the queried names (no query: all 0).
+
+        Without a segmenter, ``depth`` [m] (H, W) cuts each box to its near surface
+        (:func:`depth_masks`).
+        """
+        img = _check_image(rgb)
+        names = sorted({q.replace('_', ' ').strip() for q in queries if q.strip()})[:MAX_QUERIES]
+        if not names:
+            return np.zeros(img.shape[:2], dtype=np.int32)
+        ids = {n: self.class_id(n) for n in names}
+        found = self.detector.detect(img, names)
+        masks = None
+        if self.segmenter is not None and found:
+            masks = self.segmenter.masks(img, [d.box for d in found])
+        elif depth is not None and np.shape(depth) == img.shape[:2]:
+            masks = depth_masks(found, depth)
+        return label_image(img.shape[:2], found, ids, masks)
+
+
+def load_labeller(kind: str, detector_dir: Union[str, Path], segmenter_dir: Union[str, Path] = '',
+                  score_threshold: float = 0.1) -> RgbLabeller:
+    """Load an :class:`RgbLabeller` from local model directories (``segmenter_dir`` '': boxes as masks).
+
+    Raises
+    ------
+    LtlInstructError
+        ``MODEL_ERROR`` when a model cannot be loaded (transformers missing, no such directory...).
+    """
+    detector = OpenVocabularyDetector(detector_dir, kind, score_threshold)
+    segmenter = SamSegmenter(segmenter_dir) if str(segmenter_dir) else None
+    return RgbLabeller(detector, segmenter)

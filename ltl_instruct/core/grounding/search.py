@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field, replace
-from typing import Optional, Sequence, Union
+from typing import Callable, Optional, Sequence, Union
 
 import numpy as np
 
@@ -35,7 +35,7 @@ from ltl_instruct.core.automaton.guards import Cube, Guard
 from ltl_instruct.core.errors import InvalidInputError
 from ltl_instruct.core.grounding.comparators import GroundingParams
 from ltl_instruct.core.grounding.coverage import (
-    PlaneGrid, frontier_cells, seen_cells, sight_blocking_cells, travel_field, view_gain,
+    Coverage, PlaneGrid, frontier_cells, seen_cells, sight_blocking_cells, travel_field, view_gain,
 )
 from ltl_instruct.core.grounding.resolve import ground_formula
 from ltl_instruct.core.grounding.rsm import Grounding, Outcome, ReferentMap
@@ -181,18 +181,106 @@ def _avoid_guard(regions: Sequence[AtomRegion], with_goal: bool) -> Guard:
     return Guard.of([Cube(pos, neg)])
 
 
-def plan_move(world: PlanningWorld, start: Sequence[float], goal: Sequence[float],
-              avoid: Sequence[AtomRegion], params: SearchParams, request_id: str = 'search') -> SegmentResult:
-    """Plan with FMT* from ``start`` to within ``GOAL_RADIUS`` of ``goal`` [m], staying out of ``avoid``.
+def move_request(start: Sequence[float], goal: Sequence[float], avoid: Sequence[AtomRegion],
+                 params: SearchParams, request_id: str = 'search') -> SegmentRequest:
+    """Return the request of a move from ``start`` to ``GOAL_RADIUS`` from ``goal`` [m], outside ``avoid``.
 
     The regions to avoid are kept ``params.avoid_margin`` outside, where free space allows.
     """
     target = AtomRegion(_GOAL_ATOM.key, ((float(goal[0]), float(goal[1]), 0.0),), ((0.0, 0.0, 0.0),),
                         GOAL_RADIUS)
-    request = SegmentRequest(request_id, (float(start[0]), float(start[1])), 2, (target,) + tuple(avoid),
-                             _avoid_guard(avoid, True), _avoid_guard(avoid, False), params.fmt,
-                             avoid_margin=params.avoid_margin)
-    return solve_segment(request, world)
+    return SegmentRequest(request_id, (float(start[0]), float(start[1])), 2, (target,) + tuple(avoid),
+                          _avoid_guard(avoid, True), _avoid_guard(avoid, False), params.fmt,
+                          avoid_margin=params.avoid_margin)
+
+
+def plan_move(world: PlanningWorld, start: Sequence[float], goal: Sequence[float],
+              avoid: Sequence[AtomRegion], params: SearchParams, request_id: str = 'search') -> SegmentResult:
+    """Plan with FMT* from ``start`` to within ``GOAL_RADIUS`` of ``goal`` [m], staying out of ``avoid``."""
+    return solve_segment(move_request(start, goal, avoid, params, request_id), world)
+
+
+def avoid_mask(grid: PlaneGrid, regions: Sequence[AtomRegion], margin: float) -> np.ndarray:
+    """Cells within a region to avoid, grown by ``margin`` [m]; bool (nx, ny)."""
+    mask = np.zeros(grid.shape, dtype=bool)
+    pts = grid.centers().reshape(-1, 2)
+    for r in regions:
+        d = r.distance(pts, 2).reshape(grid.shape)
+        mask |= d <= r.radius + margin
+    return mask
+
+
+def frontier_goals(coverage: Coverage, free: np.ndarray, position: Sequence[float],
+                   regions: Sequence[AtomRegion], looked: np.ndarray, failed: set[tuple[int, int]],
+                   params: SearchParams) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Frontier goals [m] (K, 2) a robot at ``position`` can reach, their gains (K,) and grid travel [m] (K,).
+
+    Parameters
+    ----------
+    coverage: what the camera saw, over the grid of ``free``.
+    free: cells a robot may stand in, bool (nx, ny).
+    regions: the regions to avoid (never walked through, with ``params.avoid_margin``).
+    looked: positions (L, 2) [m] frontiers closer than ``params.revisit`` to are no goals.
+    failed: cells (ix, iy) whose goals could not be planned to: never goals again.
+    """
+    grid = coverage.grid
+    walkable = free & ~avoid_mask(grid, regions, params.avoid_margin)
+    # a robot that stands in a margin (the planner keeps it where free space allows) walks out of it
+    around = np.linalg.norm(grid.centers() - np.asarray(position, dtype=float)[:2], axis=2)
+    walkable |= free & (around <= params.avoid_margin + 2 * grid.cell) & ~avoid_mask(grid, regions, 0.0)
+    dist = travel_field(walkable, grid, position)
+    cells = np.argwhere(frontier_cells(coverage.seen, coverage.blocks) & walkable & np.isfinite(dist))
+    cells = _thin(cells, max(1, int(round(0.5 / grid.cell))))
+    cells = np.array([c for c in cells.tolist() if tuple(c) not in failed], dtype=np.int64).reshape(-1, 2)
+    if cells.size == 0:
+        return np.zeros((0, 2)), np.zeros(0, dtype=np.int64), np.zeros(0)
+    pts = grid.centers()[cells[:, 0], cells[:, 1]]
+    looked = np.asarray(looked, dtype=float).reshape(-1, 2)
+    if len(looked):
+        fresh = np.min(np.linalg.norm(pts[:, None] - looked[None], axis=2), axis=1) > params.revisit
+        pts, cells = pts[fresh], cells[fresh]
+    gain = view_gain(pts, grid, coverage.seen, coverage.blocks, params.sensor_range)
+    keep = gain >= params.min_gain
+    return pts[keep], gain[keep], dist[cells[keep, 0], cells[keep, 1]]
+
+
+def frontier_score(gain: np.ndarray, travel: np.ndarray, params: SearchParams) -> np.ndarray:
+    """Score frontier goals by gain (K,) and travel [m] (K,): the higher the better."""
+    if params.decay > 0:
+        return gain * np.exp(-params.decay * travel)
+    return gain / (travel + params.view_cost)
+
+
+def choose_move(candidates: Callable[[], tuple[np.ndarray, np.ndarray, np.ndarray]],
+                plan: Callable[[np.ndarray], SegmentResult], failed: set[tuple[int, int]], grid: PlaneGrid,
+                params: SearchParams) -> Optional[SegmentResult]:
+    """Plan to the next frontier goal; None when none is left (the map is complete).
+
+    ``candidates()`` gives the goals, gains and grid travel (:func:`frontier_goals`, read
+    again after failures); ``plan(goal)`` plans a move with FMT*. The ``shortlist`` best
+    by grid travel are planned and the best by gain per metre of path is chosen; the
+    cells of goals that cannot be planned to are added to ``failed``.
+    """
+    while True:
+        pts, gain, dist = candidates()
+        if len(pts) == 0:
+            return None
+        if params.strategy == 'nearest':
+            order = np.argsort(dist, kind='stable')[:1]
+        else:
+            order = np.argsort(-frontier_score(gain, dist, params), kind='stable')[:params.shortlist]
+        best, best_score = None, -math.inf
+        for goal, g in zip(pts[order], gain[order]):
+            result = plan(goal)
+            if not result.ok:
+                ix, iy = grid.index(goal[None])
+                failed.add((int(ix[0]), int(iy[0])))
+                continue
+            score = float(frontier_score(np.array([g]), np.array([result.length]), params)[0])
+            if score > best_score:
+                best, best_score = result, score
+        if best is not None:
+            return best
 
 
 class _Explorer:
@@ -233,69 +321,20 @@ class _Explorer:
         return seen_cells(self.smap, self.grid)
 
     # ------------------------------------------------------------------ choosing
-    def _avoid_mask(self, regions: Sequence[AtomRegion]) -> np.ndarray:
-        """Cells within a region to avoid (grown by the margin), bool (nx, ny)."""
-        mask = np.zeros(self.grid.shape, dtype=bool)
-        pts = self.grid.centers().reshape(-1, 2)
-        for r in regions:
-            d = r.distance(pts, 2).reshape(self.grid.shape)
-            mask |= d <= r.radius + self.params.avoid_margin
-        return mask
+    def coverage(self) -> Coverage:
+        """Return what the camera saw so far, over the plane grid."""
+        blocks = sight_blocking_cells(self.smap, self.grid, self.camera.mount.height)
+        return Coverage(self.grid, self.seen(), blocks)
 
     def candidates(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Frontier goals [m] (K, 2) the robot can reach, their gains (K,) and grid travel [m] (K,)."""
-        seen = self.seen()
-        blocks = sight_blocking_cells(self.smap, self.grid, self.camera.mount.height)
         regions = avoid_regions(self.rmap, self.params.near_threshold)
-        walkable = self.free & ~self._avoid_mask(regions)
-        dist = travel_field(walkable, self.grid, self.pose.position)
-        cells = np.argwhere(frontier_cells(seen, blocks) & walkable & np.isfinite(dist))
-        cells = _thin(cells, max(1, int(round(0.5 / self.grid.cell))))
-        cells = np.array([c for c in cells.tolist() if tuple(c) not in self.failed], dtype=np.int64)
-        if cells.size == 0:
-            return np.zeros((0, 2)), np.zeros(0, dtype=np.int64), np.zeros(0)
-        pts = self.grid.centers()[cells[:, 0], cells[:, 1]]
-        looked = np.asarray(self.views)[:, :2]
-        fresh = np.min(np.linalg.norm(pts[:, None] - looked[None], axis=2), axis=1) > self.params.revisit
-        pts, cells = pts[fresh], cells[fresh]
-        gain = view_gain(pts, self.grid, seen, blocks, self.params.sensor_range)
-        keep = gain >= self.params.min_gain
-        return pts[keep], gain[keep], dist[cells[keep, 0], cells[keep, 1]]
+        return frontier_goals(self.coverage(), self.free, self.pose.position, regions,
+                              np.asarray(self.views)[:, :2], self.failed, self.params)
 
     def choose(self) -> Optional[SegmentResult]:
         """Plan to the next frontier goal; None when none is left (the map is complete)."""
-        while True:
-            pts, gain, dist = self.candidates()
-            if len(pts) == 0:
-                return None
-            if self.params.strategy == 'nearest':
-                order = np.argsort(dist, kind='stable')[:1]
-            else:
-                score = self.score(gain, dist)
-                order = np.argsort(-score, kind='stable')[:self.params.shortlist]
-            best = self._best_planned(pts[order], gain[order])
-            if best is not None:
-                return best
-
-    def score(self, gain: np.ndarray, travel: np.ndarray) -> np.ndarray:
-        """Score frontier goals by gain (K,) and travel [m] (K,): the higher the better."""
-        if self.params.decay > 0:
-            return gain * np.exp(-self.params.decay * travel)
-        return gain / (travel + self.params.view_cost)
-
-    def _best_planned(self, goals: np.ndarray, gains: np.ndarray) -> Optional[SegmentResult]:
-        """Plan to each goal with FMT*; the best by gain per metre (failures are never tried again)."""
-        best, best_score = None, -math.inf
-        for goal, gain in zip(goals, gains):
-            result = self.plan(goal)
-            if not result.ok:
-                ix, iy = self.grid.index(goal[None])
-                self.failed.add((int(ix[0]), int(iy[0])))
-                continue
-            score = float(self.score(np.array([gain]), np.array([result.length]))[0])
-            if score > best_score:
-                best, best_score = result, score
-        return best
+        return choose_move(self.candidates, self.plan, self.failed, self.grid, self.params)
 
     def plan(self, goal: np.ndarray) -> SegmentResult:
         """FMT* from the robot to ``goal`` [m], never near an avoided region."""
@@ -373,17 +412,20 @@ def search_referents(scene: Scene, formula: Union[Formula, str], start: Optional
         ex.drive(move)
     seen = ex.seen()
     area = float(seen.sum()) * params.cell ** 2
-    rmap = ex.rmap if reason != 'complete' else _after_complete_search(ex.rmap, area, len(ex.views))
+    rmap = ex.rmap if reason != 'complete' else after_complete_search(ex.rmap, area, f'{len(ex.views)} views')
     return SearchResult(rmap, sought, tuple(ex.views), np.asarray(ex.path), path_length(np.asarray(ex.path)),
                         area, reason == 'complete', reason, ex.moves, seen, ex.grid, ex.smap)
 
 
-def _after_complete_search(rmap: ReferentMap, area: float, views: int) -> ReferentMap:
-    """Make required descriptors still unresolved ``NO_MATCH``: the whole reachable map was searched."""
+def after_complete_search(rmap: ReferentMap, area: float, looks: str) -> ReferentMap:
+    """Make required descriptors still unresolved ``NO_MATCH``: the whole reachable map was searched.
+
+    ``area`` [m^2] is the area seen, ``looks`` how (``12 views``), for the explanation.
+    """
     out = dict(rmap.groundings)
     for text in unresolved(rmap):
         g = rmap.groundings[text]
-        why = (f'searched the whole reachable map ({area:.1f} m^2 seen in {views} views, no frontier left): '
+        why = (f'searched the whole reachable map ({area:.1f} m^2 seen in {looks}, no frontier left): '
                f'nothing there is "{text}"',) + g.explanation
         out[text] = Grounding(g.descriptor, Outcome.NO_MATCH, g.instances, why, g.required)
     return ReferentMap(out)

@@ -186,6 +186,14 @@ class SemanticMap:
             new_lo, new_hi = lo - pad, hi + pad
         return np.floor_divide(new_lo, _CHUNK) * _CHUNK, (np.floor_divide(new_hi, _CHUNK) + 1) * _CHUNK - 1
 
+    def name_classes(self, classes: Mapping[int, str]) -> None:
+        """Learn label texts of class ids, also of classes integrated before their name came."""
+        for cid, label in classes.items():
+            self.class_names[int(cid)] = str(label)
+            col = self._column.get(int(cid))
+            if col is not None:
+                self._column_names[col] = str(label)
+
     def _columns_for(self, class_ids: np.ndarray) -> np.ndarray:
         """Score columns of label ids (<= 0 -> column 0), adding columns for new classes."""
         if class_ids.size == 0:

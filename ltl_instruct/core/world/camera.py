@@ -101,10 +101,26 @@ def rotate(v: np.ndarray, rot: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class CameraMount:
-    """Where the camera sits on the robot: ``height`` [m] above its position, ``pitch`` [rad] down."""
+    """Where the camera sits on the robot (its extrinsic): the camera body frame's pose in the robot's.
+
+    Attributes
+    ----------
+    height: [m] above the robot's position (z in the robot's frame).
+    pitch: [rad] down (a rotation about the camera's +y).
+    x, y: [m] forward and left of the robot's position.
+    yaw: [rad] turned left from the robot's heading (about +z), before the pitch.
+    """
 
     height: float = 1.0
     pitch: float = 0.0
+    x: float = 0.0
+    y: float = 0.0
+    yaw: float = 0.0
+
+    def __post_init__(self) -> None:
+        vals = (self.height, self.pitch, self.x, self.y, self.yaw)
+        if not all(isinstance(v, (int, float)) and math.isfinite(v) for v in vals):
+            raise InvalidInputError(f'camera mount {vals} must be finite numbers')
 
 
 def rotation_zy(yaw: float, pitch: float) -> np.ndarray:
@@ -135,9 +151,10 @@ def camera_body_pose(pose: Any, mount: CameraMount = CameraMount()) -> np.ndarra
     p = np.asarray(position, dtype=float).reshape(-1)
     if p.shape != (3,) or not np.all(np.isfinite(p)) or not math.isfinite(float(yaw)):
         raise InvalidInputError('pose contains NaN or infinite values, or is not 3D')
+    c, s = math.cos(float(yaw)), math.sin(float(yaw))
     t = np.eye(4)
-    t[:3, :3] = rotation_zy(float(yaw), mount.pitch)
-    t[:3, 3] = p + np.array([0.0, 0.0, mount.height])
+    t[:3, :3] = rotation_zy(float(yaw) + mount.yaw, mount.pitch)
+    t[:3, 3] = p + np.array([c * mount.x - s * mount.y, s * mount.x + c * mount.y, mount.height])
     return t
 
 

@@ -6,8 +6,8 @@ Targets: formula text (``ltl-instruct formula``), English (the translator node's
 scene files, and every message type a node subscribes to, handed to the real node callbacks
 in this process (the five nodes are built here on a private ROS domain; nothing is sent over
 DDS): instruction, task_spec, referent_map, cancel, odometry, plan_segment, segment status,
-skill result and request, plan, map, map_cloud, camera frames (info, labels, depth, pose),
-label classes, plan_request, verification reply, task_status.
+skill result and request, plan, map, map_cloud, camera frames (info, labels, depth, the odometry of
+their stamp), label classes, plan_request, verification reply, task_status.
 
 An input passes when its target returns or raises a typed error (``LtlInstructError``), within
 10 s and 1 GiB more memory. Anything else is counted (tracebacks, hangs), printed, and written
@@ -133,17 +133,6 @@ def odometry(draw: Any) -> Any:
 
 
 @st.composite
-def pose_stamped(draw: Any) -> Any:
-    """A PoseStamped with any float, stamped with one of a few stamps (so that frames pair up)."""
-    from geometry_msgs.msg import PoseStamped
-    msg = PoseStamped()
-    msg.header.stamp.sec = draw(st.integers(0, 2))
-    _set_floats(draw, msg.pose.position, 'xyz')
-    _set_floats(draw, msg.pose.orientation, 'xyzw')
-    return msg
-
-
-@st.composite
 def paths(draw: Any) -> Any:
     """A Path of any floats and length."""
     from geometry_msgs.msg import PoseStamped
@@ -191,12 +180,15 @@ def clouds(draw: Any) -> Any:
 
 @st.composite
 def camera_frames(draw: Any) -> list[tuple[str, Any]]:
-    """Camera info, a label and a depth image and a pose, all of one stamp, any of them malformed."""
+    """Camera info, a label and a depth image and odometry, all of one stamp, any of them malformed."""
     from sensor_msgs.msg import CameraInfo, Image
     w, h = draw(st.integers(0, 24)), draw(st.integers(0, 18))
     info = CameraInfo(width=draw(st.sampled_from([w, w, 0, 10_000])), height=h)
     info.k = [draw(FLOATS) for _ in range(9)]
-    out: list[tuple[str, Any]] = [('camera/pose', draw(pose_stamped())), ('camera/color/camera_info', info)]
+    odom = draw(odometry())   # the pose of the frame: the odometry of its stamp
+    odom.header.frame_id = 'map'
+    odom.header.stamp.sec = draw(st.integers(0, 2))
+    out: list[tuple[str, Any]] = [('odom', odom), ('camera/color/camera_info', info)]
     stamp = out[0][1].header.stamp
     for topic, encoding in (('camera/labels/image_raw', '32SC1'), ('camera/depth/image_raw', '32FC1')):
         img = Image(width=w, height=h,
@@ -286,7 +278,6 @@ class Nodes:
                 'plan': ('nav_msgs.msg.Path', [s.on_plan]),
                 'map': ('nav_msgs.msg.OccupancyGrid', [p.on_map, f.on_map]),
                 'map_cloud': ('sensor_msgs.msg.PointCloud2', [p.on_map_cloud, f.on_map_cloud]),
-                'camera/pose': ('geometry_msgs.msg.PoseStamped', [g.on_camera_pose]),
                 'camera/color/camera_info': ('sensor_msgs.msg.CameraInfo', [g.on_info]),
                 'camera/labels/image_raw': ('sensor_msgs.msg.Image', [g.on_labels]),
                 'camera/depth/image_raw': ('sensor_msgs.msg.Image', [g.on_depth])}

@@ -43,14 +43,14 @@ ANSWERS: dict[str, Optional[str]] = {
     'referent_map': None, 'skill/result': None, 'skill/request': None, 'fmt_planner/status': None,
     'plan_segment': None, 'plan': None, 'odom': None, 'map': None, 'map_cloud': None,
     'camera/color/camera_info': None, 'camera/labels/image_raw': None, 'camera/depth/image_raw': None,
-    'camera/pose': None, 'camera/labels/classes': None,
+    'camera/labels/classes': None,
 }
 # how often each topic is drawn (the instruction-like ones most: they are what users send)
 WEIGHTS: dict[str, int] = {
     'instruction': 30, 'task_spec': 12, 'cancel': 6, 'plan_request': 6, 'verification/reply': 3,
     'task_status': 3, 'referent_map': 4, 'skill/result': 3, 'skill/request': 3, 'fmt_planner/status': 2,
     'plan_segment': 3, 'plan': 2, 'odom': 6, 'map': 1, 'map_cloud': 2, 'camera/color/camera_info': 2,
-    'camera/labels/image_raw': 2, 'camera/depth/image_raw': 3, 'camera/pose': 2, 'camera/labels/classes': 2,
+    'camera/labels/image_raw': 2, 'camera/depth/image_raw': 3, 'camera/labels/classes': 2,
 }
 TYPES: dict[str, str] = dict(
     {t: 'std_msgs.msg.String' for t, a in ANSWERS.items()},
@@ -58,7 +58,7 @@ TYPES: dict[str, str] = dict(
        'map': 'nav_msgs.msg.OccupancyGrid', 'map_cloud': 'sensor_msgs.msg.PointCloud2',
        'camera/color/camera_info': 'sensor_msgs.msg.CameraInfo',
        'camera/labels/image_raw': 'sensor_msgs.msg.Image',
-       'camera/depth/image_raw': 'sensor_msgs.msg.Image', 'camera/pose': 'geometry_msgs.msg.PoseStamped'})
+       'camera/depth/image_raw': 'sensor_msgs.msg.Image'})
 GOOD = (
     'F near[fridge]', 'Go to the bookshelf and then the bed.',
     'F (near[armchair] & F near[plant]) & G !near[tv]',
@@ -241,16 +241,6 @@ def bad_odometry(rng: random.Random) -> Any:
     return msg
 
 
-def bad_pose(rng: random.Random, stamp: Any) -> Any:
-    """A PoseStamped with a non-finite value."""
-    from geometry_msgs.msg import PoseStamped
-    msg = PoseStamped()
-    msg.header.stamp = stamp
-    msg.pose.orientation.w = 1.0
-    setattr(msg.pose.position, rng.choice('xyz'), _odd(rng))
-    return msg
-
-
 def bad_path(rng: random.Random, stamp: Any) -> Any:
     """A Path with non-finite or absurd poses."""
     from geometry_msgs.msg import PoseStamped
@@ -304,13 +294,13 @@ def bad_cloud(rng: random.Random) -> Any:
 
 
 def bad_camera_frame(rng: random.Random, stamp: Any) -> list[tuple[str, Any]]:
-    """A camera frame (pose, intrinsics, labels, depth of one stamp) with one or more parts malformed."""
+    """A camera frame (odometry, intrinsics, labels, depth of one stamp) with one or more parts malformed."""
     from ltl_instruct import conversions as conv
     from ltl_instruct.core.world.robot import Pose
     w, h = rng.choice([(8, 6), (16, 12)])
     depth = np.full((h, w), 2.0, dtype=np.float32)
     labels = np.full((h, w), rng.choice([0, 1, 2, 7, -1, 2 ** 31 - 1]), dtype=np.int32)
-    pose: Any = conv.pose_stamped_msg(Pose((5.0, 5.0, 1.0), 0.0), stamp)
+    pose: Any = conv.odometry_msg(Pose((5.0, 5.0, 1.0), 0.0), stamp)
     info = conv.camera_info_msg(w, h, 10.0, 10.0, w / 2, h / 2, stamp)
     parts = rng.sample(['pose', 'info', 'depth', 'labels', 'values'], k=rng.randint(1, 3))
     if 'values' in parts:
@@ -318,7 +308,8 @@ def bad_camera_frame(rng: random.Random, stamp: Any) -> list[tuple[str, Any]]:
     depth_msg = conv.image_msg(depth, '32FC1', stamp)
     labels_msg = conv.image_msg(labels, '32SC1', stamp)
     if 'pose' in parts:
-        pose = bad_pose(rng, stamp)
+        pose = bad_odometry(rng)
+        pose.header.stamp = stamp
     if 'info' in parts:
         info.k = [rng.choice([0.0, -1.0, float('nan'), 1e-300, 1e300]) if i in (0, 2, 4, 5) else v
                   for i, v in enumerate(info.k)]
@@ -335,7 +326,7 @@ def bad_camera_frame(rng: random.Random, stamp: Any) -> list[tuple[str, Any]]:
                                                               (w, h, 0)])
             else:
                 msg.is_bigendian = 1
-    return [('camera/pose', pose), ('camera/color/camera_info', info),
+    return [('odom', pose), ('camera/color/camera_info', info),
             ('camera/labels/image_raw', labels_msg), ('camera/depth/image_raw', depth_msg)]
 
 

@@ -246,13 +246,17 @@ def test_readme_parameter_table_matches_what_each_node_declares():
 
 
 def _published_statuses() -> set[str]:
-    """Every ``status`` task_progression can publish: the literal or constant given to publish_status."""
+    """Every ``status`` task_progression can publish: the literal or constant given to publish_status.
+
+    Its search (``search_driver.SearchMixin``, a base class of the node) publishes through it too.
+    """
     import ast
     from ltl_instruct.core import lifecycle
     from ltl_instruct.core.monitor import Verdict
-    tree = ast.parse((REPO / 'ltl_instruct' / 'nodes' / 'task_progression.py').read_text())
+    nodes = REPO / 'ltl_instruct' / 'nodes'
+    trees = [ast.parse((nodes / f).read_text()) for f in ('task_progression.py', 'search_driver.py')]
     found: set[str] = set()
-    for node in ast.walk(tree):
+    for node in (n for tree in trees for n in ast.walk(tree)):
         if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)):
             continue
         if node.func.attr == '_fail':

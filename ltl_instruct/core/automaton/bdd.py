@@ -173,7 +173,7 @@ class BDD:
                 stack.append((self._high[n], lits + ((lv, True),)))
 
     def isop(self, lower: int, upper: int) -> tuple[tuple[Literal, ...], ...]:
-        """An irredundant sum of products ``c`` with ``lower <= c <= upper`` (Minato-Morreale).
+        """Return an irredundant sum of products ``c`` with ``lower <= c <= upper`` (Minato-Morreale).
 
         With ``lower == upper`` it is a compact cover of one function; a larger
         ``upper`` adds letters that do not matter (don't-cares) to make cubes shorter.

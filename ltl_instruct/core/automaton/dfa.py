@@ -174,7 +174,7 @@ class Automaton:
         return self._dist[s]
 
     def letters_without(self, pairs: Iterable[tuple[Atom, Atom]]) -> int:
-        """The letters (a BDD for :meth:`Edge.meets`) in which no pair of these atoms holds together.
+        """Return the letters (a BDD for :meth:`Edge.meets`) in which no pair of these atoms holds together.
 
         A planner passes the pairs of near-atoms whose regions do not meet on its map,
         and so explores only the edges the map can take.
@@ -518,7 +518,7 @@ def _minimise(prog: Progression, nodes: list[int], succ: list[dict[int, int]],
 
 def _quotient(prog: Progression, nodes: list[int], succ: list[dict[int, int]], block: list[int],
               live: list[bool]) -> Automaton:
-    """The automaton of the blocks: live blocks in discovery order, then the sink."""
+    """Build the automaton of the blocks: live blocks in discovery order, then the sink."""
     m = prog.bdd
     ids: dict[int, int] = {}
     reps: list[int] = []

@@ -171,7 +171,7 @@ class Progression:
 
     # ------------------------------------------------------------------ reading letters
     def transition(self, state: int) -> int:
-        """The state read at an unknown letter: a BDD whose nodes below the atoms are successors."""
+        """Return the state read at an unknown letter: a BDD whose nodes below the atoms are successors."""
         memo = self._compose_memo
         hit = memo.get(state)
         if hit is not None:
@@ -269,7 +269,7 @@ class Progression:
 
     # ------------------------------------------------------------------ for people
     def guard(self, node: int) -> Guard:
-        """The guard as cubes (an irredundant cover; letters with two events do not matter)."""
+        """Return the guard as cubes (an irredundant cover; letters with two events do not matter)."""
         m = self.bdd
         cubes = []
         for lits in m.isop(node, m.disj(node, m.neg(self.valid))):
@@ -279,7 +279,7 @@ class Progression:
         return Guard(tuple(sorted((c for c in cubes if c.consistent), key=cube_order)))
 
     def letters_without(self, pairs: Iterable[tuple[Atom, Atom]]) -> int:
-        """Valid letters in which no pair of these atoms is true together."""
+        """Return the valid letters in which no pair of these atoms is true together."""
         m = self.bdd
         r = self.valid
         for a, b in pairs:
@@ -292,13 +292,13 @@ class Progression:
         return frozenset(self.atoms[lv] for lv in self.bdd.support(node) if lv < self.num_atoms)
 
     def guard_text(self, node: int, max_cubes: int = MAX_TEXT_CUBES) -> Optional[str]:
-        """The guard as text; None when it has more than ``max_cubes`` cubes (see :meth:`guard_formula`)."""
+        """Return the guard as text; None past ``max_cubes`` cubes (then see :meth:`guard_formula`)."""
         if self.bdd.count_paths(node) > max_cubes:
             return None
         return str(self.guard(node))
 
     def guard_formula(self, node: int) -> str:
-        """A guard as a nested formula, linear in its BDD where ``x <-> g`` patterns occur (parity)."""
+        """Write a guard as a nested formula, linear in its BDD where ``x <-> g`` patterns occur (parity)."""
         m = self.bdd
         memo: dict[int, str] = {}
 
@@ -327,7 +327,7 @@ class Progression:
         return text[1:-1] if text.startswith('(') and text.endswith(')') else text
 
     def state_formula(self, state: int) -> Formula:
-        """A formula for a state: the obligations it is made of, as a sum of products."""
+        """Return a formula for a state: the obligations it is made of, as a sum of products."""
         if state == B.FALSE:
             return FALSE
         if state == B.TRUE:

@@ -45,7 +45,7 @@ from std_msgs.msg import String
 
 from ltl_instruct import conversions as conv
 from ltl_instruct.core import planning
-from ltl_instruct.core.automaton import Automaton, on_the_fly_automaton
+from ltl_instruct.core.automaton import Automaton, compile_automaton
 from ltl_instruct.core.errors import ErrorCode, InvalidInputError, LtlInstructError, PlanningError
 from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.lifecycle import (
@@ -549,7 +549,7 @@ class TaskProgressionNode(Node):
                        if isinstance(v, (int, float))})
         t0 = time.monotonic()
         formula = parse_formula(spec['formula'])
-        automaton = on_the_fly_automaton(formula)
+        automaton = compile_automaton(formula)
         timing['automaton_s'] = time.monotonic() - t0
         if not automaton.is_satisfiable:
             raise LtlInstructError(f'the task "{formula}" can never be completed: no sequence of steps '

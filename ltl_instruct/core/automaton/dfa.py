@@ -402,8 +402,10 @@ def on_the_fly_automaton(formula: Formula | str, max_states: int = 100_000,
     budget = WorkBudget(time_limit_s)
     try:
         prog = Progression(f, budget, max_nodes)
-        for lv in range(prog.num_atoms, prog.bdd.num_vars):   # every step function, while bounded
+        lv = prog.num_atoms
+        while lv < prog.bdd.num_vars:   # every step function (each may add obligations), while bounded
             prog.transition(prog.bdd.var(lv))
+            lv += 1
     except RecursionError:
         raise _too_deep() from None
     prog.budget = WorkBudget(None)

@@ -127,19 +127,6 @@ def mona_states(dot: str) -> int:
     return len({s for edge in re.findall(r'(\w+) -> (\w+) \[label', dot) for s in edge} - {'init'})
 
 
-def minimal_states(aut: Any, letters: list) -> int:
-    """States of the minimal DFA of ``aut``'s language: Moore's algorithm over explicit letters."""
-    n = aut.num_states
-    table = [[aut.step(s, x) for x in letters] for s in range(n)]
-    block = [int(s in aut.accepting) for s in range(n)]
-    while True:
-        sigs: dict[tuple, int] = {}
-        new = [sigs.setdefault((block[s],) + tuple(block[t] for t in table[s]), len(sigs)) for s in range(n)]
-        if len(sigs) == len(set(block)):
-            return len(sigs)
-        block = new
-
-
 def random_suite(n: int, peer: Peer) -> dict[str, Any]:
     """Time ours and the peer on ``n`` seeded random formulas; check minimality and languages."""
     rng = random.Random(500)
@@ -152,7 +139,8 @@ def random_suite(n: int, peer: Peer) -> dict[str, Any]:
         aut = compile_automaton(f)
         ours_s.append(time.perf_counter() - t0)
         letters = peer.oracles.valid_letters(atoms_of(f)) if atoms_of(f) else [frozenset()]
-        row = {'formula': str(f), 'states': aut.num_states, 'minimal_states': minimal_states(aut, letters)}
+        row = {'formula': str(f), 'states': aut.num_states,
+               'minimal_states': peer.oracles.minimal_states(aut, letters)}
         if peer.available:
             dot, total, mona = peer.dot(f, atoms_of(f))
             peer_s.append(total)

@@ -14,7 +14,7 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 sys.path.insert(0, str(Path(__file__).parent))
-from ltl_oracles import all_traces, valid_letters  # noqa: E402
+from ltl_oracles import all_traces, minimal_states, valid_letters  # noqa: E402
 
 from ltl_instruct.core.automaton import (  # noqa: E402
     compile_automaton, distinguishing_pair, equivalent, holds,
@@ -174,3 +174,12 @@ def test_brute_force_exhaustive_two_atoms_length_six():
     f = parse_formula('(near[a] U X near[b]) -> (G (near[a] W near[b]) <-> F (near[b] R !near[a]))')
     check_against_evaluator(f, max_len_by_atoms=6, random_traces=0)
     assert len(list(itertools.islice(all_traces(valid_letters(atoms_of(f)), 6), 10**6))) == 5460
+
+
+def test_every_random_dfa_is_minimal():
+    rng = random.Random(500)
+    for _ in range(200):
+        atoms = default_atoms(rng.randint(1, 5), events=rng.random() < 0.3)
+        f = random_formula(rng, atoms, rng.randint(1, 8))
+        aut = compile_automaton(f)
+        assert aut.num_states == minimal_states(aut, valid_letters(atoms_of(f))), str(f)

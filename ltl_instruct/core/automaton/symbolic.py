@@ -271,12 +271,35 @@ class Progression:
     def guard(self, node: int) -> Guard:
         """Return the guard as cubes (an irredundant cover; letters with two events do not matter)."""
         m = self.bdd
+        one = self._single_cube(node)
+        if one is not None:
+            return Guard((one,))
         cubes = []
         for lits in m.isop(node, m.disj(node, m.neg(self.valid))):
             pos = frozenset(self.atoms[lv] for lv, v in lits if v)
             neg = frozenset(self.atoms[lv] for lv, v in lits if not v)
             cubes.append(Cube(pos, neg))
         return Guard(tuple(sorted((c for c in cubes if c.consistent), key=cube_order)))
+
+    def _single_cube(self, node: int) -> Optional[Cube]:
+        """Return the one cube of a guard whose BDD is a single path (None otherwise)."""
+        m = self.bdd
+        pos, neg = [], []
+        while node > B.TRUE:
+            lo, hi = m.low(node), m.high(node)
+            if lo == B.FALSE:
+                pos.append(self.atoms[m.level(node)])
+                node = hi
+            elif hi == B.FALSE:
+                neg.append(self.atoms[m.level(node)])
+                node = lo
+            else:
+                return None
+        if node == B.FALSE:
+            return None
+        if any(a.is_event for a in pos):
+            neg = [a for a in neg if not a.is_event]
+        return Cube(frozenset(pos), frozenset(neg))
 
     def letters_without(self, pairs: Iterable[tuple[Atom, Atom]]) -> int:
         """Return the valid letters in which no pair of these atoms is true together."""

@@ -193,9 +193,9 @@ class _Search:
     def candidates(self, state: int, holding: Optional[str], pos: np.ndarray) -> list[_Candidate]:
         out = []
         allowed = navigation_guard(self.aut.self_loop(state))
-        edges = self.aut.edges_from(state)   # the product with the map: edges its letters can take
-        for e in [e for e in edges if e.meets(self.map_letters)] or edges:
-            if e.dst == state or e.dst == self.aut.sink:
+        moves = [e for e in self.aut.edges_from(state) if e.dst != state]
+        for e in [e for e in moves if e.meets(self.map_letters)] or moves:   # those the map's letters take
+            if e.dst == self.aut.sink:
                 continue
             dist = self.aut.distance_to_accepting(e.dst)
             if dist is None:

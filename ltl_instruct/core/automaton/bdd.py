@@ -172,15 +172,18 @@ class BDD:
                 stack.append((self._low[n], lits + ((lv, False),)))
                 stack.append((self._high[n], lits + ((lv, True),)))
 
-    def isop(self, lower: int, upper: int) -> tuple[tuple[Literal, ...], ...]:
+    def isop(self, lower: int, upper: int,
+             max_cubes: int = 1 << 62) -> tuple[tuple[Literal, ...], ...]:
         """Return an irredundant sum of products ``c`` with ``lower <= c <= upper`` (Minato-Morreale).
 
         With ``lower == upper`` it is a compact cover of one function; a larger
         ``upper`` adds letters that do not matter (don't-cares) to make cubes shorter.
+        Raises ``OverflowError`` as soon as a cover needs more than ``max_cubes`` cubes.
         """
-        return self._isop_rec(lower, upper)[0]
+        return self._isop_rec(lower, upper, max_cubes)[0]
 
-    def _isop_rec(self, lower: int, upper: int) -> tuple[tuple[tuple[Literal, ...], ...], int]:
+    def _isop_rec(self, lower: int, upper: int,
+                  max_cubes: int) -> tuple[tuple[tuple[Literal, ...], ...], int]:
         if lower == FALSE:
             return (), FALSE
         if upper == TRUE:
@@ -192,10 +195,12 @@ class BDD:
         x = min(self._level[lower], self._level[upper])
         l0, l1 = self._cofactors(lower, x)
         u0, u1 = self._cofactors(upper, x)
-        c0, f0 = self._isop_rec(self.conj(l0, self.neg(u1)), u0)
-        c1, f1 = self._isop_rec(self.conj(l1, self.neg(u0)), u1)
+        c0, f0 = self._isop_rec(self.conj(l0, self.neg(u1)), u0, max_cubes)
+        c1, f1 = self._isop_rec(self.conj(l1, self.neg(u0)), u1, max_cubes)
         rest_lower = self.disj(self.conj(l0, self.neg(f0)), self.conj(l1, self.neg(f1)))
-        cs, fs = self._isop_rec(rest_lower, self.conj(u0, u1))
+        cs, fs = self._isop_rec(rest_lower, self.conj(u0, u1), max_cubes)
+        if len(c0) + len(c1) + len(cs) > max_cubes:
+            raise OverflowError(f'more than {max_cubes} cubes')
         cubes = (tuple(c + ((x, False),) for c in c0) + tuple(c + ((x, True),) for c in c1) + cs)
         cover = self.disj(self.mk(x, f0, f1), fs)
         self._isop[key] = (cubes, cover)

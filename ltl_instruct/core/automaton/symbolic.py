@@ -26,12 +26,15 @@ from typing import AbstractSet, Iterable, Optional
 from ltl_instruct.core.automaton import bdd as B
 from ltl_instruct.core.automaton.guards import Cube, Guard, cube_order
 from ltl_instruct.core.automaton.progression import WorkBudget
+from ltl_instruct.core.errors import LimitExceededError
 from ltl_instruct.core.spec.ast import (
     FALSE, TRUE, Always, And, Atom, Const, Eventually, Formula, Iff, Implies, Next, Not, Or,
     Release, Until, WeakNext, WeakUntil, atoms_of, conj, disj,
 )
 
 TRACE_GOES_ON = Eventually(TRUE)
+MAX_GUARD_CUBES = 4096
+"""Most cubes of a guard written as a sum of products (a chain of 14 ``<->`` needs 8,192)."""
 MAX_TEXT_CUBES = 256
 """Guards with more cubes than this are written as nested formulas, not sums of products."""
 TEMPORAL = (Next, WeakNext, Eventually, Always, Until, Release, WeakUntil)
@@ -157,7 +160,6 @@ class Progression:
 
     def _check_size(self) -> None:
         if len(self.bdd) > self.max_nodes:
-            from ltl_instruct.core.errors import LimitExceededError
             raise LimitExceededError(
                 f'the automaton needs more than {self.max_nodes} decision-diagram nodes; simplify the task',
                 details={'limit': 'max_nodes', 'value': self.max_nodes})
@@ -274,8 +276,15 @@ class Progression:
         one = self._single_cube(node)
         if one is not None:
             return Guard((one,))
+        try:
+            cover = m.isop(node, m.disj(node, m.neg(self.valid)), MAX_GUARD_CUBES)
+        except OverflowError:
+            raise LimitExceededError(
+                f'an automaton guard has more than {MAX_GUARD_CUBES} terms as a sum of products '
+                f'({self.guard_formula(node)[:200]}); simplify the task',
+                details={'limit': 'max_guard_cubes', 'value': MAX_GUARD_CUBES}) from None
         cubes = []
-        for lits in m.isop(node, m.disj(node, m.neg(self.valid))):
+        for lits in cover:
             pos = frozenset(self.atoms[lv] for lv, v in lits if v)
             neg = frozenset(self.atoms[lv] for lv, v in lits if not v)
             cubes.append(Cube(pos, neg))
@@ -322,32 +331,36 @@ class Progression:
 
     def guard_formula(self, node: int) -> str:
         """Write a guard as a nested formula, linear in its BDD where ``x <-> g`` patterns occur (parity)."""
-        m = self.bdd
-        memo: dict[int, str] = {}
+        return str(self.nested_formula(node))
 
-        def rec(n: int) -> str:
-            if n <= B.TRUE:
-                return 'true' if n == B.TRUE else 'false'
+    def _variable(self, level: int) -> Formula:
+        return self.atoms[level] if level < self.num_atoms else self.obligations[level - self.num_atoms]
+
+    def nested_formula(self, node: int) -> Formula:
+        """Return a BDD as a formula that follows its nodes (shared parts are written once each)."""
+        m = self.bdd
+        memo: dict[int, Formula] = {B.TRUE: TRUE, B.FALSE: FALSE}
+
+        def rec(n: int) -> Formula:
             got = memo.get(n)
             if got is None:
-                x = self.atoms[m.level(n)].key
+                x = self._variable(m.level(n))
                 lo, hi = m.low(n), m.high(n)
                 if lo == B.FALSE:
-                    got = x if hi == B.TRUE else f'({x} & {rec(hi)})'
+                    got = conj(x, rec(hi))
                 elif hi == B.FALSE:
-                    got = f'!{x}' if lo == B.TRUE else f'(!{x} & {rec(lo)})'
+                    got = conj(Not(x), rec(lo))
                 elif hi == B.TRUE:
-                    got = f'({x} | {rec(lo)})'
+                    got = disj(x, rec(lo))
                 elif lo == B.TRUE:
-                    got = f'(!{x} | {rec(hi)})'
+                    got = disj(Not(x), rec(hi))
                 elif hi == m.neg(lo):
-                    got = f'({x} <-> {rec(hi)})'
+                    got = Iff(x, rec(hi))
                 else:
-                    got = f'({x} & {rec(hi)} | !{x} & {rec(lo)})'
+                    got = disj(conj(x, rec(hi)), conj(Not(x), rec(lo)))
                 memo[n] = got
             return got
-        text = rec(node)
-        return text[1:-1] if text.startswith('(') and text.endswith(')') else text
+        return rec(node)
 
     def state_formula(self, state: int) -> Formula:
         """Return a formula for a state: the obligations it is made of, as a sum of products."""
@@ -355,9 +368,15 @@ class Progression:
             return FALSE
         if state == B.TRUE:
             return TRUE
+        if state == self.initial:
+            return self.formula
         n = self.num_atoms
+        try:
+            cover = self.bdd.isop(state, state, MAX_TEXT_CUBES)
+        except OverflowError:
+            return self.nested_formula(state)
         terms = []
-        for lits in self.bdd.isop(state, state):
+        for lits in cover:
             terms.append(conj(*(self.obligations[lv - n] if v else Not(self.obligations[lv - n])
                                 for lv, v in sorted(lits))))
         return disj(*terms)

@@ -46,7 +46,7 @@ def test_same_language_as_ltlf2dfa_on_500_random_formulas():
 
 
 LARGE = [
-    'G !near[b] & ' + ' & '.join(f'F near[a{i}]' for i in range(6)),         # 65 states
+    'G !near[b] & ' + ' & '.join(f'F near[a{i}]' for i in range(5)),         # 33 states
     'F (' + ' <-> '.join(f'near[a{i}]' for i in range(9)) + ')',             # 2^8 cubes as a sum of products
     'F (near[s] & F (pick[x] & F (release[x, t] & F (near[u] & F (pick[y] & F release[y, t])))))'
     ' & G !near[d]',

@@ -33,7 +33,7 @@ from ltl_instruct.core.spec.parser import parse_formula
 DEFAULT_MAX_STATES = 2000
 DEFAULT_MAX_EDGES = 200_000
 """Most edges one whole compilation may produce, over all states."""
-DEFAULT_MAX_NODES = 2_000_000
+DEFAULT_MAX_NODES = 500_000
 """Most decision-diagram nodes one compilation may make (a memory bound)."""
 DEFAULT_TIME_LIMIT_S = 5.0
 """Seconds one compilation may take before it gives up with ``TIMEOUT``."""

@@ -56,7 +56,7 @@ class Progression:
     """
 
     def __init__(self, formula: Formula, budget: Optional[WorkBudget] = None,
-                 max_nodes: int = 2_000_000) -> None:
+                 max_nodes: int = 500_000) -> None:
         self.formula = formula
         self.budget = budget or WorkBudget(time_limit_s=None)
         self.max_nodes = max_nodes

@@ -34,7 +34,7 @@ def test_cli_iff_chain_compiles_with_linear_guards(capsys):
     assert main(['formula', f'F ({_chain("<->", 14)})']) == 0
     out = capsys.readouterr().out
     assert 'automaton:   2 states' in out
-    assert '0 -> 1: near[a0] <-> (near[a1] <-> (near[a2]' in out
+    assert '0 -> 1: near[a0] <-> near[a1] <-> near[a2]' in out
 
 
 def test_deadline_gives_timeout():

@@ -129,7 +129,7 @@ class Peer:
         t0 = time.perf_counter()
         out = self.parser(text).to_dfa(mona_dfa_out=True)
         total = time.perf_counter() - t0
-        m = re.search(r'Automaton has (\d+) states', out)
+        m = re.search(r'Automaton has (\d+) states', out) if isinstance(out, str) else None
         return (int(m.group(1)) - 1 if m else -1), total, self.mona_s - before
 
     def dfa(self, f: Any, atoms: Any, dot: str) -> Any:

@@ -149,6 +149,20 @@ def languages_differ(ours, mona: MonaDfa, letters: Sequence[frozenset]) -> Optio
     return None
 
 
+def minimal_states(aut, letters: Sequence[frozenset]) -> int:
+    """States of the minimal DFA of ``aut``'s language: Moore's algorithm over explicit letters."""
+    n = aut.num_states
+    table = [[aut.step(s, x) for x in letters] for s in range(n)]
+    block = [int(s in aut.accepting) for s in range(n)]
+    while True:
+        sigs: dict[tuple, int] = {}
+        new = [sigs.setdefault((block[s],) + tuple(block[t] for t in table[s]), len(sigs))
+               for s in range(n)]
+        if len(sigs) == len(set(block)):
+            return len(sigs)
+        block = new
+
+
 def shrink(f: Formula, still_fails) -> Formula:
     """Greedy shrinking: replace sub-formulas by a child or a constant while it still fails."""
     def candidates(g: Formula) -> Iterator[Formula]:
@@ -181,5 +195,6 @@ def shrink(f: Formula, still_fails) -> Formula:
 
 
 __all__ = ['valid_letters', 'all_traces', 'ltlf2dfa_dfa', 'languages_differ', 'mona_available',
+           'minimal_states',
            'shrink', 'to_ltlf2dfa_text', 'TRUE', 'FALSE', 'Always', 'Eventually']
 _ = os

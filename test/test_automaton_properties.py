@@ -14,10 +14,10 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 sys.path.insert(0, str(Path(__file__).parent))
-from ltl_oracles import all_traces, valid_letters  # noqa: E402
+from ltl_oracles import all_traces, languages_differ, minimal_states, valid_letters  # noqa: E402
 
 from ltl_instruct.core.automaton import (  # noqa: E402
-    compile_automaton, distinguishing_pair, equivalent, holds,
+    compile_automaton, distinguishing_pair, equivalent, holds, on_the_fly_automaton,
 )
 from ltl_instruct.core.automaton.random_formulas import default_atoms, random_formula  # noqa: E402
 from ltl_instruct.core.errors import LimitExceededError  # noqa: E402
@@ -174,3 +174,38 @@ def test_brute_force_exhaustive_two_atoms_length_six():
     f = parse_formula('(near[a] U X near[b]) -> (G (near[a] W near[b]) <-> F (near[b] R !near[a]))')
     check_against_evaluator(f, max_len_by_atoms=6, random_traces=0)
     assert len(list(itertools.islice(all_traces(valid_letters(atoms_of(f)), 6), 10**6))) == 5460
+
+
+def test_every_random_dfa_is_minimal():
+    rng = random.Random(500)
+    for _ in range(200):
+        atoms = default_atoms(rng.randint(1, 5), events=rng.random() < 0.3)
+        f = random_formula(rng, atoms, rng.randint(1, 8))
+        aut = compile_automaton(f)
+        assert aut.num_states == minimal_states(aut, valid_letters(atoms_of(f))), str(f)
+
+
+def test_on_the_fly_automaton_has_the_same_language_and_dead_states():
+    rng = random.Random(11)
+    for _ in range(80):
+        atoms = default_atoms(rng.randint(1, 4), events=rng.random() < 0.3)
+        f = random_formula(rng, atoms, rng.randint(1, 7))
+        whole, fly = compile_automaton(f), on_the_fly_automaton(f)
+        letters = valid_letters(atoms_of(f))
+        assert languages_differ(fly, whole, letters) is None, str(f)
+        assert fly.is_satisfiable == whole.is_satisfiable
+        for trace in all_traces(letters, 3):  # a state is dead exactly when the minimal one is the sink
+            a, b = fly.run(trace)[-1], whole.run(trace)[-1]
+            assert (fly.distance_to_accepting(a) is None) == (whole.distance_to_accepting(b) is None)
+
+
+def test_on_the_fly_expands_only_the_states_asked_about():
+    goals = [f'F near[a{i}]' for i in range(12)]
+    fly = on_the_fly_automaton(' & '.join(['G !near[b]'] + goals))   # 4,097 states when whole
+    edges = fly.edges_from(fly.initial)
+    assert len(edges) == 4097   # each subset of goals reached at once, and the sink
+    assert fly.distance_to_accepting(fly.initial) == 1
+    assert all(fly.distance_to_accepting(e.dst) is not None for e in edges if e.dst != fly.sink)
+    assert len(fly._edges_of) == 1   # one letter from acceptance is seen without expanding a state
+    with pytest.raises(LimitExceededError):
+        compile_automaton(' & '.join(goals))   # the whole automaton keeps its state limit

@@ -12,7 +12,7 @@ import json
 import sys
 from typing import Any, Optional
 
-from ltl_instruct.core.automaton import compile_automaton
+from ltl_instruct.core.automaton import on_the_fly_automaton
 from ltl_instruct.core.errors import ErrorCode, GroundingError, InvalidInputError, LtlInstructError
 from ltl_instruct.core.grounding.rsm import Grounding, Instance, Outcome, ReferentMap
 from ltl_instruct.core.spec import Formula, avoided_referents_of, parse_formula, referents_of
@@ -139,7 +139,7 @@ def run(args: argparse.Namespace) -> int:
                                avoid_margin=args.avoid_margin, fmt=fmt)
     world = world_from_scene(scene)
     rmap = scene_referent_map(formula, scene)
-    automaton = compile_automaton(formula)
+    automaton = on_the_fly_automaton(formula)   # states expanded as the planner reaches them
     out: dict[str, Any] = {'scene': scene.name, 'formula': str(formula)}
     try:
         plan = plan_task(automaton, rmap, world, start, settings)

@@ -1,160 +1,146 @@
-"""Compile a task formula into a DFA with symbolic guards, by progression.
+"""Task formulas as DFAs with symbolic (BDD) guards: built whole and minimal, or on demand.
 
-States are progressed formulas (in negation normal form, with ``&``/``|``
-flattened, deduplicated and sorted, so equal obligations meet in one state). The
-edges out of a state come from a Shannon expansion of its symbolic step formula
-(:func:`~ltl_instruct.core.automaton.progression.step_formula`): the expansion
-branches only on atoms that still matter, so a state with n atoms in play costs
-far fewer than 2^n evaluations, and each leaf is a cube of the edge's guard.
-Event atoms (``pick``, ``release``) are mutually exclusive in a letter.
+Both kinds explore the same symbolic progression
+(:class:`~ltl_instruct.core.automaton.symbolic.Progression`): a state is a BDD over
+the formula's obligations, hashed canonically by the manager, and the guard of each
+edge is a BDD over the atoms (letters hold at most one event, ``pick`` or
+``release``).
 
-States that cannot reach acceptance are merged into one rejecting sink. A state
-is accepting when the trace may end there (its formula holds on the empty rest).
+- :func:`compile_automaton` explores every reachable state (up to ``max_states``),
+  then minimises (Moore's partition refinement on the BDD guards): equivalent states
+  are one state, and the states that cannot reach acceptance are one rejecting sink.
+- :func:`on_the_fly_automaton` expands a state only when asked for its edges, its
+  distance to acceptance or a step out of it. A planner that explores the product of
+  automaton and map from the initial state visits a few of the 4,097 states of
+  ``G !b & F a1 & ... & F a12``, never the whole automaton.
+
+A state is accepting when the trace may end there (its obligations hold on the empty
+rest).
 """
 from __future__ import annotations
 
 from collections import deque
-from dataclasses import dataclass
-from typing import AbstractSet, Any, Iterable, Optional, Sequence
+from typing import AbstractSet, Any, Iterable, Iterator, Optional, Sequence
 
-from ltl_instruct.core.automaton.guards import GUARD_FALSE, GUARD_TRUE, Cube, Guard
-from ltl_instruct.core.automaton.progression import (
-    WorkBudget, accepts_empty, assign_atoms, canonical_state, resolve_later, step_atoms, step_formula,
-    to_nnf,
-)
+from ltl_instruct.core.automaton import bdd as B
+from ltl_instruct.core.automaton.guards import GUARD_FALSE, GUARD_TRUE, Guard
+from ltl_instruct.core.automaton.progression import WorkBudget
+from ltl_instruct.core.automaton.symbolic import Progression
 from ltl_instruct.core.errors import LimitExceededError, UnsatisfiableError
-from ltl_instruct.core.spec.ast import FALSE, Atom, Formula, Not, atoms_of, iter_subformulas
+from ltl_instruct.core.spec.ast import FALSE, Atom, Formula, Iff, Not, iter_subformulas
 from ltl_instruct.core.spec.parser import parse_formula
 
 DEFAULT_MAX_STATES = 2000
-DEFAULT_MAX_CUBES = 50_000
-"""Most edge-guard terms (cubes) one compilation may produce, over all states."""
-DEFAULT_MAX_STATE_CUBES = 512
-"""Most alternatives (DNF cubes) one automaton state may have."""
+DEFAULT_MAX_EDGES = 200_000
+"""Most edges one whole compilation may produce, over all states."""
+DEFAULT_MAX_NODES = 500_000
+"""Most decision-diagram nodes one compilation may make (a memory bound)."""
 DEFAULT_TIME_LIMIT_S = 5.0
 """Seconds one compilation may take before it gives up with ``TIMEOUT``."""
 
 
-@dataclass(frozen=True)
 class Edge:
-    """A transition ``src -> dst`` taken by the letters that satisfy ``guard``."""
+    """A transition ``src -> dst`` taken by the letters that satisfy ``guard``.
 
-    src: int
-    dst: int
-    guard: Guard
+    The guard is a BDD of the automaton's manager (``node``); :attr:`guard` is its
+    irredundant sum of products, made when first asked for.
+    """
+
+    __slots__ = ('src', 'dst', 'node', '_prog', '_guard')
+
+    def __init__(self, src: int, dst: int, node: int, prog: Optional[Progression],
+                 guard: Optional[Guard] = None) -> None:
+        self.src = src
+        self.dst = dst
+        self.node = node
+        self._prog = prog
+        self._guard = guard
+
+    @property
+    def guard(self) -> Guard:
+        """The guard as cubes (disjunctive normal form)."""
+        if self._guard is None:
+            assert self._prog is not None
+            self._guard = self._prog.guard(self.node)
+        return self._guard
 
     @property
     def atoms(self) -> frozenset[Atom]:
         """The atoms this edge constrains."""
-        return self.guard.atoms
+        if self._prog is None:
+            return self.guard.atoms
+        return self._prog.atoms_of(self.node)
+
+    def meets(self, letters: int) -> bool:
+        """Whether some letter of ``letters`` (a BDD: :meth:`Automaton.letters_without`) takes the edge."""
+        assert self._prog is not None
+        return self._prog.bdd.conj(self.node, letters) != B.FALSE
+
+    def holds(self, levels: AbstractSet[int]) -> bool:
+        """Whether the letter whose true atoms have these BDD levels takes the edge."""
+        assert self._prog is not None
+        return self._prog.bdd.evaluate(self.node, levels.__contains__)
+
+    def __repr__(self) -> str:
+        return f'Edge({self.src} -> {self.dst}: {self.guard})'
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""
-        return {'src': self.src, 'dst': self.dst, 'guard': self.guard.to_dict(),
-                'atoms': sorted(a.key for a in self.atoms)}
+        text = None if self._prog is None else self._prog.guard_text(self.node)
+        if text is None and self._prog is not None:   # too many cubes to list (a parity, say)
+            guard: dict[str, Any] = {'text': self._prog.guard_formula(self.node), 'cubes': None}
+        else:
+            guard = self.guard.to_dict()
+        return {'src': self.src, 'dst': self.dst, 'guard': guard, 'atoms': sorted(a.key for a in self.atoms)}
 
 
-def _current_atoms(f: Formula) -> list[Atom]:
-    """Atoms of a step formula outside ``Later`` obligations, outermost first.
-
-    Branching on the outermost atoms first keeps the expansion of nested
-    sequences linear: in ``a & (b & (c | @..) | @..) | @..`` a false ``a`` settles
-    the whole step at once.
-    """
-    order: dict[Atom, None] = {}
-    frontier = [f]
-    while frontier:  # breadth-first
-        nxt: list[Formula] = []
-        for node in frontier:
-            if isinstance(node, Atom):
-                order.setdefault(node, None)
-            elif isinstance(node, Not):
-                order.setdefault(node.operand, None)  # type: ignore[arg-type]
-            elif step_atoms(node):   # Later and constants hold no current atoms
-                nxt.extend(node.children())
-        frontier = nxt
-    return list(order)
-
-
-def _expand(state: Formula, step_cache: dict, next_cache: dict,
-            budget: WorkBudget) -> dict[Formula, list[Cube]]:
-    """Successor formula -> cubes of letters leading there from ``state``.
-
-    A Shannon expansion of the state's step formula: each branch fixes one atom and
-    substitutes only that atom into its parent's residual (untouched sub-formulas are
-    shared, not rebuilt); a residual without current atoms is resolved to its
-    canonical successor once per compilation (``next_cache``).
-    """
-    out: dict[Formula, list[Cube]] = {}
-    events_in_play = [a for a in atoms_of(state) if a.is_event]
-
-    def rec(f: Formula, values: dict[Atom, bool], forced_false: frozenset[Atom]) -> None:
-        budget.check()
-        if not step_atoms(f):
-            budget.add_cubes()
-            nxt = next_cache.get(f)
-            if nxt is None:
-                nxt = next_cache[f] = canonical_state(resolve_later(f), budget)
-            out.setdefault(nxt, []).append(
-                Cube(frozenset(a for a, v in values.items() if v),
-                     frozenset(a for a, v in values.items() if not v and a not in forced_false)))
-            return
-        a = _current_atoms(f)[0]
-        for v in (True, False):
-            new = {a: v}
-            forced = forced_false
-            if v and a.is_event:  # one event per letter: every other event is false
-                others = [e for e in events_in_play if e != a and e not in values]
-                for e in others:
-                    new[e] = False
-                forced = forced | frozenset(others)
-            rec(assign_atoms(f, new), {**values, **new}, forced)
-
-    rec(step_formula(state, step_cache), {}, frozenset())
-    return out
+def _check_letter(letter: AbstractSet[Atom]) -> None:
+    if sum(1 for a in letter if a.is_event) > 1:
+        raise ValueError('a letter holds at most one event (pick or release): '
+                         + ', '.join(sorted(a.key for a in letter if a.is_event)))
 
 
 class Automaton:
-    """A DFA over letters (sets of atoms) with symbolic guards.
+    """A DFA over letters (sets of atoms) with symbolic guards, every state known.
 
-    Use :func:`compile_automaton` to build one. States are ints ``0..n-1``;
-    ``initial`` is 0.
+    Use :func:`compile_automaton` to build one (minimal). States are ints
+    ``0..n-1``; ``initial`` is 0; ``sink`` (if any) is the last state.
     """
 
-    def __init__(self, formula: Formula, state_formulas: list[Formula],
-                 edges: list[list[Edge]], sink: Optional[int]) -> None:
-        self.formula = formula
-        self.atoms: tuple[Atom, ...] = atoms_of(formula)
-        self._states = tuple(state_formulas)
-        self._edges = tuple(tuple(e) for e in edges)
+    def __init__(self, prog: Progression, nodes: list[int], edges: list[list[Edge]],
+                 accepting: Iterable[int], sink: Optional[int]) -> None:
+        self.formula = prog.formula
+        self.atoms: tuple[Atom, ...] = prog.atoms
+        self._prog = prog
+        self._nodes = nodes
+        self._edges = tuple(tuple(sorted(es, key=lambda e: (e.dst != e.src, e.dst))) for es in edges)
         self.initial = 0
         self.sink = sink
-        self.accepting: frozenset[int] = frozenset(
-            i for i, f in enumerate(state_formulas) if i != sink and accepts_empty(f))
+        self.accepting: frozenset[int] = frozenset(accepting)
         self._dist = self._distances()
 
     # -- structure
     @property
     def num_states(self) -> int:
         """Number of states, sink included."""
-        return len(self._states)
+        return len(self._nodes)
 
     def state_formula(self, s: int) -> Formula:
-        """Return the progressed formula (obligation on the rest of the trace) state ``s`` stands for."""
-        return self._states[s]
+        """Return the obligation on the rest of the trace that state ``s`` stands for."""
+        return FALSE if s == self.sink else self._prog.state_formula(self._nodes[s])
 
     def edges_from(self, s: int) -> tuple[Edge, ...]:
-        """Outgoing edges of ``s`` (self-loop included); guards are disjoint and complete."""
+        """Outgoing edges of ``s`` (self-loop first); guards are disjoint and cover every letter."""
         return self._edges[s]
 
-    def edges(self) -> Iterable[Edge]:
+    def edges(self) -> Iterator[Edge]:
         """Every edge."""
         for es in self._edges:
             yield from es
 
     def self_loop(self, s: int) -> Guard:
         """Guard of the letters that keep the automaton in ``s`` (false if none)."""
-        for e in self._edges[s]:
+        for e in self.edges_from(s):
             if e.dst == s:
                 return e.guard
         return GUARD_FALSE
@@ -162,14 +148,11 @@ class Automaton:
     @property
     def is_satisfiable(self) -> bool:
         """Whether some non-empty trace is accepted."""
-        return any(self._dist[s] is not None for s in self._successors(self.initial))
-
-    def _successors(self, s: int) -> set[int]:
-        return {e.dst for e in self._edges[s]}
+        return any(self.distance_to_accepting(e.dst) is not None for e in self.edges_from(self.initial))
 
     def _distances(self) -> list[Optional[int]]:
         """Fewest edges from each state to an accepting state (None: unreachable)."""
-        preds: dict[int, set[int]] = {i: set() for i in range(self.num_states)}
+        preds: list[set[int]] = [set() for _ in range(self.num_states)]
         for es in self._edges:
             for e in es:
                 preds[e.dst].add(e.src)
@@ -190,14 +173,24 @@ class Automaton:
         """Fewest transitions from ``s`` to an accepting state, or None."""
         return self._dist[s]
 
+    def letters_without(self, pairs: Iterable[tuple[Atom, Atom]]) -> int:
+        """Return the letters (a BDD for :meth:`Edge.meets`) in which no pair of these atoms holds together.
+
+        A planner passes the pairs of near-atoms whose regions do not meet on its map,
+        and so explores only the edges the map can take.
+        """
+        return self._prog.letters_without(pairs)
+
     # -- running
+    def _levels(self, letter: AbstractSet[Atom]) -> set[int]:
+        _check_letter(letter)
+        return {self._prog.atom_level[a] for a in letter if a in self._prog.atom_level}
+
     def step(self, s: int, letter: AbstractSet[Atom]) -> int:
         """Return the state after reading ``letter`` (the set of atoms true at this step) in ``s``."""
-        if sum(1 for a in letter if a.is_event) > 1:
-            raise ValueError('a letter holds at most one event (pick or release): '
-                             + ', '.join(sorted(a.key for a in letter if a.is_event)))
-        for e in self._edges[s]:
-            if e.guard.evaluate(letter):
+        levels = self._levels(letter)
+        for e in self.edges_from(s):
+            if e.holds(levels):
                 return e.dst
         raise AssertionError(f'guards of state {s} do not cover letter {sorted(a.key for a in letter)}')
 
@@ -233,8 +226,8 @@ class Automaton:
                 continue
             if len(path) >= limit:
                 continue
-            for e in self._edges[s]:
-                if e.dst == s or e.dst in seen or self._dist[e.dst] is None:
+            for e in self.edges_from(s):
+                if e.dst == s or e.dst in seen or self.distance_to_accepting(e.dst) is None:
                     continue
                 q.append((e.dst, path + (e,), seen | {e.dst}))
         return out
@@ -244,8 +237,8 @@ class Automaton:
         return {
             'formula': str(self.formula),
             'atoms': [a.key for a in self.atoms],
-            'states': [{'id': i, 'formula': str(f), 'accepting': i in self.accepting,
-                        'sink': i == self.sink} for i, f in enumerate(self._states)],
+            'states': [{'id': i, 'formula': str(self.state_formula(i)), 'accepting': i in self.accepting,
+                        'sink': i == self.sink} for i in range(self.num_states)],
             'initial': self.initial,
             'accepting': sorted(self.accepting),
             'sink': self.sink,
@@ -254,110 +247,307 @@ class Automaton:
         }
 
 
-def compile_automaton(formula: Formula | str, max_states: int = DEFAULT_MAX_STATES,
-                      max_cubes: int = DEFAULT_MAX_CUBES,
-                      time_limit_s: Optional[float] = DEFAULT_TIME_LIMIT_S) -> Automaton:
-    """Compile a formula (AST or text) into an :class:`Automaton`.
+class _Accepting:
+    """The accepting states of an on-the-fly automaton, decided when asked."""
 
-    Parameters
-    ----------
-    formula: the task, as an AST or text.
-    max_states: most automaton states.
-    max_cubes: most edge-guard terms over the whole compilation.
-    time_limit_s: seconds the compilation may take (None: no deadline).
+    def __init__(self, aut: 'OnTheFlyAutomaton') -> None:
+        self._aut = aut
+
+    def __contains__(self, s: object) -> bool:
+        aut = self._aut
+        return isinstance(s, int) and 0 <= s < len(aut._nodes) and aut._prog.accepting(aut._nodes[s])
+
+    def __iter__(self) -> Iterator[int]:
+        return (s for s in range(len(self._aut._nodes)) if s in self)
+
+    def __len__(self) -> int:
+        return sum(1 for _ in self)
+
+
+class OnTheFlyAutomaton(Automaton):
+    """The same DFA interface, each state expanded only when it is asked about.
+
+    States are numbered in the order they are met (``initial`` 0); ``num_states``
+    counts the states met so far. ``sink`` is the state with no obligation left to
+    meet (false); other states that cannot reach acceptance have no distance. It is
+    not minimised (:func:`compile_automaton` is); ``max_states`` bounds the states met.
+    """
+
+    def __init__(self, prog: Progression, max_states: int) -> None:
+        self.formula = prog.formula
+        self.atoms = prog.atoms
+        self._prog = prog
+        self.max_states = max_states
+        self._nodes: list[int] = []
+        self._index: dict[int, int] = {}
+        self._edges_of: dict[int, tuple[Edge, ...]] = {}
+        self._dist_of: dict[int, Optional[int]] = {}
+        self.initial = self._id(prog.initial)
+        self.sink = self._id(B.FALSE)
+        self.accepting = _Accepting(self)  # type: ignore[assignment]
+
+    def _id(self, node: int) -> int:
+        s = self._index.get(node)
+        if s is None:
+            if len(self._nodes) >= self.max_states:
+                raise _state_limit(self.max_states)
+            s = self._index[node] = len(self._nodes)
+            self._nodes.append(node)
+        return s
+
+    @property
+    def num_states(self) -> int:
+        """States met so far (sink included)."""
+        return len(self._nodes)
+
+    def state_formula(self, s: int) -> Formula:
+        """Return the obligation on the rest of the trace that state ``s`` stands for."""
+        return self._prog.state_formula(self._nodes[s])
+
+    def edges_from(self, s: int) -> tuple[Edge, ...]:
+        """Outgoing edges of ``s``, expanded on first call."""
+        got = self._edges_of.get(s)
+        if got is None:
+            succ = self._prog.successors(self._nodes[s])
+            es = [Edge(s, self._id(t), g, self._prog) for t, g in succ.items()]
+            got = self._edges_of[s] = tuple(sorted(es, key=lambda e: (e.dst != e.src, e.dst)))
+        return got
+
+    def edges(self) -> Iterator[Edge]:
+        """Every edge of every reachable state (expands them all, up to ``max_states``)."""
+        s = 0
+        while s < len(self._nodes):
+            yield from self.edges_from(s)
+            s += 1
+
+    def step(self, s: int, letter: AbstractSet[Atom]) -> int:
+        """Return the state after reading ``letter`` in ``s`` (without expanding ``s``)."""
+        _check_letter(letter)
+        return self._id(self._prog.next_state(self._nodes[s], letter))
+
+    @property
+    def is_satisfiable(self) -> bool:
+        """Whether some non-empty trace is accepted."""
+        return self._search([self.initial], after_one=True) is not None
+
+    def distance_to_accepting(self, s: int) -> Optional[int]:
+        """Fewest transitions from ``s`` to an accepting state, or None (searched forward, then kept)."""
+        if s not in self._dist_of:
+            self._dist_of[s] = self._search([s], after_one=False)
+        return self._dist_of[s]
+
+    def _search(self, start: list[int], after_one: bool) -> Optional[int]:
+        """Breadth-first: fewest letters from ``start`` to acceptance (at least one if ``after_one``).
+
+        A state from which one letter reaches acceptance is recognised without
+        expanding it, so a level is expanded only when none of its states is that close.
+        """
+        prog = self._prog
+        level = list(dict.fromkeys(start))
+        seen = set(level)
+        depth = 0
+        while level:
+            if (not after_one or depth > 0) and any(s in self.accepting for s in level):
+                return depth
+            if any(prog.accepts_in_one_step(self._nodes[s]) for s in level):
+                return depth + 1
+            nxt = []
+            for s in level:
+                if s == self.sink:
+                    continue
+                for e in self.edges_from(s):
+                    if e.dst not in seen:
+                        seen.add(e.dst)
+                        nxt.append(e.dst)
+            level = nxt
+            depth += 1
+        return None
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready description of the states met so far."""
+        return {
+            'formula': str(self.formula), 'atoms': [a.key for a in self.atoms],
+            'states': [{'id': i, 'formula': str(self.state_formula(i)), 'accepting': i in self.accepting,
+                        'sink': i == self.sink} for i in range(self.num_states)],
+            'initial': self.initial, 'accepting': sorted(self.accepting), 'sink': self.sink,
+            'edges': [e.to_dict() for s in sorted(self._edges_of) for e in self._edges_of[s]],
+        }
+
+
+def _state_limit(max_states: int) -> LimitExceededError:
+    return LimitExceededError(f'the automaton has more than {max_states} states; simplify the task',
+                              details={'limit': 'max_states', 'value': max_states})
+
+
+def _parse(formula: Formula | str) -> Formula:
+    return parse_formula(formula) if isinstance(formula, str) else formula
+
+
+def on_the_fly_automaton(formula: Formula | str, max_states: int = 100_000,
+                         time_limit_s: Optional[float] = DEFAULT_TIME_LIMIT_S,
+                         max_nodes: int = DEFAULT_MAX_NODES) -> OnTheFlyAutomaton:
+    """Return the formula's DFA, its states expanded only when a caller asks about them.
+
+    ``time_limit_s`` bounds building the step functions (made here, once per
+    obligation); ``max_states`` bounds the states met later.
 
     Raises
     ------
     FormulaSyntaxError
         If ``formula`` is text that does not parse.
     LimitExceededError
-        ``LIMIT_EXCEEDED`` if more than ``max_states`` states, more than ``max_cubes``
-        guard terms or more than :data:`DEFAULT_MAX_STATE_CUBES` alternatives in one
-        state are needed, or the normal form is too large; ``TIMEOUT`` past ``time_limit_s``.
+        ``LIMIT_EXCEEDED`` past ``max_nodes`` decision-diagram nodes, ``TIMEOUT`` past the deadline.
     """
-    f = parse_formula(formula) if isinstance(formula, str) else formula
+    f = _parse(formula)
+    budget = WorkBudget(time_limit_s)
     try:
-        return _compile(f, max_states, WorkBudget(time_limit_s, max_cubes, DEFAULT_MAX_STATE_CUBES))
+        prog = Progression(f, budget, max_nodes)
+        lv = prog.num_atoms
+        while lv < prog.bdd.num_vars:   # every step function (each may add obligations), while bounded
+            prog.transition(prog.bdd.var(lv))
+            lv += 1
+    except RecursionError:
+        raise _too_deep() from None
+    prog.budget = WorkBudget(None)
+    return OnTheFlyAutomaton(prog, max_states)
+
+
+def _too_deep() -> LimitExceededError:
+    return LimitExceededError('the formula nests too deeply to compile; simplify the task',
+                              details={'limit': 'recursion'})
+
+
+def compile_automaton(formula: Formula | str, max_states: int = DEFAULT_MAX_STATES,
+                      max_edges: int = DEFAULT_MAX_EDGES,
+                      time_limit_s: Optional[float] = DEFAULT_TIME_LIMIT_S,
+                      max_nodes: int = DEFAULT_MAX_NODES) -> Automaton:
+    """Compile a formula (AST or text) into its minimal :class:`Automaton`.
+
+    Parameters
+    ----------
+    formula: the task, as an AST or text.
+    max_states: most automaton states explored (before minimisation).
+    max_edges: most edges over the whole compilation.
+    time_limit_s: seconds the compilation may take (None: no deadline).
+    max_nodes: most decision-diagram nodes.
+
+    Raises
+    ------
+    FormulaSyntaxError
+        If ``formula`` is text that does not parse.
+    LimitExceededError
+        ``LIMIT_EXCEEDED`` past ``max_states``, ``max_edges`` or ``max_nodes``;
+        ``TIMEOUT`` past ``time_limit_s``.
+    """
+    f = _parse(formula)
+    budget = WorkBudget(time_limit_s, max_edges)
+    try:
+        prog = Progression(f, budget, max_nodes)
+        nodes, succ = _explore(prog, max_states, budget)
+        return _minimise(prog, nodes, succ, budget)
     except RecursionError:  # a last guard: formulas built in code may nest deeper than parsed ones
-        raise LimitExceededError('the formula nests too deeply to compile; simplify the task',
-                                 details={'limit': 'recursion'}) from None
+        raise _too_deep() from None
 
 
-def _compile(f: Formula, max_states: int, budget: WorkBudget) -> Automaton:
-    init = canonical_state(to_nnf(f), budget)
-    index: dict[Formula, int] = {init: 0}
-    states: list[Formula] = [init]
-    raw: list[dict[int, list[Cube]]] = []
-    step_cache: dict = {}
-    next_cache: dict = {}
+def _explore(prog: Progression, max_states: int,
+             budget: WorkBudget) -> tuple[list[int], list[dict[int, int]]]:
+    """Every reachable state (BDD nodes, discovery order) and its successors (state id -> guard)."""
+    nodes = [prog.initial]
+    index = {prog.initial: 0}
+    succ: list[dict[int, int]] = []
     i = 0
-    while i < len(states):
-        succ = _expand(states[i], step_cache, next_cache, budget)
-        row: dict[int, list[Cube]] = {}
-        for nxt, cubes in succ.items():
-            j = index.get(nxt)
+    while i < len(nodes):
+        row: dict[int, int] = {}
+        for t, g in prog.successors(nodes[i]).items():
+            j = index.get(t)
             if j is None:
-                if len(states) >= max_states:
-                    raise LimitExceededError(
-                        f'the automaton has more than {max_states} states; simplify the task',
-                        details={'limit': 'max_states', 'value': max_states})
-                j = index[nxt] = len(states)
-                states.append(nxt)
-            row.setdefault(j, []).extend(cubes)
-        raw.append(row)
+                if len(nodes) >= max_states:
+                    raise _state_limit(max_states)
+                j = index[t] = len(nodes)
+                nodes.append(t)
+            row[j] = g
+        budget.add_edges(len(row))
+        succ.append(row)
         i += 1
-    budget.check()
-    return _merge_dead_states(f, states, raw)
+    return nodes, succ
 
 
-def _merge_dead_states(formula: Formula, states: list[Formula],
-                       raw: list[dict[int, list[Cube]]]) -> Automaton:
-    n = len(states)
-    preds: dict[int, set[int]] = {i: set() for i in range(n)}
-    for s, row in enumerate(raw):
-        for d in row:
-            preds[d].add(s)
-    alive = {i for i, f in enumerate(states) if accepts_empty(f)}
-    q = deque(alive)
+def _live(prog: Progression, nodes: list[int], succ: list[dict[int, int]]) -> list[bool]:
+    """Which states can reach an accepting state."""
+    preds: list[list[int]] = [[] for _ in nodes]
+    for s, row in enumerate(succ):
+        for t in row:
+            preds[t].append(s)
+    live = [prog.accepting(n) for n in nodes]
+    q = deque(s for s, ok in enumerate(live) if ok)
     while q:
         s = q.popleft()
         for p in preds[s]:
-            if p not in alive:
-                alive.add(p)
+            if not live[p]:
+                live[p] = True
                 q.append(p)
-    if 0 not in alive:  # unsatisfiable: the initial state is the sink
-        return Automaton(formula, [states[0]], [[Edge(0, 0, GUARD_TRUE)]], sink=0)
-    new_id: dict[int, int] = {}
-    formulas: list[Formula] = []
-    for i in range(n):  # live states keep discovery order, so the initial state stays 0
-        if i in alive:
-            new_id[i] = len(formulas)
-            formulas.append(states[i])
-    sink: Optional[int] = None
-    if len(alive) < n:
-        sink = len(formulas)
-        formulas.append(FALSE)
-        for i in range(n):
-            new_id.setdefault(i, sink)
-    merged: dict[tuple[int, int], list[Cube]] = {}
-    for s, row in enumerate(raw):
-        if s not in alive:
-            continue
-        for d, cubes in row.items():
-            merged.setdefault((new_id[s], new_id[d]), []).extend(cubes)
-    edges: list[list[Edge]] = [[] for _ in formulas]
-    for (src, dst), cubes in merged.items():
-        edges[src].append(Edge(src, dst, Guard.of(cubes)))
+    return live
+
+
+def _minimise(prog: Progression, nodes: list[int], succ: list[dict[int, int]],
+              budget: WorkBudget) -> Automaton:
+    """Moore's partition refinement: merge states with the same future; dead states become one sink."""
+    m = prog.bdd
+    live = _live(prog, nodes, succ)
+    if not live[0]:  # unsatisfiable: the initial state is the sink
+        return Automaton(prog, [B.FALSE], [[Edge(0, 0, prog.valid, prog, GUARD_TRUE)]], (), 0)
+    block = [(0 if not ok else 1 + prog.accepting(n)) for ok, n in zip(live, nodes)]
+    count = len(set(block))
+    while True:
+        sigs: dict[tuple, int] = {}
+        new = []
+        for s, row in enumerate(succ):
+            if not live[s]:
+                new.append(-1)
+                continue
+            merged: dict[int, int] = {}
+            for t, g in row.items():
+                b = block[t]
+                merged[b] = m.disj(merged[b], g) if b in merged else g
+            budget.check()
+            new.append(sigs.setdefault((block[s], tuple(sorted(merged.items()))), len(sigs)))
+        block = new
+        if len(sigs) + (not all(live)) == count:
+            break
+        count = len(sigs) + (not all(live))
+    return _quotient(prog, nodes, succ, block, live)
+
+
+def _quotient(prog: Progression, nodes: list[int], succ: list[dict[int, int]], block: list[int],
+              live: list[bool]) -> Automaton:
+    """Build the automaton of the blocks: live blocks in discovery order, then the sink."""
+    m = prog.bdd
+    ids: dict[int, int] = {}
+    reps: list[int] = []
+    for s, b in enumerate(block):
+        if b >= 0 and b not in ids:
+            ids[b] = len(reps)
+            reps.append(s)
+    sink = len(reps) if not all(live) else None
+    state_of = [ids[b] if b >= 0 else sink for b in block]
+    edges: list[list[Edge]] = []
+    for i, s in enumerate(reps):
+        merged: dict[int, int] = {}
+        for t, g in succ[s].items():
+            d = state_of[t]
+            merged[d] = m.disj(merged[d], g) if d in merged else g
+        edges.append([Edge(i, d, g, prog) for d, g in merged.items()])
+    out_nodes = [nodes[s] for s in reps]
     if sink is not None:
-        edges[sink] = [Edge(sink, sink, GUARD_TRUE)]
-    for es in edges:
-        es.sort(key=lambda e: (e.dst != e.src, e.dst))
-    return Automaton(formula, formulas, edges, sink)
+        edges.append([Edge(sink, sink, prog.valid, prog, GUARD_TRUE)])
+        out_nodes.append(B.FALSE)
+    accepting = [i for i, s in enumerate(reps) if prog.accepting(nodes[s])]
+    return Automaton(prog, out_nodes, edges, accepting, sink)
 
 
 def is_satisfiable(formula: Formula | str) -> bool:
     """Whether some finite trace satisfies the formula."""
-    return compile_automaton(formula).is_satisfiable
+    return on_the_fly_automaton(formula).is_satisfiable
 
 
 def require_satisfiable(aut: Automaton) -> Automaton:
@@ -375,10 +565,10 @@ def _cubes_meet(a: Guard, b: Guard) -> bool:
 def equivalent(f: Formula | str, g: Formula | str) -> bool:
     """Whether two formulas accept exactly the same non-empty finite traces.
 
-    Checked on the automata by a search of their product: a reachable pair of
-    states that disagree on acceptance is a distinguishing trace.
+    Decided on the fly: they are equivalent when no non-empty trace satisfies
+    ``!(f <-> g)``.
     """
-    return distinguishing_pair(compile_automaton(f), compile_automaton(g)) is None
+    return not on_the_fly_automaton(Not(Iff(_parse(f), _parse(g)))).is_satisfiable
 
 
 def distinguishing_pair(a: Automaton, b: Automaton) -> Optional[tuple[int, int]]:
@@ -403,3 +593,8 @@ def distinguishing_pair(a: Automaton, b: Automaton) -> Optional[tuple[int, int]]
 def constrained_atoms(formula: Formula) -> frozenset[Atom]:
     """Atoms of a formula (convenience for callers that only have the formula)."""
     return frozenset(a for a in iter_subformulas(formula) if isinstance(a, Atom))
+
+
+__all__ = ['Automaton', 'Edge', 'GUARD_FALSE', 'GUARD_TRUE', 'OnTheFlyAutomaton', 'compile_automaton',
+           'distinguishing_pair', 'equivalent', 'is_satisfiable', 'on_the_fly_automaton',
+           'require_satisfiable']

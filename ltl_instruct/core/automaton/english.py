@@ -19,6 +19,7 @@ from typing import Any, Optional, Sequence, Union
 
 from ltl_instruct.core.automaton.dfa import Automaton, Edge, compile_automaton
 from ltl_instruct.core.automaton.guards import Cube
+from ltl_instruct.core.errors import LimitExceededError
 from ltl_instruct.core.spec.ast import Atom, Descriptor, Formula, avoided_referents_of, referents_of
 
 _RELATION_WORDS = {
@@ -165,6 +166,16 @@ def describe_task(task: Union[Formula, str, Automaton]) -> TaskDescription:
         return TaskDescription(str(f), referents, avoid, (), (),
                                ('This task can never be completed: its constraints contradict '
                                 'each other, so nothing will be planned.',), False)
+    try:
+        return _describe_path(aut, referents, avoid)
+    except LimitExceededError as e:   # guards too large to write as cubes (a long chain of <->)
+        return TaskDescription(str(f), referents, avoid, (), (),
+                               (f'Not put in English: {e.message}',), True)
+
+
+def _describe_path(aut: Automaton, referents: tuple[str, ...], avoid: tuple[str, ...]) -> TaskDescription:
+    """Describe the steps along the chosen path to acceptance, and what holds throughout."""
+    f = aut.formula
     path = choose_path(aut)
     if not path:  # accepted by any first step (e.g. only "never" constraints)
         forb = forbidden_atoms(aut, aut.initial)

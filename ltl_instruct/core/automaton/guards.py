@@ -66,10 +66,11 @@ def _simplify(cubes: Iterable[Cube]) -> tuple[Cube, ...]:
     # drop a cube implied by a more general one (its literals are a superset)
     kept = [c for c in items
             if not any(o is not c and o.pos <= c.pos and o.neg <= c.neg for o in items)]
-    return tuple(sorted(kept, key=_cube_order))
+    return tuple(sorted(kept, key=cube_order))
 
 
-def _cube_order(c: Cube) -> tuple:
+def cube_order(c: Cube) -> tuple:
+    """Sort key of cubes: fewest literals first, then by atom keys."""
     return (len(c.pos) + len(c.neg), sorted(a.key for a in c.pos), sorted(a.key for a in c.neg))
 
 

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from functools import lru_cache
 from typing import AbstractSet, Callable
 
 from ltl_instruct.core.errors import ErrorCode, LimitExceededError
@@ -264,40 +263,6 @@ def assign(f: Formula, value_of: Callable[[Atom], bool | None]) -> Formula:
     return f  # Const, Later
 
 
-def step_atoms(f: Formula) -> frozenset[Atom]:
-    """Atoms of a step formula outside ``Later`` obligations (cached on the node)."""
-    got = f.__dict__.get('_step_atoms')
-    if got is None:
-        if isinstance(f, Atom):
-            got = frozenset((f,))
-        elif isinstance(f, Not):
-            got = frozenset((f.operand,))  # type: ignore[arg-type]
-        elif isinstance(f, (And, Or)):
-            got = frozenset().union(*(step_atoms(o) for o in f.operands))
-        else:
-            got = frozenset()  # Const, Later
-        object.__setattr__(f, '_step_atoms', got)
-    return got
-
-
-def assign_atoms(f: Formula, values: dict[Atom, bool]) -> Formula:
-    """:func:`assign` with a dict of values, skipping sub-formulas that hold none of its atoms."""
-    if not values or not (step_atoms(f) & values.keys()):
-        return f
-    if isinstance(f, Atom):
-        return TRUE if values[f] else FALSE
-    if isinstance(f, Not):
-        return FALSE if values[f.operand] else TRUE  # type: ignore[index]
-    out = []
-    absorbing = FALSE if isinstance(f, And) else TRUE
-    for o in f.operands:  # type: ignore[attr-defined]
-        r = assign_atoms(o, values)
-        if r == absorbing:
-            return absorbing
-        out.append(r)
-    return conj(*out) if isinstance(f, And) else disj(*out)
-
-
 def resolve_later(f: Formula) -> Formula:
     """Replace every ``Later(g)`` by ``g``: the next state (no current atoms left)."""
     if isinstance(f, Later):
@@ -317,160 +282,37 @@ def progress(f: Formula, letter: AbstractSet[Atom]) -> Formula:
     return resolve_later(s)
 
 
-def _is_eventuality(f: Formula) -> bool:
-    return isinstance(f, (Eventually, Until, Next, Atom, Not))
-
-
 class WorkBudget:
-    """Bounds on the work of one automaton compilation: a deadline and a cube count.
+    """Bounds on the work of one automaton compilation: a deadline and an edge count.
 
-    Shared by the state canonicaliser and the edge expansion; :meth:`check` raises a
-    typed error instead of letting a hostile formula (``a0 <-> a1 <-> ... <-> a13``,
-    ``a0 U a1 U ... U a19``) run for minutes and fill memory.
+    :meth:`check` raises a typed error instead of letting a hostile formula
+    (``a0 U a1 U ... U a199``) run for minutes and fill memory.
 
     Parameters
     ----------
     time_limit_s: seconds the compilation may take (None: no deadline).
-    max_cubes: cubes (edge-guard terms) the whole compilation may produce.
-    max_state_cubes: cubes the disjunctive normal form of one state may have.
+    max_edges: edges the whole compilation may produce.
     """
 
-    def __init__(self, time_limit_s: float | None = 5.0, max_cubes: int = 50_000,
-                 max_state_cubes: int = 512) -> None:
+    def __init__(self, time_limit_s: float | None = 5.0, max_edges: int = 200_000) -> None:
         self.time_limit_s = time_limit_s
         self.deadline = None if time_limit_s is None else time.monotonic() + time_limit_s
-        self.max_cubes = max_cubes
-        self.max_state_cubes = max_state_cubes
-        self.cubes = 0
-        self._calls = 0
+        self.max_edges = max_edges
+        self.edges = 0
 
     def check(self) -> None:
-        """Raise ``TIMEOUT`` once the deadline has passed (the clock is read every 64 calls)."""
-        self._calls += 1
-        if self._calls & 63:
-            return
+        """Raise ``TIMEOUT`` once the deadline has passed."""
         if self.deadline is not None and time.monotonic() > self.deadline:
             raise LimitExceededError(
                 f'building the automaton took longer than {self.time_limit_s:g} s; '
                 'simplify the task', code=ErrorCode.TIMEOUT,
                 details={'limit': 'time_limit_s', 'value': self.time_limit_s})
 
-    def add_cubes(self, n: int = 1) -> None:
-        """Count ``n`` more edge cubes; raise ``LIMIT_EXCEEDED`` past ``max_cubes``."""
-        self.cubes += n
-        if self.cubes > self.max_cubes:
+    def add_edges(self, n: int = 1) -> None:
+        """Count ``n`` more edges; raise ``LIMIT_EXCEEDED`` past ``max_edges``."""
+        self.edges += n
+        if self.edges > self.max_edges:
             raise LimitExceededError(
-                f'the automaton needs more than {self.max_cubes} guard terms; simplify the task',
-                details={'limit': 'max_cubes', 'value': self.max_cubes})
+                f'the automaton needs more than {self.max_edges} edges; simplify the task',
+                details={'limit': 'max_edges', 'value': self.max_edges})
         self.check()
-
-    def state_cubes(self, n: int) -> None:
-        """Check the size of one state's normal form."""
-        if n > self.max_state_cubes:
-            raise LimitExceededError(
-                f'an automaton state needs more than {self.max_state_cubes} alternatives; '
-                'simplify the task',
-                details={'limit': 'max_state_cubes', 'value': self.max_state_cubes})
-        self.check()
-
-
-def canonical_state(f: Formula, budget: WorkBudget | None = None) -> Formula:
-    """Canonical DNF of a state formula over its elementary (temporal or literal) parts.
-
-    Progression alone can build ever-deeper ``&``/``|`` nestings of the same few
-    obligations (e.g. for ``(a U b) U c``), so states would never repeat. Writing
-    every state as a set of cubes of elementary sub-formulas, with subsumed and
-    contradictory cubes dropped, keeps the state space finite and merges
-    syntactically different but identical obligations. ``budget`` bounds the
-    number of cubes and the time (see :class:`WorkBudget`).
-    """
-    cubes = _dnf(f, budget or WorkBudget(time_limit_s=None))
-    return disj(*(conj(*c) for c in cubes))
-
-
-def _dnf(f: Formula, budget: WorkBudget) -> list[frozenset[Formula]]:
-    if f == TRUE:
-        return [frozenset()]
-    if f == FALSE:
-        return []
-    if isinstance(f, Or):
-        out: list[frozenset[Formula]] = []
-        for o in f.operands:
-            out.extend(_dnf(o, budget))
-            budget.state_cubes(len(out))
-        return _absorb(out, budget)
-    if isinstance(f, And):
-        acc: list[frozenset[Formula]] = [frozenset()]
-        for o in f.operands:
-            part = _dnf(o, budget)
-            budget.state_cubes(len(acc) * len(part))
-            acc = _absorb([a | b for a in acc for b in part if _consistent(a | b)], budget)
-            if not acc:
-                return []
-        return acc
-    return [frozenset({f})]
-
-
-def _consistent(cube: frozenset[Formula]) -> bool:
-    for g in cube:
-        if isinstance(g, Not) and g.operand in cube:
-            return False
-    # "the trace ends now" contradicts every obligation that needs one more step
-    if ALWAYS_FALSE in cube and any(_is_eventuality(g) for g in cube):
-        return False
-    return True
-
-
-def _absorb(cubes: list[frozenset[Formula]], budget: WorkBudget) -> list[frozenset[Formula]]:
-    uniq = sorted(set(cubes), key=lambda c: (len(c), sorted(map(str, c))))
-    kept: list[frozenset[Formula]] = []
-    for c in uniq:
-        if not any(k <= c for k in kept):
-            kept.append(c)
-    if len(kept) > 1:  # semantic absorption: drop a cube that implies another one
-        out = []
-        for i, c in enumerate(kept):
-            budget.check()  # quadratic in the cubes: keep to the deadline
-            if not any(j != i and _cube_implies(c, d) and not (j > i and _cube_implies(d, c))
-                       for j, d in enumerate(kept)):
-                out.append(c)
-        kept = out
-    return kept
-
-
-def _cube_implies(c: frozenset[Formula], d: frozenset[Formula]) -> bool:
-    return all(any(implies(x, y) for x in c) for y in d)
-
-
-@lru_cache(maxsize=65536)
-def implies(f: Formula, g: Formula) -> bool:
-    """Sound, incomplete syntactic implication between NNF formulas (Spot-style rules).
-
-    Used to keep states small: ``F (a & F b) | F b`` is just ``F b``.
-    """
-    if f == g or g == TRUE or f == FALSE:
-        return True
-    if isinstance(g, And):
-        return all(implies(f, x) for x in g.operands)
-    if isinstance(f, Or):
-        return all(implies(x, g) for x in f.operands)
-    if isinstance(f, And) and any(implies(x, g) for x in f.operands):
-        return True
-    if isinstance(g, Or) and any(implies(f, x) for x in g.operands):
-        return True
-    # the rest of a trace may be empty: each rule below holds there too
-    if isinstance(g, Eventually):
-        if not accepts_empty(f) and implies(f, g.operand):
-            return True
-        if isinstance(f, Eventually) and implies(f.operand, g):
-            return True
-        if isinstance(f, Until) and implies(f.right, g):
-            return True
-    if isinstance(f, Always):
-        if accepts_empty(g) and implies(f.operand, g):
-            return True
-        if isinstance(g, Always) and implies(f.operand, g.operand):
-            return True
-    if isinstance(f, Until) and isinstance(g, Until):
-        return implies(f.left, g.left) and implies(f.right, g.right)
-    return False

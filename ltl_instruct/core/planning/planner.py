@@ -144,6 +144,10 @@ class _Search:
         self.failures: list[LtlInstructError] = []
         self.t0 = time.monotonic()
         self.out_of_budget = False
+        self.nearest_at: tuple = ((), [])
+        apart = _regions_apart(self.all_regions, self.dims)
+        self.map_letters = automaton.letters_without((a, b) for a in automaton.atoms for b in automaton.atoms
+                                                     if (a.key, b.key) in apart)
 
     # ------------------------------------------------------------------ helpers
     def letter_keys(self, p: np.ndarray) -> frozenset[str]:
@@ -153,7 +157,10 @@ class _Search:
         return frozenset(a for a in self.aut.atoms if a.key in keys)
 
     def goal_distance(self, p: np.ndarray, goal: Guard) -> float:
-        nearest = dict(zip((r.key for r in self.all_regions), self.regions.nearest(tuple(p))))
+        if self.nearest_at[0] != tuple(p):
+            self.nearest_at = (tuple(p), dict(zip((r.key for r in self.all_regions),
+                                                  self.regions.nearest(tuple(p)))))
+        nearest = self.nearest_at[1]
         best = math.inf
         for pos, _ in key_cubes(goal):
             need = 0.0
@@ -192,8 +199,9 @@ class _Search:
     def candidates(self, state: int, holding: Optional[str], pos: np.ndarray) -> list[_Candidate]:
         out = []
         allowed = navigation_guard(self.aut.self_loop(state))
-        for e in self.aut.edges_from(state):
-            if e.dst == state or e.dst == self.aut.sink:
+        moves = [e for e in self.aut.edges_from(state) if e.dst != state]
+        for e in [e for e in moves if e.meets(self.map_letters)] or moves:   # those the map's letters take
+            if e.dst == self.aut.sink:
                 continue
             dist = self.aut.distance_to_accepting(e.dst)
             if dist is None:
@@ -326,6 +334,19 @@ def _one_transition(states: Sequence[int], state: int, dst: int) -> bool:
     return states[-1] == dst and all(s == dst for s in states[k:])
 
 
+def _regions_apart(regions: Sequence[AtomRegion], dims: int) -> set[tuple[str, str]]:
+    """Pairs of region keys that hold at no common point: no two instance boxes lie within both radii."""
+    out = set()
+    for r in regions:
+        for q in regions:
+            if r.key < q.key and r.centers and q.centers and not any(
+                    math.dist([0.0] * dims, [max(0.0, abs(c1[i] - c2[i]) - (s1[i] + s2[i]) / 2)
+                                             for i in range(dims)]) <= r.radius + q.radius
+                    for c1, s1 in zip(r.centers, r.sizes) for c2, s2 in zip(q.centers, q.sizes)):
+                out |= {(r.key, q.key), (q.key, r.key)}
+    return out
+
+
 def _failure_error(search: _Search, formula: str) -> LtlInstructError:
     fails = search.failures
     details: dict[str, Any] = {'failures': [f.to_dict() for f in fails[:20]],
@@ -408,7 +429,7 @@ def plan_task(automaton: Automaton, referent_map: ReferentMap, world: PlanningWo
         state = automaton.step(automaton.initial, search.letter_atoms(search.letter_keys(p0)))
     else:
         state = int(initial_state)
-    if state == automaton.sink:
+    if state == automaton.sink or automaton.distance_to_accepting(state) is None:
         raise PlanningError(f'the start already violates "{formula}" (atoms true there: '
                             f'{", ".join(sorted(search.letter_keys(p0))) or "none"})',
                             ErrorCode.START_OCCUPIED,

@@ -22,19 +22,16 @@ Figures, each printed beside its peer measured in the same run:
 from __future__ import annotations
 
 import argparse
-import json
-import math
 import random
 import statistics
 import sys
 import time
 from dataclasses import replace
-from pathlib import Path
 from typing import Any, Optional
 
 import numpy as np
 
-from bench.planning import BUILTIN_TASKS, referent_map
+from bench.planning import BUILTIN_TASKS, referent_map, write_json
 from ltl_instruct.core.automaton import compile_automaton
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.planning import (
@@ -265,10 +262,7 @@ def main(argv: list[str]) -> int:
     print_summary(summary)
     print(f"total wall time {summary['wall_s']} s")
     if args.json:
-        out = Path(args.json)
-        out.parent.mkdir(parents=True, exist_ok=True)
-        out.write_text(json.dumps(summary, indent=2, default=lambda x: None if isinstance(x, float)
-                                  and math.isnan(x) else x))
+        write_json(summary, args.json)
     return 0
 
 

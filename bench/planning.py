@@ -530,11 +530,16 @@ def main(argv: list[str]) -> int:
     print_summary(summary)
     print(f"total wall time {summary['wall_s']} s")
     if args.json:
-        out = Path(args.json)
-        out.parent.mkdir(parents=True, exist_ok=True)
-        out.write_text(json.dumps(summary, indent=2, default=lambda x: None if isinstance(x, float)
-                                  and math.isnan(x) else x))
+        write_json(summary, args.json)
     return 0 if summary['solved_pct'] == 100.0 and summary['unsat_pct'] == 100.0 else 1
+
+
+def write_json(summary: dict, path: str) -> None:
+    """Write a benchmark summary as JSON (NaN as null), creating the folder."""
+    out = Path(path)
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps(summary, indent=2, default=lambda x: None if isinstance(x, float)
+                              and math.isnan(x) else x))
 
 
 if __name__ == '__main__':

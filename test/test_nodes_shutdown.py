@@ -33,18 +33,10 @@ IDLE = {'sim_world': {'camera_rate_hz': 0.0}, 'ltl_translator': {'backend': 'off
 
 
 @pytest.fixture()
-def domain():
-    old = {k: os.environ.get(k) for k in ('ROS_DOMAIN_ID', 'ROS_AUTOMATIC_DISCOVERY_RANGE')}
-    os.environ['ROS_DOMAIN_ID'] = str(random.randint(120, 229))
-    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
-    try:
-        yield
-    finally:
-        for k, v in old.items():
-            if v is None:
-                os.environ.pop(k, None)
-            else:
-                os.environ[k] = v
+def domain(monkeypatch):
+    """A private ROS domain for this test's graph (the environment is restored after it)."""
+    monkeypatch.setenv('ROS_DOMAIN_ID', str(random.randint(120, 229)))
+    monkeypatch.setenv('ROS_AUTOMATIC_DISCOVERY_RANGE', 'LOCALHOST')
 
 
 def _signals(first: signal.Signals) -> dict[str, signal.Signals]:

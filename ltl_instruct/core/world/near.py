@@ -117,16 +117,22 @@ def point_distance(p: Sequence[float], corners: Corners) -> float:
     """
     best = math.inf
     for lo, hi in corners:
-        s = 0.0
-        for k in range(len(lo)):
-            x = p[k]
-            if x < lo[k]:
-                s += (lo[k] - x) ** 2
-            elif x > hi[k]:
-                s += (x - hi[k]) ** 2
+        s = _squared_box_distance(p, lo, hi)
         if s < best:
             best = s
     return math.sqrt(best) if best != math.inf else math.inf
+
+
+def _squared_box_distance(p: Sequence[float], lo: Sequence[float], hi: Sequence[float]) -> float:
+    """Squared distance [m^2] from one point to the box lo..hi (plain Python, for the hot loops)."""
+    s = 0.0
+    for k in range(len(lo)):
+        x = p[k]
+        if x < lo[k]:
+            s += (lo[k] - x) ** 2
+        elif x > hi[k]:
+            s += (x - hi[k]) ** 2
+    return s
 
 
 def segment_box_distance(a: Sequence[float], b: Sequence[float], lo: Sequence[float],
@@ -163,13 +169,7 @@ def segment_box_distance(a: Sequence[float], b: Sequence[float], lo: Sequence[fl
             quad += d[k] * d[k]
             lin += c * d[k]
         t = t0 if quad == 0.0 else min(t1, max(t0, -lin / quad))
-        s = 0.0
-        for k in range(n):
-            x = a[k] + t * d[k]
-            if x < lo[k]:
-                s += (lo[k] - x) ** 2
-            elif x > hi[k]:
-                s += (x - hi[k]) ** 2
+        s = _squared_box_distance([a[k] + t * d[k] for k in range(n)], lo, hi)
         if s < best:
             best = s
             if s == 0.0:

@@ -298,6 +298,9 @@ class NodeGraph:
                 break
             for p in alive:
                 try:
+                    if sig != signal.SIGINT:   # still there: its log gets every thread's stack first
+                        os.killpg(p.pid, signal.SIGUSR1)
+                        time.sleep(0.1)
                     os.killpg(p.pid, sig)
                 except ProcessLookupError:
                     pass

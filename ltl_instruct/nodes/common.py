@@ -22,11 +22,15 @@ so they run whether or not a ``/clock`` comes.
 """
 from __future__ import annotations
 
+import faulthandler
 import math
 import os
 import re
+import signal
 import sys
 import threading
+import time
+import traceback
 from dataclasses import dataclass
 from typing import Any, Callable, Collection, Iterator, Optional, Sequence
 
@@ -36,6 +40,7 @@ from rclpy.clock import Clock, ClockType
 from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.exceptions import InvalidParameterTypeException, InvalidParameterValueException
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
+from rclpy.signals import SignalHandlerOptions
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 
@@ -269,41 +274,117 @@ def subscribe_any_reliability(node: Node, msg_type: Any, topic: str, callback: C
     node.create_subscription(msg_type, topic, on_message, sensor_qos(depth))
 
 
+STOP_GRACE_S = 1.5   # [s] after a stop signal the process ends by then, even if its clean-up is stuck
+
+
 def run_node(make_node: Callable[[], Node], args: Optional[Sequence[str]] = None,
              threads: int = 2) -> int:
     """Run the node idiom: init, build, spin (multi-threaded), clean shutdown on Ctrl-C or SIGTERM.
 
-    The process then ends at once with its exit status (2 when the parameters are invalid,
-    0 after a signal): see :func:`_end_process`. A signal that comes while the node is still
-    starting, or while the executor builds its wait set, is a stop too, not a crash.
+    The stop is this process's own, not rclpy's: SIGINT and SIGTERM set an event the main
+    thread waits on (the executor spins in a thread of its own) and start a watchdog, so a
+    clean-up that blocks (a DDS participant whose peer was killed, a callback at work) cannot
+    keep the node alive past :data:`STOP_GRACE_S`. The process then ends at once with its
+    exit status (2 when the parameters are invalid, 1 after a crash, 0 after a signal): see
+    :func:`_end_process`.
     """
-    rclpy.init(args=list(args) if args is not None else None)
+    stop = _StopSignals()
+    faulthandler.register(signal.SIGUSR1, all_threads=True)   # `kill -USR1 <pid>`: every thread's stack
+    rclpy.init(args=list(args) if args is not None else None,
+               signal_handler_options=SignalHandlerOptions.NO)
     node: Optional[Node] = None
+    spinner: Optional[threading.Thread] = None
     status = 0
     try:
         node = make_node()
-        executor = MultiThreadedExecutor(num_threads=threads)
-        executor.add_node(node)
-        executor.spin()
+        if not stop.is_set():
+            spinner = _spin_until(node, threads, stop)
     except InvalidInputError as e:
         print(f'error [{e.code.value}]: {e.message}', file=sys.stderr)
         status = 2
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    except Exception:  # noqa: BLE001 - re-raised unless a signal shut the context down under it
-        # rclpy raises RCLError ("the given context is not valid") from a wait set built as the signal
-        # came, and the executor's constructor fails on a context shut down while the node was starting
-        if rclpy.ok():
-            raise
+    except Exception:  # noqa: BLE001 - a crash: its traceback, and the status of one
+        traceback.print_exc()
+        status = 1
     finally:
+        stop.arm_watchdog(status)
         if node is not None:
             close = getattr(node, 'close', None)
             if callable(close):
                 close()
+        rclpy.try_shutdown()   # the executor's wait ends
+        if spinner is not None:
+            spinner.join(timeout=STOP_GRACE_S)   # its wait set holds the node's handles until then
+        if node is not None:
             node.destroy_node()
-        rclpy.try_shutdown()
     _end_process(status)
     return status
+
+
+def _spin_until(node: Node, threads: int, stop: '_StopSignals') -> threading.Thread:
+    """Spin ``node`` in a thread until a stop signal and return that thread (a failed executor raises)."""
+    failed: list[BaseException] = []
+
+    def spin() -> None:
+        try:
+            executor = MultiThreadedExecutor(num_threads=threads)
+            executor.add_node(node)
+            executor.spin()
+        except ExternalShutdownException:
+            pass
+        except BaseException as e:  # noqa: BLE001 - handed to the main thread
+            failed.append(e)
+        stop.set()
+
+    spinner = threading.Thread(target=spin, name='executor', daemon=True)
+    spinner.start()
+    while not stop.wait(0.5):
+        pass
+    if failed and not stop.signalled:
+        raise failed[0]
+    return spinner
+
+
+class _StopSignals:
+    """SIGINT and SIGTERM as an event (handled in the main thread, between its waits), with a watchdog."""
+
+    def __init__(self) -> None:
+        self._event = threading.Event()
+        self.signalled = False
+        self._watchdog: Optional[threading.Thread] = None
+        for sig in (signal.SIGINT, signal.SIGTERM):
+            signal.signal(sig, self._on_signal)
+
+    def _on_signal(self, signum: int, frame: Any) -> None:
+        self.signalled = True
+        self.arm_watchdog(0)
+        self._event.set()
+
+    def set(self) -> None:
+        """Ask the main thread to stop (the executor ended)."""
+        self._event.set()
+
+    def is_set(self) -> bool:
+        """Tell whether a stop was asked for."""
+        return self._event.is_set()
+
+    def wait(self, timeout: float) -> bool:
+        """Wait up to ``timeout`` seconds for a stop; tell whether one came."""
+        return self._event.wait(timeout)
+
+    def arm_watchdog(self, status: int) -> None:
+        """End the process with ``status`` after :data:`STOP_GRACE_S`, every thread's stack in its log."""
+        if self._watchdog is not None:
+            return
+
+        def expire() -> None:
+            time.sleep(STOP_GRACE_S)
+            print(f'clean-up still running after {STOP_GRACE_S} s: ending now; the threads were at',
+                  file=sys.stderr, flush=True)
+            faulthandler.dump_traceback(all_threads=True)
+            _end_process(status)
+
+        self._watchdog = threading.Thread(target=expire, name='stop-watchdog', daemon=True)
+        self._watchdog.start()
 
 
 def _end_process(status: int) -> None:

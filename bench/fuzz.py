@@ -362,7 +362,7 @@ def check(tally: Tally, target: str, run: Callable[[], Any], case: Any) -> None:
     tally.inputs[target] = tally.inputs.get(target, 0) + 1
     rss0 = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss
     t0, cpu0 = time.monotonic(), time.process_time()
-    signal.alarm(HANG_WALL_S)
+    signal.setitimer(signal.ITIMER_REAL, HANG_WALL_S, 1.0)   # again each second: a callback may swallow one
     try:
         run()
     except LtlInstructError:
@@ -373,7 +373,7 @@ def check(tally: Tally, target: str, run: Callable[[], Any], case: Any) -> None:
         tally.tracebacks.append({'target': target, 'input': case,
                                  'traceback': traceback.format_exc()[-1500:]})
     finally:
-        signal.alarm(0)
+        signal.setitimer(signal.ITIMER_REAL, 0.0)
     cpu = time.process_time() - cpu0
     tally.slowest[target] = max(tally.slowest.get(target, 0.0), cpu)
     grown = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - rss0

@@ -42,7 +42,7 @@ from ltl_instruct.core.payloads import (  # noqa: F401  (the payload parsing liv
 )
 from ltl_instruct.core.planning import PlanningWorld
 from ltl_instruct.core.world.robot import OccupancyRaster, Pose, compose_planar
-from ltl_instruct.core.world.scene import Box
+from ltl_instruct.core.world.scene import MAX_SCENE_EXTENT_M, Box
 
 FRAME_ID = 'map'
 
@@ -273,7 +273,7 @@ def occupancy_raster(msg: OccupancyGrid) -> OccupancyRaster:
     ------
     InvalidInputError
         On an empty grid, a data length that does not match, a non-positive or
-        non-finite resolution, or a rotated origin.
+        non-finite resolution, a rotated origin, or a map beyond the largest scene extent.
     """
     info = msg.info
     w, h = int(info.width), int(info.height)
@@ -289,6 +289,10 @@ def occupancy_raster(msg: OccupancyGrid) -> OccupancyRaster:
     o = info.origin.position
     if not (math.isfinite(o.x) and math.isfinite(o.y)):
         raise InvalidInputError('map origin is not finite')
+    far = max(abs(o.x), abs(o.y), abs(o.x + w * info.resolution), abs(o.y + h * info.resolution))
+    if max(w, h) * info.resolution > MAX_SCENE_EXTENT_M or far > MAX_SCENE_EXTENT_M:
+        raise InvalidInputError(f'the map spans {w * info.resolution:g} x {h * info.resolution:g} m from '
+                                f'({o.x:g}, {o.y:g}): beyond the largest scene ({MAX_SCENE_EXTENT_M:g} m)')
     cells = np.asarray(msg.data, dtype=np.int8).reshape(h, w)
     return OccupancyRaster(cells, float(info.resolution), (float(o.x), float(o.y)))
 

@@ -77,6 +77,27 @@ def test_occupancy_grid_round_trip_and_bad_grids():
         conv.occupancy_raster(msg)
 
 
+@pytest.mark.parametrize('origin, resolution', [((1e9, 0.0), 0.05), ((0.0, 0.0), 4e15), ((-2e4, 5.0), 1.0)])
+def test_a_map_beyond_the_largest_scene_is_refused_before_any_work(origin, resolution):
+    """Fuzz-found (issue 21): a 2-cell map from 1e9 m out to 5e18 m made a cell index of 1.4e14 cells."""
+    msg = OccupancyGrid()
+    msg.info.width, msg.info.height, msg.info.resolution = 2, 1, resolution
+    msg.info.origin.position.x, msg.info.origin.position.y = origin
+    msg.info.origin.orientation.w = 1.0
+    msg.data = [0, 100]
+    with pytest.raises(InvalidInputError, match='beyond the largest scene'):
+        conv.planning_world_from_grid(msg, 0.3)
+
+
+def test_a_long_thin_world_indexes_at_most_4097_cells_along_an_axis():
+    from ltl_instruct.core.planning import PlanningWorld
+    from ltl_instruct.core.world.scene import Box
+    world = PlanningWorld(2, (0.0, 0.0), (9000.0, 0.5), 0.3, (Box((10.0, 0.25, 0.0), (1.0, 0.1, 1.0)),))
+    cell, nx, ny = world._cell
+    assert nx <= 4097 and ny <= 4097 and nx * ny < 20000
+    assert not world.is_free(np.array([[10.0, 0.25]]))[0] and world.is_free(np.array([[100.0, 0.25]]))[0]
+
+
 def test_point_cloud_round_trip_with_a_value_field():
     rng = np.random.default_rng(0)
     pts = rng.normal(size=(100, 3)).astype(np.float32)

@@ -121,12 +121,13 @@ class PlanningWorld:
     def _build_cell_index(self) -> None:
         """Bucket the inflated boxes by the (x, y) cells they overlap, for point queries.
 
-        About 4,000 cells over the bounds (at least 0.25 m each); a point is tested only
+        About 4,000 cells over the bounds (at least 0.25 m each, and at most 4,097 along
+        either axis); a point is tested only
         against the boxes of its cell, so a validity check costs a few box tests, not one
         per obstacle.
         """
         span = [max(self.bounds_max[k] - self.bounds_min[k], 1e-6) for k in range(2)]
-        cell = max(0.25, math.sqrt(span[0] * span[1] / 4096.0))
+        cell = max(0.25, math.sqrt(span[0] * span[1] / 4096.0), max(span) / 4096.0)   # a thin map too
         nx, ny = (int(math.ceil(span[k] / cell)) + 1 for k in range(2))
         buckets: list[list[int]] = [[] for _ in range(nx * ny)]
         for i, (lo, hi) in enumerate(self._boxes):

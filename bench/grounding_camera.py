@@ -30,6 +30,9 @@ Prints a table per scene and the totals; exits 1 when a target is missed.
 ``sensor_msgs/Image`` messages, look up the odometry pose of the frame's stamp, and
 integrate the frame into the semantic map (target: median under 30 ms); and, apart,
 extracting the instances from the map afterwards (done once per integrated frame).
+Each is reported as p50 / p99 / max. ``--threads N`` is the nodes' ``compute_threads``
+(default 1; 0 = the libraries' default), ``--contend K`` runs K processes doing BLAS
+products meanwhile, limited the same way: the other nodes of a small computer.
 """
 from __future__ import annotations
 
@@ -289,9 +292,33 @@ def _walk(scene: Scene, frames: int) -> list[Pose]:
     return [Pose((float(x), float(y), 0.0), float(a)) for (x, y), a in zip(pts, yaw)]
 
 
-def bench_frames(frames: int) -> int:
+CONTENDER = """
+import sys, numpy
+from ltl_instruct.core.compute_threads import limit_compute_threads
+limit_compute_threads(int(sys.argv[1]))
+a = numpy.random.default_rng(0).random((500, 500))
+while True:
+    a = (a @ a) / 500.0
+"""
+
+
+def _contenders(count: int, threads: int) -> list:
+    """Start ``count`` processes doing BLAS products, each limited as the grounder is (other nodes' work)."""
+    import subprocess
+    return [subprocess.Popen([sys.executable, '-c', CONTENDER, str(threads)]) for _ in range(count)]
+
+
+def _tail(values: Sequence[float]) -> str:
+    ms = sorted(v * 1000.0 for v in values)
+    p99 = ms[min(len(ms) - 1, int(math.ceil(0.99 * len(ms))) - 1)]
+    return f'p50 {statistics.median(ms):.1f} ms, p99 {p99:.1f} ms, max {ms[-1]:.1f} ms'
+
+
+def bench_frames(frames: int, threads: int = 1, contend: int = 0) -> int:
     """Time the grounder's work per 640x480 frame (see the module docstring); 1 when over the target."""
     from ltl_instruct import conversions as conv
+    from ltl_instruct.core.compute_threads import limit_compute_threads
+    limit_compute_threads(threads)
     scene = resolve_scene('apartment')
     camera = SyntheticCamera(scene, 640, 480)
     poses = _walk(scene, frames + 1)
@@ -305,27 +332,35 @@ def bench_frames(frames: int) -> int:
     smap = SemanticMap(camera.classes, SemanticMapParams())
     k = CameraIntrinsics.default(640, 480)
     read, integrate, extract, cpu = [], [], [], []
-    for depth_msg, labels_msg, stamp in msgs:
-        t0, c0 = time.perf_counter(), time.process_time()
-        depth, labels, pose = conv.depth_array(depth_msg), conv.image_array(labels_msg), history.at(stamp)
-        t1 = time.perf_counter()
-        smap.integrate(depth, labels, k, pose)
-        t2, c2 = time.perf_counter(), time.process_time()
-        smap.instances()
-        t3 = time.perf_counter()
-        read.append(t1 - t0), integrate.append(t2 - t1), extract.append(t3 - t2), cpu.append(c2 - c0)
+    others = _contenders(contend, threads)
+    try:
+        time.sleep(1.0 if others else 0.0)
+        for depth_msg, labels_msg, stamp in msgs:
+            t0, c0 = time.perf_counter(), time.process_time()
+            depth, labels, pose = conv.depth_array(depth_msg), conv.image_array(labels_msg), history.at(stamp)
+            t1 = time.perf_counter()
+            smap.integrate(depth, labels, k, pose)
+            t2, c2 = time.perf_counter(), time.process_time()
+            smap.instances()
+            t3 = time.perf_counter()
+            read.append(t1 - t0), integrate.append(t2 - t1), extract.append(t3 - t2), cpu.append(c2 - c0)
+    finally:
+        for p in others:
+            p.kill()
+            p.wait()
     total = [a + b for a, b in zip(read[1:], integrate[1:])]   # the first frame allocates the grid
     ms = statistics.median(total) * 1000.0
     load = os.getloadavg()[0] if hasattr(os, 'getloadavg') else float('nan')
+    limit = 'the libraries\' default' if threads <= 0 else 'here and in each contender'
     print(f'{frames} frames of 640x480 along a walk through the apartment, '
-          f'{len(smap.instances())} instances at the end:')
+          f'{len(smap.instances())} instances at the end; compute_threads {threads} ({limit}), '
+          f'{contend} contending BLAS processes:')
     print(f'  read the messages and the pose: median {statistics.median(read[1:]) * 1000:.1f} ms')
-    print(f'  integrate: median {statistics.median(integrate[1:]) * 1000:.1f} ms, '
-          f'worst {max(integrate[1:]) * 1000:.1f} ms')
-    print(f'  messages to map (target < {INTEGRATE_TARGET_MS:.0f} ms): median {ms:.1f} ms; CPU time of this '
+    print(f'  integrate: {_tail(integrate[1:])}')
+    print(f'  messages to map (target < {INTEGRATE_TARGET_MS:.0f} ms): {_tail(total)}; CPU time of this '
           f'process: median {statistics.median(cpu[1:]) * 1000:.1f} ms (load average {load:.1f} on '
           f'{os.cpu_count()} cores)')
-    print(f'  instances from the map: median {statistics.median(extract[1:]) * 1000:.1f} ms')
+    print(f'  instances from the map: {_tail(extract[1:])}')
     return 0 if ms < INTEGRATE_TARGET_MS else 1
 
 
@@ -340,9 +375,13 @@ def main(argv: list[str]) -> int:
     ap.add_argument('--verbose', action='store_true', help='print the matching and every wrong descriptor')
     ap.add_argument('--speed', type=int, default=0, metavar='N',
                     help='only time the grounder\'s work on N 640x480 frames (see the module docstring)')
+    ap.add_argument('--threads', type=int, default=1,
+                    help='with --speed: compute_threads of this process and the contenders (0 = default)')
+    ap.add_argument('--contend', type=int, default=0,
+                    help='with --speed: this many processes doing BLAS products meanwhile (other nodes)')
     args = ap.parse_args(argv)
     if args.speed:
-        return bench_frames(args.speed)
+        return bench_frames(args.speed, args.threads, args.contend)
     scenes = _scenes(args.scene, args.variants)
     figs = [f for s in scenes if (f := bench_scene(s, args.views, args.verbose)) is not None]
     if not figs:

@@ -13,7 +13,8 @@ Parameters are declared from :class:`ParamSpec` with a description and a range, 
 validated (a bad value stops the node at start with a clear message, never later).
 Those a node names as ``runtime`` may be changed while it runs (``set_parameters``),
 validated the same way; every other one is declared read-only, so a ``set`` is refused.
-Every node also declares :data:`COMMON_PARAMS` (the robot's frame prefix and odom offset).
+Every node also declares :data:`COMMON_PARAMS` (the robot's frame prefix and odom offset, and
+how many threads its numeric libraries may use, applied when they are declared).
 
 Time: header stamps come from the node clock (:class:`StampSource`), so ``use_sim_time``
 with a ``/clock`` publisher (``sim_world publish_clock:=true``) stamps everything in
@@ -44,6 +45,7 @@ from rclpy.signals import SignalHandlerOptions
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 
+from ltl_instruct.core.compute_threads import limit_compute_threads
 from ltl_instruct.core.errors import InvalidInputError
 
 BURST_DEPTH = 64
@@ -134,6 +136,9 @@ COMMON_PARAMS = (
     ParamSpec('map_to_odom', '', 'fixed pose "x,y,yaw" [m, m, rad] of the odom frame in the map frame: '
               'odometry in the odom frame is moved into the map frame by it ("" = odometry must be in map)',
               pattern=r'|\s*[-+0-9.eE]+\s*,\s*[-+0-9.eE]+\s*,\s*[-+0-9.eE]+\s*'),
+    ParamSpec('compute_threads', 1, 'threads BLAS, OpenMP and torch may each use in this node\'s process '
+              '(0 = their default, one per core): one keeps the nodes of a small computer from contending',
+              low=0, high=256),
 )
 
 
@@ -192,6 +197,7 @@ def declare_parameters(node: Node, specs: Sequence[ParamSpec], runtime: Collecti
         except (InvalidParameterValueException, InvalidParameterTypeException) as e:
             raise InvalidInputError(f'parameter {spec.name}: {e}') from None
         values[spec.name] = spec.check(node.get_parameter(spec.name).value)
+    limit_compute_threads(values['compute_threads'])
     live = {name: by_name[name] for name in runtime if name in by_name}
 
     def on_set(parameters: list) -> SetParametersResult:

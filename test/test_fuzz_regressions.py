@@ -44,3 +44,13 @@ def test_an_input_that_broke_a_node_is_refused_typed(nodes, case):
         iid = json.loads(case['input'])['id']
         ends = [body for i, body in nodes.statuses if i == iid and body.get('terminal')]
         assert len(ends) == 1 and ends[0]['status'] == 'failed', nodes.statuses
+
+
+@pytest.mark.parametrize('revision', [{'': 282}, 'seven', 2.5, None, True])
+def test_a_referent_map_whose_revision_is_not_a_whole_number_twice(nodes, revision):
+    """Fuzz-found: the second map for one instruction compared the first one's revision with int()."""
+    text = json.dumps({'schema': 'ltl_instruct/referent_map', 'version': 1, 'id': f'rev-{revision!r}',
+                       'ok': True, 'revision': revision, 'result': None})
+    for _ in range(2):
+        nodes.run('referent_map', text)
+    assert not nodes.internal_errors, nodes.internal_errors

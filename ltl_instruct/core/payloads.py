@@ -61,6 +61,12 @@ def _check_id(data: dict[str, Any]) -> None:
         raise InvalidInputError('payload has no valid "id" (non-empty text up to 200 characters)')
 
 
+def revision_of(data: dict[str, Any], default: int = 0) -> int:
+    """Return a payload's ``revision`` (``default`` when it is missing or not a whole number)."""
+    value = data.get('revision', default)
+    return value if isinstance(value, int) and not isinstance(value, bool) else default
+
+
 def safe_id(value: Any) -> str:
     """Return ``value`` cut to 200 characters if it is text, else ''."""
     return value[:200] if isinstance(value, str) else ''

@@ -140,7 +140,7 @@ class SearchMixin:
         with self._lock:
             p = self._pending.get(iid)
             newer = p.rmap if p is not None and p.rmap is not None else rdata
-        return newer if int(newer.get('revision', 0)) >= int(rdata.get('revision', 0)) else rdata
+        return newer if conv.revision_of(newer) >= conv.revision_of(rdata) else rdata
 
     def _wait_coverage(self) -> Optional[Coverage]:
         with self._coverage_come:
@@ -172,8 +172,8 @@ class SearchMixin:
                 break
             if time.monotonic() - progress_at > _STALL:
                 break
-            if int(rdata.get('revision', 0)) != revision:
-                revision = int(rdata.get('revision', 0))
+            if conv.revision_of(rdata) != revision:
+                revision = conv.revision_of(rdata)
                 if self._enters_avoided(rdata, points, here):
                     break
         return np.asarray(driven)

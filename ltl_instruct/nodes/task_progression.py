@@ -315,13 +315,13 @@ class TaskProgressionNode(SearchMixin, Node):
         with self._lock:
             active = self._active
             if active is not None and active.iid == iid and not active.finished:
-                if _revision(data) > active.rmap_revision and data.get('ok', False):
+                if conv.revision_of(data) > active.rmap_revision and data.get('ok', False):
                     self._jobs.put(('replan', iid, data, 'the referent map changed'))
                 return
             if self._memory.ended(iid) not in (None, PLANNED) or self._memory.ended(iid, EXECUTION):
                 return   # over (one planned by an earlier run of this node may still be resumed)
             p = self._pending.setdefault(iid, _Pending(iid))
-            if p.rmap is None or int(data.get('revision', 0)) >= int(p.rmap.get('revision', 0)):
+            if p.rmap is None or conv.revision_of(data) >= conv.revision_of(p.rmap):
                 p.rmap = data   # a search waits for a newer revision that resolves
             self._maybe_queue(p)
 
@@ -600,7 +600,7 @@ class TaskProgressionNode(SearchMixin, Node):
         if p.resume is not None:   # planned by an earlier run of this node: on from the last state heard
             state, mode = _resume_state(p.resume, automaton), 'resume'
         self._plan_and_publish(iid, automaton, rmap, start, state, timing,
-                               _revision(rdata), replans=0, mode=mode)
+                               conv.revision_of(rdata), replans=0, mode=mode)
 
     def _replan(self, iid: str, rdata: Optional[dict[str, Any]], reason: str) -> None:
         with self._lock:
@@ -616,7 +616,7 @@ class TaskProgressionNode(SearchMixin, Node):
             rmap, revision = active.referent_map, active.rmap_revision
             if rdata is not None:
                 rmap = ReferentMap.from_dict(rdata.get('referent_map') or {})
-                revision = _revision(rdata, revision)
+                revision = conv.revision_of(rdata, revision)
             state = active.monitor.state
             replans = active.replans + 1
         if err is not None:
@@ -817,12 +817,6 @@ def _error_from_dict(err: Any, default: ErrorCode) -> LtlInstructError:
         code = default
     return LtlInstructError(str(err.get('message', code.value))[:2000], code,
                             details=err.get('details') if isinstance(err.get('details'), dict) else None)
-
-
-def _revision(data: dict[str, Any], default: int = 0) -> int:
-    """Return the ``revision`` of a referent map payload (``default`` when it is not a whole number)."""
-    value = data.get('revision', default)
-    return value if isinstance(value, int) and not isinstance(value, bool) else default
 
 
 def main(args: Optional[list[str]] = None) -> int:

@@ -497,7 +497,8 @@ def point_cloud_fields(msg: PointCloud2) -> dict[str, np.ndarray]:
     Raises
     ------
     InvalidInputError
-        On big-endian data, a non-float32 field, or a data size that does not match.
+        On big-endian data, a non-float32 field, a field outside the point or a name empty or
+        repeated, or a data size that does not match.
     """
     if msg.is_bigendian:
         raise InvalidInputError('big-endian point clouds are not supported')
@@ -509,6 +510,11 @@ def point_cloud_fields(msg: PointCloud2) -> dict[str, np.ndarray]:
     for f in msg.fields:
         if f.datatype != PointField.FLOAT32 or f.count != 1:
             raise InvalidInputError(f'point-cloud field {f.name!r} is not a single float32')
+        if int(f.offset) + 4 > int(msg.point_step):
+            raise InvalidInputError(f'point-cloud field {f.name!r} at byte {f.offset} does not fit in a '
+                                    f'point of {msg.point_step} bytes')
+        if not f.name or f.name in dtype['names']:
+            raise InvalidInputError(f'point-cloud field name {f.name!r} is empty or repeated')
         dtype['names'].append(f.name)
         dtype['formats'].append('<f4')
         dtype['offsets'].append(int(f.offset))

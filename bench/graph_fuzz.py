@@ -377,6 +377,7 @@ class FuzzReport:
     terminal_expected: int = 0                                # instructions + specs (good and bad)
     terminal_ids: int = 0                                     # ids with a terminal planning status
     more_than_one_terminal: list = field(default_factory=list)
+    no_terminal: list = field(default_factory=list)           # (id, its statuses) of those with none
     bad_codes: Counter = field(default_factory=Counter)       # error codes of the malformed ones
     cancel_rejected: tuple = (0, 0)                           # (expected, came)
     segment_refusals: tuple = (0, 0)                          # (expected, came)
@@ -402,7 +403,8 @@ class FuzzReport:
             f'malformed messages: {sum(self.bad_sent.values())} ({dict(sorted(self.bad_sent.items()))})',
             f'instructions and task specs (valid and malformed): {self.terminal_expected}, '
             f'with one terminal status: {self.terminal_ids}, '
-            f'with more than one: {len(self.more_than_one_terminal)}',
+            f'with more than one: {len(self.more_than_one_terminal)}; statuses of those with none: '
+            f'{self.no_terminal}',
             f'error codes of the malformed ones: {dict(self.bad_codes.most_common())}',
             f'slowest terminal status of a malformed instruction: {self.slowest_bad_s:.2f} s '
             'after it was sent',
@@ -453,6 +455,8 @@ class GraphFuzzer:
             data = json.loads(msg.data)
         except ValueError:
             return
+        if not isinstance(data, dict):   # the fuzzer's own junk on this topic ('null', '42')
+            return
         with self._lock:
             self.segment_status.append(data)
 
@@ -477,6 +481,20 @@ class GraphFuzzer:
         if iid in self._good:
             return True
         return iid not in self._before and not iid.startswith(('junk-', 'client-'))
+
+    def _new_id(self, d: Draw) -> int:
+        """1 when draw ``d`` should end under an id of its own; 0 when it repeats an id sent before.
+
+        An id the nodes cannot take (over 200 characters) is cut to 200, as they report it, so
+        ids that share their first 200 characters are one instruction, answered once.
+        """
+        from ltl_instruct import conversions as conv
+        iid = next((conv.salvage_id(msg.data) for _, msg in d.messages if hasattr(msg, 'data')), '')
+        if not iid:
+            return 1   # the node makes one up
+        fresh = iid not in self._bad_ids
+        self._bad_ids.add(iid)
+        return int(fresh)
 
     def _ended(self) -> int:
         """Instructions of this run with a terminal planning status."""
@@ -508,6 +526,7 @@ class GraphFuzzer:
         t0 = time.monotonic()
         good_ids: list[str] = []
         self._good = set()
+        self._bad_ids: set[str] = set()
         self._before = set(client.received.statuses)
         bad_ids_expected = 0
         cancels = planner_refusals = 0
@@ -532,7 +551,7 @@ class GraphFuzzer:
                                   else f'bad-spec-{sum(report.bad_sent.values())}'] = time.monotonic()
                 report.bad_sent[d.topic] += 1
                 if d.answer == 'terminal':
-                    bad_ids_expected += 1
+                    bad_ids_expected += self._new_id(d)
                 elif d.answer == 'cancel_rejected':
                     cancels += 1
                 elif d.answer == 'segment_status':
@@ -571,6 +590,8 @@ class GraphFuzzer:
                 continue
             ends = client.terminals(iid)
             if not ends:
+                if any(s.get('status') != 'cancel_rejected' for s in statuses):   # not a cancel's id only
+                    report.no_terminal.append((iid, [s.get('status') for s in statuses]))
                 continue
             report.terminal_ids += 1
             if len(ends) > 1:

@@ -289,10 +289,10 @@ def run_node(make_node: Callable[[], Node], args: Optional[Sequence[str]] = None
 
     The stop is this process's own, not rclpy's: SIGINT and SIGTERM set an event the main
     thread waits on (the executor spins in a thread of its own) and start a watchdog, so a
-    clean-up that blocks (a DDS participant whose peer was killed, a callback at work) cannot
-    keep the node alive past :data:`STOP_GRACE_S`. The process then ends at once with its
-    exit status (2 when the parameters are invalid, 1 after a crash, 0 after a signal): see
-    :func:`_end_process`.
+    clean-up that blocks (a callback at work, a DDS call) cannot keep the node alive past
+    :data:`STOP_GRACE_S`. The node is not destroyed (see the comment in the code). The process
+    then ends at once with its exit status (2 when the parameters are invalid, 1 after a
+    crash, 0 after a signal): see :func:`_end_process`.
     """
     stop = _StopSignals()
     faulthandler.register(signal.SIGUSR1, all_threads=True)   # `kill -USR1 <pid>`: every thread's stack
@@ -319,9 +319,9 @@ def run_node(make_node: Callable[[], Node], args: Optional[Sequence[str]] = None
                 close()
         rclpy.try_shutdown()   # the executor's wait ends
         if spinner is not None:
-            spinner.join(timeout=STOP_GRACE_S)   # its wait set holds the node's handles until then
-        if node is not None:
-            node.destroy_node()
+            spinner.join(timeout=STOP_GRACE_S)
+    # No destroy_node: tearing the DDS participant down blocked, holding the GIL, after peers had been
+    # SIGKILLed (Fast DDS); the process ends now, and its peers see it gone as after any exit.
     _end_process(status)
     return status
 
@@ -381,6 +381,10 @@ class _StopSignals:
         """End the process with ``status`` after :data:`STOP_GRACE_S`, every thread's stack in its log."""
         if self._watchdog is not None:
             return
+
+        # a thread that holds the GIL in C code would keep this one asleep: faulthandler's own thread
+        # needs no GIL, and ends the process (status 1, the stacks in the log) a second later
+        faulthandler.dump_traceback_later(STOP_GRACE_S + 1.0, exit=True)
 
         def expire() -> None:
             time.sleep(STOP_GRACE_S)

@@ -251,6 +251,20 @@ def odometry_in_map(msg: Odometry, map_frame: str, odom_frame: str, map_to_odom:
                              f'{hint}', details={'frame': frame, 'expected': expected})
 
 
+def check_map_frame(msg: Any, map_frame: str, what: str) -> None:
+    """Refuse a map (``what``: its topic) that is not in the frame the tasks are planned in.
+
+    Raises
+    ------
+    FrameMismatchError
+        Naming both frames: a map in another frame (or in none) would put every obstacle wrong.
+    """
+    frame = msg.header.frame_id
+    if frame != map_frame:
+        raise FrameMismatchError(f'{what} is in frame {frame!r}, expected {map_frame!r}',
+                                 details={'frame': frame, 'expected': [map_frame]})
+
+
 # ---------------------------------------------------------------------------- occupancy grid
 def occupancy_grid_msg(raster: OccupancyRaster, stamp: Optional[Time] = None,
                        frame_id: str = FRAME_ID) -> OccupancyGrid:

@@ -89,6 +89,16 @@ def test_a_map_beyond_the_largest_scene_is_refused_before_any_work(origin, resol
         conv.planning_world_from_grid(msg, 0.3)
 
 
+def test_a_map_in_another_frame_is_a_frame_mismatch_naming_both():
+    from ltl_instruct.core.errors import FrameMismatchError
+    msg = conv.occupancy_grid_msg(rasterize_scene(resolve_scene('apartment'), 0.2), frame_id='r1/map')
+    conv.check_map_frame(msg, 'r1/map', 'map')
+    for frame in ('map', 'odom', ''):
+        msg.header.frame_id = frame
+        with pytest.raises(FrameMismatchError, match=f"'{frame}', expected 'r1/map'"):
+            conv.check_map_frame(msg, 'r1/map', 'map')
+
+
 def test_a_long_thin_world_indexes_at_most_4097_cells_along_an_axis():
     from ltl_instruct.core.planning import PlanningWorld
     from ltl_instruct.core.world.scene import Box

@@ -6,6 +6,7 @@ Many instructions go through it: good ones, bad ones, a burst of 50.
 """
 from __future__ import annotations
 
+import copy
 import json
 import os
 import random
@@ -222,6 +223,12 @@ def test_a_malformed_map_is_reported_and_the_last_good_map_serves_on(graph):
             assert got and got[-1]['error']['code'] == 'INVALID_INPUT', got
             assert 'map' in got[-1]['error']['message'] and not got[-1]['terminal']
             before = len(_map_rejections(client))
+        wrong_frame = copy.deepcopy(good_map)   # issue 19: a good map, but not in the tasks' frame
+        wrong_frame.header.frame_id = 'odom'
+        client.map_pub.publish(wrong_frame)
+        got = client.wait_until(lambda: _map_rejections(client)[before:], TIMEOUT + 5.0)
+        assert got and got[-1]['error']['code'] == 'FRAME_MISMATCH', got
+        assert "'odom'" in got[-1]['error']['message'] and "'map'" in got[-1]['error']['message'], got
         status = client.wait_terminal(client.send(formula='F near[bed]'), timeout=30.0)
         assert status['status'] in ('planned', 'satisfied'), status
     finally:

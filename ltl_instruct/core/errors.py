@@ -16,7 +16,7 @@ class ErrorCode(str, enum.Enum):
     PARSE_ERROR = 'PARSE_ERROR'              # malformed formula text
     LIMIT_EXCEEDED = 'LIMIT_EXCEEDED'        # input too long, too deep, too many atoms
     INVALID_INPUT = 'INVALID_INPUT'          # garbage JSON, NaN pose, wrong schema
-    FRAME_MISMATCH = 'FRAME_MISMATCH'        # a pose in a frame this robot cannot place in its map
+    FRAME_MISMATCH = 'FRAME_MISMATCH'        # a pose or map in a frame this robot cannot place in its map
     TRANSLATION_ERROR = 'TRANSLATION_ERROR'  # instruction could not be translated
     UNSATISFIABLE = 'UNSATISFIABLE'          # no accepting automaton state reachable
     UNKNOWN_REFERENT = 'UNKNOWN_REFERENT'    # nothing of that name is known

@@ -92,6 +92,7 @@ class FmtPlannerNode(Node):
         """Use a new 2D occupancy grid (an empty or malformed one is rejected; the last good one stays)."""
         try:
             world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
+            conv.check_map_frame(msg, self.frames.map, 'map')
         except LtlInstructError as e:
             self._set_world(2, None, e)
             return
@@ -104,6 +105,7 @@ class FmtPlannerNode(Node):
         try:
             world = conv.planning_world_from_cloud(msg, self.params['cloud_voxel'],
                                                    self.params['robot_radius'], self._bounds)
+            conv.check_map_frame(msg, self.frames.map, 'map_cloud')
         except LtlInstructError as e:
             self._set_world(3, None, e)
             return

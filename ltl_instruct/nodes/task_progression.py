@@ -364,6 +364,7 @@ class TaskProgressionNode(SearchMixin, Node):
         """Keep the 2D world the plans are checked against (a malformed map is reported and ignored)."""
         try:
             world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
+            conv.check_map_frame(msg, self.frames.map, 'map')
         except LtlInstructError as e:
             self._reject_map(e)
             return
@@ -393,6 +394,7 @@ class TaskProgressionNode(SearchMixin, Node):
         try:
             world = conv.planning_world_from_cloud(msg, self.params['cloud_voxel'],
                                                    self.params['robot_radius'], self._bounds)
+            conv.check_map_frame(msg, self.frames.map, 'map_cloud')
         except LtlInstructError as e:
             self._reject_map(e)
             return

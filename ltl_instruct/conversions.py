@@ -37,7 +37,7 @@ from ltl_instruct.core.grounding.coverage import Coverage, PlaneGrid
 from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.payloads import (  # noqa: F401  (the payload parsing lives in the core; re-exported)
     INSTRUCTION, MAX_PAYLOAD_BYTES, SCHEMA_VERSION, parse_json_payload, read_cancel, read_instruction,
-    revision_of, salvage_id,
+    revision_of, salvage_id, timing_of,
     safe_id as _safe_id,
 )
 from ltl_instruct.core.planning import PlanningWorld

@@ -61,5 +61,5 @@ def test_a_referent_map_whose_revision_is_not_a_whole_number_twice(nodes, revisi
     ({'translate_s': 0.1, 'x': 'slow', 'y': True}, {'translate_s': 0.1})])
 def test_the_stage_times_a_payload_carries_are_read_whatever_it_holds(timing, expected):
     """Graph-fuzz-found: a task spec whose "timing" was true ended INTERNAL_ERROR ('bool' has no items)."""
-    from ltl_instruct.nodes.task_progression import _timing
-    assert _timing({'timing': timing}) == expected
+    from ltl_instruct.core.payloads import timing_of
+    assert timing_of({'timing': timing}) == expected

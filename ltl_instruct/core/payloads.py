@@ -67,6 +67,15 @@ def revision_of(data: dict[str, Any], default: int = 0) -> int:
     return value if isinstance(value, int) and not isinstance(value, bool) else default
 
 
+def timing_of(data: dict[str, Any]) -> dict[str, float]:
+    """Return the stage times [s] a payload carries (its ``timing`` object; anything else is none)."""
+    timing = data.get('timing')
+    if not isinstance(timing, dict):
+        return {}
+    return {str(k): float(v) for k, v in timing.items()
+            if isinstance(v, (int, float)) and not isinstance(v, bool)}
+
+
 def safe_id(value: Any) -> str:
     """Return ``value`` cut to 200 characters if it is text, else ''."""
     return value[:200] if isinstance(value, str) else ''

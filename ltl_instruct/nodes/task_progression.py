@@ -579,7 +579,7 @@ class TaskProgressionNode(SearchMixin, Node):
             if p is None or p.spec is None or p.rmap is None:
                 return
             spec, rdata = p.spec, p.rmap
-        timing = {**_timing(spec), **_timing(rdata)}
+        timing = {**conv.timing_of(spec), **conv.timing_of(rdata)}
         t0 = time.monotonic()
         formula = parse_formula(spec['formula'])
         automaton = compile_automaton(formula)
@@ -816,15 +816,6 @@ def _error_from_dict(err: Any, default: ErrorCode) -> LtlInstructError:
         code = default
     return LtlInstructError(str(err.get('message', code.value))[:2000], code,
                             details=err.get('details') if isinstance(err.get('details'), dict) else None)
-
-
-def _timing(payload: dict[str, Any]) -> dict[str, float]:
-    """The stage times [s] a payload carries (its ``timing`` object; anything else is no times)."""
-    timing = payload.get('timing')
-    if not isinstance(timing, dict):
-        return {}
-    return {str(k): float(v) for k, v in timing.items()
-            if isinstance(v, (int, float)) and not isinstance(v, bool)}
 
 
 def main(args: Optional[list[str]] = None) -> int:

@@ -197,3 +197,21 @@ def test_combined_flags_disagreement_and_takes_over_refusals(small_bundle):
     differ = t.translate('bring the lamp to the desk')
     assert differ.extra['flagged'] and differ.extra['alternatives']
     assert any('learned model' in w for w in differ.extra['unread'])
+
+
+@pytest.mark.parametrize('words, descriptor', [
+    ('the cup from the kitchen', 'cup::isnextto(kitchen)'),
+    ('the blanket out of the closet', 'blanket::isnextto(closet)'),
+    ('the remote off of the couch', 'remote::isabove(couch)'),
+    ('the remote from under the sofa', 'remote::isbelow(sofa)'),
+    ('the cup in the kitchen', 'cup'),
+    ('my glasses on the nightstand', 'glasses::isabove(nightstand)'),
+    ('the kitchen table', 'kitchen_table'),
+])
+def test_a_mention_says_where_a_thing_is_taken_from_as_the_rules_read_it(words, descriptor):
+    # One reading of "from", "out of", "off" and "in" for both translators (phrases.source_relation):
+    # a tagged span "the cup from the kitchen" is the cup by the kitchen, never cup_from_kitchen.
+    from ltl_instruct.core.language.neural.features import descriptor_of
+    assert descriptor_of(words) == descriptor
+    rules = make_translator('offline').translate(f'bring {words} to the desk')
+    assert rules.referents[0] == descriptor

@@ -45,7 +45,7 @@ from ltl_instruct.core.language.lexicon import (
 from ltl_instruct.core.language.paraphrase import paraphrase
 from ltl_instruct.core.language.phrases import (
     DESTINATION_PREPS, DETERMINERS as DETS, NAME_VERBS, STOPWORDS, NounPhrase, PhraseParser, is_name_word,
-    location_phrase, match_relation,
+    location_phrase, match_relation, source_relation,
 )
 from ltl_instruct.core.language.reactions import RuleReader
 from ltl_instruct.core.language.rewrite import apply_corrections, apply_exclusions, resolve_list_references
@@ -3967,28 +3967,15 @@ class _Reader:
         destined = 0 < loc < len(rest) and rest[loc] in ('to', 'into', 'onto', 'on', 'in', 'inside', 'over')
         if loc > 0 and (verb not in PUT_VERBS or rest[0] not in ('in', 'inside', 'within') or destined):
             rest = self._drop_location(rest, objs)   # "bring the cup in the kitchen to the table"
-        rel = match_relation(rest, 1) if rest[:1] == ['from'] and len(objs) == 1 else None
-        if rel is not None and rel[0] != 'isnextto':
-            # "the remote from under the sofa": where the object is, as that relation
-            src = self.phrases.parse(rest, rel[1], destination_stops=True)
-            if src is not None and not src.pronoun:
-                o = objs[0]
-                d = Descriptor(o.descriptor.name, o.descriptor.relations + (
-                    Relation(rel[0], (src.descriptor,)),))
-                objs = [NounPhrase(d, o.start, o.end, o.head)]
-                self.notes.append(f'"{" ".join(rest[:src.end])}" read as {d}')
-                rest = rest[src.end:]
-        if rest and rest[0] in ('from', 'off') and len(objs) == 1:
-            # "the blanket from the closet": where the object is, as nearness; "the remote off the
-            # couch": it is on the couch (isabove)
-            src = self.phrases.parse(rest, 1, destination_stops=True)
-            if src is not None and not src.pronoun:
-                o = objs[0]
-                d = Descriptor(o.descriptor.name, o.descriptor.relations + (
-                    Relation('isabove' if rest[0] == 'off' else 'isnextto', (src.descriptor,)),))
-                objs = [NounPhrase(d, o.start, o.end, o.head)]
-                self.notes.append(f'"{rest[0]} {src.descriptor}" read as {d}')
-                rest = rest[src.end:]
+        source = source_relation(rest, 0, self.phrases) if len(objs) == 1 else None
+        if source is not None:
+            # "the blanket from the closet", "out of the closet": where the object is, as nearness;
+            # "the remote off the couch": on it; "from under the sofa": that relation
+            o = objs[0]
+            d = Descriptor(o.descriptor.name, o.descriptor.relations + (source[0],))
+            objs = [NounPhrase(d, o.start, o.end, o.head)]
+            self.notes.append(f'"{" ".join(rest[:source[1]])}" read as {d}')
+            rest = rest[source[1]:]
         for o in objs:
             self.last_object = o
         while rest and rest[0] in ('up', 'back', 'over', 'away', 'out', 'down', 'off', 'along'):

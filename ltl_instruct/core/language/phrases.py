@@ -679,3 +679,29 @@ def location_phrase(tokens: Sequence[str], i: int, parser: 'PhraseParser') -> in
         return -1
     np = parser.parse(tokens, k)
     return np.end if np is not None and not np.pronoun else -1
+
+
+def source_relation(tokens: Sequence[str], i: int, parser: 'PhraseParser') -> Optional[tuple[Relation, int]]:
+    """Where a carried thing is taken from, said after it, as a relation of it, and the index after it.
+
+    "from the closet" and "out of the closet": nearness (``isnextto``); "off the couch" and
+    "off of the couch": on it (``isabove``); "from under the sofa": that relation. The one home of
+    this reading for the rules and the learned translator; None when no source is said at ``i``.
+    """
+    w = tokens[i] if i < len(tokens) else ''
+    if w == 'from':
+        rel = match_relation(tokens, i + 1)
+        if rel is not None and rel[0] != 'isnextto':
+            comparator, k = rel   # "the remote from under the sofa"
+        else:
+            comparator, k = 'isnextto', i + 1
+    elif w == 'off':
+        comparator, k = 'isabove', i + 2 if tokens[i + 1:i + 2] == ['of'] else i + 1
+    elif w == 'out' and tokens[i + 1:i + 2] == ['of']:
+        comparator, k = 'isnextto', i + 2
+    else:
+        return None
+    src = parser.parse(tokens, k, destination_stops=True)
+    if src is None or src.pronoun:
+        return None
+    return Relation(comparator, (src.descriptor,)), src.end

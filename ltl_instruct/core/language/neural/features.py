@@ -11,11 +11,15 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import Optional, Sequence
+from typing import TYPE_CHECKING, Optional, Sequence
 
 from ltl_instruct.core.language.neural.encoder import Pieces
 from ltl_instruct.core.language.neural.examples import Mention, TaggedExample
 from ltl_instruct.core.language.neural.grammar import MAX_SLOTS
+
+if TYPE_CHECKING:
+    from ltl_instruct.core.language.phrases import PhraseParser
+    from ltl_instruct.core.spec import Descriptor
 
 TAG_O, TAG_B, TAG_I = 0, 1, 2
 N_TAGS = 3
@@ -75,13 +79,34 @@ def descriptor_of(words: str, landmarks: Sequence[str] = (), digits: bool = Fals
     tokens = tokenize(words)
     if not tokens:
         return None
-    phrase = PhraseParser(landmarks=landmarks, digits=digits).parse(tokens, 0)
+    parser = PhraseParser(landmarks=landmarks, digits=digits)
+    phrase = parser.parse(tokens, 0)
     if phrase is not None and phrase.end >= len(tokens) - 1:
         return str(phrase.descriptor)
+    if phrase is not None:   # "the cup from the kitchen", "the cup in the kitchen"
+        d = _with_source(phrase.descriptor, tokens, phrase.end, parser)
+        if d is not None:
+            return str(d)
     name = _NAME_RE.sub('_', ' '.join(t for t in tokens if t not in _ARTICLES).lower()).strip('_')
     if not name or not name[0].isalpha():
         return None
     return name
+
+
+def _with_source(d: Descriptor, tokens: Sequence[str], i: int, parser: PhraseParser) -> Optional[Descriptor]:
+    """The thing ``d`` with where it is taken from (``tokens[i:]``), as the rules read it, or None.
+
+    A source ("from the closet", "off the couch") is a relation of the thing; a location ("in the
+    kitchen") says where to look and is left out of its name, as the rules leave it out.
+    """
+    from ltl_instruct.core.language.phrases import location_phrase, source_relation
+    from ltl_instruct.core.spec import Descriptor
+    source = source_relation(tokens, i, parser)
+    if source is not None and source[1] >= len(tokens) - 1:
+        return Descriptor(d.name, d.relations + (source[0],))
+    if location_phrase(tokens, i, parser) >= len(tokens) - 1:
+        return d
+    return None
 
 
 _ARTICLES = frozenset({'the', 'a', 'an', 'this', 'that', 'my', 'your', 'our'})

@@ -31,10 +31,11 @@ _PUNCT_TABLE = str.maketrans('', '', ',.;:!?')
 _ENTITY_RE = re.compile(r'\be(\d+)\b')
 
 # How often each step kind starts or continues a chain, and each rule is added.
-_STEP_WEIGHTS = {'visit': 10, 'revisit': 1, 'either': 2, 'twice': 1.2, 'three_times': 0.8, 'pick': 1.5,
+_STEP_WEIGHTS = {'visit': 10, 'revisit': 1, 'either': 2, 'twice': 1.2, 'three_times': 0.8, 'pick': 2.5,
                  'deliver': 3.5, 'throw_away': 1, 'deliver_avoid': 1, 'deliver_after_avoid': 0.6,
                  'after_avoid': 1, 'correction': 1.5, 'speaker': 0.5, 'correction_object': 0.4,
                  'correction_dest': 0.4}
+_SOURCE_RATE = 0.2   # carried things said with where they are taken from ("the cup from the kitchen")
 _RULE_WEIGHTS = {'unordered': 1.5, 'unordered3': 0.7, 'sequence_list': 0.8, 'before': 1.5, 'not_until': 1.2,
                  'stay_until': 0.8, 'weak_first': 0.5, 'avoid_global': 3, 'avoid_onway': 1.2,
                  'avoid_after': 1, 'xor': 1, 'at_most_once': 0.8, 'exactly_once': 0.8, 'exactly_twice': 0.6,
@@ -50,7 +51,7 @@ _RULE_WEIGHTS = {'unordered': 1.5, 'unordered3': 0.7, 'sequence_list': 0.8, 'bef
 _DRONE_STEPS = ('visit', 'visit', 'visit', 'revisit', 'either', 'twice', 'three_times', 'after_avoid',
                 'correction')
 # Constructs that are not step or rule names: styles of the whole example.
-STYLE_NAMES = ('sequence', 'drone', 'lifted', 'appositive', 'spatial', 'chatter', 'typos')
+STYLE_NAMES = ('sequence', 'drone', 'lifted', 'appositive', 'spatial', 'source', 'chatter', 'typos')
 CONSTRUCTS = tuple(_STEP_WEIGHTS) + tuple(_RULE_WEIGHTS) + STYLE_NAMES
 
 
@@ -284,6 +285,15 @@ class Generator:
             return f'{phrase} {a_text} and {p2} {b_text}', f'::{comparator}({a_desc})::{c2}({b_desc})'
         return f'{phrase} {a_text}', f'::{comparator}({a_desc})'
 
+    def _source(self, text: str, name: str) -> tuple[str, str]:
+        """Return (English, descriptor) of a carried thing said with where it is taken from."""
+        rng, sources = self.rng, self.t.raw['sources']
+        comparator = rng.choice(tuple(sources))
+        a_text, a_desc = self._anchor(name)
+        self.used.add('source')
+        text = f'{text} {rng.choice(sources[comparator])} {a_text}'
+        return text, name if comparator == 'none' else f'{name}::{comparator}({a_desc})'
+
     def _thing(self, role: str, plain: bool = False) -> int:
         """Make a new thing for ``role`` ('place', 'object', 'dest'); return its id."""
         rng = self.rng
@@ -293,7 +303,9 @@ class Generator:
                 break
         text = f'{self._det() if role == "object" else "the"} {words}' if det else words
         desc = name
-        if self._relatable and not plain and rng.random() < self.rel_rate:
+        if role == 'object' and self._relatable and not plain and rng.random() < _SOURCE_RATE:
+            text, desc = self._source(text, name)
+        elif self._relatable and not plain and rng.random() < self.rel_rate:
             rel_text, rel_desc = self._relation(name)
             desc = name + rel_desc
             if role != 'object' and rng.random() < 0.12:   # not in "throw X out", "bring X to Y"

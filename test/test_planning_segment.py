@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -86,6 +87,26 @@ def test_a_thin_avoid_band_cannot_be_jumped():
     crossing = resample(result.waypoints, 0.01)
     y_at_band = crossing[np.argmin(np.abs(crossing[:, 0] - 5.0)), 1]
     assert 3.0 < y_at_band < 5.0
+
+
+def test_a_narrow_passage_the_samples_miss_is_found_on_the_grid():
+    # a wall across the map with a 0.5 m gap near the straight way (0.1 m of free space for a 0.2 m
+    # robot) and a wide one far above: 200 samples miss the gap and go round; the grid finds it
+    world = PlanningWorld(2, (0.0, 0.0), (10.0, 12.0), 0.2, (
+        Box((5.0, 1.375, 0.0), (0.2, 2.75, 1.0)), Box((5.0, 6.625, 0.0), (0.2, 6.75, 1.0))))
+    sparse = FmtSettings(num_samples=200, time_limit=5.0, seed=3, grid_cell=0.0)
+    way = dict(start=(1.0, 1.5), a=(9.0, 1.5))
+    round_about = solve_segment(_request(settings=sparse, **way), world)
+    assert round_about.ok and round_about.length > 12.0
+    req = _request(settings=replace(sparse, grid_cell=0.05), **way)
+    through = solve_segment(req, world)
+    _check_path(req, world, through)
+    assert through.length < 8.0
+    dense = resample(through.waypoints, 0.01)
+    assert 2.75 < dense[np.argmin(np.abs(dense[:, 0] - 5.0)), 1] < 3.25
+    assert FmtSettings().grid_cell == 0.05
+    with pytest.raises(InvalidInputError):
+        FmtSettings(grid_cell=-1.0)
 
 
 def test_typed_failures_say_which_transition():

@@ -7,41 +7,55 @@ valid, with Euclidean step costs, and Dijkstra finds the cheapest way from the s
 into any goal cell. An 8-connected grid path is itself up to about 8 % longer than the
 true shortest path, so a ratio of planner length to grid length near or below 1 means
 the planner is close to optimal.
+
+The same grid gives the planner a second candidate path in 2D (``grid_path``): FMT*'s
+samples can miss a passage a few cells wide that the grid finds.
 """
 from __future__ import annotations
 
 import itertools
 import math
-from typing import Optional
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Optional
 
 import numpy as np
-from scipy.sparse import coo_matrix
+from scipy.sparse import coo_matrix, csr_matrix
 from scipy.sparse.csgraph import dijkstra
 
 from ltl_instruct.core.errors import InvalidInputError
-from ltl_instruct.core.planning.occupancy import PlanningWorld
-from ltl_instruct.core.planning.segment import SegmentProblem, SegmentRequest
+
+if TYPE_CHECKING:
+    from ltl_instruct.core.planning.occupancy import PlanningWorld
+    from ltl_instruct.core.planning.segment import SegmentProblem, SegmentRequest
 
 MAX_GRID_CELLS = 3_000_000
 
 
-def grid_optimum(request: SegmentRequest, world: PlanningWorld, cell: float = 0.05) -> Optional[float]:
-    """Length [m] of the shortest grid path of the segment, or None when the grid finds none.
+@dataclass
+class _Grid:
+    """The grid of one segment: cell centres, goal cells and its moves, the start's last (node n)."""
+
+    centres: np.ndarray
+    goal: np.ndarray
+    graph: csr_matrix
+
+
+def _build(problem: SegmentProblem, start: np.ndarray, cell: float, max_cells: int) -> Optional[_Grid]:
+    """Return the grid of ``problem`` from ``start``, or None when it has no cell or no move from the start.
 
     Raises
     ------
     InvalidInputError
-        If the grid would exceed ``MAX_GRID_CELLS`` cells (use a coarser ``cell``).
+        If the grid would exceed ``max_cells`` cells.
     """
-    problem = SegmentProblem(request, world)
-    dims = world.dims
+    dims = len(problem.lo)
     lo, hi = problem.lo, problem.hi
     axes = [np.arange(lo[k] + cell / 2, hi[k], cell) for k in range(dims)]
     shape = tuple(len(a) for a in axes)
     n = int(np.prod(shape))
     if n == 0:
         return None
-    if n > MAX_GRID_CELLS:
+    if n > max_cells:
         raise InvalidInputError(f'grid of {n} cells is too large; use cells coarser than {cell} m')
     centres = np.stack(np.meshgrid(*axes, indexing='ij'), axis=-1).reshape(-1, dims)
     valid_flat, goal_flat = problem.classify(centres)
@@ -60,13 +74,6 @@ def grid_optimum(request: SegmentRequest, world: PlanningWorld, cell: float = 0.
         rows.append(index[src][ok])
         cols.append(index[dst][ok])
         costs.append(np.full(int(ok.sum()), cell * math.sqrt(sum(d * d for d in o))))
-    r = np.concatenate(rows)
-    c = np.concatenate(cols)
-    w = np.concatenate(costs)
-    graph = coo_matrix((w, (r, c)), shape=(n, n)).tocsr()
-    start = np.asarray(request.start[:dims], dtype=float)
-    if problem.in_goal(tuple(start)):
-        return 0.0
     # join the start to the valid cells around it with straight, checked moves
     reach = 1.5 * cell * math.sqrt(dims)
     near = np.flatnonzero(valid_flat & (np.linalg.norm(centres - start, axis=1) <= reach))
@@ -74,9 +81,62 @@ def grid_optimum(request: SegmentRequest, world: PlanningWorld, cell: float = 0.
                if problem.motion_valid(tuple(start), tuple(centres[i]))]
     if not entries:
         return None
-    dist = dijkstra(graph, directed=False, indices=[i for i, _ in entries])
-    total = dist + np.asarray([d for _, d in entries])[:, None]
-    best = total.min(axis=0)[goal_flat]
-    if len(best) == 0 or not np.isfinite(best.min()):
+    rows.append(np.full(len(entries), n))
+    cols.append(np.asarray([i for i, _ in entries]))
+    costs.append(np.asarray([d for _, d in entries]))
+    graph = coo_matrix((np.concatenate(costs), (np.concatenate(rows), np.concatenate(cols))),
+                       shape=(n + 1, n + 1)).tocsr()
+    return _Grid(centres, goal_flat, graph)
+
+
+def _shortest(grid: _Grid) -> tuple[float, list[int]]:
+    """Dijkstra from the start (a node joined to its moves): the cost to the nearest goal cell
+    and the cells of the way there, or (inf, [])."""
+    n = len(grid.centres)
+    dist, preds = dijkstra(grid.graph, directed=False, indices=n, return_predecessors=True)
+    goal_cells = np.flatnonzero(grid.goal)
+    if len(goal_cells) == 0 or not np.isfinite(dist[goal_cells].min()):
+        return math.inf, []
+    best = int(goal_cells[int(np.argmin(dist[goal_cells]))])
+    chain = [best]
+    while preds[chain[-1]] >= 0 and preds[chain[-1]] != n:
+        chain.append(int(preds[chain[-1]]))
+    return float(dist[best]), chain[::-1]
+
+
+def grid_optimum(request: SegmentRequest, world: PlanningWorld, cell: float = 0.05) -> Optional[float]:
+    """Length [m] of the shortest grid path of the segment, or None when the grid finds none.
+
+    Raises
+    ------
+    InvalidInputError
+        If the grid would exceed ``MAX_GRID_CELLS`` cells (use a coarser ``cell``).
+    """
+    from ltl_instruct.core.planning.segment import SegmentProblem
+    problem = SegmentProblem(request, world)
+    start = np.asarray(request.start[:world.dims], dtype=float)
+    if problem.in_goal(tuple(start)):
+        return 0.0
+    grid = _build(problem, start, cell, MAX_GRID_CELLS)
+    if grid is None:
         return None
-    return float(best.min())
+    cost = _shortest(grid)[0]
+    return cost if math.isfinite(cost) else None
+
+
+def grid_path(problem: SegmentProblem, start: np.ndarray, cell: float,
+              max_cells: int) -> Optional[np.ndarray]:
+    """Waypoints of the shortest grid path from ``start`` into the goal (start, cell centres), or None.
+
+    None also when the grid would exceed ``max_cells`` cells: the caller plans without it.
+    """
+    try:
+        grid = _build(problem, np.asarray(start, dtype=float), cell, max_cells)
+    except InvalidInputError:
+        return None
+    if grid is None:
+        return None
+    cost, chain = _shortest(grid)
+    if not math.isfinite(cost):
+        return None
+    return np.vstack([np.asarray(start, dtype=float)[None], grid.centres[chain]])

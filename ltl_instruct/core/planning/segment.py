@@ -658,6 +658,39 @@ class SegmentProblem:
         return best
 
 
+GRID_MAX_CELLS = 250_000   # a larger 2D map is planned by FMT* alone
+GRID_DETOUR = 1.3          # the grid is tried when FMT*'s path is this many times the straight way
+
+
+def _shorter_on_grid(problem: SegmentProblem, path: np.ndarray, pool: np.ndarray) -> np.ndarray:
+    """Return the grid's path where it is shorter than ``path`` and checked valid (2D), else ``path``.
+
+    Tried only where FMT*'s path is ``GRID_DETOUR`` times the straight way to the nearest
+    goal sample or longer: a detour, perhaps round a passage its samples missed. The grid
+    path (``FmtSettings.grid_cell``) is shortcut as FMT*'s was, then checked as every path
+    is: each straight move valid and the goal entered where the segment may end.
+    """
+    s = problem.request.settings
+    if s.grid_cell <= 0 or len(problem.lo) != 2 or len(pool) == 0:
+        return path
+    straight = float(np.linalg.norm(pool - path[0], axis=1).min())
+    if path_length(path) < GRID_DETOUR * straight:
+        return path
+    from ltl_instruct.core.planning.grid import grid_path
+    raw = grid_path(problem, path[0], s.grid_cell, GRID_MAX_CELLS)
+    if raw is None:
+        return path
+    cand = _drop_collinear(raw)
+    if s.simplify:
+        cand = problem.shortcut(cand, pool=pool)
+    if path_length(cand) >= path_length(path) - 1e-6:
+        return path
+    if not all(problem.motion_valid(a, b) for a, b in zip(cand[:-1], cand[1:])):
+        return path
+    cut = problem.first_goal_prefix(cand)
+    return path if cut is None else _drop_collinear(cut)
+
+
 def _clip_to_region(lo: np.ndarray, hi: np.ndarray, region: AtomRegion,
                     dims: int) -> tuple[np.ndarray, np.ndarray]:
     """Cut the box lo..hi to the bounding box of the parts of ``region`` that meet it (empty: lo > hi)."""
@@ -813,6 +846,7 @@ def _solve_once(request: SegmentRequest, world: PlanningWorld) -> tuple[SegmentR
     path = _drop_collinear(cut)
     if s.simplify:
         path = problem.shortcut(path, pool=samples)
+    path = _shorter_on_grid(problem, path, samples)
     dense = resample(path, s.path_spacing) if s.path_spacing > 0 else path
     return SegmentResult(request.id, path, as_xyz(dense), path_length(path), None, time.monotonic() - t0,
                          outcome.seconds, request.goal_margin, request.avoid_margin), False

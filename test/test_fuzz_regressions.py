@@ -8,13 +8,12 @@ typed error, and a task spec must still end with one terminal status.
 from __future__ import annotations
 
 import json
-import os
-import random
 from pathlib import Path
 
 import pytest
 
 from ltl_instruct.core.errors import LtlInstructError
+from ros_env import fresh_domain_id, private_domain
 
 FOUND = Path(__file__).parent / 'regressions' / 'fuzz_found.jsonl'
 CASES = [json.loads(line) for line in FOUND.read_text().splitlines() if line.strip()]
@@ -22,14 +21,13 @@ CASES = [json.loads(line) for line in FOUND.read_text().splitlines() if line.str
 
 @pytest.fixture(scope='module')
 def nodes():
-    os.environ['ROS_DOMAIN_ID'] = str(random.randint(120, 229))
-    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
-    from bench.fuzz import Nodes
-    built = Nodes(backend='offline')
-    try:
-        yield built
-    finally:
-        built.close()
+    with private_domain(fresh_domain_id(13)):
+        from bench.fuzz import Nodes
+        built = Nodes(backend='offline')
+        try:
+            yield built
+        finally:
+            built.close()
 
 
 @pytest.mark.parametrize('case', CASES, ids=[f'{k}-{c["target"]}' for k, c in enumerate(CASES)])

@@ -5,36 +5,33 @@ ground comes from the synthetic camera of ``sim_world`` integrated into its sema
 """
 from __future__ import annotations
 
-import os
-import random
 import time
 
 import pytest
 
 from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file
 from ltl_instruct.core.world.builtin import resolve_scene
+from ros_env import fresh_domain_id, private_domain
 
 
 @pytest.fixture(scope='module')
 def camera_graph(tmp_path_factory):
-    os.environ['ROS_DOMAIN_ID'] = str(random.Random(os.getpid() + 7).randint(120, 229))
-    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
-    os.environ.pop('ROS_LOCALHOST_ONLY', None)
-    from ltl_instruct.nodes.client import GraphClient
-    logs = tmp_path_factory.mktemp('camera_logs')
-    # depth in millimetres (16UC1), as most depth cameras send it: read as metres by the grounder
-    overrides = {'sim_world': {'camera_rate_hz': 4.0, 'time_scale': 4.0, 'depth_encoding': '16UC1'},
-                 'referent_grounder': {'scene': '', 'use_camera': True, 'camera_min_interval': 0.1},
-                 'task_progression': {'search': False},   # the search has its own test
-                 'ltl_translator': {'backend': 'offline'}}   # formulas are sent: no model to wait for
-    g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
-    client = GraphClient('camera_test')
-    try:
-        assert client.wait_for_graph(timeout=60.0, need_sim=True)
-        yield g, client
-    finally:
-        client.close()
-        g.stop()
+    with private_domain(fresh_domain_id(7)):
+        from ltl_instruct.nodes.client import GraphClient
+        logs = tmp_path_factory.mktemp('camera_logs')
+        # depth in millimetres (16UC1), as most depth cameras send it: read as metres by the grounder
+        overrides = {'sim_world': {'camera_rate_hz': 4.0, 'time_scale': 4.0, 'depth_encoding': '16UC1'},
+                     'referent_grounder': {'scene': '', 'use_camera': True, 'camera_min_interval': 0.1},
+                     'task_progression': {'search': False},   # the search has its own test
+                     'ltl_translator': {'backend': 'offline'}}   # formulas are sent: no model to wait for
+        g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
+        client = GraphClient('camera_test')
+        try:
+            assert client.wait_for_graph(timeout=60.0, need_sim=True)
+            yield g, client
+        finally:
+            client.close()
+            g.stop()
 
 
 def test_an_object_seen_by_the_camera_is_grounded_and_planned_to(camera_graph):

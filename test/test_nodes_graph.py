@@ -8,8 +8,6 @@ from __future__ import annotations
 
 import copy
 import json
-import os
-import random
 import time
 
 import numpy as np
@@ -24,8 +22,9 @@ from ltl_instruct.core.grounding.rsm import ReferentMap
 from ltl_instruct.core.spec import parse_formula
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.core.world.robot import Pose
+from ros_env import fresh_domain_id, private_domain
 
-DOMAIN_ID = str(random.Random(os.getpid() ^ int(time.time())).randint(120, 229))
+DOMAIN_ID = fresh_domain_id()
 NEAR = 1.0
 TIMEOUT = 5.0   # every bad input gets its typed error within this many seconds
 STALL = 60.0    # a burst fails when no instruction of it ends for this long
@@ -33,31 +32,30 @@ STALL = 60.0    # a burst fails when no instruction of it ends for this long
 
 @pytest.fixture(scope='module')
 def graph(tmp_path_factory):
-    os.environ['ROS_DOMAIN_ID'] = DOMAIN_ID
-    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
-    os.environ.pop('ROS_LOCALHOST_ONLY', None)
-    from ltl_instruct.nodes.client import GraphClient
-    logs = tmp_path_factory.mktemp('node_logs')
-    overrides = {'sim_world': {'time_scale': 8.0, 'max_speed': 1.5, 'camera_rate_hz': 0.0},
-                 'referent_grounder': {'use_camera': False},
-                 # under a load of 40-80 from other jobs, at nice 10, FMT* drew too few samples in its 2 s and
-                 # answers took over 10 s: valid instructions failed with TIMEOUT (a lost request still shows)
-                 'task_progression': {'near_threshold': NEAR, 'segment_timeout': 30.0},
-                 'fmt_planner': {'time_limit': 10.0}}
-    g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
-    client = GraphClient('test_client', record_odom=True)
-    try:
-        assert client.wait_for_graph(timeout=60.0, need_sim=True), _logs(logs, g)
-        # connected is not ready: the translator serves nothing before its backend (torch, the model) has
-        # loaded, which took over 60 s under that load and was charged to the first tests' budgets
-        warm = client.wait_terminal(client.send(formula='F near[unicorn]'), timeout=240.0)
-        assert warm['status'] == 'failed', warm
-        yield g, client, logs
-    finally:
-        client.close()
-        codes = g.stop()
-        # every node was alive to the end and stopped cleanly on SIGINT
-        assert all(c == 0 for c in codes.values()), (codes, _logs(logs, g))
+    with private_domain(DOMAIN_ID):
+        from ltl_instruct.nodes.client import GraphClient
+        logs = tmp_path_factory.mktemp('node_logs')
+        overrides = {'sim_world': {'time_scale': 8.0, 'max_speed': 1.5, 'camera_rate_hz': 0.0},
+                     'referent_grounder': {'use_camera': False},
+                     # under a load of 40-80 from other jobs, at nice 10, FMT* drew too few samples in its
+                     # 2 s and answers took over 10 s: valid instructions failed with TIMEOUT (a lost request
+                     # still shows)
+                     'task_progression': {'near_threshold': NEAR, 'segment_timeout': 30.0},
+                     'fmt_planner': {'time_limit': 10.0}}
+        g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
+        client = GraphClient('test_client', record_odom=True)
+        try:
+            assert client.wait_for_graph(timeout=60.0, need_sim=True), _logs(logs, g)
+            # connected is not ready: the translator serves nothing before its backend (torch, the model) has
+            # loaded, which took over 60 s under that load and was charged to the first tests' budgets
+            warm = client.wait_terminal(client.send(formula='F near[unicorn]'), timeout=240.0)
+            assert warm['status'] == 'failed', warm
+            yield g, client, logs
+        finally:
+            client.close()
+            codes = g.stop()
+            # every node was alive to the end and stopped cleanly on SIGINT
+            assert all(c == 0 for c in codes.values()), (codes, _logs(logs, g))
 
 
 def _logs(logs, g) -> str:

@@ -23,18 +23,15 @@ from std_msgs.msg import String
 from ltl_instruct.commands.bringup import (
     ALL_NODES, PIPELINE_NODES, NodeGraph, RestartPolicy, default_params_file,
 )
+from ros_env import fresh_domain_id, private_domain
 
-DOMAIN_ID = str(random.Random(os.getpid() ^ int(time.time()) ^ 0x5EED).randint(120, 229))
+DOMAIN_ID = fresh_domain_id(0x5EED)
 TIMEOUT = 5.0
 
 
 @pytest.fixture(scope='module')
 def graph(tmp_path_factory):
-    with pytest.MonkeyPatch.context() as env:   # restored after the module
-        env.setenv('ROS_DOMAIN_ID', DOMAIN_ID)
-        env.setenv('ROS_AUTOMATIC_DISCOVERY_RANGE', 'LOCALHOST')
-        env.delenv('ROS_LOCALHOST_ONLY', raising=False)
-        env.setenv('FASTDDS_BUILTIN_TRANSPORTS', 'UDPv4')
+    with private_domain(DOMAIN_ID, transports='UDPv4'):
         yield from _graph(tmp_path_factory.mktemp('lifecycle_logs'))
 
 

@@ -8,8 +8,6 @@ Parameters are set through each node's parameter service from this (another) pro
 """
 from __future__ import annotations
 
-import os
-import random
 import time
 
 import numpy as np
@@ -26,8 +24,9 @@ from ltl_instruct.commands.bringup import (
 from ltl_instruct.core.world.builtin import resolve_scene
 from ltl_instruct.core.world.robot import Pose
 from ltl_instruct.nodes.common import latched_qos, reliable_qos
+from ros_env import fresh_domain_id, private_domain
 
-DOMAIN_ID = str(random.Random(os.getpid() ^ int(time.time()) ^ 0x5eed).randint(120, 229))
+DOMAIN_ID = fresh_domain_id(0x5EEE)
 NEAR = 1.0
 ROOM = """name: small_room
 bounds: {min: [0.0, 0.0, 0.0], max: [8.0, 6.0, 3.0]}
@@ -46,33 +45,31 @@ SHARED = ('/clock', '/rosout', '/parameter_events')
 
 @pytest.fixture(scope='module')
 def robots(tmp_path_factory):
-    os.environ['ROS_DOMAIN_ID'] = DOMAIN_ID
-    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
-    os.environ.pop('ROS_LOCALHOST_ONLY', None)
-    from ltl_instruct.nodes.client import GraphClient
-    logs = tmp_path_factory.mktemp('node_logs')
-    room = tmp_path_factory.mktemp('scene') / 'small_room.yaml'
-    room.write_text(ROOM)
-    quiet = {'sim_world': {'camera_rate_hz': 0.0, 'time_scale': 4.0, 'max_speed': 1.5},
-             'referent_grounder': {'use_camera': False}, 'ltl_translator': {'backend': 'offline'},
-             'task_progression': {'near_threshold': NEAR}}
-    setups = {'/r1': ('apartment', 'r1/', True), '/r2': (str(room), 'r2/', False)}
-    graphs, clients = {}, {}
-    try:
-        for ns, (scene, prefix, sim_time) in setups.items():
-            overrides = merge_overrides(scene_overrides(scene), quiet, robot_overrides(prefix, sim_time))
-            graphs[ns] = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs,
-                                   namespace=ns).start()
-        for ns in setups:
-            clients[ns] = GraphClient('ns_client', namespace=ns)
-        for ns, client in clients.items():
-            assert client.wait_for_graph(timeout=90.0, need_sim=True), (ns, _logs(logs))
-        yield graphs, clients, room
-    finally:
-        for client in clients.values():
-            client.close()
-        codes = {ns: g.stop() for ns, g in graphs.items()}
-        assert all(c == 0 for by_node in codes.values() for c in by_node.values()), (codes, _logs(logs))
+    with private_domain(DOMAIN_ID):
+        from ltl_instruct.nodes.client import GraphClient
+        logs = tmp_path_factory.mktemp('node_logs')
+        room = tmp_path_factory.mktemp('scene') / 'small_room.yaml'
+        room.write_text(ROOM)
+        quiet = {'sim_world': {'camera_rate_hz': 0.0, 'time_scale': 4.0, 'max_speed': 1.5},
+                 'referent_grounder': {'use_camera': False}, 'ltl_translator': {'backend': 'offline'},
+                 'task_progression': {'near_threshold': NEAR}}
+        setups = {'/r1': ('apartment', 'r1/', True), '/r2': (str(room), 'r2/', False)}
+        graphs, clients = {}, {}
+        try:
+            for ns, (scene, prefix, sim_time) in setups.items():
+                overrides = merge_overrides(scene_overrides(scene), quiet, robot_overrides(prefix, sim_time))
+                graphs[ns] = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs,
+                                       namespace=ns).start()
+            for ns in setups:
+                clients[ns] = GraphClient('ns_client', namespace=ns)
+            for ns, client in clients.items():
+                assert client.wait_for_graph(timeout=90.0, need_sim=True), (ns, _logs(logs))
+            yield graphs, clients, room
+        finally:
+            for client in clients.values():
+                client.close()
+            codes = {ns: g.stop() for ns, g in graphs.items()}
+            assert all(c == 0 for by_node in codes.values() for c in by_node.values()), (codes, _logs(logs))
 
 
 def _logs(logs) -> str:

@@ -11,8 +11,6 @@ label images matches (``unicorn``) fails at once, without a search.
 from __future__ import annotations
 
 import json
-import os
-import random
 import time
 
 import numpy as np
@@ -21,6 +19,7 @@ import pytest
 from ltl_instruct.commands.bringup import ALL_NODES, NodeGraph, default_params_file
 from ltl_instruct.core.world.near import box_distance
 from search_scenes import SEARCH_ROOMS as ROOMS
+from ros_env import fresh_domain_id, private_domain
 
 
 TIMEOUT = 120.0
@@ -28,26 +27,24 @@ TIMEOUT = 120.0
 
 @pytest.fixture(scope='module')
 def search_graph(tmp_path_factory):
-    os.environ['ROS_DOMAIN_ID'] = str(random.Random(os.getpid() + 11).randint(120, 229))
-    os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
-    os.environ.pop('ROS_LOCALHOST_ONLY', None)
-    from ltl_instruct.nodes.client import GraphClient
-    folder = tmp_path_factory.mktemp('search')
-    scene = folder / 'rooms.json'
-    scene.write_text(json.dumps(ROOMS))
-    overrides = {'sim_world': {'scene': str(scene), 'camera_rate_hz': 4.0, 'time_scale': 3.0},
-                 'referent_grounder': {'scene': '', 'use_camera': True, 'camera_min_interval': 0.1},
-                 'task_progression': {'grounding_timeout': 30.0},
-                 'ltl_translator': {'backend': 'offline'}}   # formulas are sent: no model to wait for
-    g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=folder / 'logs').start()
-    client = GraphClient('search_test', record_odom=True)
-    try:
-        assert client.wait_for_graph(timeout=60.0, need_sim=True)
-        _wait_for_the_camera(client)
-        yield g, client
-    finally:
-        client.close()
-        g.stop()
+    with private_domain(fresh_domain_id(11)):
+        from ltl_instruct.nodes.client import GraphClient
+        folder = tmp_path_factory.mktemp('search')
+        scene = folder / 'rooms.json'
+        scene.write_text(json.dumps(ROOMS))
+        overrides = {'sim_world': {'scene': str(scene), 'camera_rate_hz': 4.0, 'time_scale': 3.0},
+                     'referent_grounder': {'scene': '', 'use_camera': True, 'camera_min_interval': 0.1},
+                     'task_progression': {'grounding_timeout': 30.0},
+                     'ltl_translator': {'backend': 'offline'}}   # formulas are sent: no model to wait for
+        g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=folder / 'logs').start()
+        client = GraphClient('search_test', record_odom=True)
+        try:
+            assert client.wait_for_graph(timeout=60.0, need_sim=True)
+            _wait_for_the_camera(client)
+            yield g, client
+        finally:
+            client.close()
+            g.stop()
 
 
 def _wait_for_the_camera(client):

@@ -148,35 +148,16 @@ def plan_motion(dims: int, bounds_min: Sequence[float], bounds_max: Sequence[flo
         bounds.setHigh(k, float(bounds_max[k]))
     space.setBounds(bounds)
     si = ob.SpaceInformation(space)
-    si.setStateValidityChecker(lambda s: bool(state_valid(tuple(s[k] for k in range(dims)))))
+    if dims == 2:   # the callback runs for every sample: no generator
+        si.setStateValidityChecker(lambda s: bool(state_valid((s[0], s[1]))))
+    else:
+        si.setStateValidityChecker(lambda s: bool(state_valid((s[0], s[1], s[2]))))
 
-    class _Motion(ob.MotionValidator):
-        def checkMotion(self, s1: Any, s2: Any, *rest: Any) -> bool:  # noqa: N802 - OMPL's name
-            return bool(motion_valid(tuple(s1[k] for k in range(dims)), tuple(s2[k] for k in range(dims))))
-
-    motion = _Motion(si)
+    motion_cls, goal_cls = _ompl_classes()
+    motion = motion_cls(si, motion_valid, dims)
     si.setMotionValidator(motion)
     si.setup()
-    samples = np.asarray(goal.samples, dtype=float)
-    counter = [0]
-
-    class _Goal(ob.GoalSampleableRegion):
-        def distanceGoal(self, s: Any) -> float:  # noqa: N802
-            p = tuple(s[k] for k in range(dims))
-            if goal.contains(p):
-                return 0.0
-            return max(float(goal.lower_bound(p)), 1e-6)
-
-        def sampleGoal(self, s: Any) -> None:  # noqa: N802
-            row = samples[counter[0] % len(samples)]
-            counter[0] += 1
-            for k in range(dims):
-                s[k] = float(row[k])
-
-        def maxSampleCount(self) -> int:  # noqa: N802
-            return int(len(samples))
-
-    goal_region = _Goal(si)
+    goal_region = goal_cls(si, goal, np.asarray(goal.samples, dtype=float), dims)
     goal_region.setThreshold(1e-9)  # OMPL needs a positive threshold: distance 0 is "in"
     pdef = ob.ProblemDefinition(si)
     s0 = space.allocState()
@@ -213,8 +194,55 @@ def plan_motion(dims: int, bounds_min: Sequence[float], bounds_max: Sequence[flo
     planner.clear()
     pdef.clearGoal()
     del planner, pdef, goal_region, motion, si, space, s0
-    gc.collect()
+    gc.collect(1)   # the young generations only: a full pass cost 30 ms with a large automaton alive
     return MotionOutcome(points, status_text, seconds, timed_out)
+
+
+_CLASSES: list[type] = []
+
+
+def _ompl_classes() -> tuple[type, type]:
+    """OMPL's motion validator and sampleable goal region, subclassed once per process.
+
+    Classes made inside ``plan_motion`` were garbage in reference cycles after every segment,
+    which only a full collection frees (30 ms a segment in a process holding a large automaton).
+    """
+    if _CLASSES:
+        return _CLASSES[0], _CLASSES[1]
+    import ompl.base as ob
+
+    class _Motion(ob.MotionValidator):
+        def __init__(self, si: Any, motion_valid: Callable[[Sequence[float], Sequence[float]], bool],
+                     dims: int) -> None:
+            super().__init__(si)
+            self._valid, self._dims = motion_valid, dims
+
+        def checkMotion(self, s1: Any, s2: Any, *rest: Any) -> bool:  # noqa: N802 - OMPL's name
+            d = self._dims
+            return bool(self._valid(tuple(s1[k] for k in range(d)), tuple(s2[k] for k in range(d))))
+
+    class _Goal(ob.GoalSampleableRegion):
+        def __init__(self, si: Any, goal: GoalSpec, samples: np.ndarray, dims: int) -> None:
+            super().__init__(si)
+            self._goal, self._samples, self._dims, self._next = goal, samples, dims, 0
+
+        def distanceGoal(self, s: Any) -> float:  # noqa: N802
+            p = tuple(s[k] for k in range(self._dims))
+            if self._goal.contains(p):
+                return 0.0
+            return max(float(self._goal.lower_bound(p)), 1e-6)
+
+        def sampleGoal(self, s: Any) -> None:  # noqa: N802
+            row = self._samples[self._next % len(self._samples)]
+            self._next += 1
+            for k in range(self._dims):
+                s[k] = float(row[k])
+
+        def maxSampleCount(self) -> int:  # noqa: N802
+            return int(len(self._samples))
+
+    _CLASSES.extend((_Motion, _Goal))
+    return _Motion, _Goal
 
 
 def _plan_default(si: Any, s0: Any, goal_region: Any, settings: FmtSettings) -> MotionOutcome:
@@ -236,5 +264,5 @@ def _plan_default(si: Any, s0: Any, goal_region: Any, settings: FmtSettings) -> 
     ss.clear()
     ss.getProblemDefinition().clearGoal()
     del ss
-    gc.collect()
+    gc.collect(1)
     return MotionOutcome(points, status_text, seconds, timed_out)

@@ -369,6 +369,7 @@ class SegmentProblem:
             lo = np.maximum(lo, request.bounds_min)
             hi = np.minimum(hi, request.bounds_max)
         self.lo, self.hi = lo, hi
+        self._bounds = tuple(zip(lo.tolist(), hi.tolist()))   # Python floats: the callbacks compare often
         self.resolution = request.settings.check_resolution
         self._radius_of = {r.key: r.radius for r in self.regions.regions}
 
@@ -406,7 +407,10 @@ class SegmentProblem:
 
     def in_bounds(self, p: Sequence[float]) -> bool:
         """Inside the request's bounds."""
-        return all(self.lo[k] <= p[k] <= self.hi[k] for k in range(self.world.dims))
+        for (lo, hi), x in zip(self._bounds, p):
+            if not lo <= x <= hi:
+                return False
+        return True
 
     def state_valid(self, p: Sequence[float]) -> bool:
         """Free, in bounds, and the letter is allowed or in the goal."""

@@ -127,6 +127,8 @@ K80 = (80, 60, 40.0, 40.0, 40.0, 30.0)
     (np.zeros((60, 80), np.float32), np.zeros((60, 80), np.float32), K80, np.eye(4)),
     (np.zeros((60, 80), np.float32), np.zeros((60, 80), np.int32), K80, Pose((np.nan, 0.0, 0.0), 0.0)),
     (np.zeros((60, 80), np.float32), np.zeros((60, 80), np.int32), 'garbage', np.eye(4)),
+    # a camera a million kilometres away (odometry gone wild): refused, not a grid of negative size
+    (np.full((60, 80), 2.0, np.float32), np.zeros((60, 80), np.int32), K80, Pose((1.0, 1e9, 1e9), 0.0)),
 ])
 def test_bad_frames_are_typed_errors(depth, labels, intrinsics, pose):
     with pytest.raises(InvalidInputError):

@@ -44,7 +44,7 @@ from ltl_instruct.core.grounding.rsm import Instance
 from ltl_instruct.core.world.camera import (
     CameraIntrinsics, CameraMount, camera_body_pose, optical_pose, rotate,
 )
-from ltl_instruct.core.world.scene import slug
+from ltl_instruct.core.world.scene import MAX_SCENE_EXTENT_M, slug
 
 MAX_VOXELS = 60_000_000
 _CHUNK = 32   # the grid grows in chunks of this many voxels per axis
@@ -241,6 +241,9 @@ class SemanticMap:
         if not np.issubdtype(labels.dtype, np.integer) or not np.issubdtype(depth.dtype, np.number):
             raise InvalidInputError('depth must be numeric and labels integer')
         t_opt = optical_pose(camera_body_pose(pose, self.mount))
+        if not np.all(np.isfinite(t_opt)) or np.abs(t_opt[:3, 3]).max() > MAX_SCENE_EXTENT_M:
+            raise InvalidInputError(f'camera pose at {np.round(t_opt[:3, 3], 3).tolist()} is not finite or '
+                                    f'beyond the largest scene ({MAX_SCENE_EXTENT_M:g} m)')
         s = self.params.pixel_stride
         d = depth[::s, ::s].astype(np.float32)
         valid = np.isfinite(d) & (d > 0) & (d <= self.params.max_range)

@@ -359,7 +359,7 @@ def _pct(xs: list[float], q: float) -> float:
 
 def compare_rrtstar(req: SegmentRequest, world: PlanningWorld, settings: FmtSettings) -> dict[str, Any]:
     """Run FMT* and RRT* on one segment, RRT* given FMT*'s time: raw paths, then both shortcut."""
-    raw = replace(settings, simplify=False)
+    raw = replace(settings, simplify=False, direct=False)   # the planners' own paths and times
     fmt = solve_segment(req, world, raw)
     budget = max(fmt.planner_seconds, 0.05)
     rrt = solve_segment(req, world, replace(raw, planner='rrtstar', time_limit=budget))

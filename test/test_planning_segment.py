@@ -89,6 +89,22 @@ def test_a_thin_avoid_band_cannot_be_jumped():
     assert 3.0 < y_at_band < 5.0
 
 
+def test_a_straight_way_into_the_goal_is_taken_without_fmt():
+    world = _world()
+    req = _request()
+    direct = solve_segment(req, world)
+    _check_path(req, world, direct)
+    assert direct.planner_seconds == 0.0   # FMT* never ran
+    sampled = solve_segment(req, world, replace(FAST, direct=False))
+    assert sampled.planner_seconds > 0.0
+    assert direct.length <= sampled.length + 1e-6
+    # a wall in the way: no straight way, FMT* plans round it
+    walled = _world([Box((5.0, 3.0, 0.0), (0.2, 2.0, 1.0))])
+    round_it = solve_segment(req, walled)
+    _check_path(req, walled, round_it)
+    assert round_it.planner_seconds > 0.0 and round_it.length > 7.2
+
+
 def test_a_narrow_passage_the_samples_miss_is_found_on_the_grid():
     # a wall across the map with a 0.5 m gap near the straight way (0.1 m of free space for a 0.2 m
     # robot) and a wide one far above: 200 samples miss the gap and go round; the grid finds it

@@ -44,6 +44,9 @@ class FmtSettings:
     planner: ``fmt``, ``rrtstar`` (RRT* runs for the whole time limit) or ``default``
         (what OMPL's ``SimpleSetup`` chooses: RRTConnect, the benchmarks' peer).
     goal_samples: goal states drawn for the sampleable goal region.
+    direct: first try the straight way from the start to each of the nearest goal samples
+        (``segment.DIRECT_TRIES``); FMT* runs only when none is valid. FMT* only (the other
+        planners are the benchmarks' peers, timed as OMPL runs them).
     grid_cell: cell [m] of a grid path that a 2D segment whose FMT* path makes a detour is also
         given (Dijkstra over the cells whose centres are valid, then the same shortcutting); the
         shorter path wins. It finds a passage a few cells wide that the samples miss. 0: FMT*
@@ -63,6 +66,7 @@ class FmtSettings:
     simplify: bool = True
     planner: str = 'fmt'
     goal_samples: int = 64
+    direct: bool = True
     grid_cell: float = 0.05
 
     def __post_init__(self) -> None:

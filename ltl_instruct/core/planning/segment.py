@@ -662,6 +662,22 @@ class SegmentProblem:
         return best
 
 
+DIRECT_TRIES = 8   # goal samples, nearest first, tried as straight ways before FMT* runs
+
+
+def _direct_path(problem: SegmentProblem, start: tuple[float, ...],
+                 samples: np.ndarray) -> Optional[np.ndarray]:
+    """The straight way from ``start`` to one of its nearest goal samples, where it is valid, else None."""
+    a = np.asarray(start, dtype=float)
+    for i in np.argsort(np.linalg.norm(samples - a, axis=1))[:DIRECT_TRIES]:
+        q = tuple(float(x) for x in samples[i])
+        if problem.motion_valid(start, q):
+            cut = problem.first_goal_prefix(np.vstack([a, samples[i]]))
+            if cut is not None:
+                return _drop_collinear(cut)
+    return None
+
+
 GRID_MAX_CELLS = 250_000   # a larger 2D map is planned by FMT* alone
 GRID_DETOUR = 1.3          # the grid is tried when FMT*'s path is this many times the straight way
 
@@ -833,6 +849,12 @@ def _solve_once(request: SegmentRequest, world: PlanningWorld) -> tuple[SegmentR
     if len(samples) == 0:
         return fail(ErrorCode.GOAL_OCCUPIED, 'every goal region is blocked: no free point satisfies the goal',
                     not plain_seen)
+    direct = _direct_path(problem, start, samples) if s.direct and s.planner == 'fmt' else None
+    if direct is not None:   # a straight way into the goal: nothing for FMT* to find
+        path = problem.shortcut(direct, pool=samples) if s.simplify else direct
+        dense = resample(path, s.path_spacing) if s.path_spacing > 0 else path
+        return SegmentResult(request.id, path, as_xyz(dense), path_length(path), None, time.monotonic() - t0,
+                             0.0, request.goal_margin, request.avoid_margin), False
     goal = GoalSpec(problem.in_goal, problem.goal_lower_bound, samples)
     outcome = plan_motion(world.dims, problem.lo, problem.hi, start, problem.state_valid,
                           problem.motion_valid, goal, s)

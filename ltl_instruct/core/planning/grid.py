@@ -40,8 +40,11 @@ class _Grid:
     graph: csr_matrix
 
 
-def _build(problem: SegmentProblem, start: np.ndarray, cell: float, max_cells: int) -> Optional[_Grid]:
+def _build(problem: SegmentProblem, start: np.ndarray, cell: float, max_cells: int,
+           box: Optional[tuple[np.ndarray, np.ndarray]] = None) -> Optional[_Grid]:
     """Return the grid of ``problem`` from ``start``, or None when it has no cell or no move from the start.
+
+    ``box`` (lo, hi) [m] limits the grid to part of the problem's bounds.
 
     Raises
     ------
@@ -50,6 +53,8 @@ def _build(problem: SegmentProblem, start: np.ndarray, cell: float, max_cells: i
     """
     dims = len(problem.lo)
     lo, hi = problem.lo, problem.hi
+    if box is not None:
+        lo, hi = np.maximum(lo, box[0]), np.minimum(hi, box[1])
     axes = [np.arange(lo[k] + cell / 2, hi[k], cell) for k in range(dims)]
     shape = tuple(len(a) for a in axes)
     n = int(np.prod(shape))
@@ -124,14 +129,15 @@ def grid_optimum(request: SegmentRequest, world: PlanningWorld, cell: float = 0.
     return cost if math.isfinite(cost) else None
 
 
-def grid_path(problem: SegmentProblem, start: np.ndarray, cell: float,
-              max_cells: int) -> Optional[np.ndarray]:
+def grid_path(problem: SegmentProblem, start: np.ndarray, cell: float, max_cells: int,
+              box: Optional[tuple[np.ndarray, np.ndarray]] = None) -> Optional[np.ndarray]:
     """Waypoints of the shortest grid path from ``start`` into the goal (start, cell centres), or None.
 
-    None also when the grid would exceed ``max_cells`` cells: the caller plans without it.
+    The grid covers ``box`` (lo, hi) [m] of the bounds when given. None also when the grid
+    would exceed ``max_cells`` cells: the caller plans without it.
     """
     try:
-        grid = _build(problem, np.asarray(start, dtype=float), cell, max_cells)
+        grid = _build(problem, np.asarray(start, dtype=float), cell, max_cells, box)
     except InvalidInputError:
         return None
     if grid is None:

@@ -697,7 +697,8 @@ def _shorter_on_grid(problem: SegmentProblem, path: np.ndarray, pool: np.ndarray
     if path_length(path) < GRID_DETOUR * straight:
         return path
     from ltl_instruct.core.planning.grid import grid_path
-    raw = grid_path(problem, path[0], s.grid_cell, GRID_MAX_CELLS)
+    box = _shorter_ways_box(path[0], pool, path_length(path))
+    raw = grid_path(problem, path[0], s.grid_cell, GRID_MAX_CELLS, box)
     if raw is None:
         return path
     cand = _drop_collinear(raw)
@@ -709,6 +710,22 @@ def _shorter_on_grid(problem: SegmentProblem, path: np.ndarray, pool: np.ndarray
         return path
     cut = problem.first_goal_prefix(cand)
     return path if cut is None else _drop_collinear(cut)
+
+
+def _shorter_ways_box(start: np.ndarray, goals: np.ndarray, length: float) -> tuple[np.ndarray, np.ndarray]:
+    """The box (lo, hi) [m] holding every way from ``start`` to one of ``goals`` shorter than ``length``.
+
+    Such a way lies in the ellipse with foci the start and its goal whose axes sum to the
+    length (as in informed sampling); the box holds each goal's ellipse, grown by 0.5 m for
+    goal points between the samples.
+    """
+    a = length / 2.0
+    centre = (start[None] + goals) / 2.0
+    focal = np.linalg.norm(goals - start[None], axis=1) / 2.0
+    b = np.sqrt(np.maximum(a * a - focal * focal, 0.0))
+    u = (goals - start[None]) / np.maximum(2.0 * focal, 1e-9)[:, None]
+    half = np.sqrt(a * a * u * u + (b * b)[:, None] * (1.0 - u * u))   # the ellipse's half extent per axis
+    return (centre - half).min(axis=0) - 0.5, (centre + half).max(axis=0) + 0.5
 
 
 def _clip_to_region(lo: np.ndarray, hi: np.ndarray, region: AtomRegion,

@@ -89,6 +89,24 @@ def test_a_thin_avoid_band_cannot_be_jumped():
     assert 3.0 < y_at_band < 5.0
 
 
+@pytest.mark.parametrize('dims', [2, 3])
+def test_the_grid_box_holds_every_shorter_way(dims):
+    # a point of a way from the start to goal g no longer than L has |s - p| + |p - g| <= L
+    from ltl_instruct.core.planning.segment import _shorter_ways_box
+    rng = np.random.default_rng(dims)
+    for _ in range(20):
+        start, goals = rng.uniform(-5, 5, dims), rng.uniform(-5, 5, (6, dims))
+        length = float(np.linalg.norm(goals - start, axis=1).min()) * rng.uniform(1.0, 3.0)
+        lo, hi = _shorter_ways_box(start, goals, length)
+        pts = rng.uniform(-20, 20, (20000, dims))
+        way = np.linalg.norm(pts - start, axis=1)[:, None] + \
+            np.linalg.norm(pts[:, None] - goals[None], axis=2)
+        inside = pts[(way <= length).any(axis=1)]
+        assert np.all(inside >= lo) and np.all(inside <= hi)
+        # within the ball such a way could fill
+        assert np.all(lo >= start - length - 0.5 - 1e-9) and np.all(hi <= start + length + 0.5 + 1e-9)
+
+
 def test_a_straight_way_into_the_goal_is_taken_without_fmt():
     world = _world()
     req = _request()

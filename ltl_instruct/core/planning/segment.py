@@ -716,12 +716,17 @@ def _shorter_ways_box(start: np.ndarray, goals: np.ndarray, length: float) -> tu
     """The box (lo, hi) [m] holding every way from ``start`` to one of ``goals`` shorter than ``length``.
 
     Such a way lies in the ellipse with foci the start and its goal whose axes sum to the
-    length (as in informed sampling); the box holds each goal's ellipse, grown by 0.5 m for
-    goal points between the samples.
+    length (as in informed sampling); the box holds each goal's ellipse (none for a goal
+    farther than the length), grown by 0.5 m for goal points between the samples.
     """
     a = length / 2.0
-    centre = (start[None] + goals) / 2.0
     focal = np.linalg.norm(goals - start[None], axis=1) / 2.0
+    reach = focal <= a   # a goal farther than the length has no such way: no ellipse
+    if reach.any():
+        goals, focal = goals[reach], focal[reach]
+    else:
+        goals, focal = goals[[np.argmin(focal)]], focal.min(keepdims=True)
+    centre = (start[None] + goals) / 2.0
     b = np.sqrt(np.maximum(a * a - focal * focal, 0.0))
     u = (goals - start[None]) / np.maximum(2.0 * focal, 1e-9)[:, None]
     half = np.sqrt(a * a * u * u + (b * b)[:, None] * (1.0 - u * u))   # the ellipse's half extent per axis

@@ -30,6 +30,7 @@ class BDD:
         self._unique: dict[tuple[int, int, int], int] = {}
         self._ite: dict[tuple[int, int, int], int] = {}
         self._isop: dict[tuple[int, int], tuple[tuple[tuple[Literal, ...], ...], int]] = {}
+        self._paths: dict[int, int] = {FALSE: 0, TRUE: 1}   # nodes never change: kept across calls
         self.num_vars = 0
 
     # ------------------------------------------------------------------ structure
@@ -151,7 +152,7 @@ class BDD:
 
     def count_paths(self, f: int) -> int:
         """Paths from ``f`` to ``TRUE`` (the size of the disjoint cover :meth:`paths` gives)."""
-        memo = {FALSE: 0, TRUE: 1}
+        memo = self._paths
 
         def rec(n: int) -> int:
             got = memo.get(n)

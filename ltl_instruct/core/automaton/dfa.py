@@ -86,11 +86,10 @@ class Edge:
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict."""
-        text = None if self._prog is None else self._prog.guard_text(self.node)
-        if text is None and self._prog is not None:   # too many cubes to list (a parity, say)
+        if self._prog is not None and not self._prog.listable(self.node):   # too many cubes (a parity, say)
             guard: dict[str, Any] = {'text': self._prog.guard_formula(self.node), 'cubes': None}
         else:
-            guard = self.guard.to_dict()
+            guard = self.guard.to_dict()   # the guard made once, kept on the edge
         return {'src': self.src, 'dst': self.dst, 'guard': guard, 'atoms': sorted(a.key for a in self.atoms)}
 
 
@@ -219,17 +218,21 @@ class Automaton:
         out: list[tuple[Edge, ...]] = []
         q: deque[tuple[int, tuple[Edge, ...], frozenset[int]]] = deque(
             [(self.initial, (), frozenset({self.initial}))])
+        # a path is taken when it is made, in the order the queue would pop it (breadth first), so
+        # the queue never holds the next level of a large automaton (3^10 paths for 10 goals)
         while q and len(out) < max_paths:
             s, path, seen = q.popleft()
-            if path and s in self.accepting:
-                out.append(path)
-                continue
             if len(path) >= limit:
                 continue
             for e in self.edges_from(s):
                 if e.dst == s or e.dst in seen or self.distance_to_accepting(e.dst) is None:
                     continue
-                q.append((e.dst, path + (e,), seen | {e.dst}))
+                if e.dst in self.accepting:
+                    out.append(path + (e,))
+                    if len(out) >= max_paths:
+                        return out
+                elif len(path) + 1 < limit:
+                    q.append((e.dst, path + (e,), seen | {e.dst}))
         return out
 
     def to_dict(self) -> dict[str, Any]:

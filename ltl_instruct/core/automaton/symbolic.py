@@ -323,11 +323,13 @@ class Progression:
         """Atoms a guard depends on."""
         return frozenset(self.atoms[lv] for lv in self.bdd.support(node) if lv < self.num_atoms)
 
+    def listable(self, node: int, max_cubes: int = MAX_TEXT_CUBES) -> bool:
+        """Whether a guard is short enough to list as cubes (else see :meth:`guard_formula`)."""
+        return self.bdd.count_paths(node) <= max_cubes
+
     def guard_text(self, node: int, max_cubes: int = MAX_TEXT_CUBES) -> Optional[str]:
         """Return the guard as text; None past ``max_cubes`` cubes (then see :meth:`guard_formula`)."""
-        if self.bdd.count_paths(node) > max_cubes:
-            return None
-        return str(self.guard(node))
+        return str(self.guard(node)) if self.listable(node, max_cubes) else None
 
     def guard_formula(self, node: int) -> str:
         """Write a guard as a nested formula, linear in its BDD where ``x <-> g`` patterns occur (parity)."""

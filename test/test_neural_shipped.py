@@ -36,6 +36,23 @@ def test_the_model_reads_what_the_rules_misread(neural, text, formula):
     assert str(neural.translate(text).formula) == formula
 
 
+@pytest.mark.parametrize('text, formula', [
+    # where a thing is taken from is a description of it, never a destination
+    ('fetch me the cup from the kitchen',
+     'F (near[cup::isnextto(kitchen)] & F pick[cup::isnextto(kitchen)])'),
+    ('grab the blanket out of the closet and bring it to the couch',
+     'F (near[blanket::isnextto(closet)] & F (pick[blanket::isnextto(closet)] & F (near[couch] & '
+     'F release[blanket::isnextto(closet), couch])))'),
+    ('can I have the salt from the counter',
+     'F (near[salt::isnextto(counter)] & F pick[salt::isnextto(counter)])'),
+    # a request for the speaker is a pick-up: the robot brings it
+    ('I need my charger', 'F (near[charger] & F pick[charger])'),
+    ('go to the garage, then bring me the toolbox', 'F (near[garage] & F (near[toolbox] & F pick[toolbox]))'),
+])
+def test_household_requests(combined, text, formula):
+    assert str(combined.translate(text).formula) == formula
+
+
 @pytest.mark.parametrize('text', [
     'Go to the kitchen. On top of that, never enter the hall',
     'I have to finish my essay, can you find the lamp',

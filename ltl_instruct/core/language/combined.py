@@ -88,7 +88,7 @@ class Policy:
     """
 
     takeover: float = 0.5
-    override: float = 0.7
+    override: float = 0.9
 
 
 # what the rules and the model made of one instruction: (rules' reading, rules' refusal, model's reading)

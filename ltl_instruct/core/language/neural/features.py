@@ -142,6 +142,7 @@ def mentions_from_tags(text: str, pieces: Pieces, tags: Sequence[int], landmarks
     out: list[FoundMention] = []
     slot_of: dict[str, str] = {}
     for a, b in spans_from_tags(pieces, tags):
+        a, b = _whole_words(text, a, b)
         words = text[a:b]
         d = descriptor_of(words, landmarks, digits)
         if d is None:
@@ -153,6 +154,16 @@ def mentions_from_tags(text: str, pieces: Pieces, tags: Sequence[int], landmarks
             slot_of[d] = f's{len(slot_of) + 1}'
         out.append(FoundMention(a, b, words, d, slot_of[d]))
     return out
+
+
+def _whole_words(text: str, a: int, b: int) -> tuple[int, int]:
+    """Widen a span to the words it touches: a mention tagged on a word's first pieces ("v" of
+    "vvv") names the whole word."""
+    while a > 0 and text[a - 1].isalnum():
+        a -= 1
+    while b < len(text) and text[b].isalnum():
+        b += 1
+    return a, b
 
 
 def slot_numbers(pieces: Pieces, mentions: Sequence[FoundMention]) -> list[int]:

@@ -187,7 +187,7 @@ def _imported_modules(paths) -> set[str]:
                 elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
                     names.add(node.module.split('.')[0])
     local = {'ltl_instruct', 'bench', 'translation_cases', 'ltl_oracles', 'learned_synthetic',
-             'readme_tables', 'search_scenes'}
+             'readme_tables', 'search_scenes', 'ros_env'}
     return {n for n in names if n not in sys.stdlib_module_names and n not in local}
 
 

@@ -206,7 +206,7 @@ _CLASSES: list[type] = []
 
 
 def _ompl_classes() -> tuple[type, type]:
-    """OMPL's motion validator and sampleable goal region, subclassed once per process.
+    """Return OMPL's motion validator and sampleable goal region, subclassed once per process.
 
     Classes made inside ``plan_motion`` were garbage in reference cycles after every segment,
     which only a full collection frees (30 ms a segment in a process holding a large automaton).

@@ -95,8 +95,10 @@ def _build(problem: SegmentProblem, start: np.ndarray, cell: float, max_cells: i
 
 
 def _shortest(grid: _Grid) -> tuple[float, list[int]]:
-    """Dijkstra from the start (a node joined to its moves): the cost to the nearest goal cell
-    and the cells of the way there, or (inf, [])."""
+    """Return the cost to the nearest goal cell and the cells of the way there, or (inf, []).
+
+    Dijkstra from the start, a node joined to its moves.
+    """
     n = len(grid.centres)
     dist, preds = dijkstra(grid.graph, directed=False, indices=n, return_predecessors=True)
     goal_cells = np.flatnonzero(grid.goal)

@@ -667,7 +667,7 @@ DIRECT_TRIES = 8   # goal samples, nearest first, tried as straight ways before 
 
 def _direct_path(problem: SegmentProblem, start: tuple[float, ...],
                  samples: np.ndarray) -> Optional[np.ndarray]:
-    """The straight way from ``start`` to one of its nearest goal samples, where it is valid, else None."""
+    """Return the straight way from ``start`` to one of its nearest goal samples if valid, else None."""
     a = np.asarray(start, dtype=float)
     for i in np.argsort(np.linalg.norm(samples - a, axis=1))[:DIRECT_TRIES]:
         q = tuple(float(x) for x in samples[i])
@@ -713,7 +713,7 @@ def _shorter_on_grid(problem: SegmentProblem, path: np.ndarray, pool: np.ndarray
 
 
 def _shorter_ways_box(start: np.ndarray, goals: np.ndarray, length: float) -> tuple[np.ndarray, np.ndarray]:
-    """The box (lo, hi) [m] holding every way from ``start`` to one of ``goals`` shorter than ``length``.
+    """Return the box (lo, hi) [m] holding every way from ``start`` to a goal shorter than ``length``.
 
     Such a way lies in the ellipse with foci the start and its goal whose axes sum to the
     length (as in informed sampling); the box holds each goal's ellipse (none for a goal

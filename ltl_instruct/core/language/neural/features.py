@@ -94,7 +94,7 @@ def descriptor_of(words: str, landmarks: Sequence[str] = (), digits: bool = Fals
 
 
 def _with_source(d: Descriptor, tokens: Sequence[str], i: int, parser: PhraseParser) -> Optional[Descriptor]:
-    """The thing ``d`` with where it is taken from (``tokens[i:]``), as the rules read it, or None.
+    """Return the thing ``d`` with where it is taken from (``tokens[i:]``), as the rules read it, or None.
 
     A source ("from the closet", "off the couch") is a relation of the thing; a location ("in the
     kitchen") says where to look and is left out of its name, as the rules leave it out.
@@ -157,8 +157,10 @@ def mentions_from_tags(text: str, pieces: Pieces, tags: Sequence[int], landmarks
 
 
 def _whole_words(text: str, a: int, b: int) -> tuple[int, int]:
-    """Widen a span to the words it touches: a mention tagged on a word's first pieces ("v" of
-    "vvv") names the whole word."""
+    """Widen a span to the words it touches.
+
+    A mention tagged on a word's first pieces ("v" of "vvv") names the whole word.
+    """
     while a > 0 and text[a - 1].isalnum():
         a -= 1
     while b < len(text) and text[b].isalnum():

@@ -874,9 +874,7 @@ def _solve_once(request: SegmentRequest, world: PlanningWorld) -> tuple[SegmentR
     direct = _direct_path(problem, start, samples) if s.direct and s.planner == 'fmt' else None
     if direct is not None:   # a straight way into the goal: nothing for FMT* to find
         path = problem.shortcut(direct, pool=samples) if s.simplify else direct
-        dense = resample(path, s.path_spacing) if s.path_spacing > 0 else path
-        return SegmentResult(request.id, path, as_xyz(dense), path_length(path), None, time.monotonic() - t0,
-                             0.0, request.goal_margin, request.avoid_margin), False
+        return _result(request, path, t0, 0.0), False
     goal = GoalSpec(problem.in_goal, problem.goal_lower_bound, samples)
     outcome = plan_motion(world.dims, problem.lo, problem.hi, start, problem.state_valid,
                           problem.motion_valid, goal, s)
@@ -895,6 +893,12 @@ def _solve_once(request: SegmentRequest, world: PlanningWorld) -> tuple[SegmentR
     if s.simplify:
         path = problem.shortcut(path, pool=samples)
     path = _shorter_on_grid(problem, path, samples)
-    dense = resample(path, s.path_spacing) if s.path_spacing > 0 else path
+    return _result(request, path, t0, outcome.seconds), False
+
+
+def _result(request: SegmentRequest, path: np.ndarray, t0: float, planner_seconds: float) -> SegmentResult:
+    """Return the result of a planned path: its waypoints, the dense path, its length and times."""
+    spacing = request.settings.path_spacing
+    dense = resample(path, spacing) if spacing > 0 else path
     return SegmentResult(request.id, path, as_xyz(dense), path_length(path), None, time.monotonic() - t0,
-                         outcome.seconds, request.goal_margin, request.avoid_margin), False
+                         planner_seconds, request.goal_margin, request.avoid_margin)

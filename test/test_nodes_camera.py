@@ -59,3 +59,15 @@ def test_an_object_never_seen_is_unknown(camera_graph):
     status = client.wait_terminal(iid, timeout=20.0)
     assert status['status'] == 'failed' and status['error']['code'] == 'UNKNOWN_REFERENT'
     assert not g.dead()
+
+
+def test_the_corners_a_tick_passed_get_their_own_stamps():
+    # a frame carries the stamp of the tick's last pose; a corner sharing that stamp was read as the
+    # frame's pose when the grounder took the frame between the corner's odometry and the last pose's
+    # (a vase placed 1.5 m off on a loaded machine)
+    from ltl_instruct import conversions as conv
+    from ltl_instruct.nodes.sim_world import _between_stamps
+    before, after = conv.stamp_from_key(1_000_000_000), conv.stamp_from_key(1_300_000_000)
+    keys = [conv.stamp_key(s) for s in _between_stamps(before, after, 3)]
+    assert keys == sorted(set(keys)) and 1_000_000_000 < keys[0] and keys[-1] < 1_300_000_000
+    assert _between_stamps(None, after, 2) == [after, after]   # the first tick: nothing before it

@@ -222,9 +222,12 @@ class SimWorldNode(Node):
         velocity = (pose.xyz - before) / dt if dt > 0 else np.zeros(3)
         stamp = self._stamp()
         # a slow tick (a loaded machine, a large time_scale) moves the robot far: the corners
-        # passed go out first, so that straight moves between poses follow the path
-        for corner in robot.corners:
-            self.odom_pub.publish(self._odometry(corner, stamp, velocity))
+        # passed go out first, so that straight moves between poses follow the path, each with
+        # its own stamp between the last tick's and this one's; a camera frame has the stamp of
+        # the last pose, and a corner sharing it was taken for the frame's pose by the grounder
+        corner_stamps = _between_stamps(self._odom_stamp, stamp, len(robot.corners))
+        for corner, corner_stamp in zip(robot.corners, corner_stamps):
+            self.odom_pub.publish(self._odometry(corner, corner_stamp, velocity))
         self.odom_pub.publish(self._odometry(pose, stamp, velocity))
         self._odom_stamp = stamp
 
@@ -271,6 +274,15 @@ class SimWorldNode(Node):
         self.rgb_pub.publish(conv.image_msg(frame.rgb, 'rgb8', stamp, cam))
         self.labels_pub.publish(conv.image_msg(frame.labels, '32SC1', stamp, cam))
         self.depth_pub.publish(conv.depth_msg(frame.depth, self.params['depth_encoding'], stamp, cam))
+
+
+def _between_stamps(before: Any, after: Any, count: int) -> list[Any]:
+    """Return ``count`` stamps strictly between two stamps (all ``after`` where they lie too close)."""
+    end = conv.stamp_key(after)
+    start = conv.stamp_key(before) if before is not None else end
+    if end - start <= count:
+        return [after] * count
+    return [conv.stamp_from_key(start + (end - start) * (k + 1) // (count + 1)) for k in range(count)]
 
 
 def main(args: Optional[list[str]] = None) -> int:

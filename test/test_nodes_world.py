@@ -199,3 +199,17 @@ def test_a_new_plan_starting_behind_the_robot_is_joined_along_the_driven_way():
     robot.follow(np.array([[5.0, 5.0, 0.0]]))
     robot.step(0.1)
     assert robot.path_index == -1 and robot.pose.xyz[1] > -3.0
+
+
+def test_a_plan_from_before_the_last_one_is_rejoined_along_the_way_driven():
+    """In a burst of plans one may start where the robot was before the plan it follows came."""
+    robot = KinematicRobot((0.0, 0.0, 0.0), max_speed=1.0)
+    robot.follow(np.array([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [4.0, 4.0, 0.0]]))
+    robot.step(6.0)                                           # round the corner to (4, 2)
+    robot.follow(np.array([[4.0, 2.0, 0.0], [4.0, 3.0, 0.0]]))
+    robot.step(0.5)                                           # (4, 2.5)
+    robot.follow(np.array([[2.0, 0.0, 0.0], [2.0, -1.0, 0.0]]))   # planned from (2, 0), before both
+    robot.step(100.0)
+    # back the way it came, round the corner at (4, 0): not straight across to (2, 0)
+    assert robot.travelled == pytest.approx(6.0 + 0.5 + 2.5 + 2.0 + 1.0)
+    assert np.allclose(robot.pose.xyz, [2.0, -1.0, 0.0])

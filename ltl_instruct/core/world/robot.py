@@ -113,7 +113,7 @@ class KinematicRobot:
         self._paused = False
         self._travelled = 0.0
         self._offset = 0                   # points driven back along the trail before the path
-        self._trail: list[np.ndarray] = []  # path vertices reached since the last follow()
+        self._trail: list[np.ndarray] = []  # path vertices reached (the last TRAIL_LENGTH), across plans
         self.corners: list[Pose] = []       # path corners passed in the last step()
 
     # ------------------------------------------------------------------ state
@@ -162,30 +162,36 @@ class KinematicRobot:
         self._segment = 0
         self._stop_at = {int(i) + self._offset for i in stop_at if 0 <= int(i) < len(p)}
         self._paused = False
-        self._trail = [self._position.copy()]
+        self._remember(self._position.copy())   # the trail goes on across plans (a burst of them)
 
     REJOIN_TOLERANCE = 0.25   # [m]
     TRAIL_LENGTH = 4000       # path vertices remembered
 
+    def _remember(self, point: np.ndarray) -> None:
+        """Add a reached point to the trail (the last ``TRAIL_LENGTH`` are kept)."""
+        self._trail.append(point)
+        if len(self._trail) > self.TRAIL_LENGTH:
+            del self._trail[:len(self._trail) - self.TRAIL_LENGTH]
+
     def _way_back_to(self, target: np.ndarray) -> np.ndarray:
-        """Points (K, 3) retracing the driven trail from here back to near ``target`` (K may be 0)."""
-        trail = self._trail + [self._position.copy()]
+        """Points (K, 3) retracing the driven trail from here back to near ``target`` (K may be 0).
+
+        The most recent stretch of the trail that passes within ``REJOIN_TOLERANCE`` of the
+        target is the one retraced: in a burst of plans, one may start where the robot was
+        before the plan it is following now came.
+        """
+        trail = np.asarray(self._trail + [self._position.copy()], dtype=float)
         if len(trail) < 2:
             return np.zeros((0, 3))
-        best = (float('inf'), -1, None)
-        for i in range(len(trail) - 1):
-            a, b = trail[i], trail[i + 1]
-            ab = b - a
-            t = float(np.clip(np.dot(target - a, ab) / max(float(np.dot(ab, ab)), 1e-12), 0.0, 1.0))
-            q = a + t * ab
-            d = float(np.linalg.norm(q - target))
-            if d < best[0]:
-                best = (d, i, q)
-        d, i, q = best
-        if d > self.REJOIN_TOLERANCE or q is None:
+        a, ab = trail[:-1], np.diff(trail, axis=0)
+        t = np.clip(((target - a) * ab).sum(axis=1) / np.maximum((ab * ab).sum(axis=1), 1e-12), 0.0, 1.0)
+        q = a + t[:, None] * ab
+        near = np.flatnonzero(np.linalg.norm(q - target, axis=1) <= self.REJOIN_TOLERANCE)
+        if len(near) == 0:
             return np.zeros((0, 3))
+        i = int(near[-1])
         # from the current position back over the vertices after segment i, to q
-        return np.vstack([np.asarray(trail[k]) for k in range(len(trail) - 1, i, -1)] + [q[None, :]])
+        return np.vstack([trail[:i:-1], q[i][None, :]])
 
     def add_stop(self, index: int) -> bool:
         """Stop at path index ``index``; if it was already passed, stop now. Return True if in time."""
@@ -242,9 +248,7 @@ class KinematicRobot:
                     self._yaw = heading
             if dist <= budget:
                 self._position = target.copy()
-                self._trail.append(target.copy())
-                if len(self._trail) > self.TRAIL_LENGTH:
-                    del self._trail[:len(self._trail) - self.TRAIL_LENGTH]
+                self._remember(target.copy())
                 self._travelled += dist
                 budget -= dist
                 reached = self._segment

@@ -327,10 +327,6 @@ class Progression:
         """Whether a guard is short enough to list as cubes (else see :meth:`guard_formula`)."""
         return self.bdd.count_paths(node) <= max_cubes
 
-    def guard_text(self, node: int, max_cubes: int = MAX_TEXT_CUBES) -> Optional[str]:
-        """Return the guard as text; None past ``max_cubes`` cubes (then see :meth:`guard_formula`)."""
-        return str(self.guard(node)) if self.listable(node, max_cubes) else None
-
     def guard_formula(self, node: int) -> str:
         """Write a guard as a nested formula, linear in its BDD where ``x <-> g`` patterns occur (parity)."""
         return str(self.nested_formula(node))

@@ -693,18 +693,17 @@ def _shorter_on_grid(problem: SegmentProblem, path: np.ndarray, pool: np.ndarray
     s = problem.request.settings
     if s.grid_cell <= 0 or len(problem.lo) != 2 or len(pool) == 0:
         return path
-    straight = float(np.linalg.norm(pool - path[0], axis=1).min())
-    if path_length(path) < GRID_DETOUR * straight:
+    length = path_length(path)
+    if length < GRID_DETOUR * float(np.linalg.norm(pool - path[0], axis=1).min()):
         return path
     from ltl_instruct.core.planning.grid import grid_path
-    box = _shorter_ways_box(path[0], pool, path_length(path))
-    raw = grid_path(problem, path[0], s.grid_cell, GRID_MAX_CELLS, box)
+    raw = grid_path(problem, path[0], s.grid_cell, GRID_MAX_CELLS, _shorter_ways_box(path[0], pool, length))
     if raw is None:
         return path
     cand = _drop_collinear(raw)
     if s.simplify:
         cand = problem.shortcut(cand, pool=pool)
-    if path_length(cand) >= path_length(path) - 1e-6:
+    if path_length(cand) >= length - 1e-6:
         return path
     if not all(problem.motion_valid(a, b) for a, b in zip(cand[:-1], cand[1:])):
         return path

@@ -91,8 +91,8 @@ class FmtPlannerNode(Node):
     def on_map(self, msg: OccupancyGrid) -> None:
         """Use a new 2D occupancy grid (an empty or malformed one is rejected; the last good one stays)."""
         try:
-            conv.check_map_frame(msg, self.frames.map, 'map')   # before the work of reading it
             world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
+            conv.check_map_frame(msg, self.frames.map, 'map')
         except LtlInstructError as e:
             self._set_world(2, None, e)
             return
@@ -103,9 +103,9 @@ class FmtPlannerNode(Node):
     def on_map_cloud(self, msg: PointCloud2) -> None:
         """Use a new 3D obstacle cloud (for a drone)."""
         try:
-            conv.check_map_frame(msg, self.frames.map, 'map_cloud')
             world = conv.planning_world_from_cloud(msg, self.params['cloud_voxel'],
                                                    self.params['robot_radius'], self._bounds)
+            conv.check_map_frame(msg, self.frames.map, 'map_cloud')
         except LtlInstructError as e:
             self._set_world(3, None, e)
             return

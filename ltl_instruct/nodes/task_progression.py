@@ -363,8 +363,8 @@ class TaskProgressionNode(SearchMixin, Node):
     def on_map(self, msg: OccupancyGrid) -> None:
         """Keep the 2D world the plans are checked against (a malformed map is reported and ignored)."""
         try:
-            conv.check_map_frame(msg, self.frames.map, 'map')   # before the work of reading it
             world = conv.planning_world_from_grid(msg, self.params['robot_radius'])
+            conv.check_map_frame(msg, self.frames.map, 'map')
         except LtlInstructError as e:
             self._reject_map(e)
             return
@@ -392,9 +392,9 @@ class TaskProgressionNode(SearchMixin, Node):
     def on_map_cloud(self, msg: PointCloud2) -> None:
         """Keep the 3D world of a drone (a malformed cloud is reported and ignored)."""
         try:
-            conv.check_map_frame(msg, self.frames.map, 'map_cloud')
             world = conv.planning_world_from_cloud(msg, self.params['cloud_voxel'],
                                                    self.params['robot_radius'], self._bounds)
+            conv.check_map_frame(msg, self.frames.map, 'map_cloud')
         except LtlInstructError as e:
             self._reject_map(e)
             return

@@ -25,7 +25,8 @@ from ltl_instruct.core.language.neural.encoder import WordPieces, load_encoder, 
 from ltl_instruct.core.language.neural.examples import TaggedExample
 from ltl_instruct.core.language.neural.features import example_tags
 from ltl_instruct.core.language.neural.generator import generate
-from ltl_instruct.core.language.neural.grammar import MAX_SLOTS, TOKEN_ID, to_prefix
+from ltl_instruct.core.language.neural.grammar import MAX_SLOTS, TOKEN_ID
+from ltl_instruct.core.language.neural.macros import lifted_tokens
 from ltl_instruct.core.language.neural.model import NetConfig, TranslatorNet
 from ltl_instruct.core.language.neural.training import MAX_TARGET, TrainConfig, encode_examples, fit, losses
 from ltl_instruct.core.language.neural.translator import NeuralTranslator
@@ -35,7 +36,7 @@ from ltl_instruct.core.spec import parse_formula
 def _fits(ex: TaggedExample) -> bool:
     """The same filter as ``encode_examples``: a lifted formula the decoder can write."""
     try:
-        return len(to_prefix(parse_formula(ex.lifted))) <= MAX_TARGET and len(ex.slots) <= MAX_SLOTS
+        return len(lifted_tokens(parse_formula(ex.lifted))) <= MAX_TARGET and len(ex.slots) <= MAX_SLOTS
     except LtlInstructError:
         return False
 
@@ -62,7 +63,7 @@ def finetune(net: TranslatorNet, encoder: nn.Module, pieces: WordPieces, example
             pad = nn.utils.rnn.pad_sequence
             tags = pad([torch.tensor(t) for t, _ in gold], batch_first=True, padding_value=-100)
             slots = pad([torch.tensor(s) for _, s in gold], batch_first=True, padding_value=0)
-            targets = pad([torch.tensor([TOKEN_ID[t] for t in to_prefix(parse_formula(ex.lifted))])
+            targets = pad([torch.tensor([TOKEN_ID[t] for t in lifted_tokens(parse_formula(ex.lifted))])
                            for ex in chunk], batch_first=True, padding_value=-100)
             tag_loss, dec_loss = losses(net, h, mask, tags, slots, targets)
             opt.zero_grad()

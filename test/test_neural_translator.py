@@ -24,7 +24,7 @@ from ltl_instruct.core.language.neural.features import (
     TAG_B, TAG_I, TAG_O, mentions_from_tags, piece_tags, spans_from_tags,
 )
 from ltl_instruct.core.language.neural.grammar import (
-    TOKEN_ID, TOKENS, GrammarState, check_prefix, from_prefix, to_prefix,
+    SLOTS, TOKEN_ID, TOKENS, GrammarState, check_prefix, from_prefix, to_prefix,
 )
 from ltl_instruct.core.language.neural.model import NetConfig, TranslatorNet
 from ltl_instruct.core.spec import parse_formula
@@ -53,7 +53,7 @@ def test_grammar_only_allows_complete_formulas():
         assert len(tokens) <= 20
         assert check_prefix(tokens, 3)
         from_prefix(tokens)            # parses
-        assert {t for t in tokens if t.startswith('s')} <= {'s1', 's2', 's3'}
+        assert {t for t in tokens if t in SLOTS} <= {'s1', 's2', 's3'}
 
 
 def test_slot_positions_need_slots():

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from typing import Optional, Sequence
 
 from ltl_instruct.core.errors import TranslationError
+from ltl_instruct.core.language.task import at_least, at_most, conjoin, exactly
 from ltl_instruct.core.spec import (
     Always, And, Atom, Const, Descriptor, Eventually, Formula, Iff, Implies, Next, Not, Or, Release,
     Until, WeakUntil, parse_formula,
@@ -27,7 +28,11 @@ SKILLS = {'near': 1, 'pick': 1, 'release': 2}
 SLOTS = tuple(f's{k}' for k in range(1, MAX_SLOTS + 1))
 # things a task implies without naming them ("throw away the cup": the cup goes in the trash can)
 IMPLIED = ('trash_can',)
-TOKENS: tuple[str, ...] = UNARY + BINARY + CONSTANTS + tuple(SKILLS) + SLOTS + IMPLIED
+COUNT_MACROS = {'atleast': at_least, 'atmost': at_most, 'exactly': exactly}
+CHAIN_MACROS = ('ordered', 'strict')
+COUNTS = tuple(str(n) for n in range(1, 10))
+TOKENS: tuple[str, ...] = (UNARY + BINARY + CONSTANTS + tuple(SKILLS) + SLOTS + IMPLIED
+                           + tuple(COUNT_MACROS) + CHAIN_MACROS + COUNTS)
 TOKEN_ID = {t: i for i, t in enumerate(TOKENS)}
 BOS = len(TOKENS)            # start symbol fed to the decoder (never emitted)
 VOCAB_SIZE = len(TOKENS) + 1
@@ -37,7 +42,7 @@ _BINARY_TYPES = {Until: 'U', WeakUntil: 'W', Release: 'R', Implies: '->', Iff: '
 _BUILD_UNARY = {'F': Eventually, 'G': Always, 'X': Next, '!': Not}
 _BUILD_BINARY = {'U': Until, 'W': WeakUntil, 'R': Release, '->': Implies, '<->': Iff}
 
-FORMULA, SLOT = 0, 1
+FORMULA, SLOT, COUNT = 0, 1, 2
 
 
 def to_prefix(f: Formula) -> list[str]:
@@ -69,14 +74,54 @@ def to_prefix(f: Formula) -> list[str]:
     return out
 
 
+@dataclass(frozen=True)
+class Chain:
+    """Places in order (``ordered``/``strict`` macros), kept apart until an operator takes them."""
+
+    strict: bool
+    items: tuple[Formula, ...]
+
+    def formula(self) -> Formula:
+        """``(!x2 U x1) & ... & F xk`` (``strict``: and no second visit of one before the next)."""
+        xs = self.items
+        parts: list[Formula] = [Until(Not(b), a) for a, b in zip(xs, xs[1:])]
+        parts.append(Eventually(xs[-1]))
+        if self.strict:
+            parts += [Until(Not(a), Until(a, Until(Not(a), b))) for a, b in zip(xs, xs[1:])]
+        return conjoin(*parts)  # type: ignore[return-value]
+
+
+def chain_of(kind: str, first: Formula, rest: 'Formula | Chain') -> Chain:
+    """The chain ``first`` then ``rest`` (a chain of the same kind goes on, anything else ends it)."""
+    strict = kind == 'strict'
+    if isinstance(rest, Chain) and rest.strict == strict:
+        return Chain(strict, (first,) + rest.items)
+    return Chain(strict, (first, _formula(rest)))
+
+
+def _formula(v: object) -> Formula:
+    return v.formula() if isinstance(v, Chain) else v  # type: ignore[return-value]
+
+
 def from_prefix(tokens: Sequence[str]) -> Formula:
     """Build the formula of a complete prefix sequence (raises ``TranslationError`` if incomplete)."""
-    pos = len(tokens)
+    try:
+        value = _build(tokens)
+    except IndexError:
+        value = None
+    if not isinstance(value, Formula):
+        raise TranslationError(f'incomplete lifted formula: {" ".join(tokens)}')
+    return value
+
+
+def _build(tokens: Sequence[str]) -> Optional[Formula]:
+    """The formula of a prefix sequence, None if it is not one (IndexError if an operand is missing)."""
     values: list[object] = []   # built right to left: operands are on top when an operator comes
     for tok in reversed(tokens):
-        pos -= 1
         if tok in SLOTS or tok in IMPLIED:
             values.append(Descriptor(tok))
+        elif tok in COUNTS:
+            values.append(int(tok))
         elif tok in SKILLS:
             n = SKILLS[tok]
             args = [values.pop() for _ in range(n)]
@@ -84,26 +129,34 @@ def from_prefix(tokens: Sequence[str]) -> Formula:
         elif tok in CONSTANTS:
             values.append(parse_formula(tok))
         elif tok in _BUILD_UNARY:
-            values.append(_BUILD_UNARY[tok](values.pop()))
+            values.append(_BUILD_UNARY[tok](_formula(values.pop())))
+        elif tok in COUNT_MACROS:
+            n, x = values.pop(), _formula(values.pop())
+            values.append(COUNT_MACROS[tok](x, n))
+        elif tok in CHAIN_MACROS:
+            a, b = _formula(values.pop()), values.pop()
+            values.append(chain_of(tok, a, b))  # type: ignore[arg-type]
         elif tok in ('&', '|'):
-            a, b = values.pop(), values.pop()
+            a, b = _formula(values.pop()), _formula(values.pop())
             values.append((And if tok == '&' else Or)((a, b)))
         elif tok in _BUILD_BINARY:
-            a, b = values.pop(), values.pop()
+            a, b = _formula(values.pop()), _formula(values.pop())
             values.append(_BUILD_BINARY[tok](a, b))
         else:
             raise TranslationError(f'unknown lifted token {tok!r}')
-    if len(values) != 1 or not isinstance(values[0], Formula):
-        raise TranslationError(f'incomplete lifted formula: {" ".join(tokens)}')
-    return values[0]
+    if len(values) != 1 or isinstance(values[0], int):
+        return None
+    return _formula(values[0])
 
 
 def _arity(tok: str) -> tuple[int, ...]:
     """Item kinds a token pushes (what it needs next)."""
     if tok in UNARY:
         return (FORMULA,)
-    if tok in BINARY:
+    if tok in BINARY or tok in CHAIN_MACROS:
         return (FORMULA, FORMULA)
+    if tok in COUNT_MACROS:
+        return (COUNT, FORMULA)
     if tok in SKILLS:
         return (SLOT,) * SKILLS[tok]
     return ()
@@ -111,7 +164,7 @@ def _arity(tok: str) -> tuple[int, ...]:
 
 _PUSHES = tuple(_arity(t) for t in TOKENS)
 # fewest tokens that complete one item: a formula needs at least 'near sK', a slot one token
-_MIN_COST = {FORMULA: 2, SLOT: 1}
+_MIN_COST = {FORMULA: 2, SLOT: 1, COUNT: 1}
 
 
 @dataclass
@@ -139,11 +192,13 @@ class GrammarState:
         kind = self.needs[-1]
         if kind == SLOT:
             return [TOKEN_ID[s] for s in SLOTS[:max(n_slots, 1)] + IMPLIED]
+        if kind == COUNT:
+            return [TOKEN_ID[c] for c in COUNTS]
         budget = self.max_len - self.length - 1
         rest = sum(_MIN_COST[k] for k in self.needs[:-1])
         out = []
         for i, tok in enumerate(TOKENS):
-            if tok in SLOTS or tok in IMPLIED:
+            if tok in SLOTS or tok in IMPLIED or tok in COUNTS:
                 continue
             cost = sum(_MIN_COST[k] for k in _PUSHES[i])
             if rest + cost <= budget:

@@ -25,7 +25,8 @@ from ltl_instruct.core.language.neural.encoder import (
 )
 from ltl_instruct.core.language.neural.examples import TaggedExample
 from ltl_instruct.core.language.neural.features import example_tags
-from ltl_instruct.core.language.neural.grammar import MAX_SLOTS, TOKEN_ID, TOKENS, to_prefix
+from ltl_instruct.core.language.neural.grammar import MAX_SLOTS, TOKEN_ID, TOKENS
+from ltl_instruct.core.language.neural.macros import lifted_tokens
 from ltl_instruct.core.language.neural.model import NetConfig, TranslatorNet
 from ltl_instruct.core.spec import parse_formula
 
@@ -105,7 +106,7 @@ def encode_examples(examples: Sequence[TaggedExample], encoder: BertEncoder, pie
     out = []
     for ex in examples:
         try:
-            tokens = to_prefix(parse_formula(ex.lifted))
+            tokens = lifted_tokens(parse_formula(ex.lifted))
         except LtlInstructError:
             continue
         if len(tokens) > MAX_TARGET or len(ex.slots) > MAX_SLOTS:

@@ -69,7 +69,7 @@ def score_set(name: str, limit: int, model_path: Optional[str],
         replay = _Replay(combined, readings, policy)
         summary = evaluate(replay, examples, checker).summary()   # type: ignore[arg-type]
         out.append({'set': name, 'n': summary['examples'], 'takeover': policy.takeover,
-                    'override': policy.override, 'temporal_alignment': summary['temporal_alignment'],
+                    'override': policy.override, 'counts': policy.counts, 'temporal_alignment': summary['temporal_alignment'],
                     'equivalence': summary['equivalence_accuracy'],
                     'wrong_unflagged': summary['wrong_unflagged_share']})
     return out
@@ -83,13 +83,14 @@ def main(argv: list[str]) -> int:
     ap.add_argument('--limit', type=int, default=0, help='random sample of each validation split (0: all)')
     ap.add_argument('--override', default=','.join(map(str, OVERRIDES)))
     ap.add_argument('--takeover', default=','.join(map(str, TAKEOVERS)))
+    ap.add_argument('--counts', default='no', help='no, yes or no,yes: may the model override a count')
     ap.add_argument('--model-path', default=None, help='translator bundle (default: shipped)')
     ap.add_argument('--json', action='store_true', help='one JSON object per set and policy')
     args = ap.parse_args(argv)
     if datasets_root() is None or not Path(datasets_root()).is_dir():   # type: ignore[arg-type]
         print('public data sets not found (../shared/datasets or $LTL_INSTRUCT_DATASETS)', file=sys.stderr)
         return 1
-    policies = [Policy(float(t), float(o))
+    policies = [Policy(float(t), float(o), c == 'yes') for c in args.counts.split(',')
                 for t in args.takeover.split(',') for o in args.override.split(',')]
     rows: list[dict[str, Any]] = []
     for name in [n.strip() for n in args.sets.split(',') if n.strip()]:
@@ -105,16 +106,17 @@ def main(argv: list[str]) -> int:
 
 def _print_table(rows: list[dict[str, Any]], policies: Sequence[Policy]) -> None:
     names = list(dict.fromkeys(r['set'] for r in rows))
-    print('takeover override  ' + '  '.join(f'{n[:12]:>12s}' for n in names)
+    print('takeover override counts  ' + '  '.join(f'{n[:12]:>12s}' for n in names)
           + '   mean TA   (cells: TA / wrong-unflagged)')
     for p in policies:
         cells, tas = [], []
         for n in names:
             r = next(r for r in rows
-                     if r['set'] == n and r['takeover'] == p.takeover and r['override'] == p.override)
+                     if r['set'] == n and r['takeover'] == p.takeover and r['override'] == p.override
+                     and r['counts'] == p.counts)
             cells.append(f'{r["temporal_alignment"]:.3f}/{r["wrong_unflagged"]:.3f}')
             tas.append(r['temporal_alignment'])
-        print(f'{p.takeover:8.2f} {p.override:8.2f}  ' + '  '.join(f'{c:>12s}' for c in cells)
+        print(f'{p.takeover:8.2f} {p.override:8.2f} {"yes" if p.counts else "no":>6s}  ' + '  '.join(f'{c:>12s}' for c in cells)
               + f'   {sum(tas) / len(tas):.3f}')
 
 

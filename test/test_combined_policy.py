@@ -92,6 +92,10 @@ def test_model_never_overrides_a_count(combined):
     t = combined.decide((_rules('F near[kitchen]'), None, _model(thrice, 0.99, mentions=('kitchen',))),
                         Policy(override=0.5))
     assert str(t.formula) == 'F near[kitchen]' and t.extra['flagged']
+    # unless the policy lets it (a model that writes counts as macros may count well enough)
+    t = combined.decide((_rules('F near[kitchen]'), None, _model(thrice, 0.99, mentions=('kitchen',))),
+                        Policy(override=0.5, counts=True))
+    assert str(t.formula) == thrice and t.extra['flagged']
 
 
 def test_a_clause_read_as_one_name_is_not_sure(combined):

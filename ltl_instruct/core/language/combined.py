@@ -85,10 +85,12 @@ class Policy:
     override: the two disagree: the model's reading goes on instead of the rules' at this
         confidence or more (above 1: never). Chosen on the validation splits and the dev set by
         ``bench.translator_policy``; the README gives the figures.
+    counts: whether the model may override a reading that counts visits (its own or the rules').
     """
 
     takeover: float = 0.5
     override: float = 0.9
+    counts: bool = False
 
 
 # what the rules and the model made of one instruction: (rules' reading, rules' refusal, model's reading)
@@ -143,7 +145,7 @@ class CombinedTranslator:
         rules, refusal, model = readings
         if rules is not None:
             if model is not None and not same_task(rules.formula, model.formula) \
-                    and not counts_visits(rules.formula) and not counts_visits(model.formula) \
+                    and (policy.counts or not (counts_visits(rules.formula) or counts_visits(model.formula))) \
                     and self._sure(model, policy.override):
                 return self._from_model(model, self._differs_note(rules), [format_formula(rules.formula)],
                                         rules_error=None)

@@ -2,9 +2,9 @@
 
 Run: ``.venv/bin/python -m bench.translation_public --backend offline [--sets drone,cleanup]
 [--limit N] [--json]``. Each set's translator is ``make_translator(backend,
-landmarks=<the set's proposition names>, **options)``, with the per-set options of the offline
-translator (``bench/translation.py``) when the backend is ``offline`` or ``combined``, none
-otherwise. Prints per
+landmarks=<the set's proposition names>, **options)``, with the set's conventions
+(``public.SET_OPTIONS``: the rules' options, as in ``bench/translation.py``) given to the rules
+and to the model alike (a model trained without convention inputs ignores them). Prints per
 set: n, formula equivalence (on automata), temporal alignment, referent WER, the
 wrong-and-unflagged share (returned, not equivalent to gold and not flagged by the backend: a
 refusal counts as flagged) and the median milliseconds per instruction. Reads
@@ -23,14 +23,20 @@ from typing import Any
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language import make_translator
 from ltl_instruct.core.language.evaluation import evaluate
-from ltl_instruct.core.language.neural.public import SETS, datasets_root, read_split
+from ltl_instruct.core.language.neural.public import SET_OPTIONS, SETS, datasets_root, read_split
 
-# the offline translator's options for the conventions of each set (as in bench/translation.py)
-OFFLINE_OPTIONS: dict[str, dict[str, str]] = {
-    'drone': {'avoid_scope': 'goal', 'numbers': 'digits'},
-    'lifted': {'once_scope': 'next', 'after_scope': 'conditional'},
-    'lifted_formula': {'once_scope': 'next', 'after_scope': 'conditional'},
-}
+
+def set_options(name: str, backend: str) -> dict[str, Any]:
+    """A set's conventions (``public.SET_OPTIONS``) as options of ``backend``: the model is told them too."""
+    given = SET_OPTIONS.get(name, {})
+    if backend in ('offline', 'combined'):
+        return dict(given)
+    if backend == 'neural':
+        opts: dict[str, Any] = {k: v for k, v in given.items() if k != 'numbers'}
+        if given.get('numbers') == 'digits':
+            opts['digits'] = True
+        return opts
+    return {}
 
 
 def run_set(name: str, backend: str, limit: int = 0, options: dict[str, Any] | None = None) -> dict[str, Any]:
@@ -39,7 +45,7 @@ def run_set(name: str, backend: str, limit: int = 0, options: dict[str, Any] | N
     examples = ds.examples
     if limit and limit < len(examples):
         examples = random.Random(0).sample(examples, limit)
-    opts = dict(OFFLINE_OPTIONS.get(name, {}) if backend in ('offline', 'combined') else {})
+    opts = set_options(name, backend)
     opts.update(options or {})
     translator = make_translator(backend, landmarks=ds.landmarks, **opts)
     # speed: one pass of translation alone over the distinct instructions (evaluate caches repeats)

@@ -27,7 +27,7 @@ from ltl_instruct.core.language.datasets import Example, read_dev
 from ltl_instruct.core.language.evaluation import EquivalenceChecker, evaluate
 from ltl_instruct.core.language.neural.public import SETS, datasets_root, read_split
 
-from bench.translation_public import OFFLINE_OPTIONS
+from bench.translation_public import set_options
 
 OVERRIDES = (0.5, 0.6, 0.7, 0.8, 0.85, 0.9, 0.95, 0.99, 1.01)
 TAKEOVERS = (0.3, 0.5, 0.7)
@@ -60,7 +60,7 @@ def score_set(name: str, limit: int, model_path: Optional[str],
               policies: Sequence[Policy]) -> list[dict[str, Any]]:
     """Read one set's instructions once; score every policy on them."""
     examples, landmarks = _examples(name, limit)
-    opts: dict[str, Any] = dict(OFFLINE_OPTIONS.get(name, {}))
+    opts = set_options(name, 'combined')
     combined = CombinedTranslator(model_path, landmarks=landmarks, **opts)
     readings = {text: combined.read(text) for text in dict.fromkeys(ex.instruction for ex in examples)}
     checker = EquivalenceChecker()

@@ -114,9 +114,11 @@ class CombinedTranslator:
         self.model: Optional[Translator] = None
         self.model_error = ''
         try:
+            from ltl_instruct.core.language.neural.features import CONVENTIONS
             from ltl_instruct.core.language.neural.translator import NeuralTranslator
+            conventions = {name: rule_options[name] for name, _, _ in CONVENTIONS if name in rule_options}
             self.model = NeuralTranslator(model_path, landmarks=landmarks,
-                                          digits=rule_options.get('numbers') == 'digits')
+                                          digits=rule_options.get('numbers') == 'digits', **conventions)
         except (LtlInstructError, ImportError) as e:
             self.model_error = str(e)
 

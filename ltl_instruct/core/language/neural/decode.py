@@ -7,6 +7,7 @@ the search stops when ``beam`` hypotheses are finished or none is left to extend
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Optional
 
 import torch
 
@@ -23,9 +24,10 @@ class Hypothesis:
 
 
 def beam_search(decoder: FormulaDecoder, h: torch.Tensor, mask: torch.Tensor, slots: torch.Tensor,
-                n_slots: int, beam: int = 5, max_len: int = 48) -> list[Hypothesis]:
+                n_slots: int, beam: int = 5, max_len: int = 48,
+                conv: Optional[torch.Tensor] = None) -> list[Hypothesis]:
     """Best finished hypotheses for one instruction (``h`` is ``(1, T, E)``), best first."""
-    mem, state, ctx = decoder.memory(h, mask, slots)
+    mem, state, ctx = decoder.memory(h, mask, slots, conv)
     live = [((), 0.0, GrammarState.start(max_len))]
     prev = torch.tensor([BOS])
     done: list[Hypothesis] = []

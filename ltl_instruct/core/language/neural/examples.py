@@ -37,6 +37,8 @@ class TaggedExample:
     mentions: spans of ``text``, in text order; every slot of ``lifted`` has at least one.
     slots: slot -> descriptor text in our syntax.
     source: where it came from (``generator:<construct>``, ``drone-planning.jsonl:12``).
+    conventions: ``(option, value)`` pairs of the conventions its formula follows where they are
+        not the defaults (``features.CONVENTIONS``: a data set's reading of words read two ways).
     """
 
     text: str
@@ -44,6 +46,7 @@ class TaggedExample:
     mentions: tuple[Mention, ...]
     slots: dict[str, str] = field(hash=False)
     source: str = ''
+    conventions: tuple[tuple[str, str], ...] = ()
 
     def formula(self) -> Formula:
         """Return the grounded formula: the lifted one with each slot replaced by its descriptor."""

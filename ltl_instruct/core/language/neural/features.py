@@ -11,7 +11,9 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Optional, Sequence
+from typing import TYPE_CHECKING, Mapping, Optional, Sequence
+
+from ltl_instruct.core.errors import ErrorCode, TranslationError
 
 from ltl_instruct.core.language.neural.encoder import Pieces
 from ltl_instruct.core.language.neural.examples import Mention, TaggedExample
@@ -23,6 +25,27 @@ if TYPE_CHECKING:
 
 TAG_O, TAG_B, TAG_I = 0, 1, 2
 N_TAGS = 3
+# Conventions where the same words are read two ways (the rules' options of the same names, with
+# their defaults): the decoder is told which one an instruction follows, so that data sets that
+# read "avoid X" as until the goal (drone-planning) or "after" as a condition (lifted.csv) do not
+# contradict the others in training. Each entry: option, default, the other reading.
+CONVENTIONS = (('avoid_scope', 'global', 'goal'), ('once_scope', 'run', 'next'),
+               ('after_scope', 'goal', 'conditional'))
+
+
+def convention_vector(options: Mapping[str, str]) -> list[float]:
+    """One 0/1 entry per convention of :data:`CONVENTIONS`: 1 where ``options`` picks the other reading.
+
+    Raises ``TranslationError`` (``INVALID_INPUT``) on a value that is neither reading.
+    """
+    out = []
+    for name, default, other in CONVENTIONS:
+        value = options.get(name, default)
+        if value not in (default, other):
+            raise TranslationError(f'{name} must be {default!r} or {other!r}, not {value!r}',
+                                   ErrorCode.INVALID_INPUT)
+        out.append(1.0 if value == other else 0.0)
+    return out
 
 
 def piece_tags(pieces: Pieces, mentions: Sequence[Mention]) -> tuple[list[int], list[int]]:

@@ -39,7 +39,7 @@ _SOURCE_RATE = 0.2   # carried things said with where they are taken from ("the 
 _RULE_WEIGHTS = {'unordered': 1.5, 'unordered3': 0.7, 'sequence_list': 0.8, 'before': 1.5, 'not_until': 1.2,
                  'stay_until': 0.8, 'weak_first': 0.5, 'avoid_global': 3, 'avoid_onway': 1.2,
                  'avoid_after': 1, 'xor': 1, 'at_most_once': 0.8, 'exactly_once': 0.8, 'exactly_twice': 0.6,
-                 'whenever': 1, 'if_then': 0.8, 'patrol': 0.8, 'patrol1': 0.6, 'route_twice': 0.4,
+                 'at_least_n': 0.5, 'at_most_n': 0.5, 'exactly_n': 0.5, 'whenever': 1, 'if_then': 0.8, 'patrol': 0.8, 'patrol1': 0.6, 'route_twice': 0.4,
                  'before_that': 1, 'swap_order': 0.6, 'either_order': 0.4, 'drop_correction': 0.6,
                  'count_correction': 0.3, 'avoid_retract': 0.5, 'avoid_cancel': 0.4, 'list_first': 0.4,
                  'list_second': 0.5, 'list_third': 0.4, 'list_before_last': 0.2, 'list_reverse': 0.3,
@@ -114,7 +114,7 @@ class _Tables:
                              'mid': tuple(_compile(t, rw) for t in spec['text'] if not t.startswith('^')),
                              'bare': tuple(_compile(t, rw) for t in spec.get('bare', ()))}
                       for name, spec in raw['steps'].items()}
-        self.rules = {name: {'formula': spec['formula'],
+        self.rules = {name: {'formula': spec.get('formula', ''), 'count': spec.get('count'),
                              'things': dict(spec.get('things', {})),
                              'text': tuple(_compile(t, rw) for t in spec['text'])}
                       for name, spec in raw['rules'].items()}
@@ -335,6 +335,8 @@ class Generator:
             return self.rng.choice(raw['neg_avoid_verbs'])
         if key == 'ALWAYS':
             return self.rng.choice(raw['always_suffixes'])
+        if key == 'N':
+            return self.count_text
         raise KeyError(key)
 
     def _render(self, tpl: _Template, ids: dict[str, int]) -> list[Segment]:
@@ -431,14 +433,19 @@ class Generator:
         ids: dict[str, int] = {}
         tpl = self.rng.choice(spec['text'])
         said = {val for is_ph, val in tpl.parts if is_ph}
+        formula = spec['formula']
+        if spec['count']:
+            n = self.rng.randint(2, 9)
+            formula = _count_formula(spec['count'], n)
+            self.count_text = str(n) if self.rng.random() < 0.5 else self.t.raw['number_words'][n - 1]
         for key in _THING_KEYS:
-            in_formula = '{' + key + '}' in spec['formula']
+            in_formula = '{' + key + '}' in formula
             if not in_formula and key not in said:
                 continue
             role = spec['things'].get(key, 'place')
             plain = role.endswith('!') or not in_formula or key in tpl.plain or self.rng.random() < 0.5
             ids[key] = self._thing(role.rstrip('!'), plain=plain)
-        return self._render(tpl, ids), self._formula(spec['formula'], ids), tpl.requestable
+        return self._render(tpl, ids), self._formula(formula, ids), tpl.requestable
 
     # ---- one example ---------------------------------------------------------------------
 
@@ -587,6 +594,14 @@ def _typo(word: str, rng: random.Random) -> str:
     if op == 1:
         return word[:i] + word[i + 1:]
     return word[:i] + word[i] + word[i:]
+
+
+def _count_formula(builder: str, n: int) -> str:
+    """The formula template (over ``{A}``) of ``n`` visits by ``task.at_least`` / ``at_most`` / ``exactly``."""
+    from ltl_instruct.core.language import task
+    from ltl_instruct.core.spec import parse_formula
+    counted = getattr(task, builder)(parse_formula('near[counted_place]'), n)
+    return str(counted).replace('counted_place', '{A}')
 
 
 def _top_level_binary(formula: str) -> bool:

@@ -13,7 +13,7 @@ Shapes: encoder states ``H`` are ``(B, T, E)`` (E = 384 for MiniLM), ``mask`` ``
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass
-from typing import Any
+from typing import Any, Optional
 
 import torch
 from torch import nn
@@ -31,6 +31,7 @@ class NetConfig:
     hidden: int = 256
     token_dim: int = 64
     dropout: float = 0.1
+    conventions: int = 0          # convention inputs (features.CONVENTIONS); 0: a bundle without them
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready sizes."""
@@ -60,6 +61,7 @@ class FormulaDecoder(nn.Module):
         d = c.hidden
         self.proj = nn.Linear(c.encoder_dim, d)
         self.slot = nn.Embedding(MAX_SLOTS + 1, d)
+        self.conv = nn.Linear(c.conventions, d, bias=False) if c.conventions else None
         self.mem_rnn = nn.GRU(d, d // 2, batch_first=True, bidirectional=True)
         self.init = nn.Linear(d, d)
         self.tok = nn.Embedding(VOCAB_SIZE, c.token_dim)
@@ -68,9 +70,17 @@ class FormulaDecoder(nn.Module):
         self.out = nn.Linear(2 * d, VOCAB_SIZE)
         self.drop = nn.Dropout(c.dropout)
 
-    def memory(self, h: torch.Tensor, mask: torch.Tensor, slots: torch.Tensor) -> tuple[torch.Tensor, ...]:
-        """Memory ``(B, T, d)`` and the initial state ``(B, d)`` and context ``(B, d)``."""
-        x = self.drop(torch.tanh(self.proj(h)) + self.slot(slots))
+    def memory(self, h: torch.Tensor, mask: torch.Tensor, slots: torch.Tensor,
+               conv: Optional[torch.Tensor] = None) -> tuple[torch.Tensor, ...]:
+        """Memory ``(B, T, d)`` and the initial state ``(B, d)`` and context ``(B, d)``.
+
+        ``conv`` ``(B, C)``: the conventions the instruction follows (none given: the defaults).
+        """
+        x = torch.tanh(self.proj(h)) + self.slot(slots)
+        if self.conv is not None:
+            given = conv if conv is not None else h.new_zeros((h.shape[0], self.conv.in_features))
+            x = x + self.conv(given).unsqueeze(1)
+        x = self.drop(x)
         mem, _ = self.mem_rnn(x)
         m = mask.unsqueeze(-1).to(mem.dtype)
         pooled = (mem * m).sum(1) / m.sum(1).clamp(min=1.0)
@@ -88,9 +98,9 @@ class FormulaDecoder(nn.Module):
         return logits, state, ctx
 
     def forward(self, h: torch.Tensor, mask: torch.Tensor, slots: torch.Tensor,
-                targets: torch.Tensor) -> torch.Tensor:
+                targets: torch.Tensor, conv: Optional[torch.Tensor] = None) -> torch.Tensor:
         """Teacher-forced logits ``(B, L, V)`` for target ids ``(B, L)`` (padding anything)."""
-        mem, state, ctx = self.memory(h, mask, slots)
+        mem, state, ctx = self.memory(h, mask, slots, conv)
         prev = torch.full((h.shape[0],), BOS, dtype=torch.long)
         out = []
         for t in range(targets.shape[1]):

@@ -62,6 +62,7 @@ from __future__ import annotations
 
 import collections
 import csv
+import dataclasses
 import functools
 import hashlib
 import json
@@ -76,6 +77,13 @@ from ltl_instruct.core.language.datasets import DataSet, Example, parse_prefix_l
 from ltl_instruct.core.language.neural.examples import Mention, TaggedExample, check_example
 from ltl_instruct.core.spec import Descriptor, Formula, parse_formula, referents_of, rename_descriptors
 
+# the conventions of each set's formulas, as options of the translators (rules and model) that
+# read them; bench.translation_public and bench.translator_policy give them to both
+SET_OPTIONS: dict[str, dict[str, str]] = {
+    'drone': {'avoid_scope': 'goal', 'numbers': 'digits'},
+    'lifted': {'once_scope': 'next', 'after_scope': 'conditional'},
+    'lifted_formula': {'once_scope': 'next', 'after_scope': 'conditional'},
+}
 SETS: tuple[str, ...] = ('drone', 'cleanup', 'pick_and_place', 'lifted', 'lifted_formula',
                          'providence', 'cleanup_l2l')
 SALT = 'ltl_instruct-translate-test-v1'
@@ -543,6 +551,7 @@ def _tagged(name: str, root: Path) -> tuple[tuple[TaggedExample, ...], collectio
     _check_name(name)
     items = _train_items(name, root)
     find = _finder(name, root)
+    conventions = tuple((k, v) for k, v in SET_OPTIONS.get(name, {}).items() if k != 'numbers')
     out: list[TaggedExample] = []
     reasons: collections.Counter[str] = collections.Counter()
     for it in items:
@@ -550,7 +559,7 @@ def _tagged(name: str, root: Path) -> tuple[tuple[TaggedExample, ...], collectio
         if isinstance(got, str):
             reasons[got] += 1
         else:
-            out.append(got)
+            out.append(dataclasses.replace(got, conventions=conventions))
     return tuple(out), reasons
 
 

@@ -24,7 +24,7 @@ from ltl_instruct.core.language.neural.encoder import (
     BertEncoder, WordPieces, load_encoder, pad_batch, packaged_model_dir,
 )
 from ltl_instruct.core.language.neural.examples import TaggedExample
-from ltl_instruct.core.language.neural.features import example_tags
+from ltl_instruct.core.language.neural.features import CONVENTIONS, convention_vector, example_tags
 from ltl_instruct.core.language.neural.grammar import MAX_SLOTS, TOKEN_ID, TOKENS
 from ltl_instruct.core.language.neural.macros import lifted_tokens
 from ltl_instruct.core.language.neural.model import NetConfig, TranslatorNet
@@ -58,7 +58,7 @@ class TrainConfig:
     seed: int = 0
     threads: int = 2
     time_budget_s: float = 60 * 60
-    net: NetConfig = field(default_factory=NetConfig)
+    net: NetConfig = field(default_factory=lambda: NetConfig(conventions=len(CONVENTIONS)))
 
 
 @dataclass
@@ -69,6 +69,7 @@ class Encoded:
     tags: torch.Tensor        # (T,)
     slots: torch.Tensor       # (T,)
     target: torch.Tensor      # (L,)
+    conv: torch.Tensor        # (C,) the conventions its formula follows (features.CONVENTIONS)
 
 
 def training_examples(cfg: TrainConfig, log: Callable[[str], None] = print) -> list[TaggedExample]:
@@ -113,7 +114,8 @@ def encode_examples(examples: Sequence[TaggedExample], encoder: BertEncoder, pie
             continue
         tags, slots = example_tags(ex, pieces[ex.text])
         out.append(Encoded(states[ex.text], torch.tensor(tags), torch.tensor(slots),
-                           torch.tensor([TOKEN_ID[t] for t in tokens])))
+                           torch.tensor([TOKEN_ID[t] for t in tokens]),
+                           torch.tensor(convention_vector(dict(ex.conventions)))))
     return out
 
 
@@ -122,13 +124,13 @@ def _pad(seqs: Sequence[torch.Tensor], value: float) -> torch.Tensor:
 
 
 def batch_tensors(items: Sequence[Encoded]) -> tuple[torch.Tensor, ...]:
-    """Pad a batch into ``states, mask, tags, slots, targets`` of a batch (padding ignored by the losses)."""
+    """Pad a batch into ``states, mask, tags, slots, targets, conventions`` (padding ignored by the losses)."""
     h = _pad([e.states.float() for e in items], 0.0)
     mask = _pad([torch.ones(len(e.tags), dtype=torch.long) for e in items], 0)
     tags = _pad([e.tags for e in items], -100)
     slots = _pad([e.slots for e in items], 0)
     targets = _pad([e.target for e in items], -100)
-    return h, mask, tags, slots, targets
+    return h, mask, tags, slots, targets, torch.stack([e.conv for e in items])
 
 
 def _batches(data: Sequence[Encoded], size: int, rng: random.Random) -> list[list[Encoded]]:
@@ -145,11 +147,11 @@ def loss_of(net: TranslatorNet, batch: Sequence[Encoded]) -> tuple[torch.Tensor,
 
 
 def losses(net: TranslatorNet, h: torch.Tensor, mask: torch.Tensor, tags: torch.Tensor, slots: torch.Tensor,
-           targets: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+           targets: torch.Tensor, conv: Optional[torch.Tensor] = None) -> tuple[torch.Tensor, torch.Tensor]:
     """Tagging and decoding losses from encoder states (frozen or being fine-tuned)."""
     ce = nn.functional.cross_entropy
     tag_loss = ce(net.tagger(h).reshape(-1, 3), tags.reshape(-1), ignore_index=-100)
-    logits = net.decoder(h, mask, slots, targets.clamp(min=0))
+    logits = net.decoder(h, mask, slots, targets.clamp(min=0), conv)
     dec_loss = ce(logits.reshape(-1, logits.shape[-1]), targets.reshape(-1), ignore_index=-100)
     return tag_loss, dec_loss
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 import math
 import threading
 from pathlib import Path
-from typing import Optional, Sequence
+from typing import Mapping, Optional, Sequence
 
 import torch
 
@@ -31,7 +31,9 @@ from ltl_instruct.core.language.neural.decode import Hypothesis, beam_search
 from ltl_instruct.core.language.neural.encoder import (
     WordPieces, load_encoder, pad_batch, packaged_model_dir,
 )
-from ltl_instruct.core.language.neural.features import FoundMention, mentions_from_tags, slot_numbers
+from ltl_instruct.core.language.neural.features import (
+    CONVENTIONS, FoundMention, convention_vector, mentions_from_tags, slot_numbers,
+)
 from ltl_instruct.core.language.neural.grammar import from_prefix, slots_used
 from ltl_instruct.core.language.neural.model import TranslatorNet
 from ltl_instruct.core.language.neural.training import load_bundle
@@ -50,7 +52,7 @@ class NeuralTranslator:
 
     def __init__(self, model_path: Optional[str | Path] = None, encoder_path: Optional[str | Path] = None,
                  beam: int = 5, flag_below: float = 0.6, landmarks: Sequence[str] = (),
-                 digits: bool = False) -> None:
+                 digits: bool = False, **conventions: str) -> None:
         bundle = Path(model_path) if model_path else SHIPPED_BUNDLE
         try:
             net = load_bundle(bundle)
@@ -59,19 +61,24 @@ class NeuralTranslator:
         except (OSError, KeyError, TypeError, ValueError, RuntimeError, ImportError) as e:
             raise TranslationError(f'cannot load the learned translator from {bundle}: {e}',
                                    ErrorCode.MODEL_ERROR) from e
-        self._assemble(net, encoder, pieces, beam, flag_below, landmarks, digits)
+        self._assemble(net, encoder, pieces, beam, flag_below, landmarks, digits, conventions)
 
     @classmethod
     def from_parts(cls, net: TranslatorNet, encoder: torch.nn.Module, pieces: WordPieces, beam: int = 5,
                    flag_below: float = 0.6, landmarks: Sequence[str] = (),
-                   digits: bool = False) -> 'NeuralTranslator':
+                   digits: bool = False, **conventions: str) -> 'NeuralTranslator':
         """Build a translator from networks in memory (a benchmark's freshly trained ones)."""
         self = cls.__new__(cls)
-        self._assemble(net, encoder, pieces, beam, flag_below, landmarks, digits)
+        self._assemble(net, encoder, pieces, beam, flag_below, landmarks, digits, conventions)
         return self
 
     def _assemble(self, net: TranslatorNet, encoder: torch.nn.Module, pieces: WordPieces, beam: int,
-                  flag_below: float, landmarks: Sequence[str], digits: bool) -> None:
+                  flag_below: float, landmarks: Sequence[str], digits: bool,
+                  conventions: Mapping[str, str]) -> None:
+        unknown = sorted(set(conventions) - {name for name, _, _ in CONVENTIONS})
+        if unknown:
+            raise TypeError(f'unexpected option {unknown[0]!r}')
+        self.conv = torch.tensor([convention_vector(conventions)])
         self.net, self.encoder, self.pieces = net.eval(), encoder.eval(), pieces
         self.beam = beam
         self.flag_below = flag_below
@@ -94,7 +101,7 @@ class NeuralTranslator:
             mentions = mentions_from_tags(text, pieces, tags, self.landmarks, self.digits)
             slots = torch.tensor([slot_numbers(pieces, mentions)])
             n_slots = len({m.slot for m in mentions})
-            hyps = beam_search(self.net.decoder, h, mask, slots, n_slots, beam=self.beam)
+            hyps = beam_search(self.net.decoder, h, mask, slots, n_slots, beam=self.beam, conv=self.conv)
         return mentions, hyps, max(b for _, b in pieces.offsets)   # the encoder reads at most MAX_WORDPIECES
 
     def translate(self, instruction: str) -> Translation:

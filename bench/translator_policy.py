@@ -69,7 +69,8 @@ def score_set(name: str, limit: int, model_path: Optional[str],
         replay = _Replay(combined, readings, policy)
         summary = evaluate(replay, examples, checker).summary()   # type: ignore[arg-type]
         out.append({'set': name, 'n': summary['examples'], 'takeover': policy.takeover,
-                    'override': policy.override, 'counts': policy.counts, 'temporal_alignment': summary['temporal_alignment'],
+                    'override': policy.override, 'counts': policy.counts,
+                    'temporal_alignment': summary['temporal_alignment'],
                     'equivalence': summary['equivalence_accuracy'],
                     'wrong_unflagged': summary['wrong_unflagged_share']})
     return out
@@ -116,7 +117,8 @@ def _print_table(rows: list[dict[str, Any]], policies: Sequence[Policy]) -> None
                      and r['counts'] == p.counts)
             cells.append(f'{r["temporal_alignment"]:.3f}/{r["wrong_unflagged"]:.3f}')
             tas.append(r['temporal_alignment'])
-        print(f'{p.takeover:8.2f} {p.override:8.2f} {"yes" if p.counts else "no":>6s}  ' + '  '.join(f'{c:>12s}' for c in cells)
+        counts = 'yes' if p.counts else 'no'
+        print(f'{p.takeover:8.2f} {p.override:8.2f} {counts:>6s}  ' + '  '.join(f'{c:>12s}' for c in cells)
               + f'   {sum(tas) / len(tas):.3f}')
 
 

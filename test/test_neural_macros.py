@@ -79,7 +79,8 @@ def test_macros_read_back_as_the_task_builders_write_them():
     assert from_prefix(['atmost', '2', 'near', 's1']) == at_most(parse_formula(A), 2)
     assert from_prefix(['exactly', '1', 'near', 's1']) == exactly(parse_formula(A), 1)
     # a chain inside another operator is expanded before the operator takes it
-    assert from_prefix(['G', 'ordered', 'near', 's1', 'near', 's2']) == parse_formula(f'G ((!{B} U {A}) & F {B})')
+    chain_in_g = parse_formula(f'G ((!{B} U {A}) & F {B})')
+    assert from_prefix(['G', 'ordered', 'near', 's1', 'near', 's2']) == chain_in_g
 
 
 def test_a_count_position_takes_only_a_count():

@@ -146,9 +146,9 @@ class CombinedTranslator:
         """Pick the one reading that goes on (raises the rules' refusal when none may)."""
         rules, refusal, model = readings
         if rules is not None:
+            counted = counts_visits(rules.formula) or (model is not None and counts_visits(model.formula))
             if model is not None and not same_task(rules.formula, model.formula) \
-                    and (policy.counts or not (counts_visits(rules.formula) or counts_visits(model.formula))) \
-                    and self._sure(model, policy.override):
+                    and (policy.counts or not counted) and self._sure(model, policy.override):
                 return self._from_model(model, self._differs_note(rules), [format_formula(rules.formula)],
                                         rules_error=None)
             return self._with_rules(rules, model)

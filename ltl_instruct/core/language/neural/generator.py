@@ -39,7 +39,8 @@ _SOURCE_RATE = 0.2   # carried things said with where they are taken from ("the 
 _RULE_WEIGHTS = {'unordered': 1.5, 'unordered3': 0.7, 'sequence_list': 0.8, 'before': 1.5, 'not_until': 1.2,
                  'stay_until': 0.8, 'weak_first': 0.5, 'avoid_global': 3, 'avoid_onway': 1.2,
                  'avoid_after': 1, 'xor': 1, 'at_most_once': 0.8, 'exactly_once': 0.8, 'exactly_twice': 0.6,
-                 'at_least_n': 0.5, 'at_most_n': 0.5, 'exactly_n': 0.5, 'whenever': 1, 'if_then': 0.8, 'patrol': 0.8, 'patrol1': 0.6, 'route_twice': 0.4,
+                 'at_least_n': 0.5, 'at_most_n': 0.5, 'exactly_n': 0.5,
+                 'whenever': 1, 'if_then': 0.8, 'patrol': 0.8, 'patrol1': 0.6, 'route_twice': 0.4,
                  'before_that': 1, 'swap_order': 0.6, 'either_order': 0.4, 'drop_correction': 0.6,
                  'count_correction': 0.3, 'avoid_retract': 0.5, 'avoid_cancel': 0.4, 'list_first': 0.4,
                  'list_second': 0.5, 'list_third': 0.4, 'list_before_last': 0.2, 'list_reverse': 0.3,
@@ -597,7 +598,7 @@ def _typo(word: str, rng: random.Random) -> str:
 
 
 def _count_formula(builder: str, n: int) -> str:
-    """The formula template (over ``{A}``) of ``n`` visits by ``task.at_least`` / ``at_most`` / ``exactly``."""
+    """The formula template (over ``{A}``) of ``n`` visits: ``task.at_least`` / ``at_most`` / ``exactly``."""
     from ltl_instruct.core.language import task
     from ltl_instruct.core.spec import parse_formula
     counted = getattr(task, builder)(parse_formula('near[counted_place]'), n)

@@ -108,10 +108,10 @@ def _edge(c: Formula) -> Optional[tuple[Atom, Atom, bool]]:
     y, x = c.left.operand, c.right
     if isinstance(x, Atom):
         return (x, y, False) if x != y else None
-    inner = x
-    if (isinstance(inner, Until) and inner.left == y and isinstance(inner.right, Until)
-            and inner.right.left == Not(y) and isinstance(inner.right.right, Atom) and inner.right.right != y):
-        return y, inner.right.right, True
+    if isinstance(x, Until) and x.left == y and isinstance(x.right, Until) and x.right.left == Not(y):
+        nxt = x.right.right
+        if isinstance(nxt, Atom) and nxt != y:
+            return y, nxt, True
     return None
 
 
@@ -145,7 +145,8 @@ def with_chains(conjuncts: list[Formula]) -> list[Part]:
     for strict in strict_options:
         chain = Chain(strict, tuple(order))
         covered = _covered(chain.formula(), set(order), conjuncts)
-        if covered and _same(conjoin(*(conjuncts[i] for i in covered)), chain.formula()):  # type: ignore[arg-type]
+        whole = conjoin(*(conjuncts[i] for i in covered))
+        if whole is not None and _same(whole, chain.formula()):
             rest: list[Part] = [c for i, c in enumerate(conjuncts) if i not in covered]
             return [chain, *rest]
     return list(conjuncts)

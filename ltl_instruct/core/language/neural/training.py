@@ -124,7 +124,7 @@ def _pad(seqs: Sequence[torch.Tensor], value: float) -> torch.Tensor:
 
 
 def batch_tensors(items: Sequence[Encoded]) -> tuple[torch.Tensor, ...]:
-    """Pad a batch into ``states, mask, tags, slots, targets, conventions`` (padding ignored by the losses)."""
+    """Pad a batch into ``states, mask, tags, slots, targets, conventions`` (padding ignored by losses)."""
     h = _pad([e.states.float() for e in items], 0.0)
     mask = _pad([torch.ones(len(e.tags), dtype=torch.long) for e in items], 0)
     tags = _pad([e.tags for e in items], -100)

@@ -598,7 +598,7 @@ def _typo(word: str, rng: random.Random) -> str:
 
 
 def _count_formula(builder: str, n: int) -> str:
-    """The formula template (over ``{A}``) of ``n`` visits: ``task.at_least`` / ``at_most`` / ``exactly``."""
+    """Return the formula (over ``{A}``) of ``n`` visits: ``task.at_least`` / ``at_most`` / ``exactly``."""
     from ltl_instruct.core.language import task
     from ltl_instruct.core.spec import parse_formula
     counted = getattr(task, builder)(parse_formula('near[counted_place]'), n)

@@ -92,7 +92,7 @@ class Chain:
 
 
 def chain_of(kind: str, first: Formula, rest: 'Formula | Chain') -> Chain:
-    """The chain ``first`` then ``rest`` (a chain of the same kind goes on, anything else ends it)."""
+    """Return the chain ``first`` then ``rest`` (a chain of the same kind goes on, anything else ends it)."""
     strict = kind == 'strict'
     if isinstance(rest, Chain) and rest.strict == strict:
         return Chain(strict, (first,) + rest.items)
@@ -115,7 +115,7 @@ def from_prefix(tokens: Sequence[str]) -> Formula:
 
 
 def _build(tokens: Sequence[str]) -> Optional[Formula]:
-    """The formula of a prefix sequence, None if it is not one (IndexError if an operand is missing)."""
+    """Return the formula of a prefix sequence, None if not one (IndexError if an operand is missing)."""
     values: list[object] = []   # built right to left: operands are on top when an operator comes
     for tok in reversed(tokens):
         if tok in SLOTS or tok in IMPLIED:

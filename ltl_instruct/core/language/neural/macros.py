@@ -116,7 +116,7 @@ def _edge(c: Formula) -> Optional[tuple[Atom, Atom, bool]]:
 
 
 def _order(edges: set[tuple[Atom, Atom]]) -> Optional[list[Atom]]:
-    """The places in the one order the edges allow, if consecutive places are all joined by an edge."""
+    """Return the places in the one order the edges allow, if consecutive ones are all joined by an edge."""
     nodes = {a for e in edges for a in e}
     before = {n: {a for a, b in edges if b == n} for n in nodes}
     order: list[Atom] = []
@@ -134,7 +134,7 @@ def _order(edges: set[tuple[Atom, Atom]]) -> Optional[list[Atom]]:
 
 
 def with_chains(conjuncts: list[Formula]) -> list[Part]:
-    """The conjuncts, those that make an ordered chain of places replaced by the chain (when equivalent)."""
+    """Return the conjuncts, those making an ordered chain of places replaced by the chain (if equivalent)."""
     found = [(_edge(c), c) for c in conjuncts]
     plain = {(e[0], e[1]) for e, _ in found if e is not None and not e[2]}
     order = _order(plain) if plain else None
@@ -153,7 +153,7 @@ def with_chains(conjuncts: list[Formula]) -> list[Part]:
 
 
 def _covered(chain: Formula, places: set[Atom], conjuncts: Sequence[Formula]) -> list[int]:
-    """Indices of the conjuncts over ``places`` that ``chain`` implies."""
+    """Return the indices of the conjuncts over ``places`` that ``chain`` implies."""
     out = []
     for i, c in enumerate(conjuncts):
         if set(_atoms(c)) <= places and _same(conjoin(chain, c), chain):  # type: ignore[arg-type]

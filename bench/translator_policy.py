@@ -69,7 +69,7 @@ def score_set(name: str, limit: int, model_path: Optional[str],
         replay = _Replay(combined, readings, policy)
         summary = evaluate(replay, examples, checker).summary()   # type: ignore[arg-type]
         out.append({'set': name, 'n': summary['examples'], 'takeover': policy.takeover,
-                    'override': policy.override, 'counts': policy.counts,
+                    'override': policy.override, 'counts': policy.counts, 'off_map': policy.off_map,
                     'temporal_alignment': summary['temporal_alignment'],
                     'equivalence': summary['equivalence_accuracy'],
                     'wrong_unflagged': summary['wrong_unflagged_share']})
@@ -85,13 +85,15 @@ def main(argv: list[str]) -> int:
     ap.add_argument('--override', default=','.join(map(str, OVERRIDES)))
     ap.add_argument('--takeover', default=','.join(map(str, TAKEOVERS)))
     ap.add_argument('--counts', default='no', help='no, yes or no,yes: may the model override a count')
+    ap.add_argument('--off-map', default='yes', help='no, yes or no,yes: Policy.off_map')
     ap.add_argument('--model-path', default=None, help='translator bundle (default: shipped)')
     ap.add_argument('--json', action='store_true', help='one JSON object per set and policy')
     args = ap.parse_args(argv)
     if datasets_root() is None or not Path(datasets_root()).is_dir():   # type: ignore[arg-type]
         print('public data sets not found (../shared/datasets or $LTL_INSTRUCT_DATASETS)', file=sys.stderr)
         return 1
-    policies = [Policy(float(t), float(o), c == 'yes') for c in args.counts.split(',')
+    policies = [Policy(float(t), float(o), c == 'yes', m == 'yes') for m in args.off_map.split(',')
+                for c in args.counts.split(',')
                 for t in args.takeover.split(',') for o in args.override.split(',')]
     rows: list[dict[str, Any]] = []
     for name in [n.strip() for n in args.sets.split(',') if n.strip()]:
@@ -114,7 +116,7 @@ def _print_table(rows: list[dict[str, Any]], policies: Sequence[Policy]) -> None
         for n in names:
             r = next(r for r in rows
                      if r['set'] == n and r['takeover'] == p.takeover and r['override'] == p.override
-                     and r['counts'] == p.counts)
+                     and r['counts'] == p.counts and r['off_map'] == p.off_map)
             cells.append(f'{r["temporal_alignment"]:.3f}/{r["wrong_unflagged"]:.3f}')
             tas.append(r['temporal_alignment'])
         counts = 'yes' if p.counts else 'no'

@@ -108,3 +108,22 @@ def test_a_clause_read_as_one_name_is_not_sure(combined):
     t = combined.decide((_rules(RULES), None, _model(related, 0.99, mentions=('dock::isnextto(tv)',))),
                         Policy(override=0.5))
     assert str(t.formula) == related   # a thing with its relations is a parsed name
+
+
+def test_a_reading_naming_what_the_map_lacks_gives_way_at_takeover_confidence():
+    """With landmarks given, the rules' "green" is no place of the map; the model's green_room is."""
+    mapped = CombinedTranslator(model_path='/nonexistent/bundle',
+                                landmarks=('green_room', 'red_room', 'blue_room'))
+    said = 'F (near[green] & F (near[red_room] & F near[blue_room]))'    # "through the green or red room"
+    meant = 'F ((near[green_room] | near[red_room]) & F near[blue_room])'
+    rules = _rules(said)
+    model = _model(meant, 0.6, mentions=('green_room', 'red_room', 'blue_room'))
+    t = mapped.decide((rules, None, model), Policy(takeover=0.5, override=0.95))
+    assert str(t.formula) == meant and t.extra['flagged']
+    assert said in t.extra['alternatives']
+    # not without the policy, and not below the takeover confidence
+    t = mapped.decide((rules, None, model), Policy(takeover=0.5, override=0.95, off_map=False))
+    assert str(t.formula) == said and t.extra['flagged']
+    weak = _model(meant, 0.4, mentions=('green_room', 'red_room', 'blue_room'))
+    t = mapped.decide((rules, None, weak), Policy(takeover=0.5, override=0.95))
+    assert str(t.formula) == said and t.extra['flagged']

@@ -7,8 +7,11 @@ from __future__ import annotations
 
 import pytest
 
+from ltl_instruct.core.automaton.dfa import equivalent
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language import make_translator
+from ltl_instruct.core.language.task import at_least, at_most, exactly
+from ltl_instruct.core.spec import parse_formula, referents_of
 
 
 @pytest.fixture(scope='module')
@@ -28,9 +31,6 @@ def combined():
     ('throw away the banana peel', 'F (near[banana_peel] & F (pick[banana_peel] & F (near[trash_can] & '
      'F release[banana_peel, trash_can])))'),
     ('Find Bookstore and then find Marston Hall', 'F (near[bookstore] & F near[marston_hall])'),
-    ('pick up the green plush toy and put it in the basket',
-     'F (near[green_plush_toy] & F (pick[green_plush_toy] & F (near[basket] & '
-     'F release[green_plush_toy, basket])))'),
 ])
 def test_the_model_reads_what_the_rules_misread(neural, text, formula):
     assert str(neural.translate(text).formula) == formula
@@ -48,9 +48,25 @@ def test_the_model_reads_what_the_rules_misread(neural, text, formula):
     # a request for the speaker is a pick-up: the robot brings it
     ('I need my charger', 'F (near[charger] & F pick[charger])'),
     ('go to the garage, then bring me the toolbox', 'F (near[garage] & F (near[toolbox] & F pick[toolbox]))'),
+    ('pick up the green plush toy and put it in the basket',
+     'F (near[green_plush_toy] & F (pick[green_plush_toy] & F (near[basket] & '
+     'F release[green_plush_toy, basket])))'),
 ])
 def test_household_requests(combined, text, formula):
     assert str(combined.translate(text).formula) == formula
+
+
+@pytest.mark.parametrize('text, builder, n', [
+    ('go to the kitchen exactly three times', exactly, 3),
+    ("don't visit the garage more than four times", at_most, 4),
+    ('visit the porch at least five times', at_least, 5),
+    ('go to the office 2 times at most', at_most, 2),
+])
+def test_the_model_counts_visits(neural, text, builder, n):
+    """Counts are macros of the decoder's language (``atleast N x``...): a count of 5 is 4 tokens."""
+    got = neural.translate(text).formula
+    place = parse_formula(f'near[{referents_of(got)[0]}]')
+    assert equivalent(got, builder(place, n))
 
 
 @pytest.mark.parametrize('text', [

@@ -10,8 +10,12 @@ Policy (measured on the public sets' held-out splits; see the README, "translate
   (confidence at least ``override``, every mention used, every name made of words or
   landmarks given, no name of more than ``MAX_PLAIN_NAME_WORDS`` words that the phrase reader
   could not split into a thing and its relations) and neither reading counts visits (a place
-  named ``COUNTED`` times or more: the model writes a count as nested visits and miscounts):
-  then the model's reading, **flagged**, with the rules' as the alternative;
+  named ``COUNTED`` times or more: an earlier model, without count macros, miscounted; the
+  current one was measured with and without the guard, ``Policy.counts``):
+  then the model's reading, **flagged**, with the rules' as the alternative. Where landmarks
+  are given (the map's names) and the rules' reading names something that is none of them while
+  the model's names only landmarks, ``takeover`` confidence is enough, as for a refusal: a name
+  the map lacks would fail at grounding (``Policy.off_map``);
 - the rules refuse because words could not be placed (never a count, limit or input rule they
   enforce) and the model reads it, using every mention, with confidence at least ``takeover`` (the share of
   the beam's probability on its reading): the model's reading, **flagged**, with what the rules
@@ -86,11 +90,15 @@ class Policy:
         confidence or more (above 1: never). Chosen on the validation splits and the dev set by
         ``bench.translator_policy``; the README gives the figures.
     counts: whether the model may override a reading that counts visits (its own or the rules').
+    off_map: where landmarks are given and the rules' reading names something that is not one
+        while the model's names only landmarks, the model's reading goes on at ``takeover``
+        confidence, as for a refusal (a name the map lacks fails at grounding anyway).
     """
 
     takeover: float = 0.5
-    override: float = 0.9
+    override: float = 0.95
     counts: bool = False
+    off_map: bool = True
 
 
 # what the rules and the model made of one instruction: (rules' reading, rules' refusal, model's reading)
@@ -146,9 +154,7 @@ class CombinedTranslator:
         """Pick the one reading that goes on (raises the rules' refusal when none may)."""
         rules, refusal, model = readings
         if rules is not None:
-            counted = counts_visits(rules.formula) or (model is not None and counts_visits(model.formula))
-            if model is not None and not same_task(rules.formula, model.formula) \
-                    and (policy.counts or not counted) and self._sure(model, policy.override):
+            if model is not None and self._overrides(rules, model, policy):
                 return self._from_model(model, self._differs_note(rules), [format_formula(rules.formula)],
                                         rules_error=None)
             return self._with_rules(rules, model)
@@ -160,6 +166,15 @@ class CombinedTranslator:
             return self._from_model(model, note, [best] if isinstance(best, str) else [],
                                     rules_error=refusal.to_dict())
         raise refusal
+
+    def _overrides(self, rules: Translation, model: Translation, policy: Policy) -> bool:
+        """Tell whether the model's reading goes on instead of the rules' (they disagree; see the module)."""
+        if same_task(rules.formula, model.formula):
+            return False
+        if not policy.counts and (counts_visits(rules.formula) or counts_visits(model.formula)):
+            return False
+        off_map = policy.off_map and self._names_the_map(model) and not self._names_the_map(rules)
+        return self._sure(model, policy.takeover if off_map else policy.override)
 
     @staticmethod
     def _differs_note(rules: Translation) -> str:

@@ -12,6 +12,8 @@ from __future__ import annotations
 import os
 import random
 import signal
+import subprocess
+import sys
 import time
 
 import pytest
@@ -100,3 +102,23 @@ def test_every_node_stops_within_the_bound_on_sigint_or_sigterm(domain, tmp_path
     slow = {name: s for name, (s, _) in stopped.items() if s > STOP_BOUND_S}
     assert not slow, (slow, logs)
     assert all(rc == 0 for _, rc in stopped.values()), (stopped, logs)
+
+
+def test_the_context_shuts_down_without_finalising_logging(tmp_path):
+    """A node process's stop never enters rclpy's logging fini (it held the GIL in a CI run)."""
+    script = tmp_path / 'stop.py'
+    script.write_text(
+        'import rclpy\n'
+        'from rclpy.impl.implementation_singleton import rclpy_implementation as impl\n'
+        'from ltl_instruct.nodes.common import shutdown_context\n'
+        'def refuse():\n'
+        '    raise SystemExit("logging fini called")\n'
+        'impl.rclpy_logging_fini = refuse\n'
+        'rclpy.init()\n'
+        'node = rclpy.create_node("stopping")\n'
+        'shutdown_context()\n'
+        'assert not rclpy.ok()\n'
+        'node.get_logger().info("still logs after the stop")\n'
+        'print("stopped")\n', encoding='utf-8')
+    done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0 and 'stopped' in done.stdout, done.stderr

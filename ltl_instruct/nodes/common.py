@@ -42,6 +42,7 @@ from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.exceptions import InvalidParameterTypeException, InvalidParameterValueException
 from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.signals import SignalHandlerOptions
+from rclpy.utilities import get_default_context
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 
@@ -317,13 +318,27 @@ def run_node(make_node: Callable[[], Node], args: Optional[Sequence[str]] = None
             close = getattr(node, 'close', None)
             if callable(close):
                 close()
-        rclpy.try_shutdown()   # the executor's wait ends
+        shutdown_context()   # the executor's wait ends
         if spinner is not None:
             spinner.join(timeout=STOP_GRACE_S)
     # No destroy_node: tearing the DDS participant down blocked, holding the GIL, after peers had been
     # SIGKILLed (Fast DDS); the process ends now, and its peers see it gone as after any exit.
     _end_process(status)
     return status
+
+
+def shutdown_context() -> None:
+    """Shut the default ROS context down (the executor's wait ends), without finalising rcl logging.
+
+    ``rclpy.try_shutdown`` ends with ``rclpy_logging_fini``, which holds the GIL while it waits for
+    rcl's logging lock; a thread that is logging at that moment waits for the GIL. In a fresh-clone
+    CI run sim_world's main thread stayed there, the stop watchdog could not run, and only the
+    faulthandler timer ended the process (status 1). The process ends with ``os._exit`` right after
+    this, so logging needs no finalising: it is left as it is.
+    """
+    context = get_default_context()
+    context._logging_initialized = False   # rclpy has no public way to skip the logging fini
+    rclpy.try_shutdown()
 
 
 def _spin_until(node: Node, threads: int, stop: '_StopSignals') -> threading.Thread:

@@ -236,3 +236,19 @@ def test_planning_world_from_cloud_is_boxes_never_freer_than_the_scene():
     assert (free == true_free).mean() > 0.95       # and at most a voxel too cautious
     with pytest.raises(InvalidInputError):
         conv.planning_world_from_cloud(conv.point_cloud_msg(np.zeros((0, 3))), 1.0, 0.5)
+
+
+def test_a_plan_on_the_simulators_grid_passes_the_independent_check():
+    """Fresh-clone CI: F (tv & F lamp) from (8.19, 3.89) cut sofa_2's grown corner by 4 mm: VERIFICATION_FAILED."""
+    from ltl_instruct.core.automaton import compile_automaton
+    from ltl_instruct.core.grounding import ground_formula, instances_from_scene
+    from ltl_instruct.core.planning import FmtSettings, PlannerSettings, plan_task
+    from ltl_instruct.core.spec import parse_formula
+    scene = resolve_scene('apartment')
+    world = conv.planning_world_from_grid(conv.occupancy_grid_msg(rasterize_scene(scene, 0.1)), 0.3)
+    formula = 'F (near[tv] & F near[lamp])'
+    settings = PlannerSettings(near_threshold=1.0, goal_margin=0.2, avoid_margin=0.1,
+                               fmt=FmtSettings(num_samples=3000, time_limit=10.0, seed=0, path_spacing=0.1))
+    plan = plan_task(compile_automaton(parse_formula(formula)), ground_formula(formula, instances_from_scene(scene)),
+                     world, (8.194808903465262, 3.8935114833525297), settings)
+    assert plan.verification.ok and plan.verification.collision_free

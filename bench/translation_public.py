@@ -23,6 +23,7 @@ from typing import Any
 from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language import make_translator
 from ltl_instruct.core.language.evaluation import evaluate
+from ltl_instruct.core.language.neural.features import CONVENTIONS
 from ltl_instruct.core.language.neural.public import SET_OPTIONS, SETS, datasets_root, read_split
 
 
@@ -31,8 +32,8 @@ def set_options(name: str, backend: str) -> dict[str, Any]:
     given = SET_OPTIONS.get(name, {})
     if backend in ('offline', 'combined'):
         return dict(given)
-    if backend == 'neural':
-        opts: dict[str, Any] = {k: v for k, v in given.items() if k != 'numbers'}
+    if backend == 'neural':   # the conventions the model is given as inputs (the rules have more)
+        opts: dict[str, Any] = {k: v for k, v in given.items() if k in {c for c, _, _ in CONVENTIONS}}
         if given.get('numbers') == 'digits':
             opts['digits'] = True
         return opts

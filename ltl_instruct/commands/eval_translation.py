@@ -45,6 +45,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--after-scope', choices=('goal', 'conditional'), default=None,
                         help='offline: "after X, avoid Y" convention (default: conditional for lifted.csv, '
                              'else goal)')
+    parser.add_argument('--onway-scope', choices=('goal', 'run'), default=None,
+                        help='offline: "go to X without going through Y" convention (default: run for '
+                             'clean-up, else goal)')
 
 
 def run(args: argparse.Namespace) -> int:
@@ -58,6 +61,8 @@ def run(args: argparse.Namespace) -> int:
         args.after_scope = 'conditional' if 'lifted' in ds.name else 'goal'
     if args.numbers is None:
         args.numbers = 'digits' if 'drone-planning' in ds.name else 'words'
+    if args.onway_scope is None:
+        args.onway_scope = 'run' if 'clean' in ds.name else 'goal'
     options = _options(args)
     if args.backend in ('offline', 'combined', 'neural') and ds.landmarks:
         options['landmarks'] = ds.landmarks   # lifted propositions are names given in advance
@@ -74,6 +79,7 @@ def run(args: argparse.Namespace) -> int:
         summary['once_scope'] = args.once_scope
         summary['after_scope'] = args.after_scope
         summary['numbers'] = args.numbers
+        summary['onway_scope'] = args.onway_scope
     failures = [r.to_dict() for r in scores.results if not r.equivalent][:args.failures]
     if args.json:
         print(json.dumps({**summary, 'failures': failures}, indent=2))

@@ -52,12 +52,16 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument('--after-scope', choices=('goal', 'conditional'), default='goal',
                         help='offline backend: "after going to X, avoid Y" with X a goal (goal) or as a rule '
                              'if X is ever reached (conditional, lang2ltl)')
+    parser.add_argument('--onway-scope', choices=('goal', 'run'), default='goal',
+                        help='offline backend: "go to X without going through Y" avoids Y until X (goal) or '
+                             'for the whole run (run, clean-up)')
 
 
 def _options(args: argparse.Namespace) -> dict[str, Any]:
     rules = {'avoid_scope': args.avoid_scope, 'once_scope': getattr(args, 'once_scope', 'run'),
              'after_scope': getattr(args, 'after_scope', None) or 'goal',
-             'numbers': getattr(args, 'numbers', None) or 'words'}
+             'numbers': getattr(args, 'numbers', None) or 'words',
+             'onway_scope': getattr(args, 'onway_scope', None) or 'goal'}
     if args.backend == 'offline':
         return rules
     if args.backend == 'combined':

@@ -81,6 +81,8 @@ from ltl_instruct.core.spec import Descriptor, Formula, parse_formula, referents
 # read them; bench.translation_public and bench.translator_policy give them to both
 SET_OPTIONS: dict[str, dict[str, str]] = {
     'drone': {'avoid_scope': 'goal', 'numbers': 'digits'},
+    'cleanup': {'onway_scope': 'run'},
+    'cleanup_l2l': {'onway_scope': 'run'},
     'lifted': {'once_scope': 'next', 'after_scope': 'conditional'},
     'lifted_formula': {'once_scope': 'next', 'after_scope': 'conditional'},
 }

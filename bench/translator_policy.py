@@ -70,6 +70,7 @@ def score_set(name: str, limit: int, model_path: Optional[str],
         summary = evaluate(replay, examples, checker).summary()   # type: ignore[arg-type]
         out.append({'set': name, 'n': summary['examples'], 'takeover': policy.takeover,
                     'override': policy.override, 'counts': policy.counts, 'off_map': policy.off_map,
+                    'read_all_stands': policy.read_all_stands, 'rules_kept': policy.rules_kept,
                     'temporal_alignment': summary['temporal_alignment'],
                     'equivalence': summary['equivalence_accuracy'],
                     'wrong_unflagged': summary['wrong_unflagged_share']})
@@ -86,13 +87,17 @@ def main(argv: list[str]) -> int:
     ap.add_argument('--takeover', default=','.join(map(str, TAKEOVERS)))
     ap.add_argument('--counts', default='no', help='no, yes or no,yes: may the model override a count')
     ap.add_argument('--off-map', default='yes', help='no, yes or no,yes: Policy.off_map')
+    ap.add_argument('--read-all-stands', default='yes', help='no, yes or no,yes: Policy.read_all_stands')
+    ap.add_argument('--rules-kept', default='yes', help='no, yes or no,yes: Policy.rules_kept')
     ap.add_argument('--model-path', default=None, help='translator bundle (default: shipped)')
     ap.add_argument('--json', action='store_true', help='one JSON object per set and policy')
     args = ap.parse_args(argv)
     if datasets_root() is None or not Path(datasets_root()).is_dir():   # type: ignore[arg-type]
         print('public data sets not found (../shared/datasets or $LTL_INSTRUCT_DATASETS)', file=sys.stderr)
         return 1
-    policies = [Policy(float(t), float(o), c == 'yes', m == 'yes') for m in args.off_map.split(',')
+    policies = [Policy(float(t), float(o), c == 'yes', m == 'yes', r == 'yes', k == 'yes')
+                for k in args.rules_kept.split(',')
+                for r in args.read_all_stands.split(',') for m in args.off_map.split(',')
                 for c in args.counts.split(',')
                 for t in args.takeover.split(',') for o in args.override.split(',')]
     rows: list[dict[str, Any]] = []
@@ -109,18 +114,20 @@ def main(argv: list[str]) -> int:
 
 def _print_table(rows: list[dict[str, Any]], policies: Sequence[Policy]) -> None:
     names = list(dict.fromkeys(r['set'] for r in rows))
-    print('takeover override counts  ' + '  '.join(f'{n[:12]:>12s}' for n in names)
+    print('takeover override flags   ' + '  '.join(f'{n[:12]:>12s}' for n in names)
           + '   mean TA   (cells: TA / wrong-unflagged)')
     for p in policies:
         cells, tas = [], []
         for n in names:
             r = next(r for r in rows
                      if r['set'] == n and r['takeover'] == p.takeover and r['override'] == p.override
-                     and r['counts'] == p.counts and r['off_map'] == p.off_map)
+                     and r['counts'] == p.counts and r['off_map'] == p.off_map
+                     and r['read_all_stands'] == p.read_all_stands and r['rules_kept'] == p.rules_kept)
             cells.append(f'{r["temporal_alignment"]:.3f}/{r["wrong_unflagged"]:.3f}')
             tas.append(r['temporal_alignment'])
-        counts = 'yes' if p.counts else 'no'
-        print(f'{p.takeover:8.2f} {p.override:8.2f} {counts:>6s}  ' + '  '.join(f'{c:>12s}' for c in cells)
+        flags = ''.join(f if on else '-' for f, on in (('c', p.counts), ('m', p.off_map),
+                                                       ('r', p.read_all_stands), ('k', p.rules_kept)))
+        print(f'{p.takeover:8.2f} {p.override:8.2f} {flags:>6s}  ' + '  '.join(f'{c:>12s}' for c in cells)
               + f'   {sum(tas) / len(tas):.3f}')
 
 

@@ -20,8 +20,9 @@ def combined():
     return t
 
 
-def _rules(formula: str) -> Translation:
-    return Translation(TEXT, parse_formula(formula), 'offline')
+def _rules(formula: str, unread=('guessed "then the hall" as a place to go',)) -> Translation:
+    """The rules' reading; by default one that guessed a part (the model may override only those)."""
+    return Translation(TEXT, parse_formula(formula), 'offline', (), {'unread': list(unread)} if unread else {})
 
 
 def _model(formula: str, confidence: float, complete: bool = True,
@@ -37,7 +38,7 @@ MODEL = 'F (near[kitchen] & F near[hall])'
 
 
 def test_agreement_goes_on_unflagged(combined):
-    t = combined.decide((_rules(MODEL), None, _model(MODEL, 0.7)), Policy())
+    t = combined.decide((_rules(MODEL, unread=()), None, _model(MODEL, 0.7)), Policy())
     assert t.extra['agreement'] is True and not t.extra['flagged']
 
 
@@ -52,6 +53,14 @@ def test_sure_model_overrides_flagged_with_the_rules_as_alternative(combined):
     assert str(t.formula) == MODEL and t.backend == 'combined'
     assert t.extra['flagged'] and t.extra['alternatives'][0] == RULES
     assert any('rules read this differently' in n for n in t.extra['unread'])
+
+
+def test_a_rules_reading_that_placed_every_word_is_never_overridden(combined):
+    """Construction tests: 56 sure model readings replaced right ones ("Never mind, go to the porch." -> G !porch)."""
+    t = combined.decide((_rules(RULES, unread=()), None, _model(MODEL, 0.999)), Policy())
+    assert str(t.formula) == RULES and t.extra['flagged'] and t.extra['alternatives'][0] == MODEL
+    t = combined.decide((_rules(RULES, unread=()), None, _model(MODEL, 0.999)), Policy(read_all_stands=False))
+    assert str(t.formula) == MODEL
 
 
 def test_incomplete_or_misspelt_model_never_overrides(combined):
@@ -70,6 +79,22 @@ def test_refusal_taken_over_only_when_sure(combined):
     count = TranslationError('too many visits', details={'part': 'x', 'count': 50})
     with pytest.raises(TranslationError):
         combined.decide((None, count, _model(MODEL, 0.99)), Policy(takeover=0.5))
+
+
+@pytest.mark.parametrize('part,refused', [('since the hall is off limits', True), ('but never the hall', True),
+                                          ('head straight away to the hall', False), ('zorp the hall', False),
+                                          ('the hall , order does not matter', False)])
+def test_a_refusal_over_a_rule_is_taken_over_only_by_a_reading_that_avoids(combined, part, refused):
+    """"Go to the kitchen, since the hall is off limits": the model's F (kitchen & F hall) went on."""
+    refusal = TranslationError(f'could not place "{part}"', details={'part': part})
+    if refused:
+        with pytest.raises(TranslationError):
+            combined.decide((None, refusal, _model(MODEL, 0.99)), Policy())
+        assert combined.decide((None, refusal, _model(MODEL, 0.99)), Policy(rules_kept=False))
+    else:
+        assert str(combined.decide((None, refusal, _model(MODEL, 0.99)), Policy()).formula) == MODEL
+    avoiding = 'F near[kitchen] & G !near[hall]'
+    assert str(combined.decide((None, refusal, _model(avoiding, 0.99)), Policy()).formula) == avoiding
 
 
 def test_reading_that_leaves_a_mention_out_must_be_much_likelier():

@@ -6,7 +6,9 @@ Policy (measured on the public sets' held-out splits; see the README, "translate
   reading, not flagged (with the model's names when only the model's are all landmarks given:
   "the green area" is the map's `green_room`);
 - both read it and disagree: the rules' reading, **flagged**, with the model's reading offered
-  as the alternative (the dialog shows both); unless the model is sure of its reading
+  as the alternative (the dialog shows both); unless the rules guessed or left out part of the
+  instruction (a reading that placed every word stands: ``Policy.read_all_stands``) and the
+  model is sure of its reading
   (confidence at least ``override``, every mention used, every name made of words or
   landmarks given, no name of more than ``MAX_PLAIN_NAME_WORDS`` words that the phrase reader
   could not split into a thing and its relations) and neither reading counts visits (a place
@@ -37,7 +39,7 @@ from typing import Any, Optional, Sequence
 from ltl_instruct.core.errors import ErrorCode, LtlInstructError, TranslationError
 from ltl_instruct.core.language.base import Translation, Translator
 from ltl_instruct.core.spec import (
-    Atom, Formula, format_formula, iter_subformulas, referents_of, rename_descriptors,
+    Atom, Formula, avoided_referents_of, format_formula, iter_subformulas, referents_of, rename_descriptors,
 )
 
 # Measured on the validation splits and the dev set (bench.translator_policy, readings of the
@@ -80,6 +82,16 @@ def _unreadable(refusal: LtlInstructError) -> bool:
     return refusal.code == ErrorCode.TRANSLATION_ERROR and 'part' in details and 'count' not in details
 
 
+def _drops_a_rule(refusal: LtlInstructError, model: Translation) -> bool:
+    """Tell whether the words the rules could not place rule a place out and the model's reading does not."""
+    from ltl_instruct.core.language.lexicon import NOT_PROHIBITIONS, PROHIBITION_WORDS
+    part = str(refusal.details.get('part', '')) if isinstance(refusal.details, dict) else ''
+    words = re.findall(r'[a-z]+', part.lower())
+    said = any(w in PROHIBITION_WORDS and tuple(words[max(k - 1, 0):k + 1]) not in NOT_PROHIBITIONS
+               and tuple(words[k:k + 2]) not in NOT_PROHIBITIONS for k, w in enumerate(words))
+    return said and not avoided_referents_of(model.formula)
+
+
 @dataclass(frozen=True)
 class Policy:
     """The thresholds of the policy (model confidence: its reading's share of the beam's probability).
@@ -93,12 +105,22 @@ class Policy:
     off_map: where landmarks are given and the rules' reading names something that is not one
         while the model's names only landmarks, the model's reading goes on at ``takeover``
         confidence, as for a refusal (a name the map lacks fails at grounding anyway).
+    read_all_stands: a rules' reading that placed every part of the instruction (nothing guessed
+        or left out: no ``unread`` in its extra) is never overridden (``off_map`` aside). Chosen
+        as the others are (mean .834 against .832 on the validation splits); on the helpers'
+        construction tests it stops 56 confident model readings replacing right rules' readings
+        ("Never mind, go to the porch." was ``G !near[porch]``).
+    rules_kept: a refusal whose unplaced words rule a place out (``lexicon.PROHIBITION_WORDS``:
+        "not", "never", "off limits", "stay away"...) is taken over only by a reading that avoids something:
+        "Go to the den, since the kitchen is off limits" was the model's ``F (den & F kitchen)``.
     """
 
     takeover: float = 0.5
     override: float = 0.95
     counts: bool = False
     off_map: bool = True
+    read_all_stands: bool = True
+    rules_kept: bool = True
 
 
 # what the rules and the model made of one instruction: (rules' reading, rules' refusal, model's reading)
@@ -159,7 +181,8 @@ class CombinedTranslator:
                                         rules_error=None)
             return self._with_rules(rules, model)
         assert refusal is not None
-        if model is not None and _unreadable(refusal) and self._sure(model, policy.takeover):
+        if model is not None and _unreadable(refusal) and self._sure(model, policy.takeover) and \
+                not (policy.rules_kept and _drops_a_rule(refusal, model)):
             best = refusal.details.get('best_reading') if isinstance(refusal.details, dict) else None
             note = (f'the rules could not read all of it ({refusal.message}); this reading is the '
                     f'learned model\'s: check it')
@@ -173,8 +196,11 @@ class CombinedTranslator:
             return False
         if not policy.counts and (counts_visits(rules.formula) or counts_visits(model.formula)):
             return False
-        off_map = policy.off_map and self._names_the_map(model) and not self._names_the_map(rules)
-        return self._sure(model, policy.takeover if off_map else policy.override)
+        if policy.off_map and self._names_the_map(model) and not self._names_the_map(rules):
+            return self._sure(model, policy.takeover)
+        if policy.read_all_stands and not rules.extra.get('unread'):
+            return False
+        return self._sure(model, policy.override)
 
     @staticmethod
     def _differs_note(rules: Translation) -> str:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import check_translation
+from translation_cases import RULES, check_translation
 
 FOUND_ROUND_A3 = [
     # a shop's till is a place, not "until"
@@ -135,12 +135,12 @@ def test_bugs_found_in_the_review_of_stop_16() -> None:
     # "..., and, actually the hall is fine": the list of words ends at the connective (was an IndexError)
     check_translation('Go to the den. Avoid the hall and, actually the hall is fine.', 'F near[den]')
     with pytest.raises(TranslationError) as err:
-        T.translate('avoid the hall and, actually the hall is fine')
+        RULES.translate('avoid the hall and, actually the hall is fine')
     assert err.value.code.name != 'INTERNAL_ERROR'
     # "before both of those" said again by name only would lose "next to the lamp": refused, not dropped
     check_translation('Freight elevator then loading dock. Wait, hit the mail room before both of those.',
                       'F (near[freight_elevator] & F near[loading_dock]) & '
                       '(!near[freight_elevator] U near[mail_room]) & (!near[loading_dock] U near[mail_room])')
     with pytest.raises(TranslationError):
-        T.translate('Go to the vase next to the lamp, then the sofa. Wait, hit the mail room before both of '
+        RULES.translate('Go to the vase next to the lamp, then the sofa. Wait, hit the mail room before both of '
                     'those.')

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_A4B = [
     # a route written with arrows ("a > b > c", "a -> b"), or named as "the A, B, C route / loop":
@@ -130,4 +130,4 @@ def test_before_it_with_nothing_before_is_refused() -> None:
     """"Visit the tag board before it." said first: "it" names nothing else; refused, not a guess."""
     from ltl_instruct.core.errors import TranslationError
     with pytest.raises(TranslationError):
-        check_translation('Visit the tag board before it.', 'F near[tag_board]')
+        RULES.translate('Visit the tag board before it.')

@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 BLIND_ROUND_B4 = [
     # forms of address and exclamations between a correction marker and what it corrects
@@ -164,4 +164,4 @@ REFUSED_B4 = [
 @pytest.mark.parametrize('instruction', REFUSED_B4)
 def test_purpose_inside_an_ordering_clause_is_refused(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)

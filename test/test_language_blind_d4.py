@@ -11,7 +11,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 BLIND_ROUND_D4 = [
     # a reason said after the request with no comma, in chat spelling ("bc", "cuz"): left out, and
@@ -119,4 +119,4 @@ def test_readings_found_on_blind_sets_d4_and_f4(instruction: str, gold: str) -> 
 ])
 def test_reasons_holding_a_rule_are_refused(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)

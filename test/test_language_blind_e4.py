@@ -11,7 +11,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 BLIND_ROUND_E4 = [
     # formal apologies open a correction as "sorry" does ("my apologies" was a place visited after)
@@ -325,4 +325,4 @@ REFUSED_E4 = [
 @pytest.mark.parametrize('instruction', REFUSED_E4)
 def test_refused_on_blind_set_e4(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)

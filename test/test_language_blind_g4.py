@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import LtlInstructError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 BLIND_ROUND_G4 = [
     # a verb-particle compound after a determiner is a noun wherever it stands ("the walk-in?"),
@@ -84,11 +84,11 @@ def test_readings_found_on_blind_set_g4(instruction: str, gold: str) -> None:
 def test_a_summons_with_a_first_of_its_own_is_refused() -> None:
     """"..., Maria wants a word first" with no order in the request: never dropped as a remark."""
     with pytest.raises(LtlInstructError):
-        T.translate('Go to the bar, Maria wants a word first.')
+        RULES.translate('Go to the bar, Maria wants a word first.')
 
 
 def test_not_to_be_disturbed_is_no_place_to_avoid() -> None:
     """"they've asked not to be disturbed" holds a rule word and names no place: refused."""
     with pytest.raises(LtlInstructError):
-        T.translate("Head to table 2 first. After that, avoid table 3 - they've asked not to be disturbed - "
+        RULES.translate("Head to table 2 first. After that, avoid table 3 - they've asked not to be disturbed - "
                     'and then go to the bar.')

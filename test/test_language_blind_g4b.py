@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 BLIND_ROUND_G4B = [
     # "A before B, and B before C" with the verb left out: read as with "go to" (the verb said again)
@@ -95,4 +95,4 @@ REFUSED_G4B = [
 @pytest.mark.parametrize('instruction', REFUSED_G4B)
 def test_refused_on_blind_set_g4_second_round(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)

@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 BLIND_ROUND_K4 = [
     # "I mean it" after a rule is emphasis, never a correction to "it" (the thing avoided became a goal)
@@ -192,4 +192,4 @@ REFUSED_K4 = [
 @pytest.mark.parametrize('instruction', REFUSED_K4)
 def test_refused_on_blind_set_k4(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)

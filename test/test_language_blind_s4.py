@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 BLIND_ROUND_S4 = [
     # an avoidance taken back, then "it's Y that's wet" / "it's Y I'm worried about" names what
@@ -116,7 +116,7 @@ REFUSED_S4 = [
 def test_refused_on_blind_set_s4(instruction: str) -> None:
     """What cannot be placed is refused, never guessed."""
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)
 
 
 @pytest.mark.parametrize('instruction,gold', BLIND_ROUND_S4)

@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 BLIND_ROUND_U4 = [
     # well-known office abbreviations are spelled out in names ("conf rm" was conf_room, "exec" exec_suite)
@@ -128,4 +128,4 @@ REFUSED_U4 = [
 @pytest.mark.parametrize('instruction', REFUSED_U4)
 def test_refused_on_blind_set_u4(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)

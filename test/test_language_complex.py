@@ -10,7 +10,7 @@ import pytest
 from ltl_instruct.core.automaton import equivalent
 from ltl_instruct.core.errors import TranslationError
 from ltl_instruct.core.spec import parse_formula
-from translation_cases import T, check_translation as _check
+from translation_cases import RULES, T, check_translation as _check
 
 
 SCOPES = [
@@ -180,7 +180,7 @@ def test_a_clause_with_no_place_that_no_rule_reads_is_left_out_with_a_warning() 
 ])
 def test_clauses_with_constraint_words_or_alone_still_raise(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)
 
 
 ROUND_TWO = [
@@ -338,7 +338,7 @@ def test_fifth_round_constructions(instruction: str, gold: str) -> None:
 
 def test_avoid_words_in_a_clause_no_rule_reads_are_never_dropped() -> None:
     with pytest.raises(TranslationError):
-        T.translate('Go to the den, and steer well around the vase on the mantel.')
+        RULES.translate('Go to the den, and steer well around the vase on the mantel.')
 
 
 LOCATIONS = [

@@ -17,7 +17,7 @@ from typing import Callable, Iterator, Optional
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 # Places: (as said, as named in the formula). Shapes: adjective + noun, numbered, lettered,
 # possessive, several words, a floor, and a name with a spatial descriptor.
@@ -347,7 +347,7 @@ def test_generated_combination(instruction: str, gold: str) -> None:
 @pytest.mark.parametrize('instruction', [c[1] for c in REFUSED], ids=[c[0] for c in REFUSED])
 def test_unclear_combination_is_refused(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)
 
 
 def test_generator_is_deterministic_and_sized() -> None:

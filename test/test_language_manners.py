@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import T, check_translation as _check
+from translation_cases import RULES, T, check_translation as _check
 
 
 MANNERS = [
@@ -134,7 +134,7 @@ def test_not_going_back_is_at_most_once() -> None:
 def test_until_one_of_several_places_is_refused_not_guessed() -> None:
     from ltl_instruct.core.errors import TranslationError
     with pytest.raises(TranslationError):
-        T.translate('Keep off the lawn until you get to the north door or the south door.')
+        RULES.translate('Keep off the lawn until you get to the north door or the south door.')
 
 
 @pytest.mark.parametrize('instruction', [
@@ -145,7 +145,7 @@ def test_until_one_of_several_places_is_refused_not_guessed() -> None:
 def test_positions_without_a_list_are_refused(instruction: str) -> None:
     from ltl_instruct.core.errors import TranslationError
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)
 
 
 def test_correcting_where_a_scope_starts() -> None:

@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 # Read right: the remark or reason is left out, and the rule beside it is kept.
 RIGHT: list[tuple[str, str]] = [
@@ -110,4 +110,4 @@ def test_red_team_readings(instruction: str, gold: str) -> None:
 @pytest.mark.parametrize('instruction', REFUSED)
 def test_red_team_refusals(instruction: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(instruction)
+        RULES.translate(instruction)

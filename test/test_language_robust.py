@@ -13,7 +13,7 @@ from ltl_instruct.core.errors import TranslationError
 from ltl_instruct.core.language.offline import OfflineTranslator
 from ltl_instruct.core.language.spelling import Speller
 from ltl_instruct.core.spec import parse_formula
-from translation_cases import T, check_translation as _check
+from translation_cases import RULES, T, check_translation as _check
 
 
 UNKNOWN_VERBS = [
@@ -80,7 +80,7 @@ def test_what_is_left_out_is_in_the_notes() -> None:
 ])
 def test_leftovers_that_could_mean_something_still_raise(bad: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(bad)
+        RULES.translate(bad)
 
 
 def test_typos_in_names_are_corrected_and_noted() -> None:
@@ -466,7 +466,7 @@ def test_a_wish_that_frames_the_request() -> None:
                                           'Hi there, how are you?'])
 def test_an_instruction_of_chatter_alone_is_still_an_error(chatter_only: str) -> None:
     with pytest.raises(TranslationError):
-        T.translate(chatter_only)
+        RULES.translate(chatter_only)
 
 
 ROUND_THIRTEEN = [

@@ -15,7 +15,7 @@ import itertools
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import T, check_translation
+from translation_cases import RULES, T, check_translation
 
 
 def _all_then(last: str) -> str:
@@ -166,7 +166,7 @@ def test_readings(instruction: str, gold: str) -> None:
 @pytest.mark.parametrize('instruction', NOTHING_LEFT)
 def test_nothing_left_to_do_is_refused_clearly(instruction: str) -> None:
     with pytest.raises(TranslationError) as e:
-        T.translate(instruction)
+        RULES.translate(instruction)
     message = str(e.value)
     assert 'taken back' in message or 'nothing is left to do' in message, message
 
@@ -174,7 +174,7 @@ def test_nothing_left_to_do_is_refused_clearly(instruction: str) -> None:
 @pytest.mark.parametrize('instruction', NO_LIST)
 def test_a_position_in_no_list_is_refused(instruction: str) -> None:
     with pytest.raises(TranslationError, match='list'):
-        T.translate(instruction)
+        RULES.translate(instruction)
 
 
 @pytest.mark.parametrize('instruction', STAYS_PUT)

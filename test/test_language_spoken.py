@@ -9,7 +9,7 @@ import pytest
 
 from ltl_instruct.core.automaton import equivalent
 from ltl_instruct.core.spec import referents_of
-from translation_cases import T, check_translation as _check
+from translation_cases import RULES, T, check_translation as _check
 
 
 REMARKS = [
@@ -167,9 +167,10 @@ def test_terse_requests_with_the_verb_left_out(instruction: str, gold: str) -> N
 
 
 def test_words_that_are_no_places_are_not_guessed_to_be_one() -> None:
+    """The rules (the default gives the model's reading of the statement, flagged: see the README)."""
     for text in ('qwzx vvv', 'My keys fell behind the couch.'):
         try:
-            got = T.translate(text)
+            got = RULES.translate(text)
         except Exception:
             continue
         assert not any(d.name.startswith(('qwzx', 'keys')) for d in referents_of(got.formula)), got.formula

@@ -1,11 +1,19 @@
-"""Shared helper of the offline translator's case tests: translate, compare on automata."""
+"""Shared helper of the translator's case tests: translate, compare on automata.
+
+``T`` is the default translator (``combined``: the rules and the shipped model, the one users
+get), so a case checks what a person would be given: a construction the rules no longer spell
+out passes when the model reads it. ``RULES`` is the rules alone, for the cases about what they
+refuse (the default may then give the model's reading, flagged).
+"""
 from __future__ import annotations
 
 from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.language import make_translator
 from ltl_instruct.core.language.offline import OfflineTranslator
 from ltl_instruct.core.spec import parse_formula
 
-T = OfflineTranslator()
+T = make_translator('combined')
+RULES = OfflineTranslator()
 
 
 def check_translation(instruction: str, gold: str) -> tuple[str, ...]:

@@ -23,7 +23,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from ltl_instruct.core.language.phrases import PhraseParser, singular, with_article
+from ltl_instruct.core.language.phrases import PhraseParser, singular
 
 _DONE = (r'(?:(?:when|once|after|as soon as) (?:you are |you have |you re |you |it is |that is |'
          r'this is )?(?:done|finished|finish|through with (?:that|it|this))'
@@ -91,7 +91,6 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'(?: if (?:that is|it is) (?:easier|quicker|better|simpler)| if you (?:prefer|like|want))?(?= [,.;!?] '
      r'|$)',
      ' , in any order '),
-    (r' do a (?:quick )?(?:round|tour|circuit) of ', ' visit '),
     # "do the usual round - gallery 3, gallery 4, then the print room": the round is the list after it
     (r' do (?:the|your|my|our) (?:usual |normal |regular |standard |nightly |night |evening |morning |'
      r'daily )?(?:round|rounds|route|circuit|loop|tour|patrol|walk) (?:, |: )'
@@ -101,15 +100,6 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "beach huts, pier, harbour wall... do that lot backwards": the goals listed ("the lot" alone may
     # be a parking lot)
     (r' (?P<v>do|visit|hit|cover|check) (?:all )?(?:that|this) lot ', r' \g<v> them '),
-    # "in the order I just said", "in the order I listed them": the order said
-    (r' (?:, )?in the (?:same )?order (?:i |that i )?(?:just )?(?:said|gave|listed|named|mentioned|read out|'
-     r'called out)(?: (?:them|it|those|these))?(?: (?:in|to you))?(?= [,.;!?] | ?$)', ' in that order '),
-    (r' (?:, )?in the order (?:given|listed|stated)(?= [,.;!?] | ?$)', ' in that order '),
-    # "stop whatever you're doing and come to X": the request is what follows
-    (r'(^ | [.;!?] )(?:stop|drop|leave) (?:whatever|what) you are doing(?: right now| now)?(?: and| ,)? ',
-     r'\1 '),
-    # "go by the window three times during your rounds": when, not where
-    (r' (?:during|on|in the course of) your (?:rounds|round|patrol|shift)(?= [,.;!?] | ?$)', ' '),
     # "actually either the copier or the printer is fine": a choice of where to go, said as a permission
     (rf'(^ | [.;!?] | actually (?:, )?| no (?:, )?)either (?P<x>(?:the )?{_NAME}) or (?P<y>(?:the )?{_NAME}) '
      r'(?:is|are|would be|will be) (?:fine|ok|okay|good|alright)(?: too| as well)?(?= [.;!?] |\s*$)',
@@ -121,19 +111,8 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' (?:in )?(?:whichever|whatever|either) order(?: (?:suits you|you like|you want|you prefer|is easier|'
      r'works(?: for you| best)?|you choose|is fine|is (?:quicker|quickest|faster|fastest|shorter|shortest|'
      r'best|closer|simpler|more efficient|most efficient)|makes (?:more )?sense))? ', ' in any order '),
-    # "laundry room and then 204, or 204 and then the laundry room": both, in any order
-    (rf' (?:the )?(?P<a>{_NAME}) (?:and )?(?:then|followed by) (?:the )?(?P<b>{_NAME}) , or (?:the )?(?P=b) '
-     r'(?:and )?(?:then|followed by) (?:the )?(?P=a) ',
-     lambda m: f' {with_article(m.group("a"))} and {with_article(m.group("b"))} in any order '),
-    # "land at the pad when you are done": the last step is last anyway
-    (rf' (?:, )?{_DONE}(?: (?:with )?(?:everything|all (?:that|of that|of it)|the rest))?'
-     r' (?=[.;!?] |$)', ' '),
     # "go to a . when you are done there , head to b" -> "go to a . then head to b"
     (rf'(^ | [,.;!?] | and ){_DONE} (?:, )?', r'\1 then '),
-    (r' (?:exactly )?once and only once ', ' exactly once '),
-    # "as you head from the greenhouse to the shed", "on the leg between the two": on the way
-    (r' (?:as|while|when) you (?:head|go|travel|fly|drive|walk|move|come|make your way|are going|are heading|'
-     r'are flying|are travelling|are traveling) (?=from |between )', ' on the way '),
     (r' (?:while|when) (?:heading|going|travelling|traveling|flying|driving|walking|moving) '
      r'(?=from |between )',
      ' on the way '),
@@ -149,7 +128,6 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "then do that same walk again", "do the same run again": the route said, again
     (r' do (?:that|the|this) (?:same |very same |exact same )?(?:walk|run|route|trip|loop|circuit|lap|round|'
      r'journey|flight|sweep|pass|drive) (?=again )', ' do that '),
-    (r'(?<= [a-z_]) if (?:that is|it is) (?:easier|closer|quicker|better|simpler)(?= [,.;!?] |$)', ''),
     # "on the way back down to the lawn", "on the way down": the way back, the way
     (r' on the way (?P<b>back )?(?:down|up|over|out) (?=to |towards |keep |stay |avoid |do |never |, )',
      r' on the way \g<b>'),
@@ -169,7 +147,6 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "before you do that", "before doing so": before the step just named
     (r' (before|after) (?:you (?:go )?do|doing|you have done|having done) (?:that|this|it|so)'
      r'(?: , though| though)?(?= [,.;!?] | )', r' \1 that '),
-    (r' before that , though , ', ' before that , '),
     # "you're not allowed in the lab until ...": do not go there until then
     (r'(^ | [,.;!?] | and | but )(?:you are |you re )?(?:not|never) (?:allowed|permitted|supposed)'
      r'(?: to (?:go|be|enter|step|visit|approach|set foot))?(?: (?:in|into|inside|to|near|at|on|in to))?'
@@ -209,12 +186,9 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' , (which|that) (is|are) (?=(?:right |just |directly )?(?:next to|beside|behind|in front of|under|'
      r'underneath|below|beneath|above|over|on top of|near|by|between|left of|right of|to the left of|'
      r'to the right of|opposite|across from|on|in|inside|at) )', r' \1 \2 '),
-    # "make a quick stop at the cart": stop at it
-    (r' make (?:a |one )?(?:quick |brief |short |little )?stop (at|by|in) ', r' stop \1 '),
 
     (r' (?:from then on|from that point on|from there on|thereafter|from that moment on|after this) ',
      ' after that '),
-    (r' from now on ', ' '),
     (r'(^ | [.;!?] )you (?:may|can|are allowed to|are permitted to|should) only ', r'\1 only '),
     (r' (?:under no circumstances|on no account|at no point|at no time|in neither case|in no case)'
      r'(?: should you| must you| are you to| may you| can you| shall you)? ',
@@ -225,22 +199,13 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r' \1 '),
     # "to the glovebox or, alternatively, to the anaerobic chamber": or
     (r' (or|either) , (?:alternatively|otherwise|if you prefer|failing that) , ', r' \1 '),
-    (r' (?:pick|choose|select) (?:either|one of) ', ' go to either '),
-    (r' (?:one time|1 time) (?:and one time )?only ', ' exactly once '),
-    (r' once only ', ' exactly once '),
     (r'(?<!exactly) ((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|thrice) '
      r'(?:, )?'
      r'(?:but |and )?no more(?: than that| and no less| , no less)?(?= [,.;!?]|$| $)', r' exactly \1'),
-    # "twice, and only twice", "once and once only": exactly that many
-    (r'(?<!exactly) ((?:one|two|three|four|five|six|seven|eight|nine|ten|\d+) times|once|twice|thrice) '
-     r'(?:, )?(?:and |but )?(?:only \1|\1 only)(?= [,.;!?]|$| $)', r' exactly \1'),
     # "only go in the paddock the once": once
     (r' the once(?= [,.;!?] |$| $)', ' once'),
     (r' (?:have|take|go have|go take|get) a (?:quick |good |close )?(?:look|peek|peep|glance|gander) '
      r'(?:at|in|inside|around|over) ', ' visit '),
-    # "there's a drum under the trailer, go have a look": go to the thing just named
-    (r' go (?:and )?(?:have|take) a (?:quick |good |close )?(?:look|peek|peep|glance|gander)(?: at it)?'
-     r'(?= [,.;!?] |$)', ' go to it '),
     (r' (?:pay|make) a (?:quick )?(?:visit|trip) to ', ' visit '),
     # pictures asked of a place ("get me a shot of the old mill", "I need shots of the spire"): the
     # drone goes there; the picture is nothing to pick up
@@ -253,15 +218,9 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     # "make sure the door is shut": a state to check there (not "make sure you never...")
     (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=(?:the|my|your|our) (?:\w+ ){1,3}(?:is|are) '
      r'(?!never|not|visited|reached|avoided|always)\w)', ' check '),
-    (r' (?:make sure|ensure|verify|confirm) (?:that )?(?=it (?:is|are) '
-     r'(?!never|not|visited|reached|avoided|always)\w)', ' check '),
     # "check the cat is in the laundry room": the place where it is
     (r' check (?:the |my |our |your )(?:\w+ ){1,3}(?:is|are) (?:still )?(?:in|at|inside|on|by|near|next to) '
      r'(?=(?:the|a|an|my|your|our) )', ' check '),
-    (r' (?:pay|give) (the|a|an|my|your|our) ((?:\w+ ){1,4})a (?:quick |short |good |brief )?'
-     r'(?:visit|check|look|once over|sweep|glance|inspection) ', r' visit \1 \2'),
-    (r'(^ | [,.;!?] )you (?:are|will be) (?:going|heading|headed) (?:to|for|towards) ', r'\1 go to '),
-    (r'(^ | [,.;!?] )you (?:are|will) (?:to )?(?:go|head) (?:to|for) ', r'\1 go to '),
     (r' from there , ', ' after that , '),
     (r'(^ | [,.;!?] | and | then | also )(?:please )?(?:do not forget to|remember to|be sure to|'
      r'try to|you will need to|you will want to) '
@@ -284,15 +243,6 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r' (have|you|having|after|until|before|once) '
      r'(?:dropped|popped|swung|stopped|called|looked|checked|come) '
      r'(?:by|in at|in on|into|over to|at) (?=(?:the|a|an|my|your|our) )', r' \1 visited '),
-    # "go to X, but before doing that, make sure you have stopped at Y": Y is a precondition of X
-    (r' (?:,|but|, but) before (?:doing that|that|you do that|you go there|going there|you go in) +(?:, +)?'
-     r'(?:make sure|be sure|check) (?:that )?you (?:have|ve) (?:hit|visited|been to|checked|seen|stopped at|'
-     r'stopped by|called at|done) (?:both )?(?=(?:the|my|your|our) [^,.;!?]*(?: [,.;!?] |$))',
-     ' , but only after '),
-    # "make sure you have been to X before Y": X is a goal (before Y)
-    (r' (?:make sure|be sure|ensure) (?:that )?(?:you )?(?:have |already )*(?:been to|been by|visited|'
-     r'gone to|stopped at|stopped by|passed by|swung by|checked) '
-     r'(?![^,.;!?]* before (?:that|doing that|then) )', ' visit '),
     # "whichever is closer, the a or the b, go there": the choice is the person's reason, not a place
     (r'(^ | [,.;!?] | and | then | to )(go to |head to |visit |to )?whichever (?:one )?'
      r'(?:is |s |of them is |of the two is )?'
@@ -311,16 +261,12 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
     (r'(^ | [,.;!?] | and | then )(?:start|begin|kick off|kick things off) (?:off )?(?:by|with) '
      r'(going|heading|visiting|checking|stopping|swinging|flying|driving|walking|making|picking|grabbing|'
      r'bringing|taking|getting|fetching|dropping|popping) ', r'\1 first \2 '),
-    (r'(^ | [,.;!?] | and | then )(?:start|begin|kick off|kick things off) (?:off )?(?:with|at) '
-     r'(?=(?:the|a|an|my|your|our) )', r'\1 first go to '),
     (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:by|with) '
      r'(going|heading|visiting|checking|stopping|swinging|flying|driving|walking|making|picking|grabbing|'
      r'bringing|taking|getting|fetching|dropping|popping|landing) ', r'\1 finally \2 '),
     (r'(^ | [,.;!?] | and | then )(?:finish|end|wrap) (?:up |off |things up )?(?:with|at) '
      r'(?=(?:the|a|an|my|your|our) )', r'\1 finally go to '),
     (r' (?:go|come|run|pop) and (?=(?:get|grab|fetch|bring|take|see|check|visit|find|pick|collect) )', ' '),
-    (r' (?:go|come) and (?:wait|stand|sit|park) (?:by|near|next to|beside) (?=(?:the|a|my|your|our) )',
-     ' go to '),   # "go and stand by the old Fergie"
     (r'(?<! the)(?<! a)(?<! my)(?<! your)(?<! our)(?<! car) (?:wait|stand|sit|park) '
      r'(?:by|near|next to|beside) '
      r'(?=(?:the|a|my|your|our) )', lambda m: m.group(0) if _named_stand(m) else ' go to '),
@@ -342,10 +288,7 @@ _REWRITES: tuple[tuple[re.Pattern[str], Any], ...] = tuple((re.compile(p), r) fo
      r'(?:is |will be )?(?:, |: )?', r'\1 \2 , '),
     (r'(^ | [,.;!?] )(?:last|final) (?:stop|destination|place|location|port of call) '
      r'(?:is |will be )?(?:, |: )?', r'\1 finally '),
-    (r' what (?:i|we) (?:need|want|would like)(?: you to do)? is (?:for you )?(?:to )?', ' '),
     (r' go (?:and )?(?:see|look at|check on|check out|check) ', ' go to '),
-    # "keep away from the stairs the whole way round": the whole way
-    (r' the (whole|entire) way (?:round|around|through)(?= )', r' the \1 way'),
     (r' (stay|keep|steer|remain|staying|keeping) (?:well|far|right|way|completely|totally|entirely|'
      r'very far|well and truly) (away|clear|off|out) ', r' \1 \2 '),
     # "your job today is to bring the cup to the sink": the request itself

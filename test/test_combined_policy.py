@@ -22,7 +22,8 @@ def combined():
 
 def _rules(formula: str, unread=('guessed "then the hall" as a place to go',)) -> Translation:
     """The rules' reading; by default one that guessed a part (the model may override only those)."""
-    return Translation(TEXT, parse_formula(formula), 'offline', (), {'unread': list(unread)} if unread else {})
+    extra = {'unread': list(unread)} if unread else {}
+    return Translation(TEXT, parse_formula(formula), 'offline', (), extra)
 
 
 def _model(formula: str, confidence: float, complete: bool = True,
@@ -56,7 +57,7 @@ def test_sure_model_overrides_flagged_with_the_rules_as_alternative(combined):
 
 
 def test_a_rules_reading_that_placed_every_word_is_never_overridden(combined):
-    """Construction tests: 56 sure model readings replaced right ones ("Never mind, go to the porch." -> G !porch)."""
+    """Construction tests: 56 sure model readings had replaced right ones ("Never mind, go to the porch.")."""
     t = combined.decide((_rules(RULES, unread=()), None, _model(MODEL, 0.999)), Policy())
     assert str(t.formula) == RULES and t.extra['flagged'] and t.extra['alternatives'][0] == MODEL
     t = combined.decide((_rules(RULES, unread=()), None, _model(MODEL, 0.999)), Policy(read_all_stands=False))
@@ -81,11 +82,12 @@ def test_refusal_taken_over_only_when_sure(combined):
         combined.decide((None, count, _model(MODEL, 0.99)), Policy(takeover=0.5))
 
 
-@pytest.mark.parametrize('part,refused', [('since the hall is off limits', True), ('but never the hall', True),
-                                          ('head straight away to the hall', False), ('zorp the hall', False),
-                                          ('the hall , order does not matter', False)])
+@pytest.mark.parametrize('part,refused', [
+    ('since the hall is off limits', True), ('but never the hall', True),
+    ('head straight away to the hall', False), ('zorp the hall', False),
+    ('the hall , order does not matter', False)])
 def test_a_refusal_over_a_rule_is_taken_over_only_by_a_reading_that_avoids(combined, part, refused):
-    """"Go to the kitchen, since the hall is off limits": the model's F (kitchen & F hall) went on."""
+    """"Go to the kitchen, since the hall is off limits": the model's F (kitchen & F hall) had gone on."""
     refusal = TranslationError(f'could not place "{part}"', details={'part': part})
     if refused:
         with pytest.raises(TranslationError):

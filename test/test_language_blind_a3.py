@@ -131,7 +131,6 @@ def test_readings_found_on_blind_sets_a3_to_r3(instruction: str, gold: str) -> N
 def test_bugs_found_in_the_review_of_stop_16() -> None:
     """A connective ending a retraction is no crash; a goal said again by name keeps its place or refuses."""
     from ltl_instruct.core.errors import TranslationError
-    from translation_cases import T
     # "..., and, actually the hall is fine": the list of words ends at the connective (was an IndexError)
     check_translation('Go to the den. Avoid the hall and, actually the hall is fine.', 'F near[den]')
     with pytest.raises(TranslationError) as err:
@@ -142,5 +141,5 @@ def test_bugs_found_in_the_review_of_stop_16() -> None:
                       'F (near[freight_elevator] & F near[loading_dock]) & '
                       '(!near[freight_elevator] U near[mail_room]) & (!near[loading_dock] U near[mail_room])')
     with pytest.raises(TranslationError):
-        RULES.translate('Go to the vase next to the lamp, then the sofa. Wait, hit the mail room before both of '
-                    'those.')
+        RULES.translate('Go to the vase next to the lamp, then the sofa. Wait, hit the mail room before '
+                        'both of those.')

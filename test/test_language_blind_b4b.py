@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_B4B = [
     # "not the blue one, the tartan one": the adjective of what it is not finds the thing said before,

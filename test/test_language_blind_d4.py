@@ -11,7 +11,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_D4 = [
     # a reason said after the request with no comma, in chat spelling ("bc", "cuz"): left out, and

@@ -11,7 +11,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_E4 = [
     # formal apologies open a correction as "sorry" does ("my apologies" was a place visited after)

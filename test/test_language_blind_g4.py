@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import LtlInstructError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_G4 = [
     # a verb-particle compound after a determiner is a noun wherever it stands ("the walk-in?"),
@@ -90,5 +90,5 @@ def test_a_summons_with_a_first_of_its_own_is_refused() -> None:
 def test_not_to_be_disturbed_is_no_place_to_avoid() -> None:
     """"they've asked not to be disturbed" holds a rule word and names no place: refused."""
     with pytest.raises(LtlInstructError):
-        RULES.translate("Head to table 2 first. After that, avoid table 3 - they've asked not to be disturbed - "
-                    'and then go to the bar.')
+        RULES.translate("Head to table 2 first. After that, avoid table 3 - they've asked not to be "
+                        'disturbed - and then go to the bar.')

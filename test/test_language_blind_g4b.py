@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_G4B = [
     # "A before B, and B before C" with the verb left out: read as with "go to" (the verb said again)

@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_K4 = [
     # "I mean it" after a rule is emphasis, never a correction to "it" (the thing avoided became a goal)

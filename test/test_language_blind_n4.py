@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_N4 = [
     # "once you've been to X, stay clear of Y" said as a command makes X a goal, as "after going to X"

@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_S4 = [
     # an avoidance taken back, then "it's Y that's wet" / "it's Y I'm worried about" names what

@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 BLIND_ROUND_U4 = [
     # well-known office abbreviations are spelled out in names ("conf rm" was conf_room, "exec" exec_suite)

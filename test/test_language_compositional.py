@@ -17,7 +17,7 @@ from typing import Callable, Iterator, Optional
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 # Places: (as said, as named in the formula). Shapes: adjective + noun, numbered, lettered,
 # possessive, several words, a floor, and a name with a spatial descriptor.

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import pytest
 
-from translation_cases import RULES, T, check_translation as _check
+from translation_cases import RULES, check_translation as _check
 
 
 MANNERS = [

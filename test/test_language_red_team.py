@@ -10,7 +10,7 @@ from __future__ import annotations
 import pytest
 
 from ltl_instruct.core.errors import TranslationError
-from translation_cases import RULES, T, check_translation
+from translation_cases import RULES, check_translation
 
 # Read right: the remark or reason is left out, and the rule beside it is kept.
 RIGHT: list[tuple[str, str]] = [

@@ -236,7 +236,7 @@ def test_garbage_requests_only_raise_invalid_input(d):
 
 
 def test_a_shallow_corner_survives_dropping_collinear_points():
-    """A corner of 0.2 degrees densified at 1 cm kept: dropping it once cut an obstacle by 4 mm (fresh-clone CI)."""
+    """A corner of 0.2 degrees densified at 1 cm is kept: dropping it cut an obstacle by 4 mm (CI)."""
     from ltl_instruct.core.planning.segment import _drop_collinear
     corner = np.array([[8.1205, 6.8003], [8.9064, 2.8988], [9.1952, 1.4349]])
     dense = resample(corner, 0.01)

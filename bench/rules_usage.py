@@ -41,7 +41,7 @@ class _Counted:
 
 
 def _instrument(seen: set[tuple[str, int]]) -> tuple[Any, Any]:
-    """Wrap both tables' patterns (restored by the caller); return the originals."""
+    """Wrap both tables' patterns once (the caller restores them); return the originals."""
     old = idioms._COMPILED, paraphrase._REWRITES
     idioms._COMPILED = tuple((_Counted('idioms', i, p, seen), r, needs)
                              for i, (p, r, needs) in enumerate(idioms._COMPILED))
@@ -66,19 +66,21 @@ def count_usage() -> tuple[collections.Counter[tuple[str, int]], int]:
     """Return, per (table, entry), the instructions it changed; and how many instructions were read."""
     uses: collections.Counter[tuple[str, int]] = collections.Counter()
     read = 0
-    for _, texts, landmarks, options in _corpora():
-        translator = OfflineTranslator(landmarks=landmarks, **options)
-        for text in dict.fromkeys(texts):
-            seen: set[tuple[str, int]] = set()
-            old = _instrument(seen)
-            try:
-                translator.translate(text)
-            except LtlInstructError:
-                pass
-            finally:
-                idioms._COMPILED, paraphrase._REWRITES = old
-            uses.update(seen)
-            read += 1
+    seen: set[tuple[str, int]] = set()
+    old = _instrument(seen)
+    try:
+        for _, texts, landmarks, options in _corpora():
+            translator = OfflineTranslator(landmarks=landmarks, **options)
+            for text in dict.fromkeys(texts):
+                seen.clear()
+                try:
+                    translator.translate(text)
+                except LtlInstructError:
+                    pass
+                uses.update(seen)
+                read += 1
+    finally:
+        idioms._COMPILED, paraphrase._REWRITES = old
     return uses, read
 
 

@@ -33,7 +33,8 @@ def set_options(name: str, backend: str) -> dict[str, Any]:
     if backend in ('offline', 'combined'):
         return dict(given)
     if backend == 'neural':   # the conventions the model is given as inputs (the rules have more)
-        opts: dict[str, Any] = {k: v for k, v in given.items() if k in {c for c, _, _ in CONVENTIONS}}
+        inputs = {name for name, _, _ in CONVENTIONS}
+        opts: dict[str, Any] = {k: v for k, v in given.items() if k in inputs}
         if given.get('numbers') == 'digits':
             opts['digits'] = True
         return opts

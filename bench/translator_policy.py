@@ -95,7 +95,8 @@ def main(argv: list[str]) -> int:
     if datasets_root() is None or not Path(datasets_root()).is_dir():   # type: ignore[arg-type]
         print('public data sets not found (../shared/datasets or $LTL_INSTRUCT_DATASETS)', file=sys.stderr)
         return 1
-    policies = [Policy(float(t), float(o), c == 'yes', m == 'yes', r == 'yes', k == 'yes')
+    policies = [Policy(takeover=float(t), override=float(o), counts=c == 'yes', off_map=m == 'yes',
+                       read_all_stands=r == 'yes', rules_kept=k == 'yes')
                 for k in args.rules_kept.split(',')
                 for r in args.read_all_stands.split(',') for m in args.off_map.split(',')
                 for c in args.counts.split(',')

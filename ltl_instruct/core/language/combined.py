@@ -84,12 +84,9 @@ def _unreadable(refusal: LtlInstructError) -> bool:
 
 def _drops_a_rule(refusal: LtlInstructError, model: Translation) -> bool:
     """Tell whether the words the rules could not place rule a place out and the model's reading does not."""
-    from ltl_instruct.core.language.lexicon import NOT_PROHIBITIONS, PROHIBITION_WORDS
+    from ltl_instruct.core.language.fallback import rules_out_a_place
     part = str(refusal.details.get('part', '')) if isinstance(refusal.details, dict) else ''
-    words = re.findall(r'[a-z]+', part.lower())
-    said = any(w in PROHIBITION_WORDS and tuple(words[max(k - 1, 0):k + 1]) not in NOT_PROHIBITIONS
-               and tuple(words[k:k + 2]) not in NOT_PROHIBITIONS for k, w in enumerate(words))
-    return said and not avoided_referents_of(model.formula)
+    return rules_out_a_place(part.split()) and not avoided_referents_of(model.formula)
 
 
 @dataclass(frozen=True)
@@ -110,9 +107,10 @@ class Policy:
         as the others are (mean .834 against .832 on the validation splits); on the helpers'
         construction tests it stops 56 confident model readings replacing right rules' readings
         ("Never mind, go to the porch." was ``G !near[porch]``).
-    rules_kept: a refusal whose unplaced words rule a place out (``lexicon.PROHIBITION_WORDS``:
-        "not", "never", "off limits", "stay away"...) is taken over only by a reading that avoids something:
-        "Go to the den, since the kitchen is off limits" was the model's ``F (den & F kitchen)``.
+    rules_kept: a refusal whose unplaced words rule a place out (``fallback.rules_out_a_place``:
+        "not", "never", "off limits", "stay away"...) is taken over only by a reading that avoids
+        something: "Go to the den, since the kitchen is off limits" was the model's
+        ``F (den & F kitchen)``.
     """
 
     takeover: float = 0.5

@@ -85,6 +85,22 @@ grab grabbing
 '''.split())   # (a delivery left out would drop a goal: refused instead)
 
 
+# Words that rule a place out ("X is off limits", "never the hall", "stay away"), but not in the
+# phrases after them, which rule nothing out ("straight away", "order does not matter").
+_PROHIBITIONS = frozenset('''
+not never cannot mustn avoid avoiding limits bounds forbidden prohibited banned away clear
+'''.split())
+_NOT_PROHIBITIONS = frozenset({('straight', 'away'), ('right', 'away'), ('all', 'clear'), ('not', 'matter'),
+                               ('never', 'mind'), ('not', 'care'), ('not', 'mind')})
+
+
+def rules_out_a_place(tokens: Sequence[str]) -> bool:
+    """Whether unread words rule a place out: a reading of the instruction must then avoid something."""
+    words = [t for t in tokens if t not in PUNCT]
+    return any(w in _PROHIBITIONS and tuple(words[max(k - 1, 0):k + 1]) not in _NOT_PROHIBITIONS
+               and tuple(words[k:k + 2]) not in _NOT_PROHIBITIONS for k, w in enumerate(words))
+
+
 def may_degrade(tokens: Sequence[str]) -> bool:
     """Whether a clause the rules could not read may be guessed at or left out (see the module docstring)."""
     words = [t for t in tokens if t not in PUNCT]

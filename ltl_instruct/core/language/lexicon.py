@@ -10,14 +10,6 @@ from typing import Sequence
 
 from ltl_instruct.core.spec import Descriptor
 
-# Words that say a place is ruled out ("not", "off limits", "stay away"): words the rules could
-# not place that hold one are not taken over by a reading that avoids nothing (combined.Policy).
-PROHIBITION_WORDS = frozenset('''
-not never avoid avoiding limits bounds forbidden banned prohibited cannot mustn away clear
-'''.split())
-# ... except in these phrases, which rule nothing out ("order doesn't matter", "never mind")
-NOT_PROHIBITIONS = (('straight', 'away'), ('right', 'away'), ('all', 'clear'), ('not', 'matter'),
-                    ('never', 'mind'), ('not', 'care'), ('not', 'mind'))
 AVOID_TRIGGERS: tuple[tuple[str, ...], ...] = tuple(sorted((
     ('avoid',), ('stay', 'away', 'from'), ('keep', 'away', 'from'), ('keep', 'off'), ('stay', 'off'),
     ('stay', 'clear', 'of'), ('steer', 'clear', 'of'), ('keep', 'clear', 'of'), ('stay', 'out', 'of'),

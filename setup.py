@@ -46,7 +46,7 @@ setup(
     version='0.1.0',
     packages=find_packages(exclude=['test', 'test.*', 'bench', 'bench.*']),
     include_package_data=True,
-    package_data={package_name: ['data/*', 'data/**/*', 'core/language/neural/*.yaml']},
+    package_data={package_name: ['data/*', 'data/**/*', 'core/language/*.yaml', 'core/language/neural/*.yaml']},
     data_files=[
         ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
         ('share/' + package_name, ['package.xml']),

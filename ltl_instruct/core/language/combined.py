@@ -27,6 +27,9 @@ Policy (measured on the public sets' held-out splits; see the README, "translate
   the model existed);
 - both refuse: the rules' error.
 
+Whichever reading goes on is also flagged when it leaves out a place named by where the person
+or the robot is ("bring me the cup", "come back": ``deixis``), which no formula can name.
+
 A flagged translation has ``extra['flagged'] = True`` and its reasons in ``extra['unread']``,
 which the verification dialog shows first, before anything moves.
 """
@@ -87,6 +90,17 @@ def _drops_a_rule(refusal: LtlInstructError, model: Translation) -> bool:
     from ltl_instruct.core.language.fallback import rules_out_a_place
     part = str(refusal.details.get('part', '')) if isinstance(refusal.details, dict) else ''
     return rules_out_a_place(part.split()) and not avoided_referents_of(model.formula)
+
+
+def _flag_unnamed_places(t: Translation) -> Translation:
+    """Flag a reading that leaves out a place named by where someone is ("bring me", "come back")."""
+    from ltl_instruct.core.language.deixis import unnamed_places
+    notes = unnamed_places(t.instruction, t.formula)
+    if not notes:
+        return t
+    extra = dict(t.extra)
+    extra.update(flagged=True, unread=list(extra.get('unread', ())) + notes)
+    return replace(t, extra=extra)
 
 
 @dataclass(frozen=True)
@@ -171,6 +185,10 @@ class CombinedTranslator:
         return rules, refusal, model
 
     def decide(self, readings: Readings, policy: Policy) -> Translation:
+        """Pick the one reading that goes on (raises the rules' refusal when none may), flagged if it must be."""
+        return _flag_unnamed_places(self._pick(readings, policy))
+
+    def _pick(self, readings: Readings, policy: Policy) -> Translation:
         """Pick the one reading that goes on (raises the rules' refusal when none may)."""
         rules, refusal, model = readings
         if rules is not None:

@@ -1,0 +1,76 @@
+"""Places named by where the person or the robot is ("bring me", "come back", "here"), not by name.
+
+A task formula names places of the map; where the person stands or where the robot started is
+none of them. A reader can only leave such a place out ("Bring me the cup." picks the cup up;
+"go to the shed and come back" ends at the shed), which is a task the person did not ask for, so
+the reading goes on **flagged**, with a note saying what the plan leaves out and how to say it
+(:func:`unnamed_places`). The phrases are data (``deixis.yaml``); a place the person names
+("come back to the porch", "bring it to me, I'm at the desk") is no such phrase.
+"""
+from __future__ import annotations
+
+import functools
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+import yaml
+
+from ltl_instruct.core.spec import Atom, Formula, iter_subformulas
+
+_TABLE = Path(__file__).with_name('deixis.yaml')
+
+# "I'm at the desk", "we are in the lounge": the person says where they are, and the readers make it the place.
+_SPEAKER_PLACED = re.compile(r"\b(?:i'?m|i am|we'?re|we are)\s+(?:at|in|on|by|near|inside|next|beside|sitting|"
+                             r"standing|upstairs|downstairs|over)\b")
+
+# Words that negate a phrase within two words before it ("never go back", "don't come back").
+_NEGATIONS = frozenset({'never', 'not', "don't", 'dont', 'no', 'without', "won't", 'cannot', "can't"})
+
+
+@dataclass(frozen=True)
+class Deixis:
+    """One kind of phrase naming a place by where someone is (an entry of ``deixis.yaml``)."""
+
+    pattern: re.Pattern[str]
+    whose: str
+    note: str
+    picked: bool = False
+
+
+@functools.lru_cache(maxsize=1)
+def table() -> tuple[Deixis, ...]:
+    """Return the phrases of ``deixis.yaml``, compiled."""
+    entries = yaml.safe_load(_TABLE.read_text(encoding='utf-8'))
+    return tuple(Deixis(re.compile(e['pattern']), e['whose'], e['note'], bool(e.get('picked', False)))
+                 for e in entries)
+
+
+def unnamed_places(instruction: str, formula: Formula) -> list[str]:
+    """Return a note for each place the instruction names by where someone is and the formula leaves out."""
+    text = instruction.lower().replace('\u2019', "'")
+    speaker_placed = bool(_SPEAKER_PLACED.search(text))
+    notes: list[str] = []
+    for entry in table():
+        if entry.whose == 'speaker' and speaker_placed:
+            continue
+        if entry.picked and not _picks_without_release(formula):
+            continue
+        for m in entry.pattern.finditer(text):
+            if not _negated(text, m.start()):
+                notes.append(entry.note.format(phrase=m.group(0).strip()))
+                break
+    return list(dict.fromkeys(notes))
+
+
+def _negated(text: str, start: int) -> bool:
+    """Tell whether one of the two words before ``start`` negates the phrase."""
+    return any(w in _NEGATIONS for w in text[:start].split()[-2:])
+
+
+def _picks_without_release(formula: Formula) -> bool:
+    """Tell whether the formula picks a thing up that it never puts down."""
+    atoms = [n for n in iter_subformulas(formula) if isinstance(n, Atom)]
+    picked = {a.args[0] for a in atoms if a.skill == 'pick'}
+    released = {a.args[0] for a in atoms if a.skill == 'release'}
+    return bool(picked - released)

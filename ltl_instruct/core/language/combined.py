@@ -185,7 +185,7 @@ class CombinedTranslator:
         return rules, refusal, model
 
     def decide(self, readings: Readings, policy: Policy) -> Translation:
-        """Pick the one reading that goes on (raises the rules' refusal when none may), flagged if it must be."""
+        """Pick the one reading that goes on (raises the rules' refusal when none may), flagged as needed."""
         return _flag_unnamed_places(self._pick(readings, policy))
 
     def _pick(self, readings: Readings, policy: Policy) -> Translation:

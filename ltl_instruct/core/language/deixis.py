@@ -20,9 +20,9 @@ from ltl_instruct.core.spec import Atom, Formula, iter_subformulas
 
 _TABLE = Path(__file__).with_name('deixis.yaml')
 
-# "I'm at the desk", "we are in the lounge": the person says where they are, and the readers make it the place.
-_SPEAKER_PLACED = re.compile(r"\b(?:i'?m|i am|we'?re|we are)\s+(?:at|in|on|by|near|inside|next|beside|sitting|"
-                             r"standing|upstairs|downstairs|over)\b")
+# "I'm at the desk", "we are in the lounge": the person says where they are; the readers make it the place.
+_SPEAKER_PLACED = re.compile(r"\b(?:i'?m|i am|we'?re|we are)\s+(?:at|in|on|by|near|inside|next|beside|"
+                             r"sitting|standing|upstairs|downstairs|over)\b")
 
 # Words that negate a phrase within two words before it ("never go back", "don't come back").
 _NEGATIONS = frozenset({'never', 'not', "don't", 'dont', 'no', 'without', "won't", 'cannot', "can't"})

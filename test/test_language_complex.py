@@ -348,6 +348,11 @@ LOCATIONS = [
     ('Go to the plant at the end of the hallway, and avoid the rug in the corner of the room.',
      'F near[plant] & G !near[rug]'),
     ('Put the cup in the sink.', 'F (near[cup] & F (pick[cup] & F (near[sink] & F release[cup, sink])))'),
+    # an adverb of place after a name ends it ("laundry_basket_upstairs" was the name)
+    ('Could you take the laundry basket upstairs to the bedroom?',
+     'F (near[laundry_basket] & F (pick[laundry_basket] & '
+     'F (near[bedroom] & F release[laundry_basket, bedroom])))'),
+    ('go to the bathroom downstairs', 'F near[bathroom]'),
     ('Go to the chair across from the sofa.', 'F near[chair::isinfrontof(sofa)]'),
     ('Visit the den, the hall and the loft in this strict order.',
      'F (near[den] & F (near[hall] & F near[loft])) & (!near[hall] U near[den]) & '

@@ -267,6 +267,10 @@ CAN_DETERMINERS = frozenset({'the', 'a', 'an', 'that', 'this', 'each', 'every', 
                              'empty', 'old', 'open', 'tin', 'paint', 'trash', 'garbage', 'watering'})
 
 
+# Adverbs of place: after a name they say where the thing is or goes ("the basket upstairs").
+_PLACE_ADVERBS = frozenset({'upstairs', 'downstairs', 'outside', 'outdoors', 'indoors'})
+
+
 def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
     """Whether ``tokens[i]`` can be part of an object's name."""
     if i >= len(tokens):
@@ -320,6 +324,8 @@ def is_name_word(tokens: Sequence[str], i: int, have_name: bool) -> bool:
         return True   # "the time clock", "a time sheet": a thing named for time (not "the time you ...")
     if w in STOPWORDS:
         return False
+    if have_name and w in _PLACE_ADVERBS:
+        return False   # "the laundry basket upstairs to the bedroom": where it is or goes, not its name
     if w.endswith('ly') and len(w) > 5 and w not in LY_NOUNS:
         # adverbs ("quickly", "carefully") are not names; an adjective is, between an article and a noun
         # ("a woolly hat", "the curly wig"; not "the really big box")
@@ -661,7 +667,7 @@ def location_phrase(tokens: Sequence[str], i: int, parser: 'PhraseParser') -> in
     if i >= len(tokens):
         return -1
     w = tokens[i]
-    if w in ('upstairs', 'downstairs', 'outside', 'outdoors', 'indoors'):
+    if w in _PLACE_ADVERBS:
         return i + 1
     if w == 'down' and tokens[i + 1:i + 2] == ['the'] and \
             tokens[i + 2:i + 3] in (['hall'], ['hallway'], ['corridor']):

@@ -25,6 +25,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     train.add_argument('--sets', default=None,
                        help='public sets whose training splits are added, comma-separated (default all; '
                             '"none" for none)')
+    train.add_argument('--public-repeat', type=int, default=None,
+                       help='times each public training example is used per epoch (default 2)')
     train.add_argument('--time-limit', type=float, default=None,
                        help='seconds of training, after encoding (default 3600)')
     train.add_argument('--seed', type=int, default=0, help='random seed (default 0)')
@@ -42,6 +44,8 @@ def run(args: argparse.Namespace) -> int:
         cfg = replace(cfg, generated=args.generated)
     if args.epochs is not None:
         cfg = replace(cfg, epochs=args.epochs)
+    if args.public_repeat is not None:
+        cfg = replace(cfg, public_repeat=args.public_repeat)
     if args.time_limit is not None:
         cfg = replace(cfg, time_budget_s=args.time_limit)
     if args.sets is not None:

@@ -894,7 +894,7 @@ RULES: tuple[Rule, ...] = (
          r'(?:there|in there|on there)\b', r'\g<d>'),
     Rule('between those two, stay clear of the door: the leg to the last goal',
          r'(?<!leg )(?<!way )(?<!stretch )(?<!part )(?<!bit )\bbetween (?:those|these|the) two'
-         r'(?: (?:places|stops|goals|points|spots))?\b', 'on the way there'),
+         r'(?: (?:places|stops|goals|points|spots))?\b(?! (?!is\b|was\b)[a-z]+s\b)', 'on the way there'),
     Rule('between the desk and the waiting room, keep away from X: that leg of the route',
          r'^between (?P<a>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) and '
          r'(?P<b>(?:the|my|your) (?:[a-z0-9_]+ ){0,3}?[a-z0-9_]+) ,', r'on the way from \g<a> to \g<b> ,'),

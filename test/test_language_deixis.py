@@ -16,6 +16,8 @@ DELIVERED = 'F (near[cup] & F (pick[cup] & F (near[sofa] & F release[cup, sofa])
     ('could you fetch us the cup please', PICKED, 'fetch us'),
     ('bring the cup to me', PICKED, 'to me'),
     ('take the cup back to me when you are done', PICKED, 'back to me'),
+    ('go to the pantry and bring back the cup', PICKED, 'bring back'),
+    ('fetch the cup back', PICKED, 'fetch the cup back'),
     ('check on the dog, then come back to me', 'F near[dog]', 'come back to me'),
     ('go to the shed and come back', 'F near[shed]', 'come back'),
     ('Go to the shed then return.', 'F near[shed]', 'return'),
@@ -41,6 +43,7 @@ def test_a_place_named_by_where_someone_is_gets_a_note(instruction: str, formula
     ("go to the shed, don't come back", 'F near[shed]'),
     ('return the cup to the sink', 'F (near[cup] & F (pick[cup] & F (near[sink] & F release[cup, sink])))'),
     ('go to the kitchen for me', 'F near[kitchen]'),
+    ('bring the cup back to the sofa', DELIVERED),
 ])
 def test_a_place_named_by_name_gets_no_note(instruction: str, formula: str) -> None:
     assert unnamed_places(instruction, parse_formula(formula)) == []

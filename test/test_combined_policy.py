@@ -154,3 +154,14 @@ def test_a_reading_naming_what_the_map_lacks_gives_way_at_takeover_confidence():
     weak = _model(meant, 0.4, mentions=('green_room', 'red_room', 'blue_room'))
     t = mapped.decide((rules, None, weak), Policy(takeover=0.5, override=0.95))
     assert str(t.formula) == said and t.extra['flagged']
+
+
+def test_a_reading_naming_what_the_map_lacks_is_flagged_even_when_both_agree():
+    """Drone: "without going to any other floors" read by both as !near[other_floors], not flagged before."""
+    mapped = CombinedTranslator(model_path='/nonexistent/bundle', landmarks=('kitchen', 'hall'))
+    said = 'F near[kitchen] & G !near[other_floors]'
+    t = mapped.decide((_rules(said, unread=()), None, _model(said, 0.99)), Policy())
+    assert t.extra['agreement'] is True and t.extra['flagged']
+    assert any('other_floors: none of the landmarks given' in n for n in t.extra['unread'])
+    t = mapped.decide((_rules(RULES, unread=()), None, _model(RULES, 0.99)), Policy())
+    assert not t.extra['flagged']

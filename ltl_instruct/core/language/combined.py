@@ -28,7 +28,9 @@ Policy (measured on the public sets' held-out splits; see the README, "translate
 - both refuse: the rules' error.
 
 Whichever reading goes on is also flagged when it leaves out a place named by where the person
-or the robot is ("bring me the cup", "come back": ``deixis``), which no formula can name.
+or the robot is ("bring me the cup", "come back": ``deixis``), which no formula can name, and,
+where landmarks are given, when it names something that is none of them (grounding would fail:
+"without going to any other floors" read as ``!near[other_floors]``).
 
 A flagged translation has ``extra['flagged'] = True`` and its reasons in ``extra['unread']``,
 which the verification dialog shows first, before anything moves.
@@ -95,11 +97,15 @@ def _drops_a_rule(refusal: LtlInstructError, model: Translation) -> bool:
 def _flag_unnamed_places(t: Translation) -> Translation:
     """Flag a reading that leaves out a place named by where someone is ("bring me", "come back")."""
     from ltl_instruct.core.language.deixis import unnamed_places
-    notes = unnamed_places(t.instruction, t.formula)
+    return _flagged(t, unnamed_places(t.instruction, t.formula))
+
+
+def _flagged(t: Translation, notes: Sequence[str]) -> Translation:
+    """Return the reading flagged with ``notes`` added to its reasons (itself when there are none)."""
     if not notes:
         return t
     extra = dict(t.extra)
-    extra.update(flagged=True, unread=list(extra.get('unread', ())) + notes)
+    extra.update(flagged=True, unread=list(extra.get('unread', ())) + list(notes))
     return replace(t, extra=extra)
 
 
@@ -186,7 +192,7 @@ class CombinedTranslator:
 
     def decide(self, readings: Readings, policy: Policy) -> Translation:
         """Pick the one reading that goes on (raises the rules' refusal when none may), flagged as needed."""
-        return _flag_unnamed_places(self._pick(readings, policy))
+        return _flag_unnamed_places(self._flag_off_map(self._pick(readings, policy)))
 
     def _pick(self, readings: Readings, policy: Policy) -> Translation:
         """Pick the one reading that goes on (raises the rules' refusal when none may)."""
@@ -240,6 +246,12 @@ class CombinedTranslator:
                     mention['descriptor'].count('_') >= MAX_PLAIN_NAME_WORDS:
                 return False   # a clause read as one name ("the dock by the tv or the one by ...")
         return True
+
+    def _flag_off_map(self, t: Translation) -> Translation:
+        """Flag a reading that names something the landmarks given lack (it would fail at grounding)."""
+        missing = [r for r in t.referents if r not in self.landmarks] if self.landmarks else []
+        return _flagged(t, [f'{", ".join(missing)}: none of the landmarks given; check what is meant']
+                        if missing else [])
 
     def _names_the_map(self, t: Translation) -> bool:
         """Tell whether every referent of a reading is a landmark given (the map's own names)."""

@@ -207,7 +207,7 @@ def interactive(translator: Any, ask: Callable[[str], str], say: Callable[[str],
             elif t is not None and pending_correction and translator.name == 'llm':
                 t = translator.translate(instruction, correction=pending_correction, previous=t)
             elif pending_correction:
-                t = translator.translate(f'{instruction}. {pending_correction}')
+                t = translator.translate(f'{instruction.rstrip(" .")}. {pending_correction}')
             else:
                 t = translator.translate(instruction)
             say(verification_for(t).text())

@@ -46,7 +46,7 @@ def test_an_object_seen_by_the_camera_is_grounded_and_planned_to(camera_graph):
             break
         time.sleep(0.5)
     assert status is not None and status['status'] in ('planned', 'satisfied'), status
-    groundings = client.received.referent_maps[iid]['referent_map']['groundings']
+    groundings = client.keyed('referent_maps', iid)['referent_map']['groundings']
     found = groundings['pillar']['instances']
     assert found and all(i['id'].startswith('det_') for i in found)      # detections, not a list
     assert min(abs(i['center'][0] - pillar.center[0]) + abs(i['center'][1] - pillar.center[1])

@@ -100,7 +100,7 @@ def test_instruction_yields_a_plan_the_automaton_accepts(graph):
     assert status['status'] == 'planned', status
     plan = client.wait_until(lambda: client.received.plans.get(status['plan_stamp']), 5.0)
     assert plan is not None and len(plan) >= 2
-    rmap = ReferentMap.from_dict(client.received.referent_maps[iid]['referent_map'])
+    rmap = ReferentMap.from_dict(client.keyed('referent_maps', iid)['referent_map'])
     aut, letters = _trace(formula, rmap, _densify(plan), [])
     assert aut.accepts(letters)
     # the sofa behind the pillar is the one at larger x, never the other
@@ -120,8 +120,8 @@ def test_english_instruction_is_translated_planned_and_executed(graph):
     iid = client.send(text='go to the fridge')
     status = client.wait_terminal(iid, timeout=30.0)
     assert status['status'] == 'planned', status
-    assert client.received.specs[iid]['formula'] == 'F near[fridge]'
-    verification = client.received.verifications[iid]
+    assert client.keyed('specs', iid)['formula'] == 'F near[fridge]'
+    verification = client.keyed('verifications', iid)
     assert 'fridge' in verification['verification_text']
     done = client.wait_status(iid, 'satisfied', timeout=60.0)
     assert done is not None and done['phase'] == 'execution'
@@ -352,7 +352,7 @@ def test_a_changed_referent_map_triggers_a_replan_from_the_current_state(graph):
     status = client.wait_terminal(iid, timeout=30.0)
     assert status['status'] == 'planned', status
     # a new detection: the wardrobe is elsewhere (revision 1 of this task's referent map)
-    rdata = client.received.referent_maps[iid]
+    rdata = client.keyed('referent_maps', iid)
     rmap = rdata['referent_map']
     rmap['groundings']['wardrobe']['instances'][0]['center'] = [8.5, 9.5, 1.0]
     from ltl_instruct.nodes.common import latched_qos

@@ -103,7 +103,7 @@ def test_same_instruction_each_robot_its_own_plan_and_nothing_crosses(robots):
         plan = client.wait_until(lambda: client.received.plans.get(status['plan_stamp']), 5.0)
         lamp = next(o for o in scene.objects if o.label == 'lamp')
         assert lamp.box.distance(plan[-1], dims=2)[0] <= NEAR, (frame, plan[-1])
-        assert client.received.specs[status['id']]['formula'] == 'F near[lamp]'
+        assert client.keyed('specs', status['id'])['formula'] == 'F near[lamp]'
     # every topic our nodes publish or read is in their namespace (or shared by ROS itself)
     for ns, client in clients.items():
         for node in ALL_NODES:

@@ -78,7 +78,7 @@ def test_an_object_out_of_sight_is_searched_for_found_and_planned_to(search_grap
     looks = _searching(client, iid)
     assert looks and all(s['sought'] == ['vase'] and not s['terminal'] for s in looks)
     assert looks[-1]['area_seen_m2'] > looks[0]['area_seen_m2'] > 0.0 and looks[-1]['moves'] >= 1
-    rmap = client.received.referent_maps[iid]
+    rmap = client.keyed('referent_maps', iid)
     assert rmap['ok'] and rmap['revision'] >= 1           # a later revision resolved it
     vase = rmap['referent_map']['groundings']['vase']['instances']
     assert len(vase) == 1 and vase[0]['id'].startswith('det_')

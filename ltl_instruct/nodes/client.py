@@ -201,6 +201,19 @@ class GraphClient:
                     return None
                 self._cond.wait(min(left, 0.1))
 
+    def keyed(self, kind: str, iid: str, timeout: float = 10.0) -> dict[str, Any]:
+        """Return the ``kind`` message (``specs``, ``verifications``, ``referent_maps``...) of ``iid``.
+
+        Waits for it. Topics arrive apart: under load this client's reader of ``task_spec`` can
+        match the translator's writer after the instruction's terminal status has come (seen in a
+        fresh-clone CI run: 0.7 s later), and the latched spec then arrives late. Raises
+        ``KeyError`` when none has come within ``timeout`` seconds.
+        """
+        value = self.wait_until(lambda: getattr(self.received, kind).get(iid), timeout)
+        if value is None:
+            raise KeyError(f'no {kind} message for {iid} within {timeout} s')
+        return value
+
     def missing(self, need_sim: bool = False, need_planner: bool = True) -> list[str]:
         """Return the pipeline parts not listening yet, as seen from this client (empty: all are)."""
         # the translator listens to instruction; the grounder and task_progression listen to

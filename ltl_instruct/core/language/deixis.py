@@ -13,10 +13,11 @@ import functools
 import re
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Optional
 
 import yaml
 
-from ltl_instruct.core.spec import Atom, Formula, iter_subformulas
+from ltl_instruct.core.spec import Atom, Formula, iter_subformulas, referents_of
 
 _TABLE = Path(__file__).with_name('deixis.yaml')
 
@@ -36,13 +37,15 @@ class Deixis:
     whose: str
     note: str
     picked: bool = False
+    unless: Optional[re.Pattern[str]] = None
 
 
 @functools.lru_cache(maxsize=1)
 def table() -> tuple[Deixis, ...]:
     """Return the phrases of ``deixis.yaml``, compiled."""
     entries = yaml.safe_load(_TABLE.read_text(encoding='utf-8'))
-    return tuple(Deixis(re.compile(e['pattern']), e['whose'], e['note'], bool(e.get('picked', False)))
+    return tuple(Deixis(re.compile(e['pattern']), e['whose'], e['note'], bool(e.get('picked', False)),
+                        re.compile(e['unless']) if e.get('unless') else None)
                  for e in entries)
 
 
@@ -55,6 +58,8 @@ def unnamed_places(instruction: str, formula: Formula) -> list[str]:
         if entry.whose == 'speaker' and speaker_placed:
             continue
         if entry.picked and not _picks_without_release(formula):
+            continue
+        if entry.unless is not None and any(entry.unless.search(str(r)) for r in referents_of(formula)):
             continue
         for m in entry.pattern.finditer(text):
             if not _negated(text, m.start()):

@@ -65,6 +65,23 @@ def test_rewrites_keep_sentences_and_plain_text() -> None:
     assert rewrite_idioms(tokenize('visit a two or more times')) == ['visit', 'a', 'at', 'least', 'twice']
 
 
+@pytest.mark.parametrize('instruction, gold', [
+    # a connective that adds a clause was read as a place ("near[furthermore]", "near[top]")
+    ('go to the kitchen, furthermore never enter the hall', 'F near[kitchen] & G !near[hall]'),
+    ('Go to the kitchen. On top of that, never enter the hall.', 'F near[kitchen] & G !near[hall]'),
+    ('go to the kitchen. in addition, avoid the hall', 'F near[kitchen] & G !near[hall]'),
+    ('Go to the kitchen. In addition to that, never enter the hall.', 'F near[kitchen] & G !near[hall]'),
+    ("go to the kitchen, what's more, keep away from the hall", 'F near[kitchen] & G !near[hall]'),
+    ('Go to the porch. Plus, stay out of the garden.', 'F near[porch] & G !near[garden]'),
+    # one that offers another was read as a sequence
+    ('go to the kitchen, otherwise go to the garage', 'F near[kitchen] | F near[garage]'),
+    ('go to the kitchen, alternatively head to the garage', 'F near[kitchen] | F near[garage]'),
+])
+def test_connectives_that_add_or_offer_a_clause(instruction: str, gold: str) -> None:
+    got = OfflineTranslator().translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
 def test_between_two_things_of_a_kind_is_no_leg_of_the_route() -> None:
     # "between the two tables" names where a chair is ("on the way there tables" was read)
     assert 'way' not in rewrite_idioms(tokenize('go to the chair between the two tables'))

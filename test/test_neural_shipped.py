@@ -70,7 +70,6 @@ def test_the_model_counts_visits(neural, text, builder, n):
 
 
 @pytest.mark.parametrize('text', [
-    'Go to the kitchen. On top of that, never enter the hall',
     'I have to finish my essay, can you find the lamp',
 ])
 def test_combined_flags_a_disagreement_and_offers_both_readings(combined, neural, text):
@@ -113,7 +112,7 @@ def test_the_dialog_offers_the_model_reading_and_takes_it(combined):
     assert classify_reply('alternative 1').kind == 'alternative'
     assert classify_reply('take alt 2').index == 2
     assert classify_reply('go to the alternative entrance').kind == 'correction'
-    text = 'Go to the kitchen. On top of that, never enter the hall'
+    text = 'I have to finish my essay, can you find the lamp'
     other = combined.translate(text).extra['alternatives'][0]
     replies = iter([text, 'alternative 1', 'yes'])
     said: list[str] = []

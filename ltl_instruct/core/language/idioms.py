@@ -460,6 +460,15 @@ RULES: tuple[Rule, ...] = (
          r'\b(?:kindly |please )?refrain from (?:ever )?(?P<v>[a-z]+ing)\b',
          lambda m: f'do not {_plain(m.group("v"))}'),
     Rule('and subsequently the centrifuge', r'\bsubsequently\b', 'then'),
+    # ---- connectives that add a clause or offer another (read as names before: "near[furthermore]")
+    Rule('go to the den ; moreover , never enter the hall: and (nothing at the start of a sentence)',
+         r'(?:^|(?<=, )|(?<=; ))(?:moreover|furthermore|additionally|in addition(?! to\b)|'
+         r'(?:in addition to|on top of|besides) (?:that|this)|what is more|plus|over and above that)(?: ,)? ',
+         lambda m: '' if m.start() == 0 else 'and '),
+    Rule('go to the kitchen , otherwise go to the garage: or',
+         r'(?:^|(?<=, ))(?:otherwise|alternatively|failing that|if not)(?: ,)? '
+         r'(?=(?:just )?(?:go|head|visit|move|drive|fly|walk|come|proceed|travel|take|bring|deliver|try)\b)',
+         'or '),
     Rule('the shower prior to the hood', r'\bprior to\b', 'before'),
     # ---- modal frames said at length: permission, obligation, prohibition
     Rule('you are not allowed to go there',

@@ -249,13 +249,17 @@ class CombinedTranslator:
 
     def _flag_off_map(self, t: Translation) -> Translation:
         """Flag a reading that names something the landmarks given lack (it would fail at grounding)."""
-        missing = [r for r in t.referents if r not in self.landmarks] if self.landmarks else []
+        missing = self._off_map(t)
         return _flagged(t, [f'{", ".join(missing)}: none of the landmarks given; check what is meant']
                         if missing else [])
 
     def _names_the_map(self, t: Translation) -> bool:
         """Tell whether every referent of a reading is a landmark given (the map's own names)."""
-        return bool(self.landmarks) and all(r in self.landmarks for r in t.referents)
+        return bool(self.landmarks) and not self._off_map(t)
+
+    def _off_map(self, t: Translation) -> list[str]:
+        """Return the referents of a reading that are none of the landmarks given (none without landmarks)."""
+        return [r for r in t.referents if r not in self.landmarks] if self.landmarks else []
 
     def _with_rules(self, rules: Translation, model: Optional[Translation]) -> Translation:
         extra = dict(rules.extra)

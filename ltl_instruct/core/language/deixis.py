@@ -17,16 +17,18 @@ from typing import Optional
 
 import yaml
 
+from ltl_instruct.core.language.text import tokenize
 from ltl_instruct.core.spec import Atom, Formula, iter_subformulas, referents_of
 
 _TABLE = Path(__file__).with_name('deixis.yaml')
 
-# "I'm at the desk", "we are in the lounge": the person says where they are; the readers make it the place.
-_SPEAKER_PLACED = re.compile(r"\b(?:i'?m|i am|we'?re|we are)\s+(?:at|in|on|by|near|inside|next|beside|"
+# "I'm at the desk", "we are in the lounge" (tokenized: "i am", "we are"): the person says where they
+# are; the readers make it the place.
+_SPEAKER_PLACED = re.compile(r"\b(?:i am|we are)\s+(?:at|in|on|by|near|inside|next|beside|"
                              r"sitting|standing|upstairs|downstairs|over)\b")
 
 # Words that negate a phrase within two words before it ("never go back", "don't come back").
-_NEGATIONS = frozenset({'never', 'not', "don't", 'dont', 'no', 'without', "won't", 'cannot', "can't"})
+_NEGATIONS = frozenset({'never', 'not', 'no', 'without', 'cannot'})
 
 
 @dataclass(frozen=True)
@@ -51,20 +53,18 @@ def table() -> tuple[Deixis, ...]:
 
 def unnamed_places(instruction: str, formula: Formula) -> list[str]:
     """Return a note for each place the instruction names by where someone is and the formula leaves out."""
-    text = instruction.lower().replace('\u2019', "'")
+    text = ' '.join(tokenize(instruction))   # the readers' normalisation: "I'm" is "i am", typos fixed
     speaker_placed = bool(_SPEAKER_PLACED.search(text))
+    open_pick = _picks_without_release(formula)
+    referents = [str(r) for r in referents_of(formula)]
     notes: list[str] = []
     for entry in table():
-        if entry.whose == 'speaker' and speaker_placed:
+        if entry.whose == 'speaker' and speaker_placed or entry.picked and not open_pick or \
+                entry.unless is not None and any(entry.unless.search(r) for r in referents):
             continue
-        if entry.picked and not _picks_without_release(formula):
-            continue
-        if entry.unless is not None and any(entry.unless.search(str(r)) for r in referents_of(formula)):
-            continue
-        for m in entry.pattern.finditer(text):
-            if not _negated(text, m.start()):
-                notes.append(entry.note.format(phrase=m.group(0).strip()))
-                break
+        said = next((m for m in entry.pattern.finditer(text) if not _negated(text, m.start())), None)
+        if said is not None:
+            notes.append(entry.note.format(phrase=said.group(0).strip()))
     return list(dict.fromkeys(notes))
 
 

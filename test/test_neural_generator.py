@@ -120,3 +120,13 @@ def test_main_prints_json_lines(capsys):
     lines = capsys.readouterr().out.strip().splitlines()
     assert len(lines) == 3
     assert all('"lifted"' in line and '"formula"' in line and '"mentions"' in line for line in lines)
+
+
+def test_avoidance_tails_follow_a_route(sample):
+    """Say 'but never near X' only after a sequence of steps, as the whole run's avoidance."""
+    tails = [ex for ex in sample if 'avoid_tail' in ex.source.split(':', 1)[1].split('+')]
+    assert len(tails) >= 20
+    for ex in tails:
+        assert re.search(r'G !near\[s\d+\]', ex.lifted)
+        if 'avoid_global' not in ex.source:   # (that one may be said first)
+            assert ex.text.split(' ')[0].lower() not in ('never', 'avoiding', 'without', 'not')

@@ -37,7 +37,8 @@ _STEP_WEIGHTS = {'visit': 10, 'revisit': 1, 'either': 2, 'twice': 1.2, 'three_ti
                  'correction_dest': 0.4}
 _SOURCE_RATE = 0.2   # carried things said with where they are taken from ("the cup from the kitchen")
 _RULE_WEIGHTS = {'unordered': 1.5, 'unordered3': 0.7, 'sequence_list': 0.8, 'before': 1.5, 'not_until': 1.2,
-                 'stay_until': 0.8, 'weak_first': 0.5, 'avoid_global': 3, 'avoid_onway': 1.2,
+                 'stay_until': 0.8, 'weak_first': 0.5, 'avoid_global': 3, 'avoid_tail': 2.5,
+                 'avoid_onway': 1.2,
                  'avoid_after': 1, 'xor': 1, 'at_most_once': 0.8, 'exactly_once': 0.8, 'exactly_twice': 0.6,
                  'at_least_n': 0.5, 'at_most_n': 0.5, 'exactly_n': 0.5,
                  'whenever': 1, 'if_then': 0.8, 'patrol': 0.8, 'patrol1': 0.6, 'route_twice': 0.4,
@@ -476,6 +477,8 @@ class Generator:
                                    'sequence_list', 'patrol1', 'exactly_once', 'at_most_once'))
             else:
                 name = rng.choices(self._rule_names, self._rule_w)[0]
+            if name == 'avoid_tail' and not any(c[2] == '' for c in clauses):
+                name = 'avoid_global'   # a tail follows a sequence of steps
             segs, f, req = self._rule(name)
             if name == 'avoid_global' and clauses and rng.random() < 0.25:
                 clauses.insert(0, (segs, False, name))
@@ -487,7 +490,8 @@ class Generator:
         body: list[Segment] = []
         for i, (segs, _req, name) in enumerate(clauses):
             if i:
-                pool = raw['but_connectives'] if name.startswith('avoid') else raw['and_connectives']
+                pool = raw['tail_connectives'] if name == 'avoid_tail' else \
+                    raw['but_connectives'] if name.startswith('avoid') else raw['and_connectives']
                 body.append(rng.choice(pool))
             body.extend(segs)
         if clauses[0][1] and rng.random() < 0.6:

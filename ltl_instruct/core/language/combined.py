@@ -100,6 +100,12 @@ def _flag_unnamed_places(t: Translation) -> Translation:
     return _flagged(t, unnamed_places(t.instruction, t.formula))
 
 
+def _flag_unobservable(t: Translation) -> Translation:
+    """Flag a reading of an instruction with a condition no formula states ("until I call you")."""
+    from ltl_instruct.core.language.unobservable import unobservable_conditions
+    return _flagged(t, unobservable_conditions(t.instruction))
+
+
 def _flagged(t: Translation, notes: Sequence[str]) -> Translation:
     """Return the reading flagged with ``notes`` added to its reasons (itself when there are none)."""
     if not notes:
@@ -192,7 +198,7 @@ class CombinedTranslator:
 
     def decide(self, readings: Readings, policy: Policy) -> Translation:
         """Pick the one reading that goes on (raises the rules' refusal when none may), flagged as needed."""
-        return _flag_unnamed_places(self._flag_off_map(self._pick(readings, policy)))
+        return _flag_unobservable(_flag_unnamed_places(self._flag_off_map(self._pick(readings, policy))))
 
     def _pick(self, readings: Readings, policy: Policy) -> Translation:
         """Pick the one reading that goes on (raises the rules' refusal when none may)."""

@@ -354,6 +354,9 @@ LOCATIONS = [
      'F (near[bedroom] & F release[laundry_basket, bedroom])))'),
     ('go to the bathroom downstairs', 'F near[bathroom]'),
     ('Go to the chair across from the sofa.', 'F near[chair::isinfrontof(sofa)]'),
+    # a superlative of nearness is the relation (it was the name "chair_closest", then the door)
+    ('Go to the chair closest to the door.', 'F near[chair::isnextto(door)]'),
+    ('Go to the chair nearest the door, then the lamp.', 'F (near[chair::isnextto(door)] & F near[lamp])'),
     ('Visit the den, the hall and the loft in this strict order.',
      'F (near[den] & F (near[hall] & F near[loft])) & (!near[hall] U near[den]) & '
      '(!near[loft] U near[hall])'),

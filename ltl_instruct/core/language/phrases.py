@@ -35,6 +35,7 @@ RELATION_PHRASES: tuple[tuple[tuple[str, ...], str], ...] = tuple(sorted((
     (('next', 'to'), 'isnextto'), (('by',), 'isnextto'), (('beside',), 'isnextto'),
     (('besides',), 'isnextto'), (('near',), 'isnextto'), (('close', 'to'), 'isnextto'),
     (('adjacent', 'to'), 'isnextto'), (('nearby',), 'isnextto'),
+    (('closest', 'to'), 'isnextto'), (('nearest', 'to'), 'isnextto'), (('nearest',), 'isnextto'),
     (('across', 'from'), 'isinfrontof'), (('opposite',), 'isinfrontof'), (('opposite', 'to'), 'isinfrontof'),
     (('facing',), 'isinfrontof'),
     # as learners of English say them ("the table at right of the lathe", "the cabinet behind of the bench")

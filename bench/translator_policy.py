@@ -9,8 +9,9 @@ replayed on those readings and scored with the same scorer as ``eval-translation
 (``evaluation.evaluate``). Sets: the validation split of each public set (``neural.public``:
 carved out of the train split, never trained on; the test splits are never read here) and our
 ``spatial-temporal-dev`` set (written for this project, the conventions the robot's users
-follow; ``dev`` in ``--sets``). Prints, per policy, temporal alignment and the wrong-and-unflagged
-share on each set, and the mean alignment over the sets.
+follow; ``dev`` in ``--sets``). Prints, per policy, temporal alignment, the wrong-and-unflagged
+share and the flagged share (refused or flagged: how often the person is asked to check) on each
+set, and the mean alignment over the sets.
 """
 from __future__ import annotations
 
@@ -73,7 +74,7 @@ def score_set(name: str, limit: int, model_path: Optional[str],
                     'read_all_stands': policy.read_all_stands, 'rules_kept': policy.rules_kept,
                     'temporal_alignment': summary['temporal_alignment'],
                     'equivalence': summary['equivalence_accuracy'],
-                    'wrong_unflagged': summary['wrong_unflagged_share']})
+                    'wrong_unflagged': summary['wrong_unflagged_share'], 'flagged': summary['flagged_share']})
     return out
 
 
@@ -115,8 +116,8 @@ def main(argv: list[str]) -> int:
 
 def _print_table(rows: list[dict[str, Any]], policies: Sequence[Policy]) -> None:
     names = list(dict.fromkeys(r['set'] for r in rows))
-    print('takeover override flags   ' + '  '.join(f'{n[:12]:>12s}' for n in names)
-          + '   mean TA   (cells: TA / wrong-unflagged)')
+    print('takeover override flags   ' + '  '.join(f'{n[:17]:>17s}' for n in names)
+          + '   mean TA   (cells: TA / wrong-unflagged / flagged)')
     for p in policies:
         cells, tas = [], []
         for n in names:
@@ -124,11 +125,11 @@ def _print_table(rows: list[dict[str, Any]], policies: Sequence[Policy]) -> None
                      if r['set'] == n and r['takeover'] == p.takeover and r['override'] == p.override
                      and r['counts'] == p.counts and r['off_map'] == p.off_map
                      and r['read_all_stands'] == p.read_all_stands and r['rules_kept'] == p.rules_kept)
-            cells.append(f'{r["temporal_alignment"]:.3f}/{r["wrong_unflagged"]:.3f}')
+            cells.append(f'{r["temporal_alignment"]:.3f}/{r["wrong_unflagged"]:.3f}/{r["flagged"]:.2f}')
             tas.append(r['temporal_alignment'])
         flags = ''.join(f if on else '-' for f, on in (('c', p.counts), ('m', p.off_map),
                                                        ('r', p.read_all_stands), ('k', p.rules_kept)))
-        print(f'{p.takeover:8.2f} {p.override:8.2f} {flags:>6s}  ' + '  '.join(f'{c:>12s}' for c in cells)
+        print(f'{p.takeover:8.2f} {p.override:8.2f} {flags:>6s}  ' + '  '.join(f'{c:>17s}' for c in cells)
               + f'   {sum(tas) / len(tas):.3f}')
 
 

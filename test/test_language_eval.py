@@ -84,6 +84,7 @@ def test_a_refusal_carries_its_best_reading_and_the_metrics_score_its_referents(
     gold = parse_formula('F (near[kitchen] & (near[kitchen] U release[trash_bag, dumpster])) & G !near[hall]')
     s = evaluate(make_translator(), [Example(REFUSED, gold, 't:1')]).summary()
     assert s['translation_errors'] == 1 and s['refusals_with_best_reading'] == 1
+    assert s['flagged_share'] == 1.0   # a refusal asks the person
     assert s['temporal_alignment'] == 0.0   # a refusal is never aligned
     # gold referents: kitchen, trash_bag, dumpster, hall; the best reading has kitchen and hall
     assert s['referent_wer'] == pytest.approx(2 / 4) and s['referent_wer_strict'] == 1.0

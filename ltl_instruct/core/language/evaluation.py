@@ -100,6 +100,7 @@ class Scores:
     equivalent: int = 0
     aligned: int = 0
     wrong_unflagged: int = 0   # returned, not equivalent, and not flagged by the backend
+    flagged: int = 0           # refused or flagged: the person is asked to check
     ref_edits: int = 0
     ref_words: int = 0
     strict_ref_edits: int = 0   # refusals counted as all errors, best readings ignored
@@ -121,6 +122,7 @@ class Scores:
             'equivalence_accuracy': rate(self.equivalent, self.count),
             'temporal_alignment': rate(self.aligned, self.count),
             'wrong_unflagged_share': rate(self.wrong_unflagged, self.count),
+            'flagged_share': rate(self.flagged, self.count),
             'refusals_with_best_reading': self.best_readings,
             'referent_wer': rate(self.ref_edits, self.ref_words),
             'referent_wer_strict': rate(self.strict_ref_edits, self.ref_words),
@@ -194,6 +196,7 @@ def evaluate(translator: Translator, examples: Sequence[Example],
         scores.equivalent += eq
         scores.aligned += aligned
         scores.wrong_unflagged += pred is not None and not eq and not flagged
+        scores.flagged += flagged
         scores.results.append(ExampleResult(ex, pred, error, eq, aligned, elapsed, flagged))
         if progress is not None:
             progress(k)

@@ -82,6 +82,21 @@ def test_connectives_that_add_or_offer_a_clause(instruction: str, gold: str) -> 
     assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
 
 
+@pytest.mark.parametrize('instruction, gold', [
+    # a place gone through after the goal is said is on the way ("near[passing]" was a goal)
+    ('go to the kitchen, passing through the hall', 'F (near[hall] & F near[kitchen])'),
+    ('go to the red room and make sure to go through the blue room', 'F (near[blue_room] & F near[red_room])'),
+    ('go to the den, moving through the hall', 'F (near[hall] & F near[den])'),
+    # said first, or with its own destination, it is a leg of the route as before
+    ('go through the green room to the red room', 'F (near[green_room] & F near[red_room])'),
+    ('go to the kitchen and then go through the hall to the garage',
+     'F (near[kitchen] & F (near[hall] & F near[garage]))'),
+])
+def test_a_place_gone_through_is_on_the_way(instruction: str, gold: str) -> None:
+    got = OfflineTranslator().translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
 def test_between_two_things_of_a_kind_is_no_leg_of_the_route() -> None:
     # "between the two tables" names where a chair is ("on the way there tables" was read)
     assert 'way' not in rewrite_idioms(tokenize('go to the chair between the two tables'))

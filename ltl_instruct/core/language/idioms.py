@@ -416,6 +416,14 @@ RULES: tuple[Rule, ...] = (
          rf'\b(?P<v>go|head|come|drive|fly|walk|travel) via (?P<x>(?:the|my|our) {_NP}) (?:down |up |over '
          rf'|across |on )?'
          r'to\b', r'\g<v> to \g<x> , then to'),
+    # "go to the kitchen, passing through the hall": the hall is on the way, not a later goal
+    # (clean-up's validation split had it after the goal; the rules made the hall a second goal and
+    # `near[passing]` a third)
+    Rule('go to the blue room and make sure to go through the green room: via the green room',
+         r'(?: ,| and) (?:make sure (?:to|you) |be sure to |remember to )?(?:pass|passing|go|going|travel|'
+         r'travelling|traveling|walk|walking|drive|driving|move|moving|cut|cutting) through '
+         r'(?=(?:the|my|our|a|an) )',
+         ' via '),
     Rule('take the stairs or the lift',
          r'\btake (?P<e>either )?(?=the (?:[a-z]+ )?(?:lift|lifts|stairs|elevator|elevators|escalator'
          r'|stairwell|ramp|'

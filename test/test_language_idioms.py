@@ -85,7 +85,8 @@ def test_connectives_that_add_or_offer_a_clause(instruction: str, gold: str) -> 
 @pytest.mark.parametrize('instruction, gold', [
     # a place gone through after the goal is said is on the way ("near[passing]" was a goal)
     ('go to the kitchen, passing through the hall', 'F (near[hall] & F near[kitchen])'),
-    ('go to the red room and make sure to go through the blue room', 'F (near[blue_room] & F near[red_room])'),
+    ('go to the red room and make sure to go through the blue room',
+     'F (near[blue_room] & F near[red_room])'),
     ('go to the den, moving through the hall', 'F (near[hall] & F near[den])'),
     # said first, or with its own destination, it is a leg of the route as before
     ('go through the green room to the red room', 'F (near[green_room] & F near[red_room])'),

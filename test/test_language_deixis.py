@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import pytest
 
-from ltl_instruct.core.language.deixis import table, unnamed_places
+from ltl_instruct.core.language.deixis import table, unstated
 from ltl_instruct.core.spec import parse_formula
 from translation_cases import T
 
@@ -27,7 +27,7 @@ DELIVERED = 'F (near[cup] & F (pick[cup] & F (near[sofa] & F release[cup, sofa])
     ('bring the cup to the sink and then go charge', DELIVERED, 'go charge'),
 ])
 def test_a_place_named_by_where_someone_is_gets_a_note(instruction: str, formula: str, why: str) -> None:
-    notes = unnamed_places(instruction, parse_formula(formula))
+    notes = unstated(instruction, parse_formula(formula))
     assert len(notes) == 1 and notes[0].startswith(f'"{why}": '), notes
 
 
@@ -48,11 +48,11 @@ def test_a_place_named_by_where_someone_is_gets_a_note(instruction: str, formula
     ('go to the shed and then go recharge', 'F (near[shed] & F near[charging_station])'),
 ])
 def test_a_place_named_by_name_gets_no_note(instruction: str, formula: str) -> None:
-    assert unnamed_places(instruction, parse_formula(formula)) == []
+    assert unstated(instruction, parse_formula(formula)) == []
 
 
 def test_the_table_says_whose_place_each_phrase_names() -> None:
-    assert {entry.whose for entry in table()} == {'speaker', 'start', 'robot'}
+    assert {entry.whose for entry in table()} == {'speaker', 'start', 'robot', 'event', 'clock'}
     assert all('{phrase}' in entry.note for entry in table())
 
 

@@ -27,8 +27,9 @@ Policy (measured on the public sets' held-out splits; see the README, "translate
   the model existed);
 - both refuse: the rules' error.
 
-Whichever reading goes on is also flagged when it leaves out a place named by where the person
-or the robot is ("bring me the cup", "come back": ``deixis``), which no formula can name, and,
+Whichever reading goes on is also flagged when the instruction says what no formula can state: a
+place named by where the person or the robot is ("bring me the cup", "come back"), an event the
+robot cannot observe or the clock ("until I call you", "for ten minutes"; all in ``deixis``), and,
 where landmarks are given, when it names something that is none of them (grounding would fail:
 "without going to any other floors" read as ``!near[other_floors]``).
 
@@ -94,16 +95,10 @@ def _drops_a_rule(refusal: LtlInstructError, model: Translation) -> bool:
     return rules_out_a_place(part.split()) and not avoided_referents_of(model.formula)
 
 
-def _flag_unnamed_places(t: Translation) -> Translation:
-    """Flag a reading that leaves out a place named by where someone is ("bring me", "come back")."""
-    from ltl_instruct.core.language.deixis import unnamed_places
-    return _flagged(t, unnamed_places(t.instruction, t.formula))
-
-
-def _flag_unobservable(t: Translation) -> Translation:
-    """Flag a reading of an instruction with a condition no formula states ("until I call you")."""
-    from ltl_instruct.core.language.unobservable import unobservable_conditions
-    return _flagged(t, unobservable_conditions(t.instruction))
+def _flag_unstated(t: Translation) -> Translation:
+    """Flag a reading of what no formula states ("bring me", "come back", "until I call you")."""
+    from ltl_instruct.core.language.deixis import unstated
+    return _flagged(t, unstated(t.instruction, t.formula))
 
 
 def _flagged(t: Translation, notes: Sequence[str]) -> Translation:
@@ -198,7 +193,7 @@ class CombinedTranslator:
 
     def decide(self, readings: Readings, policy: Policy) -> Translation:
         """Pick the one reading that goes on (raises the rules' refusal when none may), flagged as needed."""
-        return _flag_unobservable(_flag_unnamed_places(self._flag_off_map(self._pick(readings, policy))))
+        return _flag_unstated(self._flag_off_map(self._pick(readings, policy)))
 
     def _pick(self, readings: Readings, policy: Policy) -> Translation:
         """Pick the one reading that goes on (raises the rules' refusal when none may)."""

@@ -1,9 +1,10 @@
-"""Conditions no task formula states ("wait until I call you", "for ten minutes"): the reading is flagged."""
+"""Events and the clock, which no task formula states ("until I call you", "for ten minutes")."""
 from __future__ import annotations
 
 import pytest
 
-from ltl_instruct.core.language.unobservable import table, unobservable_conditions
+from ltl_instruct.core.language.deixis import unstated
+from ltl_instruct.core.spec import parse_formula
 from translation_cases import T
 
 
@@ -18,7 +19,7 @@ from translation_cases import T
     ('go to the kitchen at 5 pm', 'at 5 pm', 'no clock'),
 ])
 def test_a_condition_no_formula_states_gets_a_note(instruction: str, why: str, kind: str) -> None:
-    notes = unobservable_conditions(instruction)
+    notes = unstated(instruction, parse_formula('F near[door]'))
     assert len(notes) == 1 and notes[0].startswith(f'"{why}": ') and kind in notes[0], notes
 
 
@@ -34,11 +35,12 @@ def test_a_condition_no_formula_states_gets_a_note(instruction: str, why: str, k
     'patrol the hall until further notice',
 ])
 def test_a_condition_on_places_gets_no_note(instruction: str) -> None:
-    assert unobservable_conditions(instruction) == []
+    assert unstated(instruction, parse_formula('F near[door]')) == []
 
 
-def test_every_note_quotes_its_phrase() -> None:
-    assert all('{phrase}' in c.note for c in table())
+def test_a_negation_before_an_event_leaves_it_standing() -> None:
+    notes = unstated('do not leave the hall until I call you', parse_formula('F near[hall]'))
+    assert len(notes) == 1 and notes[0].startswith('"until i call": ')
 
 
 def test_the_default_translator_flags_the_reading_and_says_why() -> None:

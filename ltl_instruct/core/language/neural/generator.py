@@ -49,7 +49,7 @@ _RULE_WEIGHTS = {'unordered': 1.5, 'unordered3': 0.7, 'sequence_list': 0.8, 'bef
                  'deliver_either': 0.5, 'deliver_either_dest': 0.5, 'deliver_two': 0.6, 'deliver_too': 0.4,
                  'deliver_twice_limit': 0.2, 'avoid_leg': 0.8, 'avoid_until_then': 0.5,
                  'avoid_until_reached': 0.6, 'not_until_both': 0.4, 'either_avoid': 0.3,
-                 'ordered3': 0.5, 'ordered4': 0.3, 'strict2': 0.4, 'strict3': 0.4, 'strict4': 0.3}
+                 'ordered3': 0.7, 'ordered4': 0.5, 'strict2': 0.4, 'strict3': 0.4, 'strict4': 0.3}
 # Steps fit for a drone.
 _DRONE_STEPS = ('visit', 'visit', 'visit', 'revisit', 'either', 'twice', 'three_times', 'after_avoid',
                 'correction')

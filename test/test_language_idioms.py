@@ -98,6 +98,20 @@ def test_a_place_gone_through_is_on_the_way(instruction: str, gold: str) -> None
     assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
 
 
+@pytest.mark.parametrize('instruction, gold', [
+    ('go to the closest chair to the door', 'F near[chair::isnextto(door)]'),
+    ('go to the nearest table to the window, then the sofa',
+     'F (near[table::isnextto(window)] & F near[sofa])'),
+    ('take the closest cup to the sink to the table',
+     'F (near[cup::isnextto(sink)] & F (pick[cup::isnextto(sink)] & F (near[table] & '
+     'F release[cup::isnextto(sink), table])))'),
+])
+def test_a_superlative_before_the_noun_is_a_relation(instruction: str, gold: str) -> None:
+    # "the closest chair to the door" was a place `closest_chair`, then a goal at the door, unflagged
+    got = OfflineTranslator().translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
 def test_between_two_things_of_a_kind_is_no_leg_of_the_route() -> None:
     # "between the two tables" names where a chair is ("on the way there tables" was read)
     assert 'way' not in rewrite_idioms(tokenize('go to the chair between the two tables'))

@@ -76,6 +76,10 @@ def test_rewrites_keep_sentences_and_plain_text() -> None:
     # one that offers another was read as a sequence
     ('go to the kitchen, otherwise go to the garage', 'F near[kitchen] | F near[garage]'),
     ('go to the kitchen, alternatively head to the garage', 'F near[kitchen] | F near[garage]'),
+    # ... also when it opens the next sentence (its "or" was a sentence of its own, refused)
+    ('Go to the kitchen. Otherwise, go to the garage.', 'F near[kitchen] | F near[garage]'),
+    ('Go to the kitchen. Or the garage. Avoid the hall.',
+     'F (near[kitchen] | near[garage]) & G !near[hall]'),
 ])
 def test_connectives_that_add_or_offer_a_clause(instruction: str, gold: str) -> None:
     got = OfflineTranslator().translate(instruction)

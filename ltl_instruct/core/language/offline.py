@@ -322,6 +322,8 @@ def _after_relation(tokens: Sequence[str], i: int) -> bool:
 
 
 # "while you're carrying anything": what is carried in every delivery of the instruction.
+# words that open a sentence offering an alternative to the one before ("Go to the kitchen. Otherwise, ...")
+_ALTERNATIVE_LEADS = frozenset({'otherwise', 'alternatively', 'or'})
 _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'either', 'each', 'both'})
 # What keeps a person busy ("dad's on a call"): a reason, not a place.
 _BUSY = frozenset({'call', 'phone', 'meeting', 'break', 'nap', 'shift', 'zoom', 'computer', 'asleep', 'busy',
@@ -1516,11 +1518,15 @@ class _Reader:
 
     @staticmethod
     def _sentences(tokens: list[str]) -> list[list[str]]:
+        """Split at sentence ends; a sentence that opens with an alternative ("Otherwise, ...") joins the one before."""
         out: list[list[str]] = [[]]
         for t in tokens:
             if t in '.;!?':
                 if out[-1]:
                     out.append([])
+            elif not out[-1] and t in _ALTERNATIVE_LEADS and len(out) > 1:
+                out.pop()
+                out[-1].extend([',', t])
             else:
                 out[-1].append(t)
         return [s for s in out if s]

@@ -215,3 +215,37 @@ def test_a_mention_says_where_a_thing_is_taken_from_as_the_rules_read_it(words, 
     assert descriptor_of(words) == descriptor
     rules = make_translator('offline').translate(f'bring {words} to the desk')
     assert rules.referents[0] == descriptor
+
+
+def test_a_fine_tuned_encoder_travels_in_the_bundle(small_bundle, tmp_path):
+    # fine-tuning updates the encoder's layers with the networks; the bundle carries them
+    # (encoder.pt), the translator loads them over the packaged encoder, and the embeddings stay
+    enc_dir, _, _ = small_bundle
+    torch.manual_seed(1)
+    encoder, base = load_encoder(enc_dir), load_encoder(enc_dir)
+    data = training.piece_examples(_examples(240, 0), WordPieces(enc_dir))
+    assert data and all(e.states is None and e.ids is not None for e in data)
+    small = NetConfig(encoder_dim=32, tagger_hidden=32, hidden=64, token_dim=16)
+    cfg = training.TrainConfig(epochs=8, batch=16, lr=3e-3, encoder_lr=1e-3, net=small)
+    net = TranslatorNet(cfg.net)
+    stats = training.fit(net, data, cfg, log=lambda s: None, encoder=encoder)
+    assert stats['decoder_loss'] < 0.3
+    bundle = tmp_path / 'tuned'
+    training.save_bundle(net, bundle, {'examples': len(data)}, encoder)
+    saved = torch.load(bundle / training.BUNDLE_ENCODER, weights_only=True)
+    assert saved and not any(k.startswith(('word.', 'position.', 'token_type.')) for k in saved)
+    assert torch.equal(encoder.word.weight, base.word.weight)   # embeddings frozen
+    moved = [k for k, v in saved.items() if not torch.allclose(v.float(), base.state_dict()[k], atol=1e-3)]
+    assert len(moved) > len(saved) // 2
+    t = make_translator('neural', model_path=str(bundle), encoder_path=str(enc_dir))
+    for k, v in saved.items():
+        assert torch.allclose(t.encoder.state_dict()[k], v.float())
+    seen = {ex.text for ex in _examples(240, 0)}
+    fresh = [ex for ex in _examples(60, 1) if ex.text not in seen]
+    right = sum(t.translate(ex.text).formula == ex.formula() for ex in fresh)
+    assert len(fresh) >= 10 and right / len(fresh) >= 0.8
+    # a bundle whose encoder layers do not fit the encoder given is a typed error
+    torch.save({'layers.0.query.weight': torch.zeros(3, 3)}, bundle / training.BUNDLE_ENCODER)
+    with pytest.raises(TranslationError) as e:
+        make_translator('neural', model_path=str(bundle), encoder_path=str(enc_dir))
+    assert e.value.code.value == 'MODEL_ERROR'

@@ -29,6 +29,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                        help='times each public training example is used per epoch (default 2)')
     train.add_argument('--time-limit', type=float, default=None,
                        help='seconds of training, after encoding (default 3600)')
+    train.add_argument('--encoder-lr', type=float, default=None,
+                       help='fine-tune the encoder layers at this learning rate (default 0: frozen; the '
+                            'bundle then also carries encoder.pt)')
     train.add_argument('--seed', type=int, default=0, help='random seed (default 0)')
     train.add_argument('--threads', type=int, default=2, help='torch CPU threads (default 2)')
     train.add_argument('--json', action='store_true', help='print the training facts as JSON')
@@ -48,6 +51,8 @@ def run(args: argparse.Namespace) -> int:
         cfg = replace(cfg, public_repeat=args.public_repeat)
     if args.time_limit is not None:
         cfg = replace(cfg, time_budget_s=args.time_limit)
+    if args.encoder_lr is not None:
+        cfg = replace(cfg, encoder_lr=args.encoder_lr)
     if args.sets is not None:
         cfg = replace(cfg, public_sets=() if args.sets == 'none' else tuple(args.sets.split(',')))
     facts = train(cfg, Path(args.out))

@@ -426,7 +426,8 @@ RULES: tuple[Rule, ...] = (
          ' via '),
     # "the closest chair to the door" is "the chair closest to the door" (a relation, not a name)
     Rule('the closest chair to the door: the chair closest to the door',
-         rf'\b(?P<d>the|a) (?P<s>closest|nearest) (?P<x>{_W}(?: {_W}){{0,2}}) to (?=(?:the|my|our|your|a|an) )',
+         rf'\b(?P<d>the|a) (?P<s>closest|nearest) (?P<x>{_W}(?: {_W}){{0,2}}) to '
+         r'(?=(?:the|my|our|your|a|an) )',
          r'\g<d> \g<x> \g<s> to '),
     Rule('take the stairs or the lift',
          r'\btake (?P<e>either )?(?=the (?:[a-z]+ )?(?:lift|lifts|stairs|elevator|elevators|escalator'

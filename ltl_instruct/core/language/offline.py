@@ -1518,7 +1518,7 @@ class _Reader:
 
     @staticmethod
     def _sentences(tokens: list[str]) -> list[list[str]]:
-        """Split at sentence ends; a sentence that opens with an alternative ("Otherwise, ...") joins the one before."""
+        """Split at sentence ends; one that opens with an alternative ("Otherwise, ...") joins the last."""
         out: list[list[str]] = [[]]
         for t in tokens:
             if t in '.;!?':

@@ -36,7 +36,7 @@ from ltl_instruct.core.language.neural.features import (
 )
 from ltl_instruct.core.language.neural.grammar import from_prefix, slots_used
 from ltl_instruct.core.language.neural.model import TranslatorNet
-from ltl_instruct.core.language.neural.training import load_bundle
+from ltl_instruct.core.language.neural.training import apply_tuned_encoder, load_bundle
 from ltl_instruct.core.spec import (
     Descriptor, Formula, format_formula, parse_descriptor, referents_of, rename_descriptors,
 )
@@ -58,6 +58,7 @@ class NeuralTranslator:
             net = load_bundle(bundle)
             encoder_dir = Path(encoder_path) if encoder_path else packaged_model_dir()
             encoder, pieces = load_encoder(encoder_dir), WordPieces(encoder_dir)
+            apply_tuned_encoder(bundle, encoder)
         except (OSError, KeyError, TypeError, ValueError, RuntimeError, ImportError) as e:
             raise TranslationError(f'cannot load the learned translator from {bundle}: {e}',
                                    ErrorCode.MODEL_ERROR) from e

@@ -1001,6 +1001,19 @@ RULES: tuple[Rule, ...] = (
          r'(?:and )?(?:not|no|never) more(?: than that)?(?= [,.;]|$)', r'\g<a>'),
     Rule('only when you have been at the kit, you can go: only after',
          r'^only (?:when|once) (?=(?:you|we|the robot) )', 'only after '),
+    Rule('only after you visit the kitchen you can go to the gym: the goal first (no comma between)',
+         r'^(?:and |but |so )?only after (?P<e>(?:(?! only after | (?:you|we) (?:can|may) )[^,;])+?) '
+         r'(?:you|we) (?:can|may|are allowed to|should|must) '
+         r'(?P<m>(?:go|head|visit|proceed|enter|fly|come|move|drive|walk|land|stop|swing|pop|check)\b'
+         r'(?:(?! only after ).)*)$',
+         r'\g<m> , but only after \g<e>'),
+    Rule('go to the gym not before going to the kitchen: but not before',
+         rf'\b(?P<g>{_GO} {_NP}) not before (?=[a-z])', r'\g<g> but not before '),
+    Rule('go to the gym after going to the kitchen, do not go to the gym before: not before it',
+         rf'\b(?P<g>{_GO}) (?P<x>{_NP}) after (?P<e>(?:{_GOING}|you {_GO}|you have {_GONE}) {_NP}) '
+         r'(?:, )?(?:and |but )?'
+         rf'(?:do not|never) {_GO} (?P=x) (?:before|earlier|sooner|first)$',
+         r'\g<g> \g<x> but not before \g<e>'),
     Rule('only after you have been to the kitchen, you can go to the gym: the goal first',
          r'^(?:and |but |so )?only after (?P<e>[^,;]+?) (?:, )+(?:then )?'
          r'(?:(?:you|we) (?:can|may|are allowed to|'

@@ -130,6 +130,14 @@ def test_an_order_said_without_commas_or_with_its_ellipsis(instruction: str) -> 
     assert equivalent(got.formula, gold), f'{instruction!r} -> {got.formula}'
 
 
+def test_then_you_may_stays_a_permission() -> None:
+    # drone-planning's "only if you reached X then you may proceed to Y" lets the robot go on, it
+    # does not send it (a first no-comma rule read it as a goal: 16 of its training items changed)
+    got = OfflineTranslator().translate('go to the kitchen avoiding the gym. only if you reached the kitchen '
+                                        'then you may proceed to the gym.')
+    assert equivalent(got.formula, parse_formula('!near[gym] U near[kitchen]')), got.formula
+
+
 def test_a_run_on_chain_of_only_after_is_not_read_as_one_order() -> None:
     # the no-comma "only after E you can ..." must not swallow the next "only after" into E or the goal
     chain = ('only after you visit the den you can go to the hall only after you visit the hall you can '

@@ -1002,7 +1002,7 @@ RULES: tuple[Rule, ...] = (
     Rule('only when you have been at the kit, you can go: only after',
          r'^only (?:when|once) (?=(?:you|we|the robot) )', 'only after '),
     Rule('only after you visit the kitchen you can go to the gym: the goal first (no comma between)',
-         r'^(?:and |but |so )?only after (?P<e>(?:(?! only after | (?:you|we) (?:can|may) )[^,;])+?) '
+         r'^(?:and |but |so )?only after (?P<e>(?:(?! only after | (?:you|we) (?:can|may) | then )[^,;])+?) '
          r'(?:you|we) (?:can|may|are allowed to|should|must) '
          r'(?P<m>(?:go|head|visit|proceed|enter|fly|come|move|drive|walk|land|stop|swing|pop|check)\b'
          r'(?:(?! only after ).)*)$',

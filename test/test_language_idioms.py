@@ -37,6 +37,11 @@ COUNTS = [
 ]
 
 
+def _reads_as(instruction: str, gold: str) -> None:
+    got = T.translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+
+
 @pytest.mark.parametrize('instruction,gold', COUNTS, ids=[c[0][:40] for c in COUNTS])
 def test_counts_said_at_length(instruction: str, gold: object) -> None:
     got = T.translate(instruction)
@@ -55,8 +60,7 @@ PHRASINGS = [
 
 @pytest.mark.parametrize('instruction,gold', PHRASINGS, ids=[c[0][:40] for c in PHRASINGS])
 def test_passives_and_frames(instruction: str, gold: str) -> None:
-    got = T.translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    _reads_as(instruction, gold)
 
 
 def test_rewrites_keep_sentences_and_plain_text() -> None:
@@ -83,8 +87,7 @@ def test_rewrites_keep_sentences_and_plain_text() -> None:
      'F (near[kitchen] | near[garage]) & G !near[hall]'),
 ])
 def test_connectives_that_add_or_offer_a_clause(instruction: str, gold: str) -> None:
-    got = OfflineTranslator().translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    _reads_as(instruction, gold)
 
 
 @pytest.mark.parametrize('instruction, gold', [
@@ -99,8 +102,7 @@ def test_connectives_that_add_or_offer_a_clause(instruction: str, gold: str) -> 
      'F (near[kitchen] & F (near[hall] & F near[garage]))'),
 ])
 def test_a_place_gone_through_is_on_the_way(instruction: str, gold: str) -> None:
-    got = OfflineTranslator().translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    _reads_as(instruction, gold)
 
 
 @pytest.mark.parametrize('instruction, gold', [
@@ -113,8 +115,7 @@ def test_a_place_gone_through_is_on_the_way(instruction: str, gold: str) -> None
 ])
 def test_a_superlative_before_the_noun_is_a_relation(instruction: str, gold: str) -> None:
     # "the closest chair to the door" was a place `closest_chair`, then a goal at the door, unflagged
-    got = OfflineTranslator().translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    _reads_as(instruction, gold)
 
 
 @pytest.mark.parametrize('instruction', [
@@ -125,17 +126,14 @@ def test_a_superlative_before_the_noun_is_a_relation(instruction: str, gold: str
 ])
 def test_an_order_said_without_commas_or_with_its_ellipsis(instruction: str) -> None:
     # each was refused ("could not place what to avoid in 'not before ...'", "found no action")
-    got = OfflineTranslator().translate(instruction)
-    gold = parse_formula('F near[gym] & (!near[gym] U near[kitchen])')
-    assert equivalent(got.formula, gold), f'{instruction!r} -> {got.formula}'
+    _reads_as(instruction, 'F near[gym] & (!near[gym] U near[kitchen])')
 
 
 def test_then_you_may_stays_a_permission() -> None:
     # drone-planning's "only if you reached X then you may proceed to Y" lets the robot go on, it
     # does not send it (a first no-comma rule read it as a goal: 16 of its training items changed)
-    got = OfflineTranslator().translate('go to the kitchen avoiding the gym. only if you reached the kitchen '
-                                        'then you may proceed to the gym.')
-    assert equivalent(got.formula, parse_formula('!near[gym] U near[kitchen]')), got.formula
+    _reads_as('go to the kitchen avoiding the gym. only if you reached the kitchen then you may proceed to '
+              'the gym.', '!near[gym] U near[kitchen]')
 
 
 def test_a_run_on_chain_of_only_after_is_not_read_as_one_order() -> None:
@@ -188,8 +186,7 @@ WAITING_AND_ORDER = [
 
 @pytest.mark.parametrize('instruction,gold', WAITING_AND_ORDER, ids=[c[0][:40] for c in WAITING_AND_ORDER])
 def test_waiting_order_and_repetition_said_at_length(instruction: str, gold: str) -> None:
-    got = T.translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    _reads_as(instruction, gold)
 
 
 STAYING = [
@@ -221,5 +218,4 @@ def test_levels_as_floors_only_under_the_digits_convention() -> None:
 
 @pytest.mark.parametrize('instruction,gold', STAYING, ids=[c[0][:40] for c in STAYING])
 def test_staying_within_and_on_the_way(instruction: str, gold: str) -> None:
-    got = T.translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    _reads_as(instruction, gold)

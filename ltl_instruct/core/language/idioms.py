@@ -62,6 +62,9 @@ _SIDE = (r'(?:east|west|north|south|left|right|front|back|upper|lower|upstairs|d
          r'white|black|grey|gray|brown|old|new|kids|guest|master)')
 _GOING = (r'(?:visiting|going to|reaching|entering|passing through|going through|moving to|traveling to|'
           r'travelling to|navigating to|getting to|heading to|finding|coming to|walking to|flying to)')
+# "you can go ...": what the one who goes is allowed or told to do, and the verbs of going there
+_ALLOWED = r'(?:you|we) (?:can|may|are allowed to|should|must)'
+_GOAL_VERB = r'(?:go|head|visit|proceed|enter|fly|come|move|drive|walk|land|stop|swing|pop|check)'
 _GONE = r'(?:visited|been to|gone to|reached|entered|passed through|gone through|found|arrived at)'
 _BACK = rf'(?:{_GO}|revisit|come back to|return to|go back to)'
 _FORBIDDEN = r'(?:prohibited|forbidden|not allowed|not permitted|banned)'
@@ -1003,9 +1006,7 @@ RULES: tuple[Rule, ...] = (
          r'^only (?:when|once) (?=(?:you|we|the robot) )', 'only after '),
     Rule('only after you visit the kitchen you can go to the gym: the goal first (no comma between)',
          r'^(?:and |but |so )?only after (?P<e>(?:(?! only after | (?:you|we) (?:can|may) | then )[^,;])+?) '
-         r'(?:you|we) (?:can|may|are allowed to|should|must) '
-         r'(?P<m>(?:go|head|visit|proceed|enter|fly|come|move|drive|walk|land|stop|swing|pop|check)\b'
-         r'(?:(?! only after ).)*)$',
+         rf'{_ALLOWED} (?P<m>{_GOAL_VERB}\b(?:(?! only after ).)*)$',
          r'\g<m> , but only after \g<e>'),
     Rule('go to the gym not before going to the kitchen: but not before',
          rf'\b(?P<g>{_GO} {_NP}) not before (?=[a-z])', r'\g<g> but not before '),
@@ -1015,10 +1016,8 @@ RULES: tuple[Rule, ...] = (
          rf'(?:do not|never) {_GO} (?P=x) (?:before|earlier|sooner|first)$',
          r'\g<g> \g<x> but not before \g<e>'),
     Rule('only after you have been to the kitchen, you can go to the gym: the goal first',
-         r'^(?:and |but |so )?only after (?P<e>[^,;]+?) (?:, )+(?:then )?'
-         r'(?:(?:you|we) (?:can|may|are allowed to|'
-         r'should|must) )?(?P<m>(?:go|head|visit|proceed|enter|fly|come|move|drive|walk|land|stop|swing|pop|'
-         r'check)\b.*)$', r'\g<m> , but only after \g<e>'),
+         rf'^(?:and |but |so )?only after (?P<e>[^,;]+?) (?:, )+(?:then )?(?:{_ALLOWED} )?'
+         rf'(?P<m>{_GOAL_VERB}\b.*)$', r'\g<m> , but only after \g<e>'),
     Rule('fly until the clock tower: to it',
          r'\b(?P<v>fly|go|drive|walk|come|head|move|travel|proceed) until (?=(?:the|my|your|our)\b)',
          r'\g<v> to '),

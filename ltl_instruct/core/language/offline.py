@@ -321,9 +321,9 @@ def _after_relation(tokens: Sequence[str], i: int) -> bool:
                          for m in range(max(0, k - 5), k))
 
 
-# "while you're carrying anything": what is carried in every delivery of the instruction.
 # words that open a sentence offering an alternative to the one before ("Go to the kitchen. Otherwise, ...")
 _ALTERNATIVE_LEADS = frozenset({'otherwise', 'alternatively', 'or'})
+# "while you're carrying anything": what is carried in every delivery of the instruction.
 _ANY_LOAD = frozenset({'anything', 'everything', 'stuff', 'something', 'any', 'either', 'each', 'both'})
 # What keeps a person busy ("dad's on a call"): a reason, not a place.
 _BUSY = frozenset({'call', 'phone', 'meeting', 'break', 'nap', 'shift', 'zoom', 'computer', 'asleep', 'busy',

@@ -642,7 +642,7 @@ def main(argv: list[str]) -> int:
                       restart=RestartPolicy(), say=restarts.append).start()
     client = GraphClient('bench_graph_fuzz')
     try:
-        if not client.wait_for_graph(timeout=90.0, need_sim=True):
+        if not client.wait_for_graph(timeout=180.0, need_sim=True):
             print(f'graph did not come up; logs in {logs}')
             return 1
         # connected is not ready: the translator serves nothing before its backend has loaded

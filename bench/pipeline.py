@@ -63,7 +63,7 @@ def main(argv: list[str]) -> int:
     rest: list[float] = []
     failures = []
     try:
-        if not client.wait_for_graph(timeout=60.0, need_sim=True):
+        if not client.wait_for_graph(timeout=180.0, need_sim=True):
             print(f'graph did not come up; logs in {logs}')
             return 1
         print(f'graph up in {time.monotonic() - t_boot:.2f} s (process start, not counted); logs in {logs}')

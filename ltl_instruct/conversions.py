@@ -58,6 +58,7 @@ TASK_STATUS = 'ltl_instruct/task_status'
 SKILL_REQUEST = 'ltl_instruct/skill_request'
 SKILL_RESULT = 'ltl_instruct/skill_result'
 LABEL_CLASSES = 'ltl_instruct/label_classes'
+TRANSLATOR_STATUS = 'ltl_instruct/translator_status'
 
 
 # ---------------------------------------------------------------------------- JSON payloads

@@ -102,6 +102,8 @@ def test_a_translator_backend_that_cannot_start_fails_each_instruction_not_the_n
             deadline = time.monotonic() + 30
             while time.monotonic() < deadline and client.instruction_pub.get_subscription_count() < 1:
                 time.sleep(0.05)
+            state = client.wait_until(lambda: client.received.translator.get('state') == 'failed'
+                                      and client.received.translator, 20.0)
             specs = []
             for text in ('go to the sofa', 'then the fridge'):
                 iid = client.send(text=text)
@@ -114,6 +116,7 @@ def test_a_translator_backend_that_cannot_start_fails_each_instruction_not_the_n
             else:
                 os.environ[k] = v
         codes = g.stop()
+    assert state and state['code'] == 'MODEL_ERROR' and state['reason'], state   # said before any instruction
     for spec in specs:
         assert spec is not None and spec['ok'] is False, spec
         assert spec['error']['code'] == 'MODEL_ERROR' and spec['error']['message'], spec

@@ -27,7 +27,7 @@ def camera_graph(tmp_path_factory):
         g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
         client = GraphClient('camera_test')
         try:
-            assert client.wait_for_graph(timeout=60.0, need_sim=True)
+            assert client.wait_for_graph(timeout=180.0, need_sim=True)
             yield g, client
         finally:
             client.close()

@@ -45,9 +45,9 @@ def graph(tmp_path_factory):
         g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=logs).start()
         client = GraphClient('test_client', record_odom=True)
         try:
-            assert client.wait_for_graph(timeout=60.0, need_sim=True), _logs(logs, g)
-            # connected is not ready: the translator serves nothing before its backend (torch, the model) has
-            # loaded, which took over 60 s under that load and was charged to the first tests' budgets
+            assert client.wait_for_graph(timeout=180.0, need_sim=True), _logs(logs, g)
+            # the wait includes the translator's backend (torch, the model) loading, which took over 60 s under
+            # that load; the planner and grounder warm up on the first task, charged to no test's budget
             warm = client.wait_terminal(client.send(formula='F near[unicorn]'), timeout=240.0)
             assert warm['status'] == 'failed', warm
             yield g, client, logs
@@ -113,6 +113,13 @@ def test_instruction_yields_a_plan_the_automaton_accepts(graph):
     rows = ((dense[:, 1] - grid.origin[1]) / grid.resolution).astype(int)
     assert np.all(grid.cells[rows, cols] == 0)
     _alive(g)
+
+
+def test_the_translator_says_it_is_ready_before_anything_is_sent(graph):
+    _, client, _ = graph
+    state = client.received.translator
+    assert state['state'] == 'ready' and state['backend'] == 'combined', state
+    assert state['schema'] == 'ltl_instruct/translator_status' and 'model_error' not in state, state
 
 
 def test_english_instruction_is_translated_planned_and_executed(graph):

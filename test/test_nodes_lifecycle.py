@@ -44,7 +44,7 @@ def _graph(logs):
                   restart=RestartPolicy(first_delay=0.2), say=restarts.append).start()
     client = GraphClient('lifecycle_client')
     try:
-        assert client.wait_for_graph(timeout=60.0, need_sim=True), _logs(logs)
+        assert client.wait_for_graph(timeout=180.0, need_sim=True), _logs(logs)
         yield g, client, logs
     finally:
         client.close()

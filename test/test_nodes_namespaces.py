@@ -63,7 +63,7 @@ def robots(tmp_path_factory):
             for ns in setups:
                 clients[ns] = GraphClient('ns_client', namespace=ns)
             for ns, client in clients.items():
-                assert client.wait_for_graph(timeout=90.0, need_sim=True), (ns, _logs(logs))
+                assert client.wait_for_graph(timeout=180.0, need_sim=True), (ns, _logs(logs))
             yield graphs, clients, room
         finally:
             for client in clients.values():

@@ -29,7 +29,7 @@ CLIENT = textwrap.dedent('''
     from ltl_instruct.nodes.client import GraphClient
     client = GraphClient('netns_client')
     try:
-        if not client.wait_for_graph(timeout=90.0, need_sim=True):
+        if not client.wait_for_graph(timeout=180.0, need_sim=True):
             print(json.dumps({'missing': client.missing(need_sim=True)}))
             sys.exit(1)
         out = {}

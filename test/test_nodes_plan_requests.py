@@ -51,7 +51,7 @@ def test_a_planner_that_starts_late_still_plans_the_waiting_instruction(ros_env)
         with GraphClient('late_planner_client') as client:
             # everything but the planner listens (an instruction sent before the translator
             # listens would be lost: that, not the planner, once made this test time out)
-            assert client.wait_for_graph(timeout=60.0, need_sim=True, need_planner=False), \
+            assert client.wait_for_graph(timeout=180.0, need_sim=True, need_planner=False), \
                 (client.missing(need_sim=True, need_planner=False), _logs(logs))
             iid = client.send(formula='F near[tv]')
             time.sleep(2.0)                    # task_progression is waiting for a planner now

@@ -40,7 +40,7 @@ def search_graph(tmp_path_factory):
         g = NodeGraph(ALL_NODES, default_params_file(), overrides, log_dir=folder / 'logs').start()
         client = GraphClient('search_test', record_odom=True)
         try:
-            assert client.wait_for_graph(timeout=60.0, need_sim=True)
+            assert client.wait_for_graph(timeout=180.0, need_sim=True)
             _wait_for_the_camera(client)
             yield g, client
         finally:

@@ -89,7 +89,7 @@ def test_every_node_stops_within_the_bound_on_sigint_or_sigterm(domain, tmp_path
     g = NodeGraph(ALL_NODES, default_params_file(), BUSY if busy else IDLE, log_dir=tmp_path).start()
     try:
         with GraphClient('shutdown_client') as client:
-            assert client.wait_for_graph(timeout=60.0, need_sim=True), client.missing(need_sim=True)
+            assert client.wait_for_graph(timeout=180.0, need_sim=True), client.missing(need_sim=True)
             if busy:
                 _make_busy(client)
                 time.sleep(1.5)    # each is in the middle of it now (it has seconds more to go)

@@ -96,7 +96,7 @@ def run(args: argparse.Namespace) -> int:
     client = GraphClient('ltl_instruct_demo', record_odom=True)
     report: dict[str, Any] = {'scene': scene.name, 'instruction': instruction, 'logs': str(log_dir)}
     try:
-        if not client.wait_for_graph(timeout=30.0, need_sim=True):
+        if not client.wait_for_graph(timeout=90.0, need_sim=True):
             raise LtlInstructError(f'the nodes did not come up (exited: {graph.dead()}); see {log_dir}',
                                    ErrorCode.TIMEOUT)
         report['startup_s'] = round(time.monotonic() - t_start, 2)

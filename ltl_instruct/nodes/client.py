@@ -45,6 +45,7 @@ class Received:
     odom: list[tuple[float, np.ndarray]] = field(default_factory=list)
     map: Optional[OccupancyGrid] = None
     coverage: Optional[OccupancyGrid] = None   # the latest of what the camera covered (while searching)
+    translator: dict[str, Any] = field(default_factory=dict)   # the latest ltl_translator/status
     arrival: dict[tuple[str, str], float] = field(default_factory=dict)
 
 
@@ -79,6 +80,7 @@ class GraphClient:
         self.odom_pub = n.create_publisher(Odometry, 'odom', reliable_qos(10))
         self.map_pub = n.create_publisher(OccupancyGrid, 'map', latched_qos(1))
         n.create_subscription(String, 'task_status', self._on_status, latched_qos())
+        n.create_subscription(String, 'ltl_translator/status', self._on_translator, latched_qos(1))
         n.create_subscription(String, 'task_spec', self._keyed('specs'), latched_qos())
         n.create_subscription(String, 'verification/request', self._keyed('verifications'), latched_qos())
         n.create_subscription(String, 'referent_map', self._keyed('referent_maps'), latched_qos())
@@ -154,6 +156,15 @@ class GraphClient:
                 self._record('terminal', data['id'])
             self._cond.notify_all()
 
+    def _on_translator(self, msg: String) -> None:
+        try:
+            data = conv.parse_json_payload(msg.data, conv.TRANSLATOR_STATUS)
+        except LtlInstructError:
+            return
+        with self._cond:
+            self.received.translator = data
+            self._cond.notify_all()
+
     def _on_plan(self, msg: Path) -> None:
         with self._cond:
             self.received.plans[conv.stamp_key(msg.header.stamp)] = conv.path_points(msg, check_finite=False)
@@ -219,6 +230,8 @@ class GraphClient:
         # the translator listens to instruction; the grounder and task_progression listen to
         # task_spec (besides this client); the planner listens to plan_request
         checks = [('ltl_translator (instruction)', self.instruction_pub.get_subscription_count() >= 1),
+                  ('ltl_translator (its backend loaded)',
+                   self.received.translator.get('state') in ('ready', 'failed')),
                   ('grounder and task_progression (task_spec)',
                    self.node.count_subscribers('task_spec') >= 3),
                   ('referent_grounder (referent_map)', self.node.count_publishers('referent_map') >= 1),
@@ -234,7 +247,9 @@ class GraphClient:
         """Wait until the pipeline nodes listen (with ``need_sim``, also until the map has come).
 
         An instruction published before the translator listens is lost (reliable, volatile
-        QoS), so wait for this before the first ``send``.
+        QoS), so wait for this before the first ``send``. It also waits until the translator
+        has loaded its backend (``ltl_translator/status``): an instruction sent earlier would
+        wait in its queue, and its time would count the model's loading.
         """
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:

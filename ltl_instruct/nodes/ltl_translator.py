@@ -19,6 +19,11 @@ that any reliable publisher is heard, and transient-local, so that a restarted t
 reads again the sender's latched history and translates what has not ended (the same
 sample keeps its id; a repeat is skipped). When a reader of ``task_spec`` (re)starts,
 every spec still in flight is sent to it again.
+
+Publishes ``~/status`` (latched JSON): ``state`` is ``loading`` while the backend and its model
+load (an instruction is queued meanwhile, and waits), then ``ready``, or ``failed`` with the
+typed error each instruction will be answered with. Clients wait for it before timing
+anything (:meth:`~ltl_instruct.nodes.client.GraphClient.wait_for_graph`).
 """
 from __future__ import annotations
 
@@ -93,6 +98,8 @@ class LtlTranslatorNode(Node):
         self.spec_pub = self.create_publisher(String, 'task_spec', latched_qos(), event_callbacks=(
             PublisherEventCallbacks(matched=self.on_spec_reader)))
         self.verify_pub = self.create_publisher(String, 'verification/request', latched_qos())
+        self.status_pub = self.create_publisher(String, '~/status', latched_qos(1))
+        self._publish_state('loading')
         self.create_subscription(String, 'instruction', self.on_instruction, reliable_qos())
         # a volatile publisher cannot match this one: DDS would warn about each, and it is expected
         self.create_subscription(String, 'instruction', self.on_instruction, latched_qos(), event_callbacks=(
@@ -247,6 +254,18 @@ class LtlTranslatorNode(Node):
                                                           ErrorCode.MODEL_ERROR)
             if self._translator_error is not None:
                 self.get_logger().error(f'translator: {self._translator_error.message}')
+            self._publish_state('ready' if self._translator_error is None else 'failed')
+
+    def _publish_state(self, state: str) -> None:
+        """Say on ``~/status`` whether instructions are read yet (``loading``, ``ready``, ``failed``)."""
+        if self._closing.is_set():   # the node is being destroyed
+            return
+        fields: dict[str, Any] = {'state': state, 'backend': self.params['backend']}
+        if self._translator_error is not None:
+            fields.update(code=self._translator_error.code.value, reason=self._translator_error.message)
+        elif getattr(self._translator, 'model_error', ''):
+            fields['model_error'] = self._translator.model_error
+        self.status_pub.publish(conv.json_msg(conv.payload(conv.TRANSLATOR_STATUS, self.get_name(), **fields)))
 
     def _translate(self, text: str) -> Any:
         self._load_translator()

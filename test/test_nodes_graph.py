@@ -46,8 +46,8 @@ def graph(tmp_path_factory):
         client = GraphClient('test_client', record_odom=True)
         try:
             assert client.wait_for_graph(timeout=180.0, need_sim=True), _logs(logs, g)
-            # the wait includes the translator's backend (torch, the model) loading, which took over 60 s under
-            # that load; the planner and grounder warm up on the first task, charged to no test's budget
+            # the wait includes the translator's backend (torch, the model) loading, which took over 60 s
+            # under that load; the planner and grounder warm up on the first task, charged to no test
             warm = client.wait_terminal(client.send(formula='F near[unicorn]'), timeout=240.0)
             assert warm['status'] == 'failed', warm
             yield g, client, logs

@@ -265,7 +265,8 @@ class LtlTranslatorNode(Node):
             fields.update(code=self._translator_error.code.value, reason=self._translator_error.message)
         elif getattr(self._translator, 'model_error', ''):
             fields['model_error'] = self._translator.model_error
-        self.status_pub.publish(conv.json_msg(conv.payload(conv.TRANSLATOR_STATUS, self.get_name(), **fields)))
+        status = conv.payload(conv.TRANSLATOR_STATUS, self.get_name(), **fields)
+        self.status_pub.publish(conv.json_msg(status))
 
     def _translate(self, text: str) -> Any:
         self._load_translator()

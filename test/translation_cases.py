@@ -8,6 +8,7 @@ refuse (the default may then give the model's reading, flagged).
 from __future__ import annotations
 
 from ltl_instruct.core.automaton import equivalent
+from ltl_instruct.core.errors import LtlInstructError
 from ltl_instruct.core.language import make_translator
 from ltl_instruct.core.language.offline import OfflineTranslator
 from ltl_instruct.core.spec import parse_formula
@@ -19,5 +20,18 @@ RULES = OfflineTranslator()
 def check_translation(instruction: str, gold: str) -> tuple[str, ...]:
     """Translate ``instruction``, assert it is equivalent to ``gold`` on automata; return the notes."""
     got = T.translate(instruction)
-    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'
+    want = parse_formula(gold)
+    if not equivalent(got.formula, want):
+        offered = [a for a in got.extra.get('alternatives', ()) if _same(a, want)]
+        raise AssertionError(f'{instruction!r} -> {got.formula} (flagged: {got.extra.get("flagged")}, '
+                             f'from the model: {"rules_error" in got.extra}, gold offered: {bool(offered)}, '
+                             f'alternatives: {got.extra.get("alternatives")})')
     return got.notes
+
+
+def _same(text: str, want) -> bool:
+    """Whether a formula text is equivalent to ``want`` (False when it does not parse)."""
+    try:
+        return equivalent(parse_formula(text), want)
+    except LtlInstructError:
+        return False

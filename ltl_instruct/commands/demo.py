@@ -16,7 +16,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Optional, Sequence
 
 import numpy as np
 
@@ -278,6 +278,25 @@ def _draw_search(ax: Any, report: dict[str, Any]) -> None:
         ax.plot(path[:, 0], path[:, 1], '-', color='k', lw=1.6, zorder=9, label='search path')
 
 
+def _label_places(objects: Sequence[Any], char_w: float = 0.1,
+                  line_h: float = 0.3) -> list[tuple[Any, tuple]]:
+    """Place each object's name at its centre, moved up past any name already placed there.
+
+    Larger objects are placed first, so a small one on a counter or a desk moves, not the counter's.
+    Sizes are in map metres at the demo's scale (``char_w`` per character, ``line_h`` per line).
+    """
+    placed: list[tuple[float, float, float]] = []   # x, y, half width
+    out = []
+    for o in sorted(objects, key=lambda o: -float(np.prod(o.size[:2])) if o.box is not None else 0.0):
+        x, y = float(o.center[0]), float(o.center[1])
+        half = char_w * len(o.id) / 2
+        while any(abs(x - px) < half + ph and abs(y - py) < line_h for px, py, ph in placed):
+            y += line_h
+        placed.append((x, y, half))
+        out.append((o, (x, y)))
+    return out
+
+
 def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
     """Draw the map, the referent regions, the plan and the driven path into ``out``."""
     import matplotlib
@@ -301,7 +320,8 @@ def _draw(scene: Scene, report: dict[str, Any], out: Path) -> Path:
             face = '0.88' if o.passable else '0.7'
             ax.add_patch(Rectangle(o.box.lo[:2], *o.size[:2], facecolor=face, edgecolor='0.4', lw=0.6,
                                    zorder=3))
-        ax.annotate(o.id, o.center[:2], fontsize=6.5, ha='center', va='center', color='0.15', zorder=6)
+    for o, at in _label_places(scene.objects):
+        ax.annotate(o.id, at, fontsize=6.5, ha='center', va='center', color='0.15', zorder=6)
     _draw_regions(ax, report, hi)
     _draw_search(ax, report)
     driven = report.get('driven')

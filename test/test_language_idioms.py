@@ -219,3 +219,18 @@ def test_levels_as_floors_only_under_the_digits_convention() -> None:
 @pytest.mark.parametrize('instruction,gold', STAYING, ids=[c[0][:40] for c in STAYING])
 def test_staying_within_and_on_the_way(instruction: str, gold: str) -> None:
     _reads_as(instruction, gold)
+
+
+MEETING = [
+    ("Meet me at the bike rack, I'll be down in five minutes.", 'F near[bike_rack]'),
+    ('meet us by the fountain, then go to the car', 'F (near[fountain] & F near[car])'),
+    ('Wait for her at the gate and never go near the pond.', 'F near[gate] & G !near[pond]'),
+]
+
+
+@pytest.mark.parametrize('instruction,gold', MEETING, ids=[c[0][:30] for c in MEETING])
+def test_meeting_someone_at_a_place_is_going_there_by_the_rules(instruction: str, gold: str) -> None:
+    """'meet me at X', 'wait for her at X': the place is X (the rules read it; the model is not needed)."""
+    from ltl_instruct.core.language.offline import OfflineTranslator
+    got = OfflineTranslator().translate(instruction)
+    assert equivalent(got.formula, parse_formula(gold)), f'{instruction!r} -> {got.formula}'

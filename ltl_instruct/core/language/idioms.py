@@ -1369,8 +1369,9 @@ RULES: tuple[Rule, ...] = (
          r'one single trip)\b',
          # ("not more than the one time": a bound, once)
          lambda m: f'{m.group("m")}once' if m.group('m') else 'exactly once'),
-    Rule('wait for me by the back porch: go there',
-         r'\bwait (?:for me|for us|for them|there) (?:by|at|near|next to|in|on)\b', 'go to'),
+    Rule('wait for me by the back porch, meet me at the bike rack: go there',
+         r'\b(?:wait (?:for (?:me|us|them|him|her)|there)|meet (?:me|us|them|him|her)) '
+         r'(?:by|at|near|next to|in|on|outside)\b', 'go to'),
     Rule('though you have to hit the fuse box before you set foot there: only after',
          rf', (?:though|but|although|and) (?:you|we) (?:have to|must|need to|should) (?:visit|go to|stop at|'
          rf'check|'

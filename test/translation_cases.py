@@ -24,8 +24,8 @@ def check_translation(instruction: str, gold: str) -> tuple[str, ...]:
     if not equivalent(got.formula, want):
         offered = [a for a in got.extra.get('alternatives', ()) if _same(a, want)]
         raise AssertionError(f'{instruction!r} -> {got.formula} (flagged: {got.extra.get("flagged")}, '
-                             f'from the model: {"rules_error" in got.extra}, gold offered: {bool(offered)}, '
-                             f'alternatives: {got.extra.get("alternatives")})')
+                             f'the rules refused: {"rules_error" in got.extra}, '
+                             f'gold offered: {bool(offered)}, alternatives: {got.extra.get("alternatives")})')
     return got.notes
 
 

@@ -133,11 +133,18 @@ class GraphClient:
     def _record(self, kind: str, iid: str) -> None:
         self.received.arrival.setdefault((kind, iid), time.monotonic())
 
+    @staticmethod
+    def _payload(msg: String, schema: Optional[str] = None) -> Optional[dict[str, Any]]:
+        """The message's JSON payload (of ``schema``, when given), or None for one that is not."""
+        try:
+            return conv.parse_json_payload(msg.data, schema)
+        except LtlInstructError:
+            return None
+
     def _keyed(self, attr: str) -> Callable[[String], None]:
         def on_message(msg: String) -> None:
-            try:
-                data = conv.parse_json_payload(msg.data)
-            except LtlInstructError:
+            data = self._payload(msg)
+            if data is None:
                 return
             with self._cond:
                 getattr(self.received, attr)[data['id']] = data
@@ -146,9 +153,8 @@ class GraphClient:
         return on_message
 
     def _on_status(self, msg: String) -> None:
-        try:
-            data = conv.parse_json_payload(msg.data, conv.TASK_STATUS)
-        except LtlInstructError:
+        data = self._payload(msg, conv.TASK_STATUS)
+        if data is None:
             return
         with self._cond:
             self.received.statuses.setdefault(data['id'], []).append(data)
@@ -157,9 +163,8 @@ class GraphClient:
             self._cond.notify_all()
 
     def _on_translator(self, msg: String) -> None:
-        try:
-            data = conv.parse_json_payload(msg.data, conv.TRANSLATOR_STATUS)
-        except LtlInstructError:
+        data = self._payload(msg, conv.TRANSLATOR_STATUS)
+        if data is None:
             return
         with self._cond:
             self.received.translator = data
@@ -171,9 +176,8 @@ class GraphClient:
             self._cond.notify_all()
 
     def _on_skill_result(self, msg: String) -> None:
-        try:
-            data = conv.parse_json_payload(msg.data, conv.SKILL_RESULT)
-        except LtlInstructError:
+        data = self._payload(msg, conv.SKILL_RESULT)
+        if data is None:
             return
         with self._cond:
             self.received.skill_results.append(data)

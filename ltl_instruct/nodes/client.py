@@ -135,7 +135,7 @@ class GraphClient:
 
     @staticmethod
     def _payload(msg: String, schema: Optional[str] = None) -> Optional[dict[str, Any]]:
-        """The message's JSON payload (of ``schema``, when given), or None for one that is not."""
+        """Return the message's JSON payload (of ``schema``, when given), or None for one that is not."""
         try:
             return conv.parse_json_payload(msg.data, schema)
         except LtlInstructError:
